@@ -1,0 +1,73 @@
+using System;
+using System.Numerics;
+
+namespace SphFluid.Compute
+{
+    /// <summary>
+    /// The GPU as the solver sees it, shaped like Unity's <c>CommandBuffer</c>: parameter
+    /// setters and dispatches are recorded in order and run on <see cref="Submit"/>.
+    /// Unity wraps a real CommandBuffer; the headless backend wraps Vulkan. The SPH pipeline
+    /// is written once against this interface so both run the same dispatch sequence.
+    /// </summary>
+    /// <remarks>
+    /// Parameter values are captured when a dispatch is recorded, exactly like
+    /// <c>CommandBuffer.SetComputeFloatParam</c> followed by <c>DispatchCompute</c>.
+    /// <see cref="IComputeBuffer.SetData{T}(T[])"/> and <see cref="IComputeBuffer.GetData{T}(T[])"/>
+    /// submit any recorded work first, so uploads and read-backs see the commands before them.
+    /// </remarks>
+    public interface IComputeDevice : IDisposable
+    {
+        /// <summary>Human-readable adapter name, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".</summary>
+        string DeviceName { get; }
+
+        /// <summary>Loads a compute shader by its asset name, the file name without extension
+        /// (e.g. "ParticleSort" for Assets/SphFluid/Shaders/ParticleSort.compute). Unity resolves it to
+        /// a ComputeShader asset the component references; the headless backend compiles the file.
+        /// Throws <see cref="ComputeException"/> naming the program when there is none.</summary>
+        IComputeProgram LoadProgram(string name);
+
+        /// <summary>A structured buffer of <paramref name="count"/> elements of <paramref name="stride"/> bytes.</summary>
+        IComputeBuffer CreateBuffer(string name, int count, int stride);
+
+        /// <summary>The integer id of a shader property name (Unity's <c>Shader.PropertyToID</c>).
+        /// Look ids up once and keep them.</summary>
+        int PropertyId(string name);
+
+        void SetBuffer(IComputeProgram program, int kernel, int propertyId, IComputeBuffer buffer);
+        void SetInt(IComputeProgram program, int propertyId, int value);
+        void SetFloat(IComputeProgram program, int propertyId, float value);
+
+        /// <summary>Sets an int2/int3/int4/uint3 global; each value fills one 4-byte component.</summary>
+        void SetInts(IComputeProgram program, int propertyId, params int[] values);
+
+        /// <summary>Sets a float2/float3/float4 global (unused trailing components are ignored).</summary>
+        void SetVector(IComputeProgram program, int propertyId, Vector4 value);
+
+        /// <summary>Sets a float4x4 global. Element <c>M{r}{c}</c> of the managed matrix is what the
+        /// kernel reads as <c>m[r-1][c-1]</c>, so transforms are written for column vectors
+        /// (<c>mul(m, float4(p, 1))</c>), as in Unity: translation lives in M14, M24, M34.</summary>
+        void SetMatrix(IComputeProgram program, int propertyId, Matrix4x4 value);
+
+        /// <summary>Selects a <c>multi_compile</c> keyword variant for later dispatches of the program.</summary>
+        void SetKeyword(IComputeProgram program, string keyword, bool enabled);
+
+        /// <summary>Records a dispatch of <paramref name="groupsX"/>·<paramref name="groupsY"/>·<paramref name="groupsZ"/>
+        /// thread groups. Refused (with the resource's name) if the kernel reads a buffer that was never bound.</summary>
+        void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ);
+
+        /// <summary>Opens a named GPU timing range (Unity: <c>CommandBuffer.BeginSample</c>).</summary>
+        void BeginSample(string name);
+
+        void EndSample(string name);
+
+        /// <summary>Runs everything recorded since the last submit, in order.</summary>
+        void Submit();
+
+        /// <summary>GPU time of the last completed range with this name, in milliseconds;
+        /// false where the device cannot time it (yet).</summary>
+        bool TryGetSampleMilliseconds(string name, out double milliseconds);
+
+        /// <summary>Starts an asynchronous read-back of a buffer (Unity: <c>AsyncGPUReadback</c>).</summary>
+        IReadbackRequest RequestReadback(IComputeBuffer buffer);
+    }
+}
