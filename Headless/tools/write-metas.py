@@ -1,0 +1,72 @@
+#!/usr/bin/env python3
+"""Writes the .meta file Unity would write for every file and folder under Assets/ that lacks one.
+
+Each new .meta gets a fresh random GUID (uuid4, as Unity does); existing .meta files are never
+touched, so GUIDs stay stable. Run it after adding assets:  python3 Headless/tools/write-metas.py
+"""
+import os
+import sys
+import uuid
+
+TAIL = "  userData: \n  assetBundleName: \n  assetBundleVariant: \n"
+
+IMPORTERS = {
+    ".cs": "MonoImporter:\n  externalObjects: {}\n  serializedVersion: 2\n  defaultReferences: []\n"
+           "  executionOrder: 0\n  icon: {instanceID: 0}\n" + TAIL,
+    ".compute": "ComputeShaderImporter:\n  externalObjects: {}\n  preprocessorOverride: 0\n" + TAIL,
+    ".shader": "ShaderImporter:\n  externalObjects: {}\n  defaultTextures: []\n  nonModifiableTextures: []\n"
+               "  preprocessorOverride: 0\n" + TAIL,
+    ".hlsl": "ShaderIncludeImporter:\n  externalObjects: {}\n" + TAIL,
+    ".cginc": "ShaderIncludeImporter:\n  externalObjects: {}\n" + TAIL,
+    ".asmdef": "AssemblyDefinitionImporter:\n  externalObjects: {}\n" + TAIL,
+    ".unity": "DefaultImporter:\n  externalObjects: {}\n" + TAIL,
+    ".mat": "NativeFormatImporter:\n  externalObjects: {}\n  mainObjectFileID: 2100000\n" + TAIL,
+    ".asset": "NativeFormatImporter:\n  externalObjects: {}\n  mainObjectFileID: 11400000\n" + TAIL,
+    ".md": "TextScriptImporter:\n  externalObjects: {}\n" + TAIL,
+    ".txt": "TextScriptImporter:\n  externalObjects: {}\n" + TAIL,
+    ".json": "TextScriptImporter:\n  externalObjects: {}\n" + TAIL,
+    ".inputactions": "ScriptedImporter:\n  internalIDToNameTable: []\n  externalObjects: {}\n"
+                     "  serializedVersion: 2\n" + TAIL +
+                     "  script: {fileID: 11500000, guid: 8404be70184654265930450def6a9037, type: 3}\n"
+                     "  generateWrapperCode: 0\n  wrapperCodePath: \n  wrapperClassName: \n"
+                     "  wrapperCodeNamespace: \n",
+}
+FOLDER = "folderAsset: yes\nDefaultImporter:\n  externalObjects: {}\n" + TAIL
+DEFAULT = "DefaultImporter:\n  externalObjects: {}\n" + TAIL
+
+
+def hidden(name):
+    # Unity skips dot-files and names ending in '~' (and everything below such folders).
+    return name.startswith(".") or name.endswith("~")
+
+
+def write_meta(path, body):
+    meta = path + ".meta"
+    if os.path.exists(meta):
+        return False
+    with open(meta, "w", newline="\n") as f:
+        f.write("fileFormatVersion: 2\nguid: %s\n%s" % (uuid.uuid4().hex, body))
+    print("wrote", meta)
+    return True
+
+
+def main(root):
+    assets = os.path.join(root, "Assets")
+    for dirpath, dirnames, filenames in os.walk(assets):
+        dirnames[:] = [d for d in dirnames if not hidden(d) and d not in ("bin", "obj")]
+        for d in dirnames:
+            write_meta(os.path.join(dirpath, d), FOLDER)
+        for f in filenames:
+            if hidden(f) or f.endswith(".meta"):
+                continue
+            ext = os.path.splitext(f)[1].lower()
+            write_meta(os.path.join(dirpath, f), IMPORTERS.get(ext, DEFAULT))
+    # Orphans: a .meta whose asset is gone makes Unity warn and delete it.
+    for dirpath, dirnames, filenames in os.walk(assets):
+        for f in filenames:
+            if f.endswith(".meta") and not os.path.exists(os.path.join(dirpath, f[:-5])):
+                print("orphan .meta (delete it):", os.path.join(dirpath, f), file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
