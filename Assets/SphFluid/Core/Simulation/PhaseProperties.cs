@@ -1,0 +1,39 @@
+using System.Numerics;
+using System.Runtime.InteropServices;
+
+namespace SphFluid.Simulation
+{
+    /// <summary>
+    /// One row of the GPU phase table (<c>PhaseProperties</c> in Shaders/Include/Phase.hlsl), indexed by
+    /// <see cref="Particle.Phase"/>: what a liquid is, physically and optically. Three 16-byte groups.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct PhaseProperties
+    {
+        public const int Stride = 48;
+
+        /// <summary>Rest density rho0, kg/m^3.</summary>
+        public float RestDensity;
+
+        /// <summary>Dynamic viscosity mu, Pa·s.</summary>
+        public float Viscosity;
+
+        /// <summary>Mass of one particle of this phase, kg.</summary>
+        public float ParticleMass;
+
+        /// <summary>Surface tension coefficient gamma, N/m (0 = none).</summary>
+        public float SurfaceTension;
+
+        /// <summary>Linear RGB tint and opacity used by the point shader and the headless snapshots.</summary>
+        public Vector4 Color;
+
+        /// <summary>Schlick's reflectance at normal incidence, ((n - 1) / (n + 1))^2: 0.02 water, 0.035 oil.</summary>
+        public float FresnelF0;
+
+        /// <summary>Beer-Lambert absorption coefficient of the tint, 1/m.</summary>
+        public float Absorption;
+
+        float _padding0;
+        float _padding1;
+    }
+}

@@ -1,0 +1,18 @@
+#ifndef SPHFLUID_PHASE_INCLUDED
+#define SPHFLUID_PHASE_INCLUDED
+
+// One row of the phase table (SphFluid.Simulation.PhaseProperties in C#), indexed by
+// Particle.phase. Three 16-byte groups: stride 48 under D3D and Vulkan std430 alike.
+struct PhaseProperties
+{
+    float restDensity;    // rho0, kg/m^3
+    float viscosity;      // mu, Pa s
+    float particleMass;   // kg
+    float surfaceTension; // gamma, N/m
+    float4 color;         // linear RGB tint, opacity
+    float fresnelF0;      // Schlick reflectance at normal incidence
+    float absorption;     // Beer-Lambert coefficient, 1/m
+    float2 padding;
+};
+
+#endif
