@@ -1,0 +1,85 @@
+using System.Collections.Generic;
+using System.Globalization;
+using System.Text;
+
+namespace SphFluid.Simulation
+{
+    /// <summary>Per-phase part of a <see cref="DiagnosticsReport"/>.</summary>
+    public sealed class PhaseDiagnostics
+    {
+        public string Name { get; }
+        public int Count { get; }
+
+        /// <summary>Mean compression max(0, rho / rho0 - 1) over the phase's particles (Ihmsen et al. 2014's measure:
+        /// free-surface particles are under-dense by construction and would hide compression in a signed mean).</summary>
+        public float AverageDensityError { get; }
+
+        /// <summary>Largest |rho / rho0 - 1| over the phase's particles.</summary>
+        public float MaxDensityError { get; }
+
+        public PhaseDiagnostics(string name, int count, float averageDensityError, float maxDensityError)
+        {
+            Name = name;
+            Count = count;
+            AverageDensityError = averageDensityError;
+            MaxDensityError = maxDensityError;
+        }
+
+        public override string ToString() => string.Format(CultureInfo.InvariantCulture,
+            "{0}: {1} particles, density error avg {2:P2} max {3:P2}", Name, Count, AverageDensityError, MaxDensityError);
+    }
+
+    /// <summary>Whole-fluid health figures, from GPU reductions.</summary>
+    public sealed class DiagnosticsReport
+    {
+        /// <summary>Sum of particle masses, kg (from per-phase counts times the phase mass: exact).</summary>
+        public double TotalMass { get; }
+
+        /// <summary>Sum of m v^2 / 2, J.</summary>
+        public double KineticEnergy { get; }
+
+        public float MaxSpeed { get; }
+
+        /// <summary>Particles with a NaN or infinite position or velocity component.</summary>
+        public int NanCount { get; }
+
+        /// <summary>Particles outside the container box.</summary>
+        public int OutsideCount { get; }
+
+        public IReadOnlyList<PhaseDiagnostics> Phases { get; }
+
+        /// <summary>Simulated time of the state the figures describe, s.</summary>
+        public double SimulatedTime { get; }
+
+        public int ParticleCount
+        {
+            get
+            {
+                int n = 0;
+                foreach (var p in Phases) n += p.Count;
+                return n;
+            }
+        }
+
+        public DiagnosticsReport(double totalMass, double kineticEnergy, float maxSpeed, int nanCount, int outsideCount,
+            IReadOnlyList<PhaseDiagnostics> phases, double simulatedTime)
+        {
+            TotalMass = totalMass;
+            KineticEnergy = kineticEnergy;
+            MaxSpeed = maxSpeed;
+            NanCount = nanCount;
+            OutsideCount = outsideCount;
+            Phases = phases;
+            SimulatedTime = simulatedTime;
+        }
+
+        public override string ToString()
+        {
+            var b = new StringBuilder();
+            b.AppendFormat(CultureInfo.InvariantCulture, "t={0:F3} s mass={1:G6} kg KE={2:G4} J vmax={3:G4} m/s nan={4} outside={5}",
+                SimulatedTime, TotalMass, KineticEnergy, MaxSpeed, NanCount, OutsideCount);
+            foreach (var p in Phases) b.Append(" | ").Append(p);
+            return b.ToString();
+        }
+    }
+}

@@ -1,0 +1,243 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace SphFluid.Simulation
+{
+    /// <summary>
+    /// Everything the solver needs to know about a scene, engine-free: settings, spawn boxes (and
+    /// through them the phases), the container and the sphere obstacles. Unity components and the
+    /// headless scene reader both build one of these.
+    /// </summary>
+    public sealed class FluidSceneDescription
+    {
+        public const int MaxPhases = 64;
+        public const int MaxObstacles = 64;
+
+        public FluidSettings Settings { get; set; } = new FluidSettings();
+        public List<SpawnBoxDescription> SpawnBoxes { get; set; } = new List<SpawnBoxDescription>();
+        public ContainerDescription Container { get; set; } = new ContainerDescription();
+        public List<SphereObstacleDescription> Obstacles { get; set; } = new List<SphereObstacleDescription>();
+
+        /// <summary>The distinct phases in order of first appearance among the spawn boxes (the phase-table order).</summary>
+        public IReadOnlyList<PhaseDescription> Phases()
+        {
+            var phases = new List<PhaseDescription>();
+            foreach (var box in SpawnBoxes)
+            {
+                if (box?.Phase == null) continue;
+                if (IndexOf(phases, box.Phase.Name) < 0) phases.Add(box.Phase);
+            }
+            return phases;
+        }
+
+        /// <summary>Row of the phase table for a phase name, or -1.</summary>
+        public int PhaseIndex(string phaseName) => IndexOf(Phases(), phaseName);
+
+        static int IndexOf(IReadOnlyList<PhaseDescription> phases, string name)
+        {
+            for (int i = 0; i < phases.Count; i++)
+                if (phases[i].Name == name) return i;
+            return -1;
+        }
+
+        /// <summary>Number density delta0 of an interior particle of the spawn lattice.</summary>
+        public double RestNumberDensity() =>
+            SmoothingKernels.LatticeNumberDensity(Settings.ParticleSpacing, Settings.SmoothingRadius);
+
+        /// <summary>The GPU phase table: one row per distinct phase name, masses derived where 0.</summary>
+        public PhaseProperties[] BuildPhaseTable()
+        {
+            var phases = Phases();
+            double delta0 = RestNumberDensity();
+            var table = new PhaseProperties[phases.Count];
+            for (int i = 0; i < phases.Count; i++)
+            {
+                var p = phases[i];
+                table[i] = new PhaseProperties
+                {
+                    RestDensity = p.RestDensity,
+                    Viscosity = p.Viscosity,
+                    ParticleMass = p.ParticleMass > 0f ? p.ParticleMass : (float)(p.RestDensity / delta0),
+                    SurfaceTension = p.SurfaceTension,
+                    Color = p.Color,
+                    FresnelF0 = p.FresnelF0,
+                    Absorption = p.Absorption,
+                };
+            }
+            return table;
+        }
+
+        /// <summary>Every refused value of the scene; empty when it can be simulated.</summary>
+        public IReadOnlyList<ValidationError> Validate()
+        {
+            var errors = new List<ValidationError>();
+            if (Settings == null)
+            {
+                errors.Add(new ValidationError("Settings", "FluidScene: Settings must be set (was null)"));
+                return errors;
+            }
+            Settings.Validate(errors, "Settings.");
+            bool settingsOk = errors.Count == 0;
+
+            ValidateContainer(errors);
+            ValidateBoxes(errors, settingsOk);
+            ValidateObstacles(errors);
+            return errors;
+        }
+
+        void ValidateContainer(List<ValidationError> errors)
+        {
+            const string owner = "Container";
+            if (Container == null)
+            {
+                errors.Add(new ValidationError("Container", "FluidScene: Container must be set (was null)"));
+                return;
+            }
+            ValidationRules.Finite(errors, owner, "Container.", nameof(ContainerDescription.Position), Container.Position, 1e6f, "m");
+            ValidationRules.Rotation(errors, owner, "Container.", nameof(ContainerDescription.Rotation), Container.Rotation);
+            float minSize = Settings.ParticleSpacing > 0 ? 2f * Settings.ParticleSpacing : 0f;
+            var size = Container.Size;
+            if (!(ValidationRules.IsFinite(size.X) && ValidationRules.IsFinite(size.Y) && ValidationRules.IsFinite(size.Z))
+                || size.X < minSize || size.Y < minSize || size.Z < minSize || size.X > 1000f || size.Y > 1000f || size.Z > 1000f)
+            {
+                errors.Add(new ValidationError("Container.Size",
+                    $"Container: each Size component must be in [{ValidationRules.Format(minSize)}, 1000] m (two particle spacings or more) (was {ValidationRules.Format(size)})"));
+            }
+            ValidationRules.Finite(errors, owner, "Container.", nameof(ContainerDescription.Velocity), Container.Velocity, 1000f, "m/s");
+            ValidationRules.Finite(errors, owner, "Container.", nameof(ContainerDescription.AngularVelocity), Container.AngularVelocity, 1000f, "rad/s");
+        }
+
+        void ValidateBoxes(List<ValidationError> errors, bool settingsOk)
+        {
+            if (SpawnBoxes == null || SpawnBoxes.Count == 0)
+            {
+                errors.Add(new ValidationError("SpawnBoxes", "FluidScene: SpawnBoxes must hold at least one box (was 0)"));
+                return;
+            }
+            var firstOfPhase = new Dictionary<string, SpawnBoxDescription>();
+            long total = 0;
+            for (int b = 0; b < SpawnBoxes.Count; b++)
+            {
+                var box = SpawnBoxes[b];
+                string path = $"SpawnBoxes[{b}].";
+                if (box == null)
+                {
+                    errors.Add(new ValidationError($"SpawnBoxes[{b}]", $"FluidScene: SpawnBoxes[{b}] must be set (was null)"));
+                    continue;
+                }
+                string owner = $"SpawnBox '{box.Name}'";
+                int before = errors.Count;
+                ValidatePhase(errors, owner, path + "Phase.", box.Phase);
+                if (box.Phase != null && !string.IsNullOrEmpty(box.Phase.Name))
+                {
+                    if (firstOfPhase.TryGetValue(box.Phase.Name, out var first))
+                    {
+                        if (!first.Phase.SameDefinition(box.Phase))
+                            errors.Add(new ValidationError(path + "Phase",
+                                $"{owner}: phase '{box.Phase.Name}' is defined differently in SpawnBox '{first.Name}' ({first.Phase}) and SpawnBox '{box.Name}' ({box.Phase}); boxes of one phase must agree"));
+                    }
+                    else firstOfPhase.Add(box.Phase.Name, box);
+                }
+                ValidationRules.Finite(errors, owner, path, nameof(SpawnBoxDescription.Center), box.Center, 1e6f, "m");
+                ValidationRules.Rotation(errors, owner, path, nameof(SpawnBoxDescription.Rotation), box.Rotation);
+                ValidationRules.Finite(errors, owner, path, nameof(SpawnBoxDescription.InitialVelocity), box.InitialVelocity, 1000f, "m/s");
+                ValidationRules.InRange(errors, owner, path, nameof(SpawnBoxDescription.Jitter), box.Jitter, 0f, SpawnBoxDescription.MaxJitter, "particle spacings");
+                if (!settingsOk) continue;
+
+                float s = Settings.ParticleSpacing;
+                var size = box.Size;
+                bool sizeOk = ValidationRules.IsFinite(size.X) && ValidationRules.IsFinite(size.Y) && ValidationRules.IsFinite(size.Z)
+                    && size.X >= s && size.Y >= s && size.Z >= s && size.X <= 1000f && size.Y <= 1000f && size.Z <= 1000f;
+                if (!sizeOk)
+                {
+                    errors.Add(new ValidationError(path + "Size",
+                        $"{owner}: each Size component must be in [{ValidationRules.Format(s)}, 1000] m (one particle spacing or more) (was {ValidationRules.Format(size)})"));
+                    continue;
+                }
+                total += SpawnLayout.Count(Settings, box);
+                if (Container != null && errors.Count == before && !BoxInsideContainer(box, out Vector3 corner))
+                {
+                    errors.Add(new ValidationError(path + "Center",
+                        $"{owner}: the box must lie inside the container (centre {ValidationRules.Format(Container.Position)}, size {ValidationRules.Format(Container.Size)} m); its corner {ValidationRules.Format(corner)} is outside"));
+                }
+            }
+            if (firstOfPhase.Count > MaxPhases)
+                errors.Add(new ValidationError("SpawnBoxes", $"FluidScene: the number of phases must be in [1, {MaxPhases}] (was {firstOfPhase.Count})"));
+            if (settingsOk && total > Settings.MaxParticles)
+                errors.Add(new ValidationError("Settings.MaxParticles",
+                    $"FluidScene: the spawn boxes hold {total} particles; the total must be in [1, {Settings.MaxParticles}] (Settings.MaxParticles)"));
+        }
+
+        static void ValidatePhase(List<ValidationError> errors, string owner, string path, PhaseDescription phase)
+        {
+            if (phase == null)
+            {
+                errors.Add(new ValidationError(path.TrimEnd('.'), $"{owner}: Phase must be set (was null)"));
+                return;
+            }
+            if (string.IsNullOrEmpty(phase.Name))
+                errors.Add(new ValidationError(path + "Name", $"{owner}: phase Name must be non-empty (was empty)"));
+            ValidationRules.InRange(errors, owner, path, nameof(PhaseDescription.RestDensity), phase.RestDensity,
+                PhaseDescription.MinRestDensity, PhaseDescription.MaxRestDensity, "kg/m^3");
+            ValidationRules.InRange(errors, owner, path, nameof(PhaseDescription.Viscosity), phase.Viscosity, 0f, PhaseDescription.MaxViscosity, "Pa s");
+            ValidationRules.InRange(errors, owner, path, nameof(PhaseDescription.ParticleMass), phase.ParticleMass, 0f, 1e6f, "kg (0 = derived)");
+            ValidationRules.InRange(errors, owner, path, nameof(PhaseDescription.SurfaceTension), phase.SurfaceTension, 0f, PhaseDescription.MaxSurfaceTension, "N/m");
+            ValidationRules.InRange(errors, owner, path, nameof(PhaseDescription.FresnelF0), phase.FresnelF0, 0f, 1f, "");
+            ValidationRules.InRange(errors, owner, path, nameof(PhaseDescription.Absorption), phase.Absorption, 0f, PhaseDescription.MaxAbsorption, "1/m");
+        }
+
+        void ValidateObstacles(List<ValidationError> errors)
+        {
+            if (Obstacles == null) return;
+            if (Obstacles.Count > MaxObstacles)
+                errors.Add(new ValidationError("Obstacles", $"FluidScene: the number of obstacles must be in [0, {MaxObstacles}] (was {Obstacles.Count})"));
+            for (int i = 0; i < Obstacles.Count; i++)
+            {
+                var o = Obstacles[i];
+                string path = $"Obstacles[{i}].";
+                if (o == null)
+                {
+                    errors.Add(new ValidationError($"Obstacles[{i}]", $"FluidScene: Obstacles[{i}] must be set (was null)"));
+                    continue;
+                }
+                string owner = $"Sphere '{o.Name}'";
+                ValidationRules.Finite(errors, owner, path, nameof(SphereObstacleDescription.Center), o.Center, 1e6f, "m");
+                ValidationRules.Positive(errors, owner, path, nameof(SphereObstacleDescription.Radius), o.Radius, 1000f, "m");
+                ValidationRules.Finite(errors, owner, path, nameof(SphereObstacleDescription.Velocity), o.Velocity, 1000f, "m/s");
+            }
+        }
+
+        bool BoxInsideContainer(SpawnBoxDescription box, out Vector3 outsideCorner)
+        {
+            var half = box.Size * 0.5f;
+            var containerHalf = Container.Size * 0.5f;
+            float tolerance = 1e-4f * Settings.ParticleSpacing + 1e-6f;
+            var rotation = Quaternion.Normalize(box.Rotation);
+            for (int c = 0; c < 8; c++)
+            {
+                var local = new Vector3((c & 1) != 0 ? half.X : -half.X, (c & 2) != 0 ? half.Y : -half.Y, (c & 4) != 0 ? half.Z : -half.Z);
+                var world = box.Center + Vector3.Transform(local, rotation);
+                var q = Container.ToLocal(world);
+                if (Math.Abs(q.X) > containerHalf.X + tolerance || Math.Abs(q.Y) > containerHalf.Y + tolerance
+                    || Math.Abs(q.Z) > containerHalf.Z + tolerance)
+                {
+                    outsideCorner = world;
+                    return false;
+                }
+            }
+            outsideCorner = default;
+            return true;
+        }
+
+        /// <summary>Throws <see cref="ArgumentException"/> listing every validation message, if any.</summary>
+        public void ThrowIfInvalid()
+        {
+            var errors = Validate();
+            if (errors.Count == 0) return;
+            var lines = new string[errors.Count];
+            for (int i = 0; i < errors.Count; i++) lines[i] = errors[i].Message;
+            throw new ArgumentException("The fluid scene is invalid:\n  " + string.Join("\n  ", lines));
+        }
+    }
+}

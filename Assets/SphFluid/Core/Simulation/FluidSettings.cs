@@ -1,0 +1,85 @@
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace SphFluid.Simulation
+{
+    /// <summary>
+    /// Solver settings of one fluid (the SPH component's inspector). Defaults suit a tank of about
+    /// 0.5 m: spacing 2 cm, support 2 spacings, a speed of sound of about 20 m/s (ten times the speed
+    /// of a 0.2 m dam break) and a boundary penalty stiff enough to hold a 0.5 m column.
+    /// </summary>
+    public sealed class FluidSettings
+    {
+        public const float MinSupportRatio = 1.5f, MaxSupportRatio = 3f;
+
+        /// <summary>Lattice spacing s of spawned particles, m, in [0.001, 1].</summary>
+        public float ParticleSpacing { get; set; } = 0.02f;
+
+        /// <summary>Kernel support radius h (= grid cell size), m; h / s must be in [1.5, 3].</summary>
+        public float SmoothingRadius { get; set; } = 0.04f;
+
+        /// <summary>Tait stiffness k, Pa, in [1, 1e9]; speed of sound c = sqrt(k gamma / rho0).</summary>
+        public float Stiffness { get; set; } = 50000f;
+
+        /// <summary>Tait exponent gamma, in [1, 10].</summary>
+        public float Gamma { get; set; } = 7f;
+
+        /// <summary>Gravitational acceleration, m/s^2 (|g| up to 1000).</summary>
+        public Vector3 Gravity { get; set; } = new Vector3(0f, -9.81f, 0f);
+
+        /// <summary>XSPH velocity smoothing epsilon, in [0, 1]; 0 turns the pass off.</summary>
+        public float XsphEpsilon { get; set; } = 0.05f;
+
+        /// <summary>Wall penalty stiffness kb, 1/s^2 (acceleration per metre of penetration), in [0, 1e8].</summary>
+        public float BoundaryStiffness { get; set; } = 20000f;
+
+        /// <summary>Wall penalty damping cb, 1/s, on the outward normal velocity, in [0, 1e5].</summary>
+        public float BoundaryDamping { get; set; } = 100f;
+
+        /// <summary>Global velocity damping, 1/s, in [0, 1000]; 0 = none.</summary>
+        public float VelocityDamping { get; set; }
+
+        /// <summary>Courant number of the CFL condition, in (0, 1].</summary>
+        public float CflNumber { get; set; } = 0.4f;
+
+        /// <summary>Most sub-steps per frame, in [1, 1000]; beyond it the simulation runs slower than real time.</summary>
+        public int MaxSubsteps { get; set; } = 32;
+
+        /// <summary>Largest sub-step, s, in (0, 0.1].</summary>
+        public float MaxTimeStep { get; set; } = 0.005f;
+
+        /// <summary>Most particles the scene may spawn, in [1, 16777216].</summary>
+        public int MaxParticles { get; set; } = 262144;
+
+        public FluidSettings Clone() => (FluidSettings)MemberwiseClone();
+
+        public IReadOnlyList<ValidationError> Validate()
+        {
+            var errors = new List<ValidationError>();
+            Validate(errors, "Settings.");
+            return errors;
+        }
+
+        internal void Validate(List<ValidationError> errors, string path)
+        {
+            const string owner = "FluidSettings";
+            bool spacingOk = ValidationRules.InRange(errors, owner, path, nameof(ParticleSpacing), ParticleSpacing, 0.001f, 1f, "m");
+            if (spacingOk)
+            {
+                ValidationRules.InRange(errors, owner, path, nameof(SmoothingRadius), SmoothingRadius,
+                    MinSupportRatio * ParticleSpacing, MaxSupportRatio * ParticleSpacing, "m (1.5 to 3 particle spacings)");
+            }
+            ValidationRules.InRange(errors, owner, path, nameof(Stiffness), Stiffness, 1f, 1e9f, "Pa");
+            ValidationRules.InRange(errors, owner, path, nameof(Gamma), Gamma, 1f, 10f, "");
+            ValidationRules.Finite(errors, owner, path, nameof(Gravity), Gravity, 1000f, "m/s^2");
+            ValidationRules.InRange(errors, owner, path, nameof(XsphEpsilon), XsphEpsilon, 0f, 1f, "");
+            ValidationRules.InRange(errors, owner, path, nameof(BoundaryStiffness), BoundaryStiffness, 0f, 1e8f, "1/s^2");
+            ValidationRules.InRange(errors, owner, path, nameof(BoundaryDamping), BoundaryDamping, 0f, 1e5f, "1/s");
+            ValidationRules.InRange(errors, owner, path, nameof(VelocityDamping), VelocityDamping, 0f, 1000f, "1/s");
+            ValidationRules.Positive(errors, owner, path, nameof(CflNumber), CflNumber, 1f, "");
+            ValidationRules.InRange(errors, owner, path, nameof(MaxSubsteps), MaxSubsteps, 1, 1000, "");
+            ValidationRules.Positive(errors, owner, path, nameof(MaxTimeStep), MaxTimeStep, 0.1f, "s");
+            ValidationRules.InRange(errors, owner, path, nameof(MaxParticles), MaxParticles, 1, 16777216, "");
+        }
+    }
+}

@@ -1,0 +1,28 @@
+namespace SphFluid.Simulation
+{
+    /// <summary>Names of the pipeline's passes: the GPU timing ranges (BeginSample) and the plan's pass list.</summary>
+    public static class PassNames
+    {
+        public const string UploadContainer = "UploadContainer";
+        public const string HalfStep = "HalfStep";
+        public const string Sort = "Sort";
+        public const string DensityPressure = "DensityPressure";
+        public const string Normals = "Normals";
+        public const string Forces = "Forces";
+        public const string ObstacleForces = "ObstacleForces";
+        public const string FullStep = "FullStep";
+        public const string MotionReduction = "MotionReduction";
+        public const string Diagnostics = "Diagnostics";
+    }
+
+    /// <summary>The <c>multi_compile_local</c> keywords of FluidSolver.compute.</summary>
+    public static class SolverKeywords
+    {
+        public const string Multiphase = "MULTIPHASE";
+        public const string SurfaceTension = "SURFACE_TENSION";
+        public const string Xsph = "XSPH";
+        public const string Obstacles = "OBSTACLES";
+
+        public static readonly string[] All = { Multiphase, SurfaceTension, Xsph, Obstacles };
+    }
+}

@@ -1,0 +1,89 @@
+using System.Collections.Generic;
+using System.Text;
+
+namespace SphFluid.Simulation
+{
+    /// <summary>
+    /// Which effects a scene needs, hence which keyword variants and passes run: the planner's answer,
+    /// a value tests inspect and the headless runner prints.
+    /// </summary>
+    public sealed class SimulationPlan
+    {
+        public int PhaseCount { get; }
+        public int ObstacleCount { get; }
+
+        /// <summary>More than one phase: per-neighbour phase lookups and viscosity mixing (MULTIPHASE).</summary>
+        public bool Multiphase { get; }
+
+        /// <summary>Some phase has SurfaceTension &gt; 0: normals pass and cohesion/curvature (SURFACE_TENSION).</summary>
+        public bool SurfaceTension { get; }
+
+        /// <summary>XsphEpsilon &gt; 0: XSPH velocity correction in the force pass (XSPH).</summary>
+        public bool Xsph { get; }
+
+        /// <summary>At least one sphere obstacle: obstacle force pass and obstacle clamp (OBSTACLES).</summary>
+        public bool Obstacles { get; }
+
+        /// <summary>VelocityDamping &gt; 0.</summary>
+        public bool Damping { get; }
+
+        /// <summary>The container moved since the last frame: its transform is uploaded again.</summary>
+        public bool UploadContainerTransform { get; }
+
+        /// <summary>Enabled keywords of FluidSolver.compute (a subset of <see cref="SolverKeywords.All"/>).</summary>
+        public IReadOnlyList<string> Keywords { get; }
+
+        /// <summary>The passes of one sub-step, in dispatch order (<see cref="PassNames"/>).</summary>
+        public IReadOnlyList<string> SubstepPasses { get; }
+
+        /// <summary>The passes run once per frame, in order (before and after the sub-steps).</summary>
+        public IReadOnlyList<string> FramePasses { get; }
+
+        public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform)
+        {
+            PhaseCount = phaseCount;
+            ObstacleCount = obstacleCount;
+            Multiphase = phaseCount > 1;
+            SurfaceTension = surfaceTension;
+            Xsph = xsph;
+            Obstacles = obstacleCount > 0;
+            Damping = damping;
+            UploadContainerTransform = uploadContainerTransform;
+
+            var keywords = new List<string>();
+            if (Multiphase) keywords.Add(SolverKeywords.Multiphase);
+            if (SurfaceTension) keywords.Add(SolverKeywords.SurfaceTension);
+            if (Xsph) keywords.Add(SolverKeywords.Xsph);
+            if (Obstacles) keywords.Add(SolverKeywords.Obstacles);
+            Keywords = keywords;
+
+            var passes = new List<string> { PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure };
+            if (SurfaceTension) passes.Add(PassNames.Normals);
+            passes.Add(PassNames.Forces);
+            if (Obstacles) passes.Add(PassNames.ObstacleForces);
+            passes.Add(PassNames.FullStep);
+            SubstepPasses = passes;
+
+            var frame = new List<string>();
+            if (UploadContainerTransform) frame.Add(PassNames.UploadContainer);
+            frame.Add(PassNames.MotionReduction);
+            FramePasses = frame;
+        }
+
+        public bool IsKeywordEnabled(string keyword) => ((List<string>)Keywords).Contains(keyword);
+
+        public bool Runs(string pass) => ((List<string>)SubstepPasses).Contains(pass) || ((List<string>)FramePasses).Contains(pass);
+
+        public override string ToString()
+        {
+            var b = new StringBuilder();
+            b.Append("plan: ").Append(PhaseCount).Append(PhaseCount == 1 ? " phase, " : " phases, ")
+             .Append(ObstacleCount).Append(ObstacleCount == 1 ? " obstacle" : " obstacles");
+            b.Append(" | variants: ").Append(Keywords.Count == 0 ? "(none)" : string.Join(" ", Keywords));
+            b.Append(" | sub-step: ").Append(string.Join(" > ", SubstepPasses));
+            b.Append(" | damping: ").Append(Damping ? "on" : "off");
+            b.Append(" | container transform: ").Append(UploadContainerTransform ? "upload" : "unchanged");
+            return b.ToString();
+        }
+    }
+}

@@ -1,0 +1,32 @@
+using System.Numerics;
+
+namespace SphFluid.Simulation
+{
+    /// <summary>A solid sphere that pushes fluid out of itself with its velocity.</summary>
+    public sealed class SphereObstacleDescription
+    {
+        public string Name { get; set; } = "Sphere";
+
+        /// <summary>World-space centre, m.</summary>
+        public Vector3 Center { get; set; }
+
+        /// <summary>Radius, m (> 0).</summary>
+        public float Radius { get; set; } = 0.05f;
+
+        /// <summary>World-space velocity, m/s.</summary>
+        public Vector3 Velocity { get; set; }
+
+        public SphereObstacleDescription() { }
+
+        public SphereObstacleDescription(Vector3 center, float radius, Vector3 velocity)
+        {
+            Center = center;
+            Radius = radius;
+            Velocity = velocity;
+        }
+
+        public SphereObstacleDescription Clone() => (SphereObstacleDescription)MemberwiseClone();
+
+        public override string ToString() => $"Sphere '{Name}' at {Center} r {Radius}";
+    }
+}

@@ -1,0 +1,113 @@
+using System;
+
+namespace SphFluid.Simulation
+{
+    /// <summary>
+    /// Adaptive time stepping, engine-free. The stable step is
+    /// dt = min(cfl h / (c + vmax), 0.25 sqrt(h / amax), 0.125 h^2 / nu_max, MaxTimeStep)
+    /// (CFL with the Tait speed of sound c = sqrt(k gamma / rho0_min); acceleration condition; viscous
+    /// condition, Monaghan 1992 / Becker &amp; Teschner 2007). vmax and amax come from the GPU's max-reduction,
+    /// read back asynchronously and possibly a frame stale, so the controller uses the larger of the last two
+    /// reports. A frame of length T is covered by n = ceil(T / dt) sub-steps of T / n, capped at MaxSubsteps
+    /// (then each sub-step is dt and the simulation runs slower than real time).
+    /// </summary>
+    public sealed class TimeStepController
+    {
+        readonly FluidSettings _settings;
+        float _reportedSpeed, _previousSpeed, _reportedAcceleration, _previousAcceleration;
+
+        /// <summary>Speed of sound c = sqrt(k gamma / rho0_min), m/s.</summary>
+        public float SpeedOfSound { get; }
+
+        /// <summary>Largest kinematic viscosity nu = mu / rho0 over the phases, m^2/s.</summary>
+        public float MaxKinematicViscosity { get; }
+
+        /// <summary>The speed the next frame plans with (max of the last two reports), m/s.</summary>
+        public float MaxSpeed => Math.Max(_reportedSpeed, _previousSpeed);
+
+        /// <summary>The acceleration the next frame plans with (max of the last two reports), m/s^2.</summary>
+        public float MaxAcceleration => Math.Max(_reportedAcceleration, _previousAcceleration);
+
+        public TimeStepController(FluidSettings settings, float minRestDensity, float maxKinematicViscosity)
+        {
+            _settings = settings ?? throw new ArgumentNullException(nameof(settings));
+            SpeedOfSound = (float)Math.Sqrt(settings.Stiffness * settings.Gamma / Math.Max(minRestDensity, 1e-6f));
+            MaxKinematicViscosity = Math.Max(0f, maxKinematicViscosity);
+            Reset();
+        }
+
+        public static TimeStepController ForScene(FluidSceneDescription scene)
+        {
+            float minRho = float.MaxValue, maxNu = 0f;
+            foreach (var phase in scene.Phases())
+            {
+                minRho = Math.Min(minRho, phase.RestDensity);
+                maxNu = Math.Max(maxNu, phase.Viscosity / phase.RestDensity);
+            }
+            if (minRho == float.MaxValue) minRho = 1000f;
+            var controller = new TimeStepController(scene.Settings, minRho, maxNu);
+            float speed = 0f;
+            foreach (var box in scene.SpawnBoxes) speed = Math.Max(speed, box.InitialVelocity.Length());
+            controller.ReportMotion(speed, scene.Settings.Gravity.Length());
+            return controller;
+        }
+
+        /// <summary>Forgets measured motion: plans as for fluid at rest under gravity.</summary>
+        public void Reset()
+        {
+            float g = _settings.Gravity.Length();
+            _reportedSpeed = _previousSpeed = 0f;
+            _reportedAcceleration = _previousAcceleration = g;
+        }
+
+        /// <summary>Feeds the GPU's max speed (m/s) and max acceleration (m/s^2) of a recent step.
+        /// Non-finite values (a broken simulation) are ignored rather than collapsing dt to zero.</summary>
+        public void ReportMotion(float maxSpeed, float maxAcceleration)
+        {
+            if (!ValidationRules.IsFinite(maxSpeed) || !ValidationRules.IsFinite(maxAcceleration)) return;
+            _previousSpeed = _reportedSpeed;
+            _previousAcceleration = _reportedAcceleration;
+            _reportedSpeed = Math.Max(0f, maxSpeed);
+            _reportedAcceleration = Math.Max(0f, maxAcceleration);
+        }
+
+        /// <summary>The largest stable sub-step for the motion last reported, s, and the condition that set it.</summary>
+        public float StableTimeStep(out string limit)
+        {
+            double h = _settings.SmoothingRadius;
+            double dt = _settings.MaxTimeStep;
+            limit = "max";
+            double cfl = _settings.CflNumber * h / (SpeedOfSound + MaxSpeed);
+            if (cfl < dt) { dt = cfl; limit = "cfl"; }
+            if (MaxAcceleration > 0f)
+            {
+                double acc = 0.25 * Math.Sqrt(h / MaxAcceleration);
+                if (acc < dt) { dt = acc; limit = "acceleration"; }
+            }
+            if (MaxKinematicViscosity > 0f)
+            {
+                double visc = 0.125 * h * h / MaxKinematicViscosity;
+                if (visc < dt) { dt = visc; limit = "viscous"; }
+            }
+            return (float)dt;
+        }
+
+        public float StableTimeStep() => StableTimeStep(out _);
+
+        /// <summary>Sub-steps covering a frame of <paramref name="frameSeconds"/>.</summary>
+        public StepReport PlanFrame(float frameSeconds)
+        {
+            float dt = StableTimeStep(out string limit);
+            if (!(frameSeconds > 0f) || float.IsInfinity(frameSeconds)) return new StepReport(0, 0f, 0f, false, dt, limit);
+            double needed = Math.Ceiling(frameSeconds / (double)dt - 1e-6);
+            int n = (int)Math.Max(1.0, Math.Min(needed, int.MaxValue));
+            if (n > _settings.MaxSubsteps)
+            {
+                n = _settings.MaxSubsteps;
+                return new StepReport(n, dt, n * dt, true, dt, limit);
+            }
+            float step = frameSeconds / n;
+            return new StepReport(n, step, frameSeconds, false, dt, limit);
+        }
+    }
+}
