@@ -1,0 +1,176 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.IO;
+using System.Linq;
+using System.Security.Cryptography;
+using System.Text;
+using System.Text.RegularExpressions;
+using System.Threading;
+using SphFluid.Compute;
+
+namespace SphFluid.Vulkan;
+
+/// <summary>
+/// Turns one kernel variant of a <c>.compute</c> file into validated SPIR-V with glslang's HLSL front
+/// end, and keeps the result on disk under a hash of everything that can change it (source, includes,
+/// kernel, defines, tool binaries), so a rerun never recompiles.
+/// </summary>
+public sealed class ShaderCompiler
+{
+    const string CacheFormat = "sphfluid-spirv-1";
+    int _compileCount;
+    readonly string _glslang;
+    readonly string _spirvVal;
+    readonly Lazy<string> _toolFingerprint;
+
+    /// <summary>Where compiled variants live: SPHFLUID_SHADER_CACHE, else $XDG_CACHE_HOME/sphfluid-spirv, else ~/.cache/sphfluid-spirv.</summary>
+    public string CacheDirectory { get; }
+
+    /// <summary>How many times glslang has run in this process (cache misses).</summary>
+    public int CompileCount => Volatile.Read(ref _compileCount);
+
+    public ShaderCompiler(string cacheDirectory = null)
+    {
+        CacheDirectory = cacheDirectory ?? DefaultCacheDirectory();
+        _glslang = FindTool("glslangValidator", "glslang-tools");
+        _spirvVal = FindTool("spirv-val", "spirv-tools");
+        _toolFingerprint = new Lazy<string>(() => Fingerprint(_glslang) + "|" + Fingerprint(_spirvVal));
+    }
+
+    public static string DefaultCacheDirectory()
+    {
+        string env = Environment.GetEnvironmentVariable("SPHFLUID_SHADER_CACHE");
+        if (!string.IsNullOrEmpty(env)) return env;
+        string xdg = Environment.GetEnvironmentVariable("XDG_CACHE_HOME");
+        if (!string.IsNullOrEmpty(xdg)) return Path.Combine(xdg, "sphfluid-spirv");
+        return Path.Combine(Environment.GetFolderPath(Environment.SpecialFolder.UserProfile), ".cache", "sphfluid-spirv");
+    }
+
+    static string FindTool(string name, string package)
+    {
+        foreach (var dir in (Environment.GetEnvironmentVariable("PATH") ?? "").Split(Path.PathSeparator))
+        {
+            if (dir.Length == 0) continue;
+            string candidate = Path.Combine(dir, name);
+            if (File.Exists(candidate)) return candidate;
+        }
+        return null;
+    }
+
+    static string Fingerprint(string tool)
+    {
+        if (tool == null) return "missing";
+        var info = new FileInfo(tool);
+        return $"{tool}:{info.Length}:{info.LastWriteTimeUtc.Ticks}";
+    }
+
+    static string[] Arguments(string kernel, IReadOnlyList<string> defines) =>
+        new[] { "-D", "-V", "--target-env", "vulkan1.1", "--auto-map-bindings", "-S", "comp", "-e", kernel }
+            .Concat(defines.Select(d => "-D" + (d.Contains('=') ? d : d + "=1"))).ToArray();
+
+    /// <summary>The cache key of a variant: every input that can change the SPIR-V.</summary>
+    public string Key(ComputeSource source, string kernel, IReadOnlyList<string> defines)
+    {
+        var sb = new StringBuilder();
+        sb.Append(CacheFormat).Append('\n').Append(_toolFingerprint.Value).Append('\n');
+        sb.Append(string.Join(" ", Arguments(kernel, defines))).Append('\n');
+        string root = Path.GetDirectoryName(source.Path);
+        foreach (var (path, text) in source.Files)
+            sb.Append(Path.GetRelativePath(root, path)).Append('\n').Append(text.Length).Append('\n').Append(text).Append('\n');
+        return Convert.ToHexString(SHA256.HashData(Encoding.UTF8.GetBytes(sb.ToString()))).ToLowerInvariant();
+    }
+
+    /// <summary>SPIR-V words of the variant, from the cache or freshly compiled and validated.</summary>
+    public uint[] Compile(ComputeSource source, string kernel, IReadOnlyList<string> defines, IReadOnlyList<string> includeDirs)
+    {
+        string key = Key(source, kernel, defines);
+        string cached = Path.Combine(CacheDirectory, key + ".spv");
+        if (File.Exists(cached))
+        {
+            try
+            {
+                var bytes = File.ReadAllBytes(cached);
+                if (bytes.Length >= 20 && bytes.Length % 4 == 0 && BitConverter.ToUInt32(bytes, 0) == 0x07230203)
+                    return ToWords(bytes);
+            }
+            catch (IOException) { }
+        }
+
+        if (_glslang == null) throw new ComputeException("glslangValidator was not found on PATH (Debian package glslang-tools); it compiles the .compute kernels");
+        if (_spirvVal == null) throw new ComputeException("spirv-val was not found on PATH (Debian package spirv-tools); it validates the compiled kernels");
+        Interlocked.Increment(ref _compileCount);
+        string tmpDir = Path.Combine(Path.GetTempPath(), "sphfluid-spirv-" + Environment.ProcessId);
+        Directory.CreateDirectory(tmpDir);
+        string output = Path.Combine(tmpDir, $"{key}.{Guid.NewGuid():N}.spv");
+        try
+        {
+            var args = Arguments(kernel, defines).ToList();
+            args.Add("-I" + Path.GetDirectoryName(source.Path));
+            args.AddRange(includeDirs.Select(d => "-I" + d));
+            args.Add(source.Path);
+            args.Add("-o");
+            args.Add(output);
+            var (code, text) = Run(_glslang, args);
+            if (code != 0 || !File.Exists(output))
+                throw new ComputeException(DescribeErrors(source, kernel, defines, text));
+            var (valCode, valText) = Run(_spirvVal, new[] { "--target-env", "vulkan1.1", output });
+            if (valCode != 0)
+                throw new ComputeException($"{source.Path}: kernel '{kernel}'{DefinesText(defines)} compiled to invalid SPIR-V (spirv-val): {valText.Trim()}");
+            var bytes = File.ReadAllBytes(output);
+            try
+            {
+                Directory.CreateDirectory(CacheDirectory);
+                string staging = cached + "." + Guid.NewGuid().ToString("N") + ".tmp";
+                File.WriteAllBytes(staging, bytes);
+                File.Move(staging, cached, overwrite: true);
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                // A read-only cache only costs time.
+            }
+            return ToWords(bytes);
+        }
+        finally
+        {
+            try { File.Delete(output); } catch (IOException) { }
+        }
+    }
+
+    static string DefinesText(IReadOnlyList<string> defines) => defines.Count == 0 ? "" : $" [{string.Join(" ", defines)}]";
+
+    static readonly Regex ErrorLine = new(@"^(?:ERROR|WARNING):\s*(.+?):(\d+):\s*(.*)$", RegexOptions.Multiline);
+
+    /// <summary>glslang's errors as <c>file:line: message</c>, the file path first so an editor can jump to it.</summary>
+    static string DescribeErrors(ComputeSource source, string kernel, IReadOnlyList<string> defines, string output)
+    {
+        var lines = new List<string>();
+        foreach (Match m in ErrorLine.Matches(output))
+        {
+            if (!m.Value.StartsWith("ERROR", StringComparison.Ordinal)) continue;
+            string file = m.Groups[1].Value.Trim();
+            lines.Add($"{file}:{m.Groups[2].Value}: {m.Groups[3].Value.Trim()}");
+        }
+        if (lines.Count == 0)
+            lines.AddRange(output.Split('\n').Select(l => l.Trim()).Where(l => l.Length > 0 && l != source.Path && !l.EndsWith("No code generated.", StringComparison.Ordinal)));
+        return $"HLSL compile error in {source.Path}, kernel '{kernel}'{DefinesText(defines)}:\n  " + string.Join("\n  ", lines);
+    }
+
+    static (int code, string output) Run(string exe, IEnumerable<string> args)
+    {
+        var psi = new ProcessStartInfo(exe) { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
+        foreach (var a in args) psi.ArgumentList.Add(a);
+        using var p = Process.Start(psi);
+        var stderr = p.StandardError.ReadToEndAsync();
+        string stdout = p.StandardOutput.ReadToEnd();
+        p.WaitForExit();
+        return (p.ExitCode, stdout + stderr.Result);
+    }
+
+    static uint[] ToWords(byte[] bytes)
+    {
+        var words = new uint[bytes.Length / 4];
+        Buffer.BlockCopy(bytes, 0, words, 0, words.Length * 4);
+        return words;
+    }
+}

@@ -1,0 +1,231 @@
+using System;
+using System.Collections.Generic;
+using System.Text;
+
+namespace SphFluid.Vulkan;
+
+/// <summary>Kind of a resource a kernel binds.</summary>
+public enum SpirvResourceKind { StorageBuffer, UniformBuffer }
+
+/// <summary>One descriptor a kernel declares, by the HLSL name of the variable.</summary>
+public sealed record SpirvResource(string Name, SpirvResourceKind Kind, uint Set, uint Binding, int ArrayStride, bool ReadOnly);
+
+/// <summary>One member of the <c>$Global</c> uniform block: where HLSL reads it and how it is shaped.</summary>
+/// <param name="Columns">SPIR-V columns of a matrix (HLSL rows); 0 for scalars and vectors.</param>
+/// <param name="Components">Components of a vector (or of each SPIR-V column of a matrix); 1 for scalars.</param>
+public sealed record SpirvGlobal(string Name, int Offset, int Size, int Components, int Columns, int MatrixStride, bool RowMajor, int ArrayLength, int ArrayStride);
+
+/// <summary>A uniform block (<c>$Global</c>, or a named <c>cbuffer</c>) and its members by name.</summary>
+public sealed record SpirvUniformBlock(SpirvResource Resource, int Size, IReadOnlyDictionary<string, SpirvGlobal> Members);
+
+/// <summary>
+/// What the host must know about one compiled kernel, read straight from the SPIR-V decorations
+/// (names, bindings, block offsets, strides, local size). Reading the words ourselves avoids a
+/// spirv-cross process per variant and sees exactly what the driver will see.
+/// </summary>
+public sealed class SpirvReflection
+{
+    public string EntryPoint { get; private init; } = "";
+    public uint LocalSizeX { get; private init; } = 1;
+    public uint LocalSizeY { get; private init; } = 1;
+    public uint LocalSizeZ { get; private init; } = 1;
+    public IReadOnlyList<SpirvResource> Resources { get; private init; } = Array.Empty<SpirvResource>();
+    /// <summary>The <c>$Global</c> block's members by name; empty when the kernel reads no global.</summary>
+    public IReadOnlyDictionary<string, SpirvGlobal> Globals { get; private init; } = new Dictionary<string, SpirvGlobal>();
+    public int GlobalBlockSize { get; private init; }
+    public SpirvResource GlobalBlock { get; private init; }
+    /// <summary>Every uniform block, <c>$Global</c> included; globals set by name may live in any of them.</summary>
+    public IReadOnlyList<SpirvUniformBlock> UniformBlocks { get; private init; } = Array.Empty<SpirvUniformBlock>();
+
+    const uint Magic = 0x07230203;
+
+    sealed class TypeInfo
+    {
+        public ushort Op;
+        public uint[] Operands = Array.Empty<uint>();
+    }
+
+    public static SpirvReflection Read(ReadOnlySpan<uint> words)
+    {
+        if (words.Length < 5 || words[0] != Magic) throw new FormatException("not a SPIR-V module (bad magic number)");
+
+        var names = new Dictionary<uint, string>();
+        var memberNames = new Dictionary<(uint, uint), string>();
+        var decorations = new Dictionary<(uint id, uint deco), uint>();
+        var memberDecorations = new Dictionary<(uint id, uint member, uint deco), uint>();
+        var types = new Dictionary<uint, TypeInfo>();
+        var constants = new Dictionary<uint, uint>();
+        var variables = new List<(uint type, uint id, uint storage)>();
+        string entry = "";
+        uint entryId = 0;
+        uint lx = 1, ly = 1, lz = 1;
+
+        for (int i = 5; i < words.Length;)
+        {
+            uint head = words[i];
+            int count = (int)(head >> 16);
+            ushort op = (ushort)(head & 0xFFFF);
+            if (count == 0 || i + count > words.Length) throw new FormatException($"truncated SPIR-V instruction at word {i}");
+            var ops = words.Slice(i + 1, count - 1);
+            switch (op)
+            {
+                case 5: names[ops[0]] = ReadString(ops.Slice(1)); break; // OpName
+                case 6: memberNames[(ops[0], ops[1])] = ReadString(ops.Slice(2)); break; // OpMemberName
+                case 15: // OpEntryPoint
+                    entryId = ops[1];
+                    entry = ReadString(ops.Slice(2));
+                    break;
+                case 16: // OpExecutionMode
+                    if (ops[1] == 17 && ops.Length >= 5) { lx = ops[2]; ly = ops[3]; lz = ops[4]; }
+                    break;
+                case 71: decorations[(ops[0], ops[1])] = ops.Length > 2 ? ops[2] : 1; break; // OpDecorate
+                case 72: memberDecorations[(ops[0], ops[1], ops[2])] = ops.Length > 3 ? ops[3] : 1; break; // OpMemberDecorate
+                case 21: case 22: case 23: case 24: case 28: case 29: case 30: case 32: // int float vector matrix array rtarray struct pointer
+                    types[ops[0]] = new TypeInfo { Op = op, Operands = ops.Slice(1).ToArray() };
+                    break;
+                case 43: // OpConstant
+                    if (ops.Length >= 3) constants[ops[1]] = ops[2];
+                    break;
+                case 59: variables.Add((ops[0], ops[1], ops[2])); break; // OpVariable
+            }
+            i += count;
+        }
+
+        const uint DecoBlock = 2, DecoBufferBlock = 3, DecoRowMajor = 4, DecoArrayStride = 6, DecoMatrixStride = 7,
+            DecoNonWritable = 24, DecoBinding = 33, DecoSet = 34, DecoOffset = 35;
+        const uint StorageUniform = 2, StorageStorageBuffer = 12;
+
+        var resources = new List<SpirvResource>();
+        var globals = new Dictionary<string, SpirvGlobal>();
+        var blocks = new List<SpirvUniformBlock>();
+        int globalSize = 0;
+        SpirvResource globalBlock = null;
+
+        int SizeOf(uint typeId, uint parent, uint member)
+        {
+            var t = types[typeId];
+            switch (t.Op)
+            {
+                case 21: case 22: return (int)t.Operands[0] / 8;
+                case 23: return (int)t.Operands[1] * SizeOf(t.Operands[0], 0, 0);
+                case 24:
+                {
+                    int columns = (int)t.Operands[1];
+                    int rows = (int)types[t.Operands[0]].Operands[1];
+                    int stride = memberDecorations.TryGetValue((parent, member, DecoMatrixStride), out uint ms) ? (int)ms : 16;
+                    bool rowMajor = memberDecorations.ContainsKey((parent, member, DecoRowMajor));
+                    return rowMajor ? (rows - 1) * stride + columns * 4 : (columns - 1) * stride + rows * 4;
+                }
+                case 28:
+                {
+                    int length = constants.TryGetValue(t.Operands[1], out uint n) ? (int)n : 1;
+                    int stride = decorations.TryGetValue((typeId, DecoArrayStride), out uint s) ? (int)s : SizeOf(t.Operands[0], parent, member);
+                    return length * stride;
+                }
+                case 29: return 0;
+                case 30:
+                {
+                    int size = 0;
+                    for (uint m = 0; m < t.Operands.Length; m++)
+                    {
+                        int off = memberDecorations.TryGetValue((typeId, m, DecoOffset), out uint o) ? (int)o : size;
+                        size = Math.Max(size, off + SizeOf(t.Operands[m], typeId, m));
+                    }
+                    return size;
+                }
+                default: return 4;
+            }
+        }
+
+        foreach (var (ptrType, id, storage) in variables)
+        {
+            if (storage != StorageUniform && storage != StorageStorageBuffer) continue;
+            if (!types.TryGetValue(ptrType, out var ptr) || ptr.Op != 32) continue;
+            uint blockType = ptr.Operands[1];
+            if (!types.TryGetValue(blockType, out var block) || block.Op != 30) continue;
+            uint set = decorations.TryGetValue((id, DecoSet), out uint s) ? s : 0;
+            uint binding = decorations.TryGetValue((id, DecoBinding), out uint b) ? b : 0;
+            string typeName = names.TryGetValue(blockType, out var tn) ? tn : "";
+            string varName = names.TryGetValue(id, out var vn) && vn.Length > 0 ? vn : typeName;
+
+            bool isSsbo = storage == StorageStorageBuffer || decorations.ContainsKey((blockType, DecoBufferBlock));
+            if (isSsbo)
+            {
+                // A structured buffer is a block whose one member is the runtime array of elements.
+                int stride = 0;
+                bool readOnly = block.Operands.Length > 0 && memberDecorations.ContainsKey((blockType, 0, DecoNonWritable));
+                if (block.Operands.Length > 0 && types.TryGetValue(block.Operands[^1], out var arr) && (arr.Op == 29 || arr.Op == 28))
+                    stride = decorations.TryGetValue((block.Operands[^1], DecoArrayStride), out uint st) ? (int)st : 0;
+                resources.Add(new SpirvResource(varName, SpirvResourceKind.StorageBuffer, set, binding, stride, readOnly));
+            }
+            else if (decorations.ContainsKey((blockType, DecoBlock)))
+            {
+                var res = new SpirvResource(typeName == "$Global" ? "$Global" : varName, SpirvResourceKind.UniformBuffer, set, binding, 0, true);
+                resources.Add(res);
+                var members = new Dictionary<string, SpirvGlobal>();
+                int blockSize = 0;
+                for (uint m = 0; m < block.Operands.Length; m++)
+                {
+                    if (!memberNames.TryGetValue((blockType, m), out var name)) continue;
+                    uint mt = block.Operands[m];
+                    int offset = memberDecorations.TryGetValue((blockType, m, DecoOffset), out uint o) ? (int)o : 0;
+                    int size = SizeOf(mt, blockType, m);
+                    int arrayLength = 0, arrayStride = 0;
+                    var t = types[mt];
+                    if (t.Op == 28)
+                    {
+                        arrayLength = constants.TryGetValue(t.Operands[1], out uint n) ? (int)n : 1;
+                        arrayStride = decorations.TryGetValue((mt, DecoArrayStride), out uint ast) ? (int)ast : 16;
+                        t = types[t.Operands[0]];
+                    }
+                    int components = 1, columns = 0, matrixStride = 0;
+                    bool rowMajor = false;
+                    if (t.Op == 23) components = (int)t.Operands[1];
+                    else if (t.Op == 24)
+                    {
+                        columns = (int)t.Operands[1];
+                        components = (int)types[t.Operands[0]].Operands[1];
+                        matrixStride = memberDecorations.TryGetValue((blockType, m, DecoMatrixStride), out uint ms) ? (int)ms : 16;
+                        rowMajor = memberDecorations.ContainsKey((blockType, m, DecoRowMajor));
+                    }
+                    members[name] = new SpirvGlobal(name, offset, size, components, columns, matrixStride, rowMajor, arrayLength, arrayStride);
+                    blockSize = Math.Max(blockSize, offset + size);
+                }
+                blockSize = (blockSize + 15) & ~15;
+                blocks.Add(new SpirvUniformBlock(res, blockSize, members));
+                if (typeName == "$Global")
+                {
+                    globalBlock = res;
+                    globalSize = blockSize;
+                    foreach (var kv in members) globals[kv.Key] = kv.Value;
+                }
+            }
+        }
+
+        return new SpirvReflection
+        {
+            EntryPoint = entry,
+            LocalSizeX = lx, LocalSizeY = ly, LocalSizeZ = lz,
+            Resources = resources,
+            Globals = globals,
+            GlobalBlockSize = globalSize,
+            UniformBlocks = blocks,
+            GlobalBlock = globalBlock,
+        };
+    }
+
+    static string ReadString(ReadOnlySpan<uint> words)
+    {
+        var bytes = new List<byte>(words.Length * 4);
+        foreach (uint w in words)
+        {
+            for (int k = 0; k < 4; k++)
+            {
+                byte c = (byte)(w >> (8 * k));
+                if (c == 0) return Encoding.UTF8.GetString(bytes.ToArray());
+                bytes.Add(c);
+            }
+        }
+        return Encoding.UTF8.GetString(bytes.ToArray());
+    }
+}

@@ -1,0 +1,489 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
+using System.Threading.Tasks;
+using Silk.NET.Core.Native;
+using Silk.NET.Vulkan;
+using SphFluid.Compute;
+using VkBuffer = Silk.NET.Vulkan.Buffer;
+using VkSemaphore = Silk.NET.Vulkan.Semaphore;
+
+namespace SphFluid.Vulkan;
+
+/// <summary>Vulkan could not be set up here (no loader, no driver, no compute-capable device).</summary>
+public sealed class VulkanUnavailableException : Exception
+{
+    public VulkanUnavailableException(string message, Exception inner = null) : base(message, inner) { }
+}
+
+/// <summary>
+/// The headless implementation of <see cref="IComputeDevice"/>: runs the project's own <c>.compute</c>
+/// kernels through Vulkan (lavapipe in CI, or a real GPU). Work is recorded like a Unity CommandBuffer
+/// into one Vulkan command buffer per <see cref="Submit"/>; every dispatch captures its own globals
+/// (in a host-visible uniform ring) and buffer bindings (in a per-submit descriptor pool), and is
+/// followed by a compute-to-compute memory barrier. Not thread-safe: use it from one thread.
+/// </summary>
+public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
+{
+    const int FrameCount = 2;
+    const uint QueriesPerPool = 4096;
+    const ulong UniformChunkSize = 1 << 20;
+    const uint SetsPerDescriptorPool = 1024;
+
+    readonly Vk _vk;
+    readonly VulkanComputeOptions _options;
+    Instance _instance;
+    PhysicalDevice _physical;
+    Device _device;
+    Queue _queue;
+    uint _queueFamily;
+    PhysicalDeviceLimits _limits;
+    PhysicalDeviceMemoryProperties _memory;
+    readonly bool _canTime;
+    readonly double _timestampPeriodNs;
+    readonly ulong _timestampMask;
+    bool _disposed;
+
+    readonly Frame[] _frames = new Frame[FrameCount];
+    int _nextFrame;
+    Frame _recording;
+    ulong _submittedSerial, _completedSerial;
+
+    CommandPool _immediatePool;
+    CommandBuffer _immediateCmd;
+    Fence _immediateFence;
+    VkBuffer _staging;
+    DeviceMemory _stagingMemory;
+    byte* _stagingMapped;
+    ulong _stagingSize;
+
+    readonly HashSet<VulkanBuffer> _liveBuffers = new();
+    readonly List<VulkanBuffer> _deferredRelease = new();
+    readonly Dictionary<string, KernelVariant> _variantCache = new(StringComparer.Ordinal);
+    readonly Dictionary<string, double> _sampleResults = new(StringComparer.Ordinal);
+    readonly Dictionary<string, ulong> _sampleSerial = new(StringComparer.Ordinal);
+    readonly Dictionary<string, uint> _openSamples = new(StringComparer.Ordinal);
+    IReadOnlyList<(string Kernel, double Milliseconds)> _lastDispatchTimings = Array.Empty<(string, double)>();
+    ulong _lastDispatchTimingsSerial;
+
+    /// <summary>Adapter name, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".</summary>
+    public string DeviceName { get; }
+    /// <summary>Vulkan device type: DiscreteGpu, IntegratedGpu, VirtualGpu, Cpu or Other.</summary>
+    public string DeviceType { get; }
+    /// <summary>Vulkan API version the device reports, e.g. "1.3.230".</summary>
+    public string ApiVersion { get; }
+    public ShaderCompiler Compiler { get; }
+    public IReadOnlyList<string> ShaderDirectories { get; }
+    public bool ValidationEnabled { get; }
+    /// <summary>Number of dispatches recorded since the device was created.</summary>
+    public long DispatchCount { get; private set; }
+    /// <summary>Number of Vulkan queue submissions (frames plus uploads/read-backs through staging).</summary>
+    public long SubmitCount { get; private set; }
+
+    public VulkanComputeDevice(VulkanComputeOptions options = null)
+    {
+        _options = options ?? new VulkanComputeOptions();
+        ShaderDirectories = _options.ShaderDirectories.Select(Path.GetFullPath).ToList();
+        Compiler = new ShaderCompiler(_options.ShaderCacheDirectory);
+        try
+        {
+            _vk = new Vk(Vk.CreateDefaultContext(new[] { "libvulkan.so.1", "libvulkan.so", "vulkan-1.dll", "libvulkan.1.dylib" }));
+        }
+        catch (Exception e)
+        {
+            throw new VulkanUnavailableException("The Vulkan loader (libvulkan.so.1, Debian package libvulkan1) could not be loaded", e);
+        }
+
+        try
+        {
+            ValidationEnabled = _options.Validation;
+            CreateInstance();
+            SelectPhysicalDevice(out var props, out var timestampBits);
+            DeviceName = SilkMarshal.PtrToString((nint)props.DeviceName);
+            DeviceType = props.DeviceType.ToString();
+            ApiVersion = $"{props.ApiVersion >> 22}.{(props.ApiVersion >> 12) & 0x3FF}.{props.ApiVersion & 0xFFF}";
+            _limits = props.Limits;
+            _vk.GetPhysicalDeviceMemoryProperties(_physical, out _memory);
+            _canTime = timestampBits > 0 && props.Limits.TimestampPeriod > 0;
+            _timestampPeriodNs = props.Limits.TimestampPeriod;
+            _timestampMask = timestampBits >= 64 ? ulong.MaxValue : (1UL << (int)timestampBits) - 1;
+            CreateDevice();
+            CreateImmediateContext();
+            for (int i = 0; i < FrameCount; i++) _frames[i] = CreateFrame();
+        }
+        catch
+        {
+            DestroyEverything();
+            throw;
+        }
+    }
+
+    // ---------------------------------------------------------------- setup
+
+    static readonly string ValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+    /// <summary>True when the Khronos validation layer is installed (package vulkan-validationlayers).</summary>
+    public static bool IsValidationLayerAvailable()
+    {
+        try
+        {
+            var vk = new Vk(Vk.CreateDefaultContext(new[] { "libvulkan.so.1", "libvulkan.so", "vulkan-1.dll" }));
+            uint count = 0;
+            vk.EnumerateInstanceLayerProperties(&count, null);
+            var layers = new LayerProperties[count];
+            fixed (LayerProperties* p = layers) vk.EnumerateInstanceLayerProperties(&count, p);
+            for (int i = 0; i < count; i++)
+                fixed (byte* n = layers[i].LayerName)
+                    if (SilkMarshal.PtrToString((nint)n) == ValidationLayer) return true;
+            return false;
+        }
+        catch (Exception)
+        {
+            return false;
+        }
+    }
+
+    void Check(Result r, string what)
+    {
+        if (r != Result.Success) throw new ComputeException($"Vulkan {what} failed: {r}");
+    }
+
+    void CreateInstance()
+    {
+        var appName = (byte*)SilkMarshal.StringToPtr("SphFluid");
+        var layerName = (byte*)SilkMarshal.StringToPtr(ValidationLayer);
+        var debugExt = (byte*)SilkMarshal.StringToPtr("VK_EXT_debug_utils");
+        try
+        {
+            var app = new ApplicationInfo
+            {
+                SType = StructureType.ApplicationInfo,
+                PApplicationName = appName,
+                PEngineName = appName,
+                ApiVersion = Vk.Version11,
+            };
+            var info = new InstanceCreateInfo { SType = StructureType.InstanceCreateInfo, PApplicationInfo = &app };
+            var messengerInfo = default(DebugUtilsMessengerCreateInfoEXT);
+            var features = stackalloc ValidationFeatureEnableEXT[1] { ValidationFeatureEnableEXT.SynchronizationValidationExt };
+            var validationFeatures = new ValidationFeaturesEXT
+            {
+                SType = StructureType.ValidationFeaturesExt,
+                EnabledValidationFeatureCount = 1,
+                PEnabledValidationFeatures = features,
+            };
+            if (ValidationEnabled)
+            {
+                if (!IsValidationLayerAvailable())
+                    throw new VulkanUnavailableException($"Validation was requested but {ValidationLayer} is not installed (Debian package vulkan-validationlayers)");
+                messengerInfo = MessengerCreateInfo();
+                info.EnabledLayerCount = 1;
+                info.PpEnabledLayerNames = &layerName;
+                info.EnabledExtensionCount = 1;
+                info.PpEnabledExtensionNames = &debugExt;
+                if (_options.SynchronizationValidation)
+                {
+                    validationFeatures.PNext = &messengerInfo;
+                    info.PNext = &validationFeatures;
+                }
+                else info.PNext = &messengerInfo;
+            }
+            Instance instance;
+            var r = _vk.CreateInstance(&info, null, &instance);
+            if (r != Result.Success)
+                throw new VulkanUnavailableException($"vkCreateInstance failed ({r}): no usable Vulkan driver (install mesa-vulkan-drivers for lavapipe)");
+            _instance = instance;
+            if (ValidationEnabled) CreateMessenger();
+        }
+        finally
+        {
+            SilkMarshal.Free((nint)appName);
+            SilkMarshal.Free((nint)layerName);
+            SilkMarshal.Free((nint)debugExt);
+        }
+    }
+
+    static int TypeRank(PhysicalDeviceType t) => t switch
+    {
+        PhysicalDeviceType.DiscreteGpu => 0,
+        PhysicalDeviceType.IntegratedGpu => 1,
+        PhysicalDeviceType.VirtualGpu => 2,
+        PhysicalDeviceType.Cpu => 3,
+        _ => 4,
+    };
+
+    void SelectPhysicalDevice(out PhysicalDeviceProperties chosenProps, out uint timestampBits)
+    {
+        uint count = 0;
+        _vk.EnumeratePhysicalDevices(_instance, &count, null);
+        if (count == 0) throw new VulkanUnavailableException("Vulkan found no physical device (check VK_LOADER_DRIVERS_SELECT / VK_DRIVER_FILES; install mesa-vulkan-drivers for lavapipe)");
+        var devices = new PhysicalDevice[count];
+        fixed (PhysicalDevice* p = devices) _vk.EnumeratePhysicalDevices(_instance, &count, p);
+
+        var candidates = new List<(PhysicalDevice dev, PhysicalDeviceProperties props, uint family, uint tsBits, string name)>();
+        foreach (var dev in devices)
+        {
+            _vk.GetPhysicalDeviceProperties(dev, out var props);
+            uint qc = 0;
+            _vk.GetPhysicalDeviceQueueFamilyProperties(dev, &qc, null);
+            var families = new QueueFamilyProperties[qc];
+            fixed (QueueFamilyProperties* f = families) _vk.GetPhysicalDeviceQueueFamilyProperties(dev, &qc, f);
+            // Prefer a compute queue that also times (and a dedicated compute family over the graphics one).
+            int best = -1;
+            for (int i = 0; i < qc; i++)
+            {
+                if ((families[i].QueueFlags & QueueFlags.ComputeBit) == 0 || families[i].QueueCount == 0) continue;
+                if (best < 0 || (families[best].TimestampValidBits == 0 && families[i].TimestampValidBits > 0)) best = i;
+            }
+            if (best < 0) continue;
+            candidates.Add((dev, props, (uint)best, families[best].TimestampValidBits, SilkMarshal.PtrToString((nint)props.DeviceName)));
+        }
+        if (candidates.Count == 0) throw new VulkanUnavailableException("No Vulkan device has a compute queue");
+
+        string wanted = _options.DeviceName;
+        IEnumerable<(PhysicalDevice dev, PhysicalDeviceProperties props, uint family, uint tsBits, string name)> pool = candidates;
+        if (!string.IsNullOrWhiteSpace(wanted))
+        {
+            pool = candidates.Where(c => c.name.Contains(wanted, StringComparison.OrdinalIgnoreCase)).ToList();
+            if (!pool.Any())
+                throw new VulkanUnavailableException($"No Vulkan device name contains '{wanted}' (SPHFLUID_VULKAN_DEVICE); devices: {string.Join(", ", candidates.Select(c => c.name))}");
+        }
+        var chosen = pool.OrderBy(c => TypeRank(c.props.DeviceType)).First();
+        _physical = chosen.dev;
+        _queueFamily = chosen.family;
+        chosenProps = chosen.props;
+        timestampBits = chosen.tsBits;
+    }
+
+    void CreateDevice()
+    {
+        float priority = 1f;
+        var queueInfo = new DeviceQueueCreateInfo
+        {
+            SType = StructureType.DeviceQueueCreateInfo,
+            QueueFamilyIndex = _queueFamily,
+            QueueCount = 1,
+            PQueuePriorities = &priority,
+        };
+        var info = new DeviceCreateInfo { SType = StructureType.DeviceCreateInfo, QueueCreateInfoCount = 1, PQueueCreateInfos = &queueInfo };
+        Device device;
+        Check(_vk.CreateDevice(_physical, &info, null, &device), "vkCreateDevice");
+        _device = device;
+        _vk.GetDeviceQueue(_device, _queueFamily, 0, out _queue);
+    }
+
+    void CreateImmediateContext()
+    {
+        var poolInfo = new CommandPoolCreateInfo { SType = StructureType.CommandPoolCreateInfo, QueueFamilyIndex = _queueFamily, Flags = CommandPoolCreateFlags.ResetCommandBufferBit };
+        Check(_vk.CreateCommandPool(_device, &poolInfo, null, out _immediatePool), "vkCreateCommandPool");
+        var alloc = new CommandBufferAllocateInfo { SType = StructureType.CommandBufferAllocateInfo, CommandPool = _immediatePool, Level = CommandBufferLevel.Primary, CommandBufferCount = 1 };
+        Check(_vk.AllocateCommandBuffers(_device, &alloc, out _immediateCmd), "vkAllocateCommandBuffers");
+        var fenceInfo = new FenceCreateInfo { SType = StructureType.FenceCreateInfo };
+        Check(_vk.CreateFence(_device, &fenceInfo, null, out _immediateFence), "vkCreateFence");
+    }
+
+    // ---------------------------------------------------------------- memory
+
+    uint FindMemoryType(uint typeBits, MemoryPropertyFlags required, MemoryPropertyFlags preferred, MemoryPropertyFlags avoided)
+    {
+        int best = -1, bestScore = int.MinValue;
+        for (int i = 0; i < _memory.MemoryTypeCount; i++)
+        {
+            if ((typeBits & (1u << i)) == 0) continue;
+            var flags = _memory.MemoryTypes[i].PropertyFlags;
+            if ((flags & required) != required) continue;
+            int score = ((flags & preferred) == preferred ? 2 : 0) - ((flags & avoided) != 0 ? 1 : 0);
+            if (score > bestScore) { best = i; bestScore = score; }
+        }
+        if (best < 0) throw new ComputeException($"No Vulkan memory type with {required} for this buffer");
+        return (uint)best;
+    }
+
+    (VkBuffer, DeviceMemory, MemoryPropertyFlags) CreateRawBuffer(ulong size, BufferUsageFlags usage, MemoryPropertyFlags required, MemoryPropertyFlags preferred, MemoryPropertyFlags avoided, string what)
+    {
+        var info = new BufferCreateInfo { SType = StructureType.BufferCreateInfo, Size = size, Usage = usage, SharingMode = SharingMode.Exclusive };
+        VkBuffer buffer;
+        Check(_vk.CreateBuffer(_device, &info, null, &buffer), $"vkCreateBuffer ({what}, {size} bytes)");
+        _vk.GetBufferMemoryRequirements(_device, buffer, out var req);
+        uint type = FindMemoryType(req.MemoryTypeBits, required, preferred, avoided);
+        var alloc = new MemoryAllocateInfo { SType = StructureType.MemoryAllocateInfo, AllocationSize = req.Size, MemoryTypeIndex = type };
+        DeviceMemory memory;
+        var r = _vk.AllocateMemory(_device, &alloc, null, &memory);
+        if (r != Result.Success)
+        {
+            _vk.DestroyBuffer(_device, buffer, null);
+            throw new ComputeException($"Out of GPU memory allocating {what} ({size} bytes): {r}");
+        }
+        Check(_vk.BindBufferMemory(_device, buffer, memory, 0), "vkBindBufferMemory");
+        return (buffer, memory, _memory.MemoryTypes[(int)type].PropertyFlags);
+    }
+
+    void EnsureStaging(ulong size)
+    {
+        if (_stagingSize >= size) return;
+        if (_staging.Handle != 0)
+        {
+            _vk.DestroyBuffer(_device, _staging, null);
+            _vk.FreeMemory(_device, _stagingMemory, null);
+            _staging = default;
+        }
+        ulong newSize = Math.Max(size, Math.Max(_stagingSize * 2, 1UL << 20));
+        var (b, m, _) = CreateRawBuffer(newSize, BufferUsageFlags.TransferSrcBit | BufferUsageFlags.TransferDstBit,
+            MemoryPropertyFlags.HostVisibleBit | MemoryPropertyFlags.HostCoherentBit, MemoryPropertyFlags.HostCachedBit, 0, "staging buffer");
+        _staging = b;
+        _stagingMemory = m;
+        void* p;
+        Check(_vk.MapMemory(_device, m, 0, Vk.WholeSize, 0, &p), "vkMapMemory (staging)");
+        _stagingMapped = (byte*)p;
+        _stagingSize = newSize;
+    }
+
+    /// <summary>Records and runs a one-off command buffer, waiting for it (uploads, read-backs, clears).</summary>
+    void Immediate(Action<CommandBuffer> record)
+    {
+        Check(_vk.ResetCommandBuffer(_immediateCmd, 0), "vkResetCommandBuffer");
+        var begin = new CommandBufferBeginInfo { SType = StructureType.CommandBufferBeginInfo, Flags = CommandBufferUsageFlags.OneTimeSubmitBit };
+        Check(_vk.BeginCommandBuffer(_immediateCmd, &begin), "vkBeginCommandBuffer");
+        FullBarrier(_immediateCmd);
+        record(_immediateCmd);
+        FullBarrier(_immediateCmd);
+        Check(_vk.EndCommandBuffer(_immediateCmd), "vkEndCommandBuffer");
+        var cmd = _immediateCmd;
+        var submit = new SubmitInfo { SType = StructureType.SubmitInfo, CommandBufferCount = 1, PCommandBuffers = &cmd };
+        var fence = _immediateFence;
+        Check(_vk.ResetFences(_device, 1, &fence), "vkResetFences");
+        Check(_vk.QueueSubmit(_queue, 1, &submit, fence), "vkQueueSubmit");
+        SubmitCount++;
+        Check(_vk.WaitForFences(_device, 1, &fence, true, ulong.MaxValue), "vkWaitForFences");
+    }
+
+    /// <summary>Orders everything before against everything after on the queue: compute, transfers and host reads.</summary>
+    void FullBarrier(CommandBuffer cmd)
+    {
+        var barrier = new MemoryBarrier
+        {
+            SType = StructureType.MemoryBarrier,
+            SrcAccessMask = AccessFlags.ShaderWriteBit | AccessFlags.TransferWriteBit | AccessFlags.ShaderReadBit | AccessFlags.TransferReadBit,
+            DstAccessMask = AccessFlags.ShaderReadBit | AccessFlags.ShaderWriteBit | AccessFlags.TransferReadBit | AccessFlags.TransferWriteBit | AccessFlags.HostReadBit | AccessFlags.UniformReadBit,
+        };
+        _vk.CmdPipelineBarrier(cmd, PipelineStageFlags.ComputeShaderBit | PipelineStageFlags.TransferBit,
+            PipelineStageFlags.ComputeShaderBit | PipelineStageFlags.TransferBit | PipelineStageFlags.HostBit, 0, 1, &barrier, 0, null, 0, null);
+    }
+
+    // ---------------------------------------------------------------- buffers
+
+    public IComputeBuffer CreateBuffer(string name, int count, int stride)
+    {
+        ThrowIfDisposed();
+        if (string.IsNullOrEmpty(name)) throw new ArgumentException("A compute buffer needs a name (it appears in every error about it)", nameof(name));
+        if (count <= 0) throw new ArgumentOutOfRangeException(nameof(count), count, $"Compute buffer '{name}': count must be > 0");
+        if (stride <= 0 || stride % 4 != 0 || stride > 2048)
+            throw new ArgumentOutOfRangeException(nameof(stride), stride, $"Compute buffer '{name}': stride must be a multiple of 4 in [4, 2048] bytes");
+        ulong size = (ulong)count * (ulong)stride;
+        if (size > _limits.MaxStorageBufferRange)
+            throw new ComputeException($"Compute buffer '{name}' ({count} x {stride} = {size} bytes) exceeds this device's storage buffer range of {_limits.MaxStorageBufferRange} bytes");
+        var buffer = new VulkanBuffer(this, name, count, stride);
+        var (b, m, flags) = CreateRawBuffer(size, BufferUsageFlags.StorageBufferBit | BufferUsageFlags.TransferSrcBit | BufferUsageFlags.TransferDstBit,
+            MemoryPropertyFlags.DeviceLocalBit, MemoryPropertyFlags.DeviceLocalBit, MemoryPropertyFlags.HostVisibleBit, $"buffer '{name}'");
+        buffer.Handle = b;
+        buffer.Memory = m;
+        const MemoryPropertyFlags mappable = MemoryPropertyFlags.HostVisibleBit | MemoryPropertyFlags.HostCoherentBit;
+        if ((flags & mappable) == mappable)
+        {
+            void* p;
+            Check(_vk.MapMemory(_device, m, 0, Vk.WholeSize, 0, &p), "vkMapMemory");
+            buffer.Mapped = (byte*)p;
+            new Span<byte>(p, checked((int)Math.Min(size, int.MaxValue))).Clear();
+            if (size > int.MaxValue) new Span<byte>((byte*)p + int.MaxValue, (int)(size - int.MaxValue)).Clear();
+        }
+        else
+        {
+            Immediate(cmd => _vk.CmdFillBuffer(cmd, b, 0, Vk.WholeSize, 0));
+        }
+        _liveBuffers.Add(buffer);
+        return buffer;
+    }
+
+    internal void Upload(VulkanBuffer buffer, long byteOffset, ReadOnlySpan<byte> data)
+    {
+        ThrowIfDisposed();
+        WaitIdle();
+        if (buffer.Mapped != null)
+        {
+            data.CopyTo(new Span<byte>(buffer.Mapped + byteOffset, data.Length));
+            return;
+        }
+        EnsureStaging((ulong)data.Length);
+        data.CopyTo(new Span<byte>(_stagingMapped, data.Length));
+        var region = new BufferCopy(0, (ulong)byteOffset, (ulong)data.Length);
+        Immediate(cmd => _vk.CmdCopyBuffer(cmd, _staging, buffer.Handle, 1, in region));
+    }
+
+    internal void Download(VulkanBuffer buffer, long byteOffset, Span<byte> data)
+    {
+        ThrowIfDisposed();
+        WaitIdle();
+        if (buffer.Mapped != null)
+        {
+            new ReadOnlySpan<byte>(buffer.Mapped + byteOffset, data.Length).CopyTo(data);
+            return;
+        }
+        EnsureStaging((ulong)data.Length);
+        var region = new BufferCopy((ulong)byteOffset, 0, (ulong)data.Length);
+        Immediate(cmd => _vk.CmdCopyBuffer(cmd, buffer.Handle, _staging, 1, in region));
+        new ReadOnlySpan<byte>(_stagingMapped, data.Length).CopyTo(data);
+    }
+
+    internal void Release(VulkanBuffer buffer)
+    {
+        if (_disposed || !_liveBuffers.Contains(buffer)) return;
+        if (buffer.LastUsedSerial > _completedSerial) _deferredRelease.Add(buffer);
+        else DestroyBuffer(buffer);
+    }
+
+    void DestroyBuffer(VulkanBuffer buffer)
+    {
+        if (!_liveBuffers.Remove(buffer)) return;
+        if (buffer.Mapped != null) _vk.UnmapMemory(_device, buffer.Memory);
+        _vk.DestroyBuffer(_device, buffer.Handle, null);
+        _vk.FreeMemory(_device, buffer.Memory, null);
+        buffer.Mapped = null;
+        buffer.Handle = default;
+        buffer.Memory = default;
+    }
+
+    void ReleaseDeferred()
+    {
+        for (int i = _deferredRelease.Count - 1; i >= 0; i--)
+        {
+            if (_deferredRelease[i].LastUsedSerial > _completedSerial) continue;
+            DestroyBuffer(_deferredRelease[i]);
+            _deferredRelease.RemoveAt(i);
+        }
+    }
+
+    public IReadbackRequest RequestReadback(IComputeBuffer buffer)
+    {
+        var b = AsBuffer(buffer, "RequestReadback");
+        var data = new byte[b.SizeInBytes];
+        Download(b, 0, data);
+        return new VulkanReadbackRequest(b.Name, data);
+    }
+
+    VulkanBuffer AsBuffer(IComputeBuffer buffer, string what)
+    {
+        if (buffer == null) throw new ArgumentNullException(nameof(buffer), $"{what}: buffer is null");
+        if (buffer is not VulkanBuffer b || !ReferenceEquals(b.Device, this))
+            throw new ComputeException($"{what}: buffer '{buffer.Name}' was not created by this Vulkan device");
+        b.ThrowIfDisposed();
+        return b;
+    }
+
+    void ThrowIfDisposed()
+    {
+        if (_disposed) throw new ObjectDisposedException(nameof(VulkanComputeDevice), "The Vulkan compute device was disposed");
+    }
+}

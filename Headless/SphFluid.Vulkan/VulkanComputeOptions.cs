@@ -1,0 +1,32 @@
+using System;
+using System.Collections.Generic;
+
+namespace SphFluid.Vulkan;
+
+/// <summary>How a <see cref="VulkanComputeDevice"/> is set up.</summary>
+public sealed class VulkanComputeOptions
+{
+    /// <summary>Folders searched (top level first, then recursively) for <c>&lt;name&gt;.compute</c>;
+    /// they are also include folders for <c>#include</c>.</summary>
+    public IReadOnlyList<string> ShaderDirectories { get; set; } = Array.Empty<string>();
+
+    /// <summary>Extra include folders passed to glslang (the .compute file's own folder always is one).</summary>
+    public IReadOnlyList<string> IncludeDirectories { get; set; } = Array.Empty<string>();
+
+    /// <summary>Case-insensitive substring of the adapter name to use; default from SPHFLUID_VULKAN_DEVICE,
+    /// else the best type (discrete &gt; integrated &gt; virtual &gt; CPU).</summary>
+    public string DeviceName { get; set; } = Environment.GetEnvironmentVariable("SPHFLUID_VULKAN_DEVICE");
+
+    /// <summary>Enables VK_LAYER_KHRONOS_validation and collects its messages in
+    /// <see cref="VulkanComputeDevice.ValidationMessages"/>. Fails if the layer is not installed.</summary>
+    public bool Validation { get; set; }
+
+    /// <summary>With <see cref="Validation"/>: also Khronos synchronization validation (hazards between dispatches).</summary>
+    public bool SynchronizationValidation { get; set; }
+
+    /// <summary>Writes a timestamp pair around every dispatch (<see cref="VulkanComputeDevice.LastDispatchTimings"/>).</summary>
+    public bool TimeDispatches { get; set; } = true;
+
+    /// <summary>Where compiled SPIR-V is cached; default <see cref="ShaderCompiler.DefaultCacheDirectory"/>.</summary>
+    public string ShaderCacheDirectory { get; set; }
+}

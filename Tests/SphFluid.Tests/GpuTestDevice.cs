@@ -1,0 +1,127 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+using SphFluid.Vulkan;
+
+namespace SphFluid.Tests
+{
+    /// <summary>
+    /// The one Vulkan device every GPU test shares (creating a device and JIT-compiling kernels is the
+    /// slow part, so it happens once per test run). Shaders are found in Assets/SphFluid/Shaders and in
+    /// every Tests/SphFluid.Tests/**/Shaders folder. Validation is on whenever the Khronos layer is
+    /// installed; <see cref="AssertNoValidationMessages"/> checks it stayed silent.
+    /// </summary>
+    public static class GpuTestDevice
+    {
+        static readonly object Gate = new object();
+        static VulkanComputeDevice _device;
+        static string _unavailable;
+
+        /// <summary>The repository root: the first folder above the test assembly holding both Assets and Headless.</summary>
+        public static string RepoRoot { get; } = FindRepoRoot();
+
+        /// <summary>Assets/SphFluid/Shaders, then every Shaders folder under Tests/SphFluid.Tests.</summary>
+        public static IReadOnlyList<string> ShaderDirectories { get; } = FindShaderDirectories();
+
+        /// <summary>The shared device; the test is ignored (with the reason) where no Vulkan driver exists.</summary>
+        public static VulkanComputeDevice Shared
+        {
+            get
+            {
+                lock (Gate)
+                {
+                    if (_device == null && _unavailable == null)
+                    {
+                        try
+                        {
+                            bool validation = VulkanComputeDevice.IsValidationLayerAvailable();
+                            _device = new VulkanComputeDevice(new VulkanComputeOptions
+                            {
+                                ShaderDirectories = ShaderDirectories,
+                                Validation = validation,
+                                SynchronizationValidation = validation,
+                            });
+                            AppDomain.CurrentDomain.ProcessExit += (s, e) => DisposeShared();
+                        }
+                        catch (VulkanUnavailableException e)
+                        {
+                            _unavailable = e.Message;
+                        }
+                    }
+                    if (_device == null) Assert.Ignore("No Vulkan device: " + _unavailable);
+                    return _device;
+                }
+            }
+        }
+
+        /// <summary>True once <see cref="Shared"/> has been created (without creating it).</summary>
+        public static bool IsCreated
+        {
+            get { lock (Gate) return _device != null; }
+        }
+
+        /// <summary>Fails with every message the validation layer has reported so far, then forgets them.</summary>
+        public static void AssertNoValidationMessages()
+        {
+            VulkanComputeDevice device;
+            lock (Gate) device = _device;
+            if (device == null) return;
+            var messages = device.ValidationMessages;
+            device.ClearValidationMessages();
+            Assert.That(messages, Is.Empty, "Vulkan validation reported:\n" + string.Join("\n", messages));
+        }
+
+        internal static void DisposeShared()
+        {
+            lock (Gate)
+            {
+                _device?.Dispose();
+                _device = null;
+            }
+        }
+
+        static string FindRepoRoot()
+        {
+            var dir = new DirectoryInfo(Path.GetDirectoryName(typeof(GpuTestDevice).Assembly.Location) ?? TestContext.CurrentContext.TestDirectory);
+            while (dir != null)
+            {
+                if (Directory.Exists(Path.Combine(dir.FullName, "Assets")) && Directory.Exists(Path.Combine(dir.FullName, "Headless"))) return dir.FullName;
+                dir = dir.Parent;
+            }
+            throw new InvalidOperationException("Could not find the repository root (a folder with Assets/ and Headless/) above " + typeof(GpuTestDevice).Assembly.Location);
+        }
+
+        static IReadOnlyList<string> FindShaderDirectories()
+        {
+            var dirs = new List<string> { Path.Combine(RepoRoot, "Assets", "SphFluid", "Shaders") };
+            string tests = Path.Combine(RepoRoot, "Tests", "SphFluid.Tests");
+            if (Directory.Exists(tests))
+            {
+                dirs.AddRange(Directory.EnumerateDirectories(tests, "Shaders", SearchOption.AllDirectories)
+                    .Where(d => !d.Contains(Path.DirectorySeparatorChar + "bin" + Path.DirectorySeparatorChar) && !d.Contains(Path.DirectorySeparatorChar + "obj" + Path.DirectorySeparatorChar))
+                    .OrderBy(d => d, StringComparer.Ordinal));
+            }
+            return dirs;
+        }
+    }
+}
+
+/// <summary>Assembly-wide: after the last test, the validation layer must have stayed silent, and the shared device is released.</summary>
+[SetUpFixture]
+public sealed class GpuTestDeviceTeardown
+{
+    [OneTimeTearDown]
+    public void ReleaseSharedDevice()
+    {
+        try
+        {
+            SphFluid.Tests.GpuTestDevice.AssertNoValidationMessages();
+        }
+        finally
+        {
+            SphFluid.Tests.GpuTestDevice.DisposeShared();
+        }
+    }
+}
