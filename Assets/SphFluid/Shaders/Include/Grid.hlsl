@@ -1,0 +1,56 @@
+#ifndef SPHFLUID_GRID_INCLUDED
+#define SPHFLUID_GRID_INCLUDED
+
+// The uniform neighbour grid of the SPH solver (cell size = support radius h), built in
+// CONTAINER-LOCAL space so that rotating the container never resizes it. Uniform-grid neighbour
+// search after Green 2008 ("Particle Simulation using CUDA", NVIDIA) and Ihmsen et al. 2011
+// ("A parallel SPH implementation on multi-core CPUs"): with cells of size h, every neighbour j of
+// particle i (r_ij < h) lies in the 3x3x3 block of cells around i's cell.
+//
+//   g    = mul(_WorldToGrid, float4(x, 1)).xyz        (grid units: one unit = h)
+//   cell = clamp(floor(g), 0, _GridDims - 1)
+//   linear index = cell.x + _GridDims.x * (cell.y + _GridDims.y * cell.z)
+//   _WorldToGrid = scale(1/h) * translate(S/2 + margin*h) * R^T * translate(-c)
+// (container centre c, rotation R, size S; one margin cell on every side). Positions outside the
+// grid clamp into its border cells, so every particle, even a NaN one, has a valid cell.
+//
+// Set by SphFluid.Sorting.CellGrid.SetOn. The cell sort (ParticleSort.compute) also provides
+// _CellStart / _CellCount (per linear cell: first sorted particle, particle count). A 27-cell loop:
+//   int3 home = GridCoordOf(p.position);
+//   for (int dz = -1; dz <= 1; dz++) for (int dy = -1; dy <= 1; dy++) for (int dx = -1; dx <= 1; dx++)
+//   {
+//       int3 c = home + int3(dx, dy, dz);
+//       if (!GridCoordInside(c)) continue;
+//       uint cell = CellIndexOf(c);
+//       uint end = _CellStart[cell] + _CellCount[cell];
+//       for (uint j = _CellStart[cell]; j < end; j++) { ... _SortedParticles[j] ... }
+//   }
+
+float4x4 _WorldToGrid; // world -> grid units (column vectors, translation in the last column)
+uint3 _GridDims;       // cells per local axis, margin included
+uint _GridCellCount;   // _GridDims.x * _GridDims.y * _GridDims.z
+
+// The cell holding world position worldPos. Clamps in float first (so huge coordinates cannot
+// overflow the int conversion) and again in int (so a NaN, whose conversion is undefined, still lands
+// in the grid).
+int3 GridCoordOf(float3 worldPos)
+{
+    float3 g = mul(_WorldToGrid, float4(worldPos, 1.0)).xyz;
+    int3 top = (int3)_GridDims - int3(1, 1, 1);
+    int3 coord = (int3)clamp(floor(g), float3(0.0, 0.0, 0.0), (float3)top);
+    return clamp(coord, int3(0, 0, 0), top);
+}
+
+bool GridCoordInside(int3 coord)
+{
+    return all(coord >= int3(0, 0, 0)) && all(coord < (int3)_GridDims);
+}
+
+// Linear index of an in-grid coordinate: x fastest, then y, then z.
+uint CellIndexOf(int3 coord)
+{
+    uint3 c = (uint3)coord;
+    return c.x + _GridDims.x * (c.y + _GridDims.y * c.z);
+}
+
+#endif
