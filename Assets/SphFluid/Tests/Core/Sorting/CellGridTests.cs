@@ -1,0 +1,122 @@
+using System;
+using System.Numerics;
+using NUnit.Framework;
+using SphFluid.Sorting;
+
+namespace SphFluid.Tests.Core.Sorting
+{
+    public sealed class CellGridTests
+    {
+        [Test]
+        public void DimsCoverTheContainerPlusOneMarginCellPerSide()
+        {
+            var grid = new CellGrid(Vector3.Zero, Quaternion.Identity, new Vector3(1f, 0.5f, 0.26f), 0.1f);
+
+            Assert.That(new[] { grid.DimX, grid.DimY, grid.DimZ }, Is.EqualTo(new[] { 12, 7, 5 }));
+            Assert.That(grid.CellCount, Is.EqualTo(12 * 7 * 5));
+        }
+
+        [Test]
+        public void ContainerCornerCellsSitInsideTheMargin()
+        {
+            var grid = new CellGrid(new Vector3(2f, -1f, 0.5f), Quaternion.Identity, new Vector3(1f, 1f, 1f), 0.1f);
+
+            grid.CellCoordOf(new Vector3(2f - 0.45f, -1f - 0.45f, 0.5f - 0.45f), out int x0, out int y0, out int z0);
+            grid.CellCoordOf(new Vector3(2f + 0.45f, -1f + 0.45f, 0.5f + 0.45f), out int x1, out int y1, out int z1);
+
+            Assert.That(new[] { x0, y0, z0 }, Is.EqualTo(new[] { 1, 1, 1 }));
+            Assert.That(new[] { x1, y1, z1 }, Is.EqualTo(new[] { 10, 10, 10 }));
+        }
+
+        [Test]
+        public void RotatedContainerMapsALocalPointToItsLocalCell()
+        {
+            var centre = new Vector3(1f, 2f, 3f);
+            Quaternion rotation = Quaternion.CreateFromAxisAngle(Vector3.Normalize(new Vector3(1f, 2f, 0.5f)), 0.9f);
+            var size = new Vector3(0.8f, 0.4f, 0.6f);
+            var grid = new CellGrid(centre, rotation, size, 0.1f);
+            // Local point in the middle of local cell (2, 5, 3): q = (cell + 0.5 - margin) h - S/2.
+            var local = new Vector3(2.5f, 5.5f, 3.5f) * 0.1f - new Vector3(0.1f) - size * 0.5f;
+            Vector3 world = centre + Vector3.Transform(local, rotation);
+
+            grid.CellCoordOf(world, out int x, out int y, out int z);
+
+            Assert.That(new[] { x, y, z }, Is.EqualTo(new[] { 2, 5, 3 }));
+            Assert.That(grid.CellIndexOf(world), Is.EqualTo(2 + grid.DimX * (5 + grid.DimY * 3)));
+        }
+
+        [Test]
+        public void WorldToGridIsWrittenForColumnVectorsWithTranslationInTheLastColumn()
+        {
+            Quaternion rotation = Quaternion.CreateFromAxisAngle(Vector3.UnitY, 0.7f);
+            var grid = new CellGrid(new Vector3(0.3f, -0.2f, 1.1f), rotation, new Vector3(1f, 2f, 3f), 0.25f);
+            var world = new Vector3(0.7f, 0.1f, 0.4f);
+            Matrix4x4 m = grid.WorldToGrid;
+
+            // What HLSL's mul(m, float4(world, 1)) computes, with m[r][c] = M{r+1}{c+1}.
+            var columnVector = new Vector3(
+                m.M11 * world.X + m.M12 * world.Y + m.M13 * world.Z + m.M14,
+                m.M21 * world.X + m.M22 * world.Y + m.M23 * world.Z + m.M24,
+                m.M31 * world.X + m.M32 * world.Y + m.M33 * world.Z + m.M34);
+            Vector3 expected = (Vector3.Transform(world - grid.Centre, Quaternion.Conjugate(rotation))
+                                + new Vector3(0.5f, 1f, 1.5f) + new Vector3(0.25f)) / 0.25f;
+
+            Assert.That(Vector3.Distance(columnVector, expected), Is.LessThan(1e-4f));
+            Assert.That(Vector3.Distance(grid.GridPositionOf(world), expected), Is.LessThan(1e-4f));
+            Assert.That(new[] { m.M41, m.M42, m.M43, m.M44 }, Is.EqualTo(new[] { 0f, 0f, 0f, 1f }));
+        }
+
+        [Test]
+        public void PointsOutsideTheGridClampIntoItsBorderCells()
+        {
+            var grid = new CellGrid(Vector3.Zero, Quaternion.Identity, new Vector3(1f, 1f, 1f), 0.1f);
+
+            grid.CellCoordOf(new Vector3(-50f, 0.05f, 1e30f), out int x, out int y, out int z);
+            grid.CellCoordOf(new Vector3(float.NaN, float.NaN, float.NaN), out int nx, out int ny, out int nz);
+
+            Assert.That(new[] { x, y, z }, Is.EqualTo(new[] { 0, 6, 11 }));
+            Assert.That(new[] { nx, ny, nz }, Is.EqualTo(new[] { 0, 0, 0 }));
+        }
+
+        [Test]
+        public void NonPositiveCellSizeIsRefusedNamingTheSmoothingRadius()
+        {
+            Exception error = Catch(() => _ = new CellGrid(Vector3.Zero, Quaternion.Identity, Vector3.One, 0f));
+
+            Assert.That(error, Is.TypeOf<ArgumentOutOfRangeException>());
+            Assert.That(error.Message, Does.Contain("smoothing radius").And.Contain("was 0"));
+        }
+
+        [Test]
+        public void DegenerateContainerIsRefused()
+        {
+            Exception error = Catch(() => _ = new CellGrid(Vector3.Zero, Quaternion.Identity, new Vector3(1f, 0f, 1f), 0.1f));
+
+            Assert.That(error, Is.TypeOf<ArgumentOutOfRangeException>());
+            Assert.That(error.Message, Does.Contain("container size"));
+        }
+
+        [Test]
+        public void TooManyCellsIsRefusedNamingSizeRadiusAndDims()
+        {
+            Exception error = Catch(() => _ = new CellGrid(Vector3.Zero, Quaternion.Identity, new Vector3(4f, 2f, 2f), 0.004f));
+
+            Assert.That(error, Is.TypeOf<ArgumentOutOfRangeException>());
+            Assert.That(error.Message, Does.Contain("<4, 2, 2>").And.Contain("0.004")
+                .And.Contain("1002 x 502 x 502").And.Contain(CellGrid.MaxCellCount.ToString()));
+        }
+
+        private static Exception Catch(Action action)
+        {
+            try
+            {
+                action();
+            }
+            catch (Exception e)
+            {
+                return e;
+            }
+            return null;
+        }
+    }
+}
