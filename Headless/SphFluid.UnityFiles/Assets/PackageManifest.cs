@@ -1,0 +1,37 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Text.Json;
+
+namespace SphFluid.UnityFiles.Assets;
+
+/// <summary><c>Packages/manifest.json</c>: package name to version (or <c>file:</c> path), plus testables.</summary>
+public sealed class PackageManifest
+{
+    public string Path { get; init; }
+    public IReadOnlyDictionary<string, string> Dependencies { get; init; }
+    public IReadOnlyList<string> Testables { get; init; } = Array.Empty<string>();
+
+    public bool Has(string package) => Dependencies.ContainsKey(package);
+
+    public string VersionOf(string package) => Dependencies.TryGetValue(package, out var v) ? v : null;
+
+    public static PackageManifest Load(string path) => Parse(File.ReadAllText(path), path);
+
+    public static PackageManifest Parse(string json, string path = null)
+    {
+        using var doc = JsonDocument.Parse(json);
+        var root = doc.RootElement;
+        if (root.ValueKind != JsonValueKind.Object || !root.TryGetProperty("dependencies", out var deps) || deps.ValueKind != JsonValueKind.Object)
+            throw new FormatException($"{path}: manifest.json needs a \"dependencies\" object");
+        var map = new Dictionary<string, string>(StringComparer.Ordinal);
+        foreach (var p in deps.EnumerateObject())
+            map[p.Name] = p.Value.ValueKind == JsonValueKind.String ? p.Value.GetString()
+                : throw new FormatException($"{path}: version of '{p.Name}' must be a string");
+        var testables = root.TryGetProperty("testables", out var t) && t.ValueKind == JsonValueKind.Array
+            ? t.EnumerateArray().Select(e => e.GetString()).ToList()
+            : new List<string>();
+        return new PackageManifest { Path = path, Dependencies = map, Testables = testables };
+    }
+}

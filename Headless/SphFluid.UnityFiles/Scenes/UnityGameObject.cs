@@ -1,0 +1,71 @@
+using System.Collections.Generic;
+using System.Linq;
+using System.Numerics;
+using SphFluid.UnityFiles.Yaml;
+
+namespace SphFluid.UnityFiles.Scenes;
+
+/// <summary>A GameObject of a scene with its components resolved through <c>m_Component</c>.</summary>
+public sealed class UnityGameObject
+{
+    readonly UnityScene _scene;
+
+    internal UnityGameObject(UnityScene scene, UnityDocument document)
+    {
+        _scene = scene;
+        Document = document;
+    }
+
+    public UnityDocument Document { get; }
+    public long FileId => Document.FileId;
+    public string Name => Document.Root.GetString("m_Name", "");
+    public bool IsActive => Document.Root.GetBool("m_IsActive", true);
+    public string Tag => Document.Root.GetString("m_TagString", "Untagged");
+    public int Layer => Document.Root.GetInt("m_Layer", 0);
+
+    /// <summary>The documents listed in <c>m_Component</c>, in order (missing ones skipped).</summary>
+    public IEnumerable<UnityDocument> Components =>
+        Document.Root["m_Component"]?.Items
+            .Select(i => _scene.File.Find(i.GetReference("component")))
+            .Where(d => d != null) ?? Enumerable.Empty<UnityDocument>();
+
+    /// <summary>The Transform (or RectTransform) component.</summary>
+    public UnityDocument Transform => Components.FirstOrDefault(c => UnityScene.IsTransform(c));
+
+    public UnityDocument Component(string typeName) => Components.FirstOrDefault(c => c.TypeName == typeName);
+
+    public IEnumerable<UnityDocument> ComponentsOfType(string typeName) => Components.Where(c => c.TypeName == typeName);
+
+    /// <summary>MonoBehaviours on this object whose script has <paramref name="scriptGuid"/>.</summary>
+    public IEnumerable<UnityDocument> Behaviours(string scriptGuid) =>
+        Components.Where(c => c.TypeName == "MonoBehaviour" && c.ScriptGuid == scriptGuid);
+
+    public UnityGameObject Parent
+    {
+        get
+        {
+            var t = Transform;
+            var father = t == null ? null : _scene.File.Find(t.Root.GetReference("m_Father"));
+            return father == null ? null : _scene.GameObjectOf(father);
+        }
+    }
+
+    public IEnumerable<UnityGameObject> Children =>
+        Transform?.Root["m_Children"]?.Items
+            .Select(i => _scene.File.Find(i.GetReference("")))
+            .Where(d => d != null)
+            .Select(d => _scene.GameObjectOf(d))
+            .Where(g => g != null) ?? Enumerable.Empty<UnityGameObject>();
+
+    public Vector3 LocalPosition => Transform?.Root.GetVector3("m_LocalPosition", Vector3.Zero) ?? Vector3.Zero;
+    public Quaternion LocalRotation => Transform?.Root["m_LocalRotation"] != null ? Transform.Root.GetQuaternion("m_LocalRotation") : Quaternion.Identity;
+    public Vector3 LocalScale => Transform?.Root.GetVector3("m_LocalScale", Vector3.One) ?? Vector3.One;
+
+    /// <summary>World pose composed through every parent.</summary>
+    public WorldTransform World => Transform == null ? WorldTransform.Identity : _scene.WorldTransformOf(Transform);
+
+    /// <summary>"Parent/Child" path from the scene root, for messages.</summary>
+    public string HierarchyPath => Parent == null ? Name : Parent.HierarchyPath + "/" + Name;
+
+    public override string ToString() => $"GameObject '{Name}' &{FileId}";
+}

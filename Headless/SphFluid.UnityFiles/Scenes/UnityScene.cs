@@ -1,0 +1,96 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Numerics;
+using SphFluid.UnityFiles.Yaml;
+
+namespace SphFluid.UnityFiles.Scenes;
+
+/// <summary>
+/// A scene (or prefab) as GameObjects, components and a Transform hierarchy, read from its YAML documents.
+/// Use <see cref="Behaviours(string)"/> with a script's .meta guid to find the components a runner cares about,
+/// then read their serialized fields from <see cref="UnityDocument.Root"/>.
+/// </summary>
+public sealed class UnityScene
+{
+    public const int GameObjectClassId = 1;
+    public const int TransformClassId = 4;
+    public const int RectTransformClassId = 224;
+    public const int MonoBehaviourClassId = 114;
+    public const int SceneRootsClassId = 1660057539;
+
+    readonly Dictionary<long, UnityGameObject> _gameObjects = new();
+    readonly Dictionary<long, WorldTransform> _worldCache = new();
+
+    public UnityScene(UnityYamlFile file)
+    {
+        File = file ?? throw new ArgumentNullException(nameof(file));
+        foreach (var d in file.Documents)
+            if (d.ClassId == GameObjectClassId && !d.IsStripped && !_gameObjects.ContainsKey(d.FileId))
+                _gameObjects.Add(d.FileId, new UnityGameObject(this, d));
+    }
+
+    public UnityYamlFile File { get; }
+    public string Path => File.Path;
+    public string Name => System.IO.Path.GetFileNameWithoutExtension(File.Path ?? "");
+
+    public static UnityScene Load(string path) => new(UnityYamlFile.Load(path));
+
+    public static UnityScene Parse(string text, string path = null) => new(UnityYamlFile.Parse(text, path));
+
+    public IEnumerable<UnityGameObject> GameObjects => _gameObjects.Values;
+
+    public UnityGameObject GameObject(long fileId) => _gameObjects.TryGetValue(fileId, out var g) ? g : null;
+
+    /// <summary>The first GameObject named <paramref name="name"/>, or null.</summary>
+    public UnityGameObject FindGameObject(string name) => _gameObjects.Values.FirstOrDefault(g => g.Name == name);
+
+    /// <summary>The GameObject owning a component document (via its <c>m_GameObject</c>).</summary>
+    public UnityGameObject GameObjectOf(UnityDocument component) =>
+        component == null ? null
+        : component.ClassId == GameObjectClassId ? GameObject(component.FileId)
+        : GameObject(component.GameObject?.FileId ?? 0);
+
+    /// <summary>Every MonoBehaviour document, or those whose <c>m_Script</c> guid is <paramref name="scriptGuid"/>.</summary>
+    public IEnumerable<UnityDocument> Behaviours(string scriptGuid = null) =>
+        File.Documents.Where(d => d.ClassId == MonoBehaviourClassId && !d.IsStripped && (scriptGuid == null || d.ScriptGuid == scriptGuid));
+
+    public IEnumerable<UnityDocument> Transforms => File.Documents.Where(d => IsTransform(d) && !d.IsStripped);
+
+    /// <summary>Transforms with no parent (what <c>SceneRoots</c> must list).</summary>
+    public IEnumerable<UnityDocument> RootTransforms =>
+        Transforms.Where(t => t.Root.GetReference("m_Father") is not { IsNull: false });
+
+    /// <summary>The fileIDs listed by the <c>SceneRoots</c> document (2022.2+), or null when the file has none.</summary>
+    public IReadOnlyList<long> SceneRoots
+    {
+        get
+        {
+            var roots = File.OfClass(SceneRootsClassId).FirstOrDefault();
+            return roots?.Root["m_Roots"]?.Items.Select(i => i.GetReference("")?.FileId ?? 0).ToList()
+                   ?? (roots == null ? null : new List<long>());
+        }
+    }
+
+    public static bool IsTransform(UnityDocument d) => d.ClassId == TransformClassId || d.ClassId == RectTransformClassId;
+
+    /// <summary>World pose of a Transform document, composing <c>m_Father</c> up to the root.</summary>
+    public WorldTransform WorldTransformOf(UnityDocument transform) => WorldTransformOf(transform, 0);
+
+    public WorldTransform WorldTransformOf(long transformFileId) =>
+        WorldTransformOf(File.Find(transformFileId) ?? throw new ArgumentException($"{Path}: no document &{transformFileId}"));
+
+    WorldTransform WorldTransformOf(UnityDocument transform, int depth)
+    {
+        if (_worldCache.TryGetValue(transform.FileId, out var cached)) return cached;
+        if (depth > 1000) throw new InvalidDataException($"{Path}: Transform &{transform.FileId} has a parent cycle");
+        var r = transform.Root;
+        var father = File.Find(r.GetReference("m_Father"));
+        var parent = father != null && IsTransform(father) ? WorldTransformOf(father, depth + 1) : WorldTransform.Identity;
+        var rotation = r["m_LocalRotation"] != null ? r.GetQuaternion("m_LocalRotation") : Quaternion.Identity;
+        var world = parent.Compose(r.GetVector3("m_LocalPosition", Vector3.Zero), rotation, r.GetVector3("m_LocalScale", Vector3.One));
+        _worldCache[transform.FileId] = world;
+        return world;
+    }
+}
