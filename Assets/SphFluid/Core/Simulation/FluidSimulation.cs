@@ -2,53 +2,126 @@ using System;
 using System.Collections.Generic;
 using System.Numerics;
 using SphFluid.Compute;
+using SphFluid.Sorting;
 
 namespace SphFluid.Simulation
 {
     /// <summary>
     /// The whole SPH pipeline, written once against <see cref="IComputeDevice"/> so that Unity and the
-    /// headless backend dispatch the very same kernels in the very same order. Read <see cref="Step"/>
-    /// top to bottom for one frame.
+    /// headless backend dispatch the very same kernels in the very same order. One frame, top to bottom,
+    /// is <see cref="Step"/>; one sub-step is <see cref="Substep"/>.
     /// </summary>
+    /// <remarks>
+    /// Buffers: two particle buffers (the sort writes the other one and they swap: <see cref="Particles"/> is
+    /// always the cell-sorted current state), per-particle density/pressure, normals, accelerations and XSPH
+    /// corrections (indexed like the current particles), the phase table, the obstacles, the sorter's
+    /// CellStart/CellCount, and the reduction partials and totals.
+    /// </remarks>
     public sealed class FluidSimulation : IDisposable
     {
-        const int ReductionGroupSize = 256;
+        public const string SolverProgramName = "FluidSolver";
+        public const string DiagnosticsProgramName = "FluidDiagnostics";
+        const int ReductionThreads = 256; // REDUCTION_THREADS in Include/SphTimeStep.hlsl
+
+        /// <summary>The clamp surface lies this many particle spacings inside the walls (SphBoundary.hlsl).</summary>
+        public const float ClampInset = 0.01f;
 
         readonly IComputeDevice _device;
-        readonly FluidSceneDescription _scene;
+        readonly FluidSceneDescription _scene; // the simulation's own copy: container and obstacles change
         readonly PhaseProperties[] _phaseTable;
         readonly IReadOnlyList<PhaseDescription> _phases;
+        readonly Particle[] _spawn;
         readonly TimeStepController _timeStep;
+        readonly IComputeProgram _solver, _diagnostics;
+        readonly int _halfStep, _densityPressure, _normals, _forces, _obstacleForces, _fullStep;
+        readonly int _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal;
+        readonly int _reductionGroups;
+        readonly ShaderIds _ids;
+
+        IComputeBuffer _particles, _particlesOther;
+        IComputeBuffer _phaseBuffer, _densities, _normalsBuffer, _accelerations, _xsph, _obstacles;
+        IComputeBuffer _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals;
+        ParticleSorter _sorter;
+        CellGrid _grid;
+        bool _containerChanged = true;
+        IReadbackRequest _motionReadback, _diagnosticsReadback;
+        double _diagnosticsRequestTime;
+        readonly Vector4[] _motionRow = new Vector4[1];
         bool _disposed;
 
+        /// <param name="device">The GPU (Unity's command buffer or the headless Vulkan device).</param>
+        /// <param name="scene">Validated here: an invalid scene throws <see cref="ArgumentException"/> listing every message.</param>
         public FluidSimulation(IComputeDevice device, FluidSceneDescription scene)
         {
             _device = device ?? throw new ArgumentNullException(nameof(device));
             if (scene == null) throw new ArgumentNullException(nameof(scene));
             scene.ThrowIfInvalid();
-            _scene = scene;
-            _phases = scene.Phases();
-            _phaseTable = scene.BuildPhaseTable();
-            _timeStep = TimeStepController.ForScene(scene);
-            ParticleCount = SpawnLayout.TotalCount(scene);
-            Plan = PipelinePlanner.Plan(scene, true);
-            LastStep = StepReport.None;
+            _scene = CopyOf(scene);
+            _phases = _scene.Phases();
+            _phaseTable = _scene.BuildPhaseTable();
+            _spawn = SpawnLayout.Generate(_scene);
+            ParticleCount = _spawn.Length;
+            _timeStep = TimeStepController.ForScene(_scene);
+            _reductionGroups = (ParticleCount + ReductionThreads - 1) / ReductionThreads;
+            _ids = new ShaderIds(device);
+
+            _solver = device.LoadProgram(SolverProgramName);
+            _diagnostics = device.LoadProgram(DiagnosticsProgramName);
+            _halfStep = _solver.FindKernel("HalfStep");
+            _densityPressure = _solver.FindKernel("DensityPressure");
+            _normals = _solver.FindKernel("Normals");
+            _forces = _solver.FindKernel("Forces");
+            _obstacleForces = _solver.FindKernel("ObstacleForces");
+            _fullStep = _solver.FindKernel("FullStep");
+            _motionPartial = _diagnostics.FindKernel("MotionPartial");
+            _motionFinal = _diagnostics.FindKernel("MotionFinal");
+            _diagnosticsPartial = _diagnostics.FindKernel("DiagnosticsPartial");
+            _diagnosticsFinal = _diagnostics.FindKernel("DiagnosticsFinal");
+
+            try
+            {
+                CreateBuffers();
+                UploadConstants();
+                UploadObstacles();
+                Reset();
+            }
+            catch
+            {
+                Dispose();
+                throw;
+            }
         }
 
         /// <summary>Number of particles (constant: none is ever created or lost).</summary>
         public int ParticleCount { get; }
 
-        /// <summary>The particles (<see cref="Particle"/>), sorted by grid cell after every step. Shader name <c>_Particles</c>.</summary>
-        public IComputeBuffer Particles { get; private set; }
+        /// <summary>The particles (<see cref="Particle"/>), sorted by grid cell. Shader name <c>_Particles</c>.
+        /// The buffer object alternates between two after every sort: fetch it each frame.</summary>
+        public IComputeBuffer Particles => _particles;
 
         /// <summary>The phase table (<see cref="PhaseProperties"/>), indexed by <see cref="Particle.Phase"/>. Shader name <c>_Phases</c>.</summary>
-        public IComputeBuffer PhaseTable { get; private set; }
+        public IComputeBuffer PhaseTable => _phaseBuffer;
+
+        /// <summary>Per particle (same order as <see cref="Particles"/>): rho, p, delta, p / delta^2.</summary>
+        public IComputeBuffer Densities => _densities;
+
+        /// <summary>Per particle: acceleration (xyz) of the last force pass, m/s^2.</summary>
+        public IComputeBuffer Accelerations => _accelerations;
+
+        /// <summary>Per particle: colour-field normal (xyz) when surface tension is on.</summary>
+        public IComputeBuffer Normals => _normalsBuffer;
+
+        /// <summary>Per particle: XSPH velocity correction (xyz) when XSPH is on, m/s.</summary>
+        public IComputeBuffer XsphCorrections => _xsph;
+
+        /// <summary>The neighbour grid (container-local cells of size h).</summary>
+        public CellGrid Grid => _grid;
 
         /// <summary>What the last frame ran (variants and passes).</summary>
         public SimulationPlan Plan { get; private set; }
 
         /// <summary>How the last frame was covered by sub-steps.</summary>
-        public StepReport LastStep { get; private set; }
+        public StepReport LastStep { get; private set; } = StepReport.None;
 
         /// <summary>Simulated time since spawn or <see cref="Reset"/>, s.</summary>
         public double SimulatedTime { get; private set; }
@@ -62,61 +135,533 @@ namespace SphFluid.Simulation
         /// <summary>Host copy of the phase table.</summary>
         public IReadOnlyList<PhaseProperties> PhaseRows => _phaseTable;
 
-        /// <summary>Latest diagnostics read back asynchronously (after <see cref="RequestDiagnostics"/>); may be null or a frame stale.</summary>
-        public DiagnosticsReport LatestDiagnostics { get; private set; }
+        /// <summary>The scene as currently simulated (container and obstacles as last updated).</summary>
+        public FluidSceneDescription Scene => _scene;
 
-        /// <summary>Advances the simulation by one frame of <paramref name="frameSeconds"/> real time.</summary>
+        /// <summary>Names of the GPU timing ranges a frame may record (device.TryGetSampleMilliseconds).</summary>
+        public static IReadOnlyList<string> SampleNames { get; } = new[]
+        {
+            PassNames.UploadContainer, PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.Normals,
+            PassNames.Forces, PassNames.ObstacleForces, PassNames.FullStep, PassNames.MotionReduction, PassNames.Diagnostics,
+        };
+
+        /// <summary>Advances the simulation by one frame of <paramref name="frameSeconds"/> real time, in as
+        /// many sub-steps as stability needs (up to MaxSubsteps; see <see cref="LastStep"/>).</summary>
         public StepReport Step(float frameSeconds)
         {
             ThrowIfDisposed();
-            LastStep = _timeStep.PlanFrame(frameSeconds);
-            SimulatedTime += LastStep.SimulatedSeconds;
-            return LastStep;
+            PollMotion();                                           // vmax, amax of an earlier frame
+            StepReport report = _timeStep.PlanFrame(frameSeconds);  // n sub-steps of dt
+            BeginFrame();                                           // plan, keywords, container upload
+            for (int s = 0; s < report.Substeps; s++)
+                Substep(report.TimeStep);
+            if (report.Substeps > 0)
+                RequestMotion();                                    // GPU max-reduction, read back async
+            _device.Submit();
+            SimulatedTime += report.SimulatedSeconds;
+            LastStep = report;
+            return report;
         }
 
-        /// <summary>Moves the container; its transform is uploaded before the next step.</summary>
+        /// <summary>Runs <paramref name="substeps"/> sub-steps of exactly <paramref name="timeStep"/> seconds,
+        /// bypassing the adaptive controller (tests and benchmarks).</summary>
+        public void StepFixed(int substeps, float timeStep)
+        {
+            ThrowIfDisposed();
+            if (substeps < 0) throw new ArgumentOutOfRangeException(nameof(substeps), substeps, "FluidSimulation: substeps must be >= 0");
+            if (!(timeStep > 0f) || float.IsInfinity(timeStep))
+                throw new ArgumentOutOfRangeException(nameof(timeStep), timeStep, "FluidSimulation: timeStep must be a finite number > 0 s");
+            BeginFrame();
+            for (int s = 0; s < substeps; s++)
+                Substep(timeStep);
+            _device.Submit();
+            SimulatedTime += (double)substeps * timeStep;
+            LastStep = new StepReport(substeps, timeStep, substeps * timeStep, false, _timeStep.StableTimeStep(out string limit), limit);
+        }
+
+        void BeginFrame()
+        {
+            Plan = PipelinePlanner.Plan(_scene, _containerChanged);
+            foreach (string keyword in SolverKeywords.All)
+                _device.SetKeyword(_solver, keyword, Plan.IsKeywordEnabled(keyword));
+            if (Plan.UploadContainerTransform)
+            {
+                _device.BeginSample(PassNames.UploadContainer);
+                UploadContainer();
+                _device.EndSample(PassNames.UploadContainer);
+            }
+        }
+
+        /// <summary>One Velocity Verlet sub-step: kick-drift, re-sort, forces, kick.</summary>
+        void Substep(float dt)
+        {
+            _device.SetFloat(_solver, _ids.TimeStep, dt);
+
+            _device.BeginSample(PassNames.HalfStep);
+            _device.DispatchThreads(_solver, _halfStep, ParticleCount);
+            _device.EndSample(PassNames.HalfStep);
+
+            SortAndComputeForces();
+
+            _device.BeginSample(PassNames.FullStep);
+            _device.DispatchThreads(_solver, _fullStep, ParticleCount);
+            _device.EndSample(PassNames.FullStep);
+        }
+
+        /// <summary>Sort by cell, then density and pressure, normals, forces: a valid acceleration for the
+        /// current positions. Runs once before the first step and inside every sub-step.</summary>
+        void SortAndComputeForces()
+        {
+            _device.BeginSample(PassNames.Sort);
+            _sorter.Sort(_grid, _particles, _particlesOther, ParticleCount);
+            SwapParticleBuffers();
+            _device.EndSample(PassNames.Sort);
+
+            _device.BeginSample(PassNames.DensityPressure);
+            _device.DispatchThreads(_solver, _densityPressure, ParticleCount);
+            _device.EndSample(PassNames.DensityPressure);
+
+            if (Plan.SurfaceTension)
+            {
+                _device.BeginSample(PassNames.Normals);
+                _device.DispatchThreads(_solver, _normals, ParticleCount);
+                _device.EndSample(PassNames.Normals);
+            }
+
+            _device.BeginSample(PassNames.Forces);
+            _device.DispatchThreads(_solver, _forces, ParticleCount);
+            _device.EndSample(PassNames.Forces);
+
+            if (Plan.Obstacles)
+            {
+                _device.BeginSample(PassNames.ObstacleForces);
+                _device.DispatchThreads(_solver, _obstacleForces, ParticleCount);
+                _device.EndSample(PassNames.ObstacleForces);
+            }
+        }
+
+        /// <summary>Re-sorts and recomputes density, pressure and accelerations for the current particles
+        /// without moving them (tests compare these with the CPU reference).</summary>
+        public void ComputeForces()
+        {
+            ThrowIfDisposed();
+            BeginFrame();
+            SortAndComputeForces();
+            _device.Submit();
+        }
+
+        /// <summary>Replaces the particle state (same count; tests). Forces are recomputed for it.</summary>
+        public void SetParticles(Particle[] particles)
+        {
+            ThrowIfDisposed();
+            if (particles == null) throw new ArgumentNullException(nameof(particles));
+            if (particles.Length != ParticleCount)
+                throw new ArgumentException($"FluidSimulation: SetParticles needs exactly {ParticleCount} particles (was {particles.Length})", nameof(particles));
+            _particles.SetData(particles);
+            ComputeForces();
+        }
+
+        /// <summary>Moves (or resizes) the container; its transform is uploaded before the next step.</summary>
         public void UpdateContainer(ContainerDescription container)
         {
             ThrowIfDisposed();
             if (container == null) throw new ArgumentNullException(nameof(container));
+            var probe = CopyOf(_scene);
+            probe.Container = container.Clone();
+            var errors = ContainerErrors(probe);
+            if (errors.Count > 0) throw new ArgumentException(string.Join("\n", errors));
+            var old = _scene.Container;
+            if (old.SamePlacement(container) && old.Velocity == container.Velocity && old.AngularVelocity == container.AngularVelocity)
+                return;
+            _scene.Container = container.Clone();
+            _containerChanged = true;
+            if (old.Size != container.Size)
+                RebuildGrid();
         }
 
-        /// <summary>Replaces the sphere obstacles (the count may not grow beyond the scene's).</summary>
+        /// <summary>Replaces the sphere obstacles (any count up to <see cref="FluidSceneDescription.MaxObstacles"/>).</summary>
         public void UpdateObstacles(IReadOnlyList<SphereObstacleDescription> obstacles)
         {
             ThrowIfDisposed();
+            var list = new List<SphereObstacleDescription>();
+            if (obstacles != null)
+                foreach (var o in obstacles) list.Add(o?.Clone());
+            var probe = CopyOf(_scene);
+            probe.Obstacles = list;
+            var errors = new List<string>();
+            foreach (var e in probe.Validate())
+                if (e.Field.StartsWith("Obstacles", StringComparison.Ordinal)) errors.Add(e.Message);
+            if (errors.Count > 0) throw new ArgumentException(string.Join("\n", errors));
+            _scene.Obstacles = list;
+            UploadObstacles();
         }
 
-        /// <summary>Respawns every particle as at construction.</summary>
+        /// <summary>Respawns every particle as at construction and computes the first forces.</summary>
         public void Reset()
         {
             ThrowIfDisposed();
             SimulatedTime = 0;
+            LastStep = StepReport.None;
             _timeStep.Reset();
+            float speed = 0f;
+            foreach (var box in _scene.SpawnBoxes) speed = Math.Max(speed, box.InitialVelocity.Length());
+            _timeStep.ReportMotion(speed, _scene.Settings.Gravity.Length());
+            _motionReadback = null;
+            _diagnosticsReadback = null;
+            LatestDiagnostics = null;
+            _particles.SetData(_spawn);
+            ComputeForces();
         }
 
-        /// <summary>Starts an asynchronous diagnostics reduction; the result appears in <see cref="LatestDiagnostics"/>.</summary>
+        // ---------------------------------------------------------------- diagnostics
+
+        /// <summary>Latest diagnostics read back asynchronously (after <see cref="RequestDiagnostics"/>);
+        /// null until one arrives, possibly a frame stale (see <see cref="DiagnosticsReport.SimulatedTime"/>).</summary>
+        public DiagnosticsReport LatestDiagnostics
+        {
+            get
+            {
+                PollDiagnostics();
+                return _latestDiagnostics;
+            }
+            private set => _latestDiagnostics = value;
+        }
+
+        DiagnosticsReport _latestDiagnostics;
+
+        /// <summary>Records the diagnostics reductions and starts their asynchronous read-back
+        /// (ignored while the previous one is still in flight).</summary>
         public void RequestDiagnostics()
         {
             ThrowIfDisposed();
+            PollDiagnostics();
+            if (_diagnosticsReadback != null) return;
+            DispatchDiagnostics();
+            _diagnosticsReadback = _device.RequestReadback(_diagnosticsTotals);
+            _diagnosticsRequestTime = SimulatedTime;
+            _device.Submit();
         }
 
-        /// <summary>Blocking diagnostics (tools and tests).</summary>
+        /// <summary>Blocking diagnostics of the current state (tools and tests).</summary>
         public DiagnosticsReport ReadDiagnostics()
         {
             ThrowIfDisposed();
-            return null;
+            DispatchDiagnostics();
+            var rows = new Vector4[1 + _phases.Count];
+            _diagnosticsTotals.GetData(rows);
+            return ToReport(rows, SimulatedTime);
+        }
+
+        void DispatchDiagnostics()
+        {
+            _device.BeginSample(PassNames.Diagnostics);
+            _device.Dispatch(_diagnostics, _diagnosticsPartial, _reductionGroups, 1, 1);
+            _device.Dispatch(_diagnostics, _diagnosticsFinal, 1, 1, 1);
+            _device.EndSample(PassNames.Diagnostics);
+        }
+
+        void PollDiagnostics()
+        {
+            if (_diagnosticsReadback == null || !_diagnosticsReadback.IsDone) return;
+            var request = _diagnosticsReadback;
+            _diagnosticsReadback = null;
+            if (request.HasError) return;
+            var rows = new Vector4[1 + _phases.Count];
+            request.GetData(rows);
+            _latestDiagnostics = ToReport(rows, _diagnosticsRequestTime);
+        }
+
+        DiagnosticsReport ToReport(Vector4[] rows, double time)
+        {
+            double mass = 0;
+            var phases = new PhaseDiagnostics[_phases.Count];
+            for (int k = 0; k < phases.Length; k++)
+            {
+                Vector4 row = rows[1 + k];
+                int count = (int)Math.Round(row.X);
+                mass += (double)count * _phaseTable[k].ParticleMass;
+                phases[k] = new PhaseDiagnostics(_phases[k].Name, count, row.Y, row.Z);
+            }
+            return new DiagnosticsReport(mass, rows[0].X, rows[0].Y, (int)Math.Round(rows[0].Z), (int)Math.Round(rows[0].W), phases, time);
+        }
+
+        void RequestMotion()
+        {
+            if (_motionReadback != null) return; // one in flight: the controller plans with the older figures meanwhile
+            _device.BeginSample(PassNames.MotionReduction);
+            _device.Dispatch(_diagnostics, _motionPartial, _reductionGroups, 1, 1);
+            _device.Dispatch(_diagnostics, _motionFinal, 1, 1, 1);
+            _device.EndSample(PassNames.MotionReduction);
+            _motionReadback = _device.RequestReadback(_motionTotals);
+        }
+
+        void PollMotion()
+        {
+            if (_motionReadback == null || !_motionReadback.IsDone) return;
+            var request = _motionReadback;
+            _motionReadback = null;
+            if (request.HasError) return;
+            request.GetData(_motionRow);
+            _timeStep.ReportMotion(_motionRow[0].X, _motionRow[0].Y);
+        }
+
+        /// <summary>Reads max |v| and max |a| now (blocking) and feeds the time-step controller.</summary>
+        public void ReadMotion(out float maxSpeed, out float maxAcceleration)
+        {
+            ThrowIfDisposed();
+            _device.Dispatch(_diagnostics, _motionPartial, _reductionGroups, 1, 1);
+            _device.Dispatch(_diagnostics, _motionFinal, 1, 1, 1);
+            _motionTotals.GetData(_motionRow);
+            maxSpeed = _motionRow[0].X;
+            maxAcceleration = _motionRow[0].Y;
+        }
+
+        // ---------------------------------------------------------------- set-up
+
+        void CreateBuffers()
+        {
+            int n = ParticleCount;
+            _particles = _device.CreateBuffer("FluidSimulation.Particles", n, Particle.Stride);
+            _particlesOther = _device.CreateBuffer("FluidSimulation.ParticlesSorted", n, Particle.Stride);
+            _phaseBuffer = _device.CreateBuffer("FluidSimulation.Phases", _phaseTable.Length, PhaseProperties.Stride);
+            _phaseBuffer.SetData(_phaseTable);
+            _densities = _device.CreateBuffer("FluidSimulation.Densities", n, 16);
+            _normalsBuffer = _device.CreateBuffer("FluidSimulation.Normals", n, 16);
+            _accelerations = _device.CreateBuffer("FluidSimulation.Accelerations", n, 16);
+            _xsph = _device.CreateBuffer("FluidSimulation.XsphCorrections", n, 16);
+            _obstacles = _device.CreateBuffer("FluidSimulation.Obstacles", FluidSceneDescription.MaxObstacles, SphereObstacleData.Stride);
+            _motionPartials = _device.CreateBuffer("FluidSimulation.MotionPartials", _reductionGroups, 16);
+            _motionTotals = _device.CreateBuffer("FluidSimulation.MotionTotals", 1, 16);
+            _diagnosticsPartials = _device.CreateBuffer("FluidSimulation.DiagnosticsPartials", _reductionGroups * (1 + _phases.Count), 16);
+            _diagnosticsTotals = _device.CreateBuffer("FluidSimulation.DiagnosticsTotals", 1 + _phases.Count, 16);
+
+            var zero = new Vector4[n];
+            _accelerations.SetData(zero);
+            _xsph.SetData(zero);
+            _normalsBuffer.SetData(zero);
+            _densities.SetData(zero);
+
+            RebuildGrid();
+            BindParticleBuffers();
+
+            foreach (int k in new[] { _halfStep, _densityPressure, _normals, _forces, _obstacleForces, _fullStep })
+            {
+                _device.SetBuffer(_solver, k, _ids.Phases, _phaseBuffer);
+                _device.SetBuffer(_solver, k, _ids.Densities, _densities);
+                _device.SetBuffer(_solver, k, _ids.Normals, _normalsBuffer);
+                _device.SetBuffer(_solver, k, _ids.Accelerations, _accelerations);
+                _device.SetBuffer(_solver, k, _ids.XsphCorrections, _xsph);
+                _device.SetBuffer(_solver, k, _ids.Obstacles, _obstacles);
+            }
+            foreach (int k in new[] { _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal })
+            {
+                _device.SetBuffer(_diagnostics, k, _ids.Phases, _phaseBuffer);
+                _device.SetBuffer(_diagnostics, k, _ids.Densities, _densities);
+                _device.SetBuffer(_diagnostics, k, _ids.Accelerations, _accelerations);
+                _device.SetBuffer(_diagnostics, k, _ids.MotionPartials, _motionPartials);
+                _device.SetBuffer(_diagnostics, k, _ids.MotionTotals, _motionTotals);
+                _device.SetBuffer(_diagnostics, k, _ids.DiagnosticsPartials, _diagnosticsPartials);
+                _device.SetBuffer(_diagnostics, k, _ids.DiagnosticsTotals, _diagnosticsTotals);
+                _device.SetBuffer(_diagnostics, k, _ids.Obstacles, _obstacles);
+            }
+        }
+
+        /// <summary>A new grid for the container's size (and a larger sorter if it needs more cells).</summary>
+        void RebuildGrid()
+        {
+            var c = _scene.Container;
+            _grid = new CellGrid(c.Position, c.Rotation, c.Size, _scene.Settings.SmoothingRadius);
+            if (_sorter == null || _grid.CellCount > _sorter.MaxCellCount)
+            {
+                _sorter?.Dispose();
+                _sorter = null;
+                _sorter = new ParticleSorter(_device, ParticleCount, _grid.CellCount);
+                foreach (int k in new[] { _halfStep, _densityPressure, _normals, _forces, _obstacleForces, _fullStep })
+                {
+                    _device.SetBuffer(_solver, k, _ids.CellStart, _sorter.CellStart);
+                    _device.SetBuffer(_solver, k, _ids.CellCount, _sorter.CellCount);
+                }
+            }
+            _containerChanged = true;
+        }
+
+        void SwapParticleBuffers()
+        {
+            var t = _particles;
+            _particles = _particlesOther;
+            _particlesOther = t;
+            BindParticleBuffers();
+        }
+
+        void BindParticleBuffers()
+        {
+            foreach (int k in new[] { _halfStep, _densityPressure, _normals, _forces, _obstacleForces, _fullStep })
+                _device.SetBuffer(_solver, k, _ids.Particles, _particles);
+            foreach (int k in new[] { _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal })
+                _device.SetBuffer(_diagnostics, k, _ids.Particles, _particles);
+        }
+
+        /// <summary>Values fixed for the simulation's lifetime: counts, kernel coefficients, material constants.</summary>
+        void UploadConstants()
+        {
+            var s = _scene.Settings;
+            double h = s.SmoothingRadius;
+            foreach (var program in new[] { _solver, _diagnostics })
+            {
+                _device.SetInt(program, _ids.ParticleCount, ParticleCount);
+                _device.SetFloat(program, _ids.ParticleSpacing, s.ParticleSpacing);
+                _device.SetFloat(program, _ids.BoundaryStiffness, s.BoundaryStiffness);
+                _device.SetFloat(program, _ids.BoundaryDamping, s.BoundaryDamping);
+            }
+            _device.SetInt(_diagnostics, _ids.PhaseCount, _phases.Count);
+            _device.SetInt(_diagnostics, _ids.ReductionGroupCount, _reductionGroups);
+
+            _device.SetFloat(_solver, _ids.SmoothingRadius, (float)h);
+            _device.SetFloat(_solver, _ids.SmoothingRadius2, (float)(h * h));
+            _device.SetFloat(_solver, _ids.Poly6Coefficient, (float)(315.0 / (64.0 * Math.PI * Math.Pow(h, 9))));
+            _device.SetFloat(_solver, _ids.SpikyGradientCoefficient, (float)(45.0 / (Math.PI * Math.Pow(h, 6))));
+            _device.SetFloat(_solver, _ids.ViscosityLaplacianCoefficient, (float)(45.0 / (Math.PI * Math.Pow(h, 6))));
+            _device.SetFloat(_solver, _ids.CohesionCoefficient, (float)(32.0 / (Math.PI * Math.Pow(h, 9))));
+            _device.SetFloat(_solver, _ids.Stiffness, s.Stiffness);
+            _device.SetFloat(_solver, _ids.Gamma, s.Gamma);
+            _device.SetVector(_solver, _ids.Gravity, new Vector4(s.Gravity, 0f));
+            _device.SetFloat(_solver, _ids.XsphEpsilon, s.XsphEpsilon);
+            _device.SetFloat(_solver, _ids.VelocityDamping, s.VelocityDamping);
+            _device.SetFloat(_solver, _ids.TimeStep, 0f);
+        }
+
+        /// <summary>The container's transform and motion, and the grid built on it, to both programs.</summary>
+        void UploadContainer()
+        {
+            var c = _scene.Container;
+            var rotation = Quaternion.Normalize(c.Rotation);
+            Matrix4x4 worldToContainer = Matrix4x4.Transpose(
+                Matrix4x4.CreateTranslation(-c.Position) * Matrix4x4.CreateFromQuaternion(Quaternion.Conjugate(rotation)));
+            Matrix4x4 containerToWorld = Matrix4x4.Transpose(
+                Matrix4x4.CreateFromQuaternion(rotation) * Matrix4x4.CreateTranslation(c.Position));
+            var halfExtent = c.Size * 0.5f - new Vector3(0.5f * _scene.Settings.ParticleSpacing);
+            var clampExtent = c.Size * 0.5f - new Vector3(ClampInset * _scene.Settings.ParticleSpacing);
+            foreach (var program in new[] { _solver, _diagnostics })
+            {
+                _device.SetMatrix(program, _ids.WorldToContainer, worldToContainer);
+                _device.SetMatrix(program, _ids.ContainerToWorld, containerToWorld);
+                _device.SetVector(program, _ids.ContainerCenter, new Vector4(c.Position, 0f));
+                _device.SetVector(program, _ids.ContainerHalfExtent, new Vector4(halfExtent, 0f));
+                _device.SetVector(program, _ids.ContainerClampExtent, new Vector4(clampExtent, 0f));
+                _device.SetVector(program, _ids.ContainerHalfSize, new Vector4(c.Size * 0.5f, 0f));
+                _device.SetVector(program, _ids.ContainerVelocity, new Vector4(c.Velocity, 0f));
+                _device.SetVector(program, _ids.ContainerAngularVelocity, new Vector4(c.AngularVelocity, 0f));
+            }
+            _grid.SetOn(_device, _solver);
+            _containerChanged = false;
+        }
+
+        void UploadObstacles()
+        {
+            var rows = new SphereObstacleData[FluidSceneDescription.MaxObstacles];
+            int count = _scene.Obstacles == null ? 0 : _scene.Obstacles.Count;
+            for (int i = 0; i < count; i++)
+                rows[i] = new SphereObstacleData(_scene.Obstacles[i]);
+            _obstacles.SetData(rows, 0, 0, Math.Max(count, 1));
+            foreach (var program in new[] { _solver, _diagnostics })
+                _device.SetInt(program, _ids.ObstacleCount, count);
+        }
+
+        static FluidSceneDescription CopyOf(FluidSceneDescription scene)
+        {
+            var obstacles = new List<SphereObstacleDescription>();
+            if (scene.Obstacles != null)
+                foreach (var o in scene.Obstacles) obstacles.Add(o?.Clone());
+            return new FluidSceneDescription
+            {
+                Settings = scene.Settings?.Clone(),
+                SpawnBoxes = scene.SpawnBoxes == null ? null : new List<SpawnBoxDescription>(scene.SpawnBoxes),
+                Container = scene.Container?.Clone(),
+                Obstacles = obstacles,
+            };
+        }
+
+        static List<string> ContainerErrors(FluidSceneDescription scene)
+        {
+            var errors = new List<string>();
+            foreach (var e in scene.Validate())
+                if (e.Field.StartsWith("Container", StringComparison.Ordinal)) errors.Add(e.Message);
+            return errors;
         }
 
         public void Dispose()
         {
             if (_disposed) return;
             _disposed = true;
+            _motionReadback = null;
+            _diagnosticsReadback = null;
+            foreach (var buffer in new[] { _particles, _particlesOther, _phaseBuffer, _densities, _normalsBuffer, _accelerations,
+                         _xsph, _obstacles, _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals })
+                buffer?.Dispose();
+            _particles = _particlesOther = _phaseBuffer = _densities = _normalsBuffer = _accelerations = null;
+            _xsph = _obstacles = _motionPartials = _motionTotals = _diagnosticsPartials = _diagnosticsTotals = null;
+            _sorter?.Dispose();
+            _sorter = null;
         }
 
         void ThrowIfDisposed()
         {
             if (_disposed) throw new ObjectDisposedException(nameof(FluidSimulation));
+        }
+
+        /// <summary>Property ids, looked up once.</summary>
+        sealed class ShaderIds
+        {
+            public readonly int Particles, Phases, Densities, Normals, Accelerations, XsphCorrections, Obstacles, CellStart, CellCount;
+            public readonly int MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
+            public readonly int ParticleCount, PhaseCount, ReductionGroupCount, ObstacleCount, TimeStep;
+            public readonly int SmoothingRadius, SmoothingRadius2, Poly6Coefficient, SpikyGradientCoefficient, ViscosityLaplacianCoefficient, CohesionCoefficient;
+            public readonly int Stiffness, Gamma, Gravity, XsphEpsilon, VelocityDamping, ParticleSpacing, BoundaryStiffness, BoundaryDamping;
+            public readonly int WorldToContainer, ContainerToWorld, ContainerCenter, ContainerHalfExtent, ContainerClampExtent, ContainerHalfSize, ContainerVelocity, ContainerAngularVelocity;
+
+            public ShaderIds(IComputeDevice d)
+            {
+                Particles = d.PropertyId("_Particles");
+                Phases = d.PropertyId("_Phases");
+                Densities = d.PropertyId("_Densities");
+                Normals = d.PropertyId("_Normals");
+                Accelerations = d.PropertyId("_Accelerations");
+                XsphCorrections = d.PropertyId("_XsphCorrections");
+                Obstacles = d.PropertyId("_Obstacles");
+                CellStart = d.PropertyId(ParticleSorter.CellStartProperty);
+                CellCount = d.PropertyId(ParticleSorter.CellCountProperty);
+                MotionPartials = d.PropertyId("_MotionPartials");
+                MotionTotals = d.PropertyId("_MotionTotals");
+                DiagnosticsPartials = d.PropertyId("_DiagnosticsPartials");
+                DiagnosticsTotals = d.PropertyId("_DiagnosticsTotals");
+                ParticleCount = d.PropertyId("_ParticleCount");
+                PhaseCount = d.PropertyId("_PhaseCount");
+                ReductionGroupCount = d.PropertyId("_ReductionGroupCount");
+                ObstacleCount = d.PropertyId("_ObstacleCount");
+                TimeStep = d.PropertyId("_TimeStep");
+                SmoothingRadius = d.PropertyId("_SmoothingRadius");
+                SmoothingRadius2 = d.PropertyId("_SmoothingRadius2");
+                Poly6Coefficient = d.PropertyId("_Poly6Coefficient");
+                SpikyGradientCoefficient = d.PropertyId("_SpikyGradientCoefficient");
+                ViscosityLaplacianCoefficient = d.PropertyId("_ViscosityLaplacianCoefficient");
+                CohesionCoefficient = d.PropertyId("_CohesionCoefficient");
+                Stiffness = d.PropertyId("_Stiffness");
+                Gamma = d.PropertyId("_Gamma");
+                Gravity = d.PropertyId("_Gravity");
+                XsphEpsilon = d.PropertyId("_XsphEpsilon");
+                VelocityDamping = d.PropertyId("_VelocityDamping");
+                ParticleSpacing = d.PropertyId("_ParticleSpacing");
+                BoundaryStiffness = d.PropertyId("_BoundaryStiffness");
+                BoundaryDamping = d.PropertyId("_BoundaryDamping");
+                WorldToContainer = d.PropertyId("_WorldToContainer");
+                ContainerToWorld = d.PropertyId("_ContainerToWorld");
+                ContainerCenter = d.PropertyId("_ContainerCenter");
+                ContainerHalfExtent = d.PropertyId("_ContainerHalfExtent");
+                ContainerHalfSize = d.PropertyId("_ContainerHalfSize");
+                ContainerClampExtent = d.PropertyId("_ContainerClampExtent");
+                ContainerVelocity = d.PropertyId("_ContainerVelocity");
+                ContainerAngularVelocity = d.PropertyId("_ContainerAngularVelocity");
+            }
         }
     }
 }

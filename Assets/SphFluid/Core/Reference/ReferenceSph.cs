@@ -1,0 +1,254 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+using SphFluid.Simulation;
+
+namespace SphFluid.Reference
+{
+    /// <summary>
+    /// The SPH of the team notes' physics specification, in double precision and brute force (every pair,
+    /// O(N^2)): used ONLY to check the GPU kernels on small cases, never shipped. It mirrors the kernels
+    /// equation by equation (Shaders/Include/Sph*.hlsl), including the same-phase normals and the penalty
+    /// and clamp boundaries, but shares no code with them.
+    /// </summary>
+    public sealed class ReferenceSph
+    {
+        readonly FluidSettings _settings;
+        readonly PhaseProperties[] _phases;
+        readonly double _h, _h2, _poly6, _spiky, _viscosityLaplacian, _cohesion;
+
+        public ContainerDescription Container { get; set; }
+        public List<SphereObstacleDescription> Obstacles { get; set; }
+
+        public ReferenceSph(FluidSceneDescription scene)
+        {
+            _settings = scene.Settings;
+            _phases = scene.BuildPhaseTable();
+            Container = scene.Container.Clone();
+            Obstacles = new List<SphereObstacleDescription>(scene.Obstacles ?? new List<SphereObstacleDescription>());
+            _h = _settings.SmoothingRadius;
+            _h2 = _h * _h;
+            _poly6 = 315.0 / (64.0 * Math.PI * Math.Pow(_h, 9));
+            _spiky = 45.0 / (Math.PI * Math.Pow(_h, 6));
+            _viscosityLaplacian = 45.0 / (Math.PI * Math.Pow(_h, 6));
+            _cohesion = 32.0 / (Math.PI * Math.Pow(_h, 9));
+        }
+
+        public IReadOnlyList<PhaseProperties> PhaseTable => _phases;
+
+        public double Poly6(double r2) => r2 >= _h2 ? 0.0 : _poly6 * Math.Pow(_h2 - r2, 3);
+
+        public Double3 SpikyGradient(Double3 rij, double r) => rij * (-_spiky * (_h - r) * (_h - r) / r);
+
+        public double Cohesion(double r)
+        {
+            if (r > _h || r <= 0) return 0;
+            double term = Math.Pow(_h - r, 3) * r * r * r;
+            if (2 * r > _h) return _cohesion * term;
+            return _cohesion * (2 * term - Math.Pow(_h, 6) / 64.0);
+        }
+
+        /// <summary>Density, pressure, normals, accelerations and XSPH corrections of a particle state
+        /// (as FluidSimulation.ComputeForces leaves them). Normals are zero when no phase has surface tension.</summary>
+        public ReferenceState Evaluate(Particle[] particles)
+        {
+            int n = particles.Length;
+            var s = new ReferenceState(n);
+            var x = new Double3[n];
+            var v = new Double3[n];
+            for (int i = 0; i < n; i++) { x[i] = new Double3(particles[i].Position); v[i] = new Double3(particles[i].Velocity); }
+
+            for (int i = 0; i < n; i++)
+            {
+                double delta = 0;
+                for (int j = 0; j < n; j++) delta += Poly6((x[i] - x[j]).LengthSquared());
+                var phase = _phases[particles[i].Phase];
+                double rho = phase.ParticleMass * delta;
+                double p = _settings.Stiffness * (Math.Pow(rho / phase.RestDensity, _settings.Gamma) - 1.0);
+                s.NumberDensity[i] = delta;
+                s.Density[i] = rho;
+                s.Pressure[i] = Math.Max(p, 0.0);
+            }
+
+            bool tension = false;
+            foreach (var phase in _phases) if (phase.SurfaceTension > 0) tension = true;
+            for (int i = 0; i < n; i++)
+            {
+                var normal = Double3.Zero;
+                for (int j = 0; j < n; j++)
+                {
+                    if (particles[j].Phase != particles[i].Phase) continue;
+                    var rij = x[i] - x[j];
+                    double r2 = rij.LengthSquared();
+                    if (r2 >= _h2 || r2 <= 0) continue;
+                    normal += SpikyGradient(rij, Math.Sqrt(r2)) / s.NumberDensity[j];
+                }
+                s.Normal[i] = tension ? normal * _h : Double3.Zero;
+            }
+
+            var gravity = new Double3(_settings.Gravity);
+            for (int i = 0; i < n; i++)
+            {
+                var phaseI = _phases[particles[i].Phase];
+                double mi = phaseI.ParticleMass;
+                double termI = s.Pressure[i] / (s.NumberDensity[i] * s.NumberDensity[i]);
+                var force = Double3.Zero;
+                var xsph = Double3.Zero;
+                for (int j = 0; j < n; j++)
+                {
+                    if (j == i) continue;
+                    var rij = x[i] - x[j];
+                    double r2 = rij.LengthSquared();
+                    if (r2 >= _h2) continue;
+                    double r = Math.Sqrt(r2);
+                    var phaseJ = _phases[particles[j].Phase];
+                    double muI = phaseI.Viscosity, muJ = phaseJ.Viscosity;
+                    double mu = muI + muJ > 0 ? 2 * muI * muJ / (muI + muJ) : 0;
+                    force += (v[j] - v[i]) * (mu * _viscosityLaplacian * (_h - r) / (s.NumberDensity[i] * s.NumberDensity[j]));
+                    if (r > 0)
+                    {
+                        double termJ = s.Pressure[j] / (s.NumberDensity[j] * s.NumberDensity[j]);
+                        force += SpikyGradient(rij, r) * -(termI + termJ);
+                        if (tension && particles[j].Phase == particles[i].Phase && phaseI.SurfaceTension > 0)
+                        {
+                            double gamma = phaseI.SurfaceTension;
+                            double k = 2 * phaseI.RestDensity / (s.Density[i] + s.Density[j]);
+                            var cohesion = rij * (-gamma * mi * phaseJ.ParticleMass * Cohesion(r) / r);
+                            var curvature = (s.Normal[i] - s.Normal[j]) * (-gamma * mi);
+                            force += (cohesion + curvature) * k;
+                        }
+                    }
+                    xsph += (v[j] - v[i]) * (2 * Poly6(r2) / (s.NumberDensity[i] + s.NumberDensity[j]));
+                }
+                s.InternalForce[i] = force;
+                s.Acceleration[i] = force / mi + gravity + ContainerPenalty(x[i], v[i]) + ObstaclePenalty(x[i], v[i]);
+                s.Xsph[i] = xsph * _settings.XsphEpsilon;
+            }
+            return s;
+        }
+
+        // ------------------------------------------------------------------ boundaries
+
+        Quaternion Rotation => Quaternion.Normalize(Container.Rotation);
+
+        Double3 ToLocal(Double3 world) => Rotate(world - new Double3(Container.Position), Quaternion.Conjugate(Rotation));
+
+        Double3 ToWorldDirection(Double3 local) => Rotate(local, Rotation);
+
+        static Double3 Rotate(Double3 v, Quaternion q)
+        {
+            // v' = v + 2 w (u x v) + 2 u x (u x v), with u = (q.x, q.y, q.z), w = q.w (unit q).
+            var u = new Double3(q.X, q.Y, q.Z);
+            var t = Double3.Cross(u, v) * 2.0;
+            return v + t * q.W + Double3.Cross(u, t);
+        }
+
+        Double3 HalfExtent => new Double3(Container.Size * 0.5f) - new Double3(0.5, 0.5, 0.5) * _settings.ParticleSpacing;
+
+        Double3 ClampExtent => new Double3(Container.Size * 0.5f) - new Double3(1, 1, 1) * (FluidSimulation.ClampInset * (double)_settings.ParticleSpacing);
+
+        Double3 WallVelocity(Double3 x) =>
+            new Double3(Container.Velocity) + Double3.Cross(new Double3(Container.AngularVelocity), x - new Double3(Container.Position));
+
+        public Double3 ContainerPenalty(Double3 x, Double3 v)
+        {
+            var q = ToLocal(x);
+            var rel = Rotate(v - WallVelocity(x), Quaternion.Conjugate(Rotation));
+            var H = HalfExtent;
+            var a = Double3.Zero;
+            for (int axis = 0; axis < 3; axis++)
+            {
+                double excess = Math.Abs(q[axis]) - H[axis];
+                if (excess <= 0) continue;
+                double outward = q[axis] >= 0 ? 1 : -1;
+                double approach = Math.Max(0, rel[axis] * outward);
+                a[axis] = -outward * (_settings.BoundaryStiffness * excess + _settings.BoundaryDamping * approach);
+            }
+            return ToWorldDirection(a);
+        }
+
+        public Double3 ObstaclePenalty(Double3 x, Double3 v)
+        {
+            var a = Double3.Zero;
+            foreach (var o in Obstacles)
+            {
+                var d = x - new Double3(o.Center);
+                double dist = d.Length();
+                double surface = o.Radius + 0.5 * _settings.ParticleSpacing;
+                if (dist >= surface) continue;
+                var n = dist > 0 ? d / dist : new Double3(0, 1, 0);
+                double approach = Math.Max(0, -Double3.Dot(v - new Double3(o.Velocity), n));
+                a += n * (_settings.BoundaryStiffness * (surface - dist) + _settings.BoundaryDamping * approach);
+            }
+            return a;
+        }
+
+        public void Clamp(ref Double3 x, ref Double3 v)
+        {
+            foreach (var o in Obstacles)
+            {
+                var d = x - new Double3(o.Center);
+                double dist = d.Length();
+                double surface = o.Radius + FluidSimulation.ClampInset * (double)_settings.ParticleSpacing;
+                if (dist >= surface) continue;
+                var n = dist > 0 ? d / dist : new Double3(0, 1, 0);
+                x = new Double3(o.Center) + n * surface;
+                double inward = Double3.Dot(v - new Double3(o.Velocity), n);
+                if (inward < 0) v -= n * inward;
+            }
+            var q = ToLocal(x);
+            var H = ClampExtent;
+            var clamped = q;
+            bool any = false;
+            for (int axis = 0; axis < 3; axis++)
+            {
+                double c = Math.Max(-H[axis], Math.Min(H[axis], q[axis]));
+                if (c != q[axis]) any = true;
+                clamped[axis] = c;
+            }
+            if (!any) return;
+            x = ToWorldDirection(clamped) + new Double3(Container.Position);
+            var wall = WallVelocity(x);
+            var rel = Rotate(v - wall, Quaternion.Conjugate(Rotation));
+            for (int axis = 0; axis < 3; axis++)
+            {
+                if (clamped[axis] == q[axis]) continue;
+                double outward = q[axis] > 0 ? 1 : -1;
+                if (rel[axis] * outward > 0) rel[axis] = 0;
+            }
+            v = wall + ToWorldDirection(rel);
+        }
+
+        // ------------------------------------------------------------------ integration
+
+        /// <summary>One Velocity Verlet sub-step as FluidSimulation runs it: kick-drift and clamp with the
+        /// accelerations of <paramref name="current"/>, forces at the new positions, kick plus XSPH, damping, clamp.
+        /// Returns the new particles and their evaluated state.</summary>
+        public Particle[] Substep(Particle[] particles, ReferenceState current, double dt, bool xsph, out ReferenceState next)
+        {
+            int n = particles.Length;
+            var moved = new Particle[n];
+            var x = new Double3[n];
+            var v = new Double3[n];
+            for (int i = 0; i < n; i++)
+            {
+                v[i] = new Double3(particles[i].Velocity) + current.Acceleration[i] * (0.5 * dt);
+                x[i] = new Double3(particles[i].Position) + v[i] * dt;
+                Clamp(ref x[i], ref v[i]);
+                moved[i] = new Particle(x[i].ToVector3(), v[i].ToVector3(), particles[i].Phase, particles[i].Id);
+            }
+            next = Evaluate(moved);
+            double damping = Math.Max(0, 1 - _settings.VelocityDamping * dt);
+            for (int i = 0; i < n; i++)
+            {
+                var vi = v[i] + next.Acceleration[i] * (0.5 * dt);
+                if (xsph) vi += next.Xsph[i];
+                vi *= damping;
+                var xi = x[i];
+                Clamp(ref xi, ref vi);
+                moved[i] = new Particle(xi.ToVector3(), vi.ToVector3(), particles[i].Phase, particles[i].Id);
+            }
+            return moved;
+        }
+    }
+}

@@ -1,0 +1,26 @@
+using System.Numerics;
+using System.Runtime.InteropServices;
+
+namespace SphFluid.Simulation
+{
+    /// <summary>One sphere obstacle as the GPU reads it (<c>SphereObstacle</c> in Shaders/Include/SphBoundary.hlsl):
+    /// two 16-byte groups.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SphereObstacleData
+    {
+        public const int Stride = 32;
+
+        public Vector3 Center;
+        public float Radius;
+        public Vector3 Velocity;
+        float _padding;
+
+        public SphereObstacleData(SphereObstacleDescription obstacle)
+        {
+            Center = obstacle.Center;
+            Radius = obstacle.Radius;
+            Velocity = obstacle.Velocity;
+            _padding = 0f;
+        }
+    }
+}

@@ -1,0 +1,26 @@
+#ifndef SPHFLUID_SPH_INTEGRATION_INCLUDED
+#define SPHFLUID_SPH_INTEGRATION_INCLUDED
+
+// Velocity Verlet (kick-drift-kick; Verlet 1967, Swope et al. 1982), split around the force pass:
+//   half step:  v_{n+1/2} = v_n + a_n dt/2 ;  x_{n+1} = x_n + v_{n+1/2} dt     (then clamp)
+//   forces:     a_{n+1} = a(x_{n+1}, v_{n+1/2})                                (after the re-sort)
+//   full step:  v_{n+1} = v_{n+1/2} + a_{n+1} dt/2 + dv_xsph ;  v *= max(0, 1 - damping dt)   (then clamp)
+// Second order and time-reversible for position-only forces; the velocity-dependent terms
+// (viscosity, XSPH, wall damping) use the half-step velocity. Before the first step the forces are
+// computed once so that a_0 is valid.
+float _TimeStep;        // dt of this sub-step, s
+float _VelocityDamping; // 1/s, 0 = none
+
+void KickDrift(inout float3 x, inout float3 v, float3 a)
+{
+    v += a * (0.5 * _TimeStep);
+    x += v * _TimeStep;
+}
+
+float3 FullStepVelocity(float3 v, float3 a, float3 xsphCorrection)
+{
+    v += a * (0.5 * _TimeStep) + xsphCorrection;
+    return v * max(0.0, 1.0 - _VelocityDamping * _TimeStep);
+}
+
+#endif
