@@ -36,6 +36,8 @@ public sealed class SpirvReflection
     public SpirvResource GlobalBlock { get; private init; }
     /// <summary>Every uniform block, <c>$Global</c> included; globals set by name may live in any of them.</summary>
     public IReadOnlyList<SpirvUniformBlock> UniformBlocks { get; private init; } = Array.Empty<SpirvUniformBlock>();
+    /// <summary>Bound resources the backend cannot provide (textures, typed buffers, samplers), by name.</summary>
+    public IReadOnlyList<string> UnsupportedResources { get; private init; } = Array.Empty<string>();
 
     const uint Magic = 0x07230203;
 
@@ -137,8 +139,14 @@ public sealed class SpirvReflection
             }
         }
 
+        var unsupported = new List<string>();
         foreach (var (ptrType, id, storage) in variables)
         {
+            if (storage == 0 && decorations.ContainsKey((id, DecoBinding)))
+            {
+                unsupported.Add(names.TryGetValue(id, out var un) && un.Length > 0 ? un : $"%{id}");
+                continue;
+            }
             if (storage != StorageUniform && storage != StorageStorageBuffer) continue;
             if (!types.TryGetValue(ptrType, out var ptr) || ptr.Op != 32) continue;
             uint blockType = ptr.Operands[1];
@@ -210,6 +218,7 @@ public sealed class SpirvReflection
             Globals = globals,
             GlobalBlockSize = globalSize,
             UniformBlocks = blocks,
+            UnsupportedResources = unsupported,
             GlobalBlock = globalBlock,
         };
     }

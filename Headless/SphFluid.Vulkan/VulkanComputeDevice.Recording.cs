@@ -128,6 +128,12 @@ public sealed unsafe partial class VulkanComputeDevice
         v.UniformBlocks = reflection.UniformBlocks
             .Select(b => (b, b.Members.Values.Select(m => (PropertyIdOf(m.Name), m)).ToArray()))
             .ToArray();
+        if (reflection.UnsupportedResources.Count > 0)
+            throw new ComputeException($"{path}: kernel '{kernel}' binds {string.Join(", ", reflection.UnsupportedResources.Select(n => "'" + n + "'"))}, a texture or typed buffer; " +
+                                       "the headless backend binds only StructuredBuffer/ByteAddressBuffer and globals");
+        foreach (var r in reflection.Resources)
+            if (r.Name.EndsWith("@count", StringComparison.Ordinal))
+                throw new ComputeException($"{path}: kernel '{kernel}' uses a hidden counter buffer '{r.Name}' (IncrementCounter/Append/Consume), which the headless backend does not support; count with InterlockedAdd on a buffer of its own");
         foreach (var r in reflection.Resources)
             if (r.Set != 0) throw new ComputeException($"{path}: kernel '{kernel}' puts '{r.Name}' in descriptor set {r.Set}; only set 0 is supported");
         _variantCache[key] = v;
@@ -716,5 +722,6 @@ public sealed unsafe partial class VulkanComputeDevice
             _vk.DestroyInstance(_instance, null);
             _instance = default;
         }
+        FreeSelfHandle();
     }
 }

@@ -156,7 +156,9 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
     {
         var appName = (byte*)SilkMarshal.StringToPtr("SphFluid");
         var layerName = (byte*)SilkMarshal.StringToPtr(ValidationLayer);
-        var debugExt = (byte*)SilkMarshal.StringToPtr("VK_EXT_debug_utils");
+        var extensions = stackalloc byte*[2];
+        extensions[0] = (byte*)SilkMarshal.StringToPtr("VK_EXT_debug_utils");
+        extensions[1] = (byte*)SilkMarshal.StringToPtr("VK_EXT_validation_features");
         try
         {
             var app = new ApplicationInfo
@@ -183,9 +185,11 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
                 info.EnabledLayerCount = 1;
                 info.PpEnabledLayerNames = &layerName;
                 info.EnabledExtensionCount = 1;
-                info.PpEnabledExtensionNames = &debugExt;
+                info.PpEnabledExtensionNames = extensions;
                 if (_options.SynchronizationValidation)
                 {
+                    // The layer only reads VkValidationFeaturesEXT when its extension is enabled.
+                    info.EnabledExtensionCount = 2;
                     validationFeatures.PNext = &messengerInfo;
                     info.PNext = &validationFeatures;
                 }
@@ -202,7 +206,8 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
         {
             SilkMarshal.Free((nint)appName);
             SilkMarshal.Free((nint)layerName);
-            SilkMarshal.Free((nint)debugExt);
+            SilkMarshal.Free((nint)extensions[0]);
+            SilkMarshal.Free((nint)extensions[1]);
         }
     }
 
@@ -391,7 +396,7 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
         buffer.Handle = b;
         buffer.Memory = m;
         const MemoryPropertyFlags mappable = MemoryPropertyFlags.HostVisibleBit | MemoryPropertyFlags.HostCoherentBit;
-        if ((flags & mappable) == mappable)
+        if ((flags & mappable) == mappable && _options.MapDeviceBuffers)
         {
             void* p;
             Check(_vk.MapMemory(_device, m, 0, Vk.WholeSize, 0, &p), "vkMapMemory");

@@ -27,6 +27,10 @@ public sealed class VulkanComputeOptions
     /// <summary>Writes a timestamp pair around every dispatch (<see cref="VulkanComputeDevice.LastDispatchTimings"/>).</summary>
     public bool TimeDispatches { get; set; } = true;
 
+    /// <summary>Maps storage buffers straight into host memory where the device offers memory that is both
+    /// device-local and host-visible (lavapipe, integrated GPUs). Off forces the staging-copy path a discrete GPU takes.</summary>
+    public bool MapDeviceBuffers { get; set; } = true;
+
     /// <summary>Where compiled SPIR-V is cached; default <see cref="ShaderCompiler.DefaultCacheDirectory"/>.</summary>
     public string ShaderCacheDirectory { get; set; }
 }

@@ -1,0 +1,63 @@
+using System.IO;
+using NUnit.Framework;
+using SphFluid.Vulkan;
+
+namespace SphFluid.Tests.Backend
+{
+    /// <summary>Compiled variants are cached on disk by content, so a rerun never recompiles.</summary>
+    public sealed class BackendShaderCacheTests
+    {
+        string _dir;
+
+        [SetUp]
+        public void CreateScratchFolder()
+        {
+            _dir = Path.Combine(Path.GetTempPath(), "sphfluid-cache-" + TestContext.CurrentContext.Test.ID);
+            Directory.CreateDirectory(_dir);
+        }
+
+        [TearDown]
+        public void Clean() => Directory.Delete(_dir, true);
+
+        [Test]
+        public void SecondLoadOfAProgramDoesNotRunGlslang()
+        {
+            var device = GpuTestDevice.Shared;
+            device.LoadProgram("BackendSmoke");
+            int before = device.Compiler.CompileCount;
+            device.LoadProgram("BackendSmoke");
+            Assert.That(device.Compiler.CompileCount, Is.EqualTo(before));
+        }
+
+        [Test]
+        public void AFreshCompilerReadsTheDiskCacheAndAnIncludeChangeRecompiles()
+        {
+            string shaders = Path.Combine(_dir, "Shaders");
+            Directory.CreateDirectory(Path.Combine(shaders, "Include"));
+            string include = Path.Combine(shaders, "Include", "Value.hlsl");
+            File.WriteAllText(include, "static const float Value = 1.0f;\n");
+            string path = Path.Combine(shaders, "Cached.compute");
+            File.WriteAllText(path,
+                "#pragma kernel Main\n#include \"Include/Value.hlsl\"\nRWStructuredBuffer<float> _Out;\n" +
+                "[numthreads(1, 1, 1)]\nvoid Main(uint3 id : SV_DispatchThreadID) { _Out[0] = Value; }\n");
+            string cache = Path.Combine(_dir, "Cache");
+            var dirs = new[] { shaders };
+
+            var first = new ShaderCompiler(cache);
+            var words = first.Compile(ComputeSource.Load(path, dirs), "Main", new string[0], dirs);
+            Assert.That(first.CompileCount, Is.EqualTo(1));
+
+            var second = new ShaderCompiler(cache);
+            var again = second.Compile(ComputeSource.Load(path, dirs), "Main", new string[0], dirs);
+            Assert.That(second.CompileCount, Is.EqualTo(0), "a rerun reads the cache");
+            Assert.That(again, Is.EqualTo(words));
+
+            second.Compile(ComputeSource.Load(path, dirs), "Main", new[] { "SOME_KEYWORD" }, dirs);
+            Assert.That(second.CompileCount, Is.EqualTo(1), "another variant is another entry");
+
+            File.WriteAllText(include, "static const float Value = 2.0f;\n");
+            second.Compile(ComputeSource.Load(path, dirs), "Main", new string[0], dirs);
+            Assert.That(second.CompileCount, Is.EqualTo(2), "an edited include invalidates the entry");
+        }
+    }
+}

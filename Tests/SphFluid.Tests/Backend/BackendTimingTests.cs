@@ -1,0 +1,51 @@
+using System.Linq;
+using NUnit.Framework;
+using SphFluid.Compute;
+
+namespace SphFluid.Tests.Backend
+{
+    /// <summary>GPU timestamp queries time named ranges and every dispatch.</summary>
+    public sealed class BackendTimingTests
+    {
+        [TearDown]
+        public void NoValidationMessages() => GpuTestDevice.AssertNoValidationMessages();
+
+        [Test]
+        public void SampleRangeAndEachDispatchHaveAPositiveGpuTime()
+        {
+            var device = GpuTestDevice.Shared;
+            var program = device.LoadProgram("BackendBuffers");
+            int kernel = program.FindKernel("AddOne");
+            const int count = 100000;
+            using (var counter = device.CreateBuffer("Counter", count, sizeof(uint)))
+            {
+                device.SetBuffer(program, kernel, device.PropertyId("_Counter"), counter);
+                device.SetInt(program, device.PropertyId("_ItemCount"), count);
+                device.BeginSample("BackendTiming");
+                for (int i = 0; i < 3; i++) device.DispatchThreads(program, kernel, count);
+                device.EndSample("BackendTiming");
+                device.Submit();
+
+                Assert.That(device.TryGetSampleMilliseconds("BackendTiming", out double ms), Is.True);
+                Assert.That(ms, Is.GreaterThan(0.0));
+                var timings = device.LastDispatchTimings;
+                Assert.That(timings.Select(t => t.Kernel), Is.EqualTo(new[] { "AddOne", "AddOne", "AddOne" }));
+                Assert.That(timings.Select(t => t.Milliseconds), Is.All.GreaterThan(0.0));
+                Assert.That(timings.Sum(t => t.Milliseconds), Is.LessThanOrEqualTo(ms * 1.01 + 0.01));
+            }
+        }
+
+        [Test]
+        public void UnknownSampleHasNoTime()
+        {
+            Assert.That(GpuTestDevice.Shared.TryGetSampleMilliseconds("NeverSampled", out _), Is.False);
+        }
+
+        [Test]
+        public void EndSampleWithoutBeginIsNamed()
+        {
+            Assert.That(() => GpuTestDevice.Shared.EndSample("NeverBegun"),
+                Throws.TypeOf<ComputeException>().With.Message.Contains("NeverBegun"));
+        }
+    }
+}
