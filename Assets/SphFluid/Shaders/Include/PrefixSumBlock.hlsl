@@ -5,6 +5,7 @@
 // after Harris, Sengupta & Owens, GPU Gems 3 ch. 39). C# mirrors these numbers in
 // SphFluid.Sorting.PrefixSum (ThreadsPerGroup, ElementsPerGroup): change both together.
 #define SCAN_THREADS 256u
+#define SCAN_THREADS_LOG2 8u
 #define SCAN_PER_THREAD 8u
 #define SCAN_BLOCK 2048u // SCAN_THREADS * SCAN_PER_THREAD
 
