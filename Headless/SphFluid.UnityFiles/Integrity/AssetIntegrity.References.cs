@@ -1,0 +1,101 @@
+using System;
+using System.IO;
+using System.Linq;
+using SphFluid.UnityFiles.Assets;
+using SphFluid.UnityFiles.Yaml;
+
+namespace SphFluid.UnityFiles.Integrity;
+
+public sealed partial class AssetIntegrity
+{
+    void CheckSerializedFiles()
+    {
+        foreach (var file in _assetFiles)
+        {
+            if (!StartsWithYamlHeader(file)) continue;
+            UnityYamlFile yaml;
+            try { yaml = UnityYamlFile.Load(file); }
+            catch (Exception e) when (e is FormatException or IOException)
+            {
+                ReportAt(file, $"Unity would refuse this YAML: {e.Message}");
+                continue;
+            }
+            if (!yaml.HasUnityHeader) ReportAt(file, $"must start with '{UnityYamlFile.YamlHeader}' and '{UnityYamlFile.TagHeader}'");
+            foreach (var id in yaml.DuplicateFileIds.Distinct()) ReportAt(file, $"anchor &{id} is used by more than one document");
+            foreach (var d in yaml.Documents)
+                if (UnityKnownIds.TypeNames.TryGetValue(d.ClassId, out var type) && type != d.TypeName)
+                    ReportAt(file, $"document &{d.FileId} (line {d.Line}) is class {d.ClassId} ({type}) but its root key is '{d.TypeName}'");
+            if (_metaByAsset.TryGetValue(file, out var meta) && meta.MainObjectFileId is long main && yaml.Find(main) == null)
+                ReportAt(file, $"its .meta says mainObjectFileID {main} but no document is '&{main}'");
+            CheckReferences(file, yaml);
+            CheckScripts(file, yaml);
+            var ext = Extension(file);
+            if (ext == ".unity" || ext == ".prefab") CheckSceneStructure(file, yaml, ext == ".unity");
+        }
+    }
+
+    static bool StartsWithYamlHeader(string file)
+    {
+        try
+        {
+            using var reader = new StreamReader(file);
+            var first = reader.ReadLine();
+            return first != null && first.StartsWith("%YAML", StringComparison.Ordinal);
+        }
+        catch (IOException) { return false; }
+    }
+
+    /// <summary>Every <c>{fileID, guid, type}</c> in the file resolves, with the main-object id and type its target's extension takes.</summary>
+    void CheckReferences(string file, UnityYamlFile yaml)
+    {
+        foreach (var doc in yaml.Documents)
+        {
+            foreach (var (path, r) in doc.Root.References())
+            {
+                var where = $"&{doc.FileId} {doc.TypeName}.{path}";
+                if (r.IsNull) continue;
+                if (r.IsLocal)
+                {
+                    if (yaml.Find(r.FileId) == null) ReportAt(file, $"{where} points at &{r.FileId}, which is not in this file");
+                    continue;
+                }
+                if (!UnityMeta.IsValidGuid(r.Guid))
+                {
+                    ReportAt(file, $"{where} has malformed guid '{r.Guid}'");
+                    continue;
+                }
+                if (r.IsBuiltin || UnityKnownIds.PackageScriptGuids.ContainsKey(r.Guid)) continue;
+                if (!_assetByGuid.TryGetValue(r.Guid, out var target))
+                {
+                    ReportAt(file, $"{where} references guid {r.Guid}, which no .meta in the project has");
+                    continue;
+                }
+                CheckMainObject(file, where, r, target);
+            }
+        }
+    }
+
+    void CheckMainObject(string file, string where, UnityReference r, string target)
+    {
+        var ext = Extension(target);
+        var rule = UnityKnownIds.MainObjects.FirstOrDefault(kv => kv.Key.Equals(ext, StringComparison.OrdinalIgnoreCase));
+        if (rule.Key == null) return;
+        var (fileId, type) = rule.Value;
+        var name = Rel(target);
+        if (r.Type != type) ReportAt(file, $"{where} references '{name}' with type {r.Type}; a {ext} takes type {type}");
+        if (fileId is long expected)
+        {
+            if (r.FileId != expected) ReportAt(file, $"{where} references '{name}' with fileID {r.FileId}; a {ext} main object is {expected}");
+        }
+        else if (r.FileId == 0) ReportAt(file, $"{where} references '{name}' with fileID 0");
+        else if (ext.Equals(".asset", StringComparison.OrdinalIgnoreCase) && StartsWithYamlHeader(target))
+        {
+            try
+            {
+                if (UnityYamlFile.Load(target).Find(r.FileId) == null)
+                    ReportAt(file, $"{where} references &{r.FileId} in '{name}', which has no such object");
+            }
+            catch (FormatException) { } // the target's own parse error is reported on the target
+        }
+    }
+}

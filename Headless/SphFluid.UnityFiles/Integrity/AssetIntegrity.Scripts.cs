@@ -1,0 +1,128 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Text.RegularExpressions;
+using SphFluid.UnityFiles.Yaml;
+
+namespace SphFluid.UnityFiles.Integrity;
+
+public sealed partial class AssetIntegrity
+{
+    [GeneratedRegex(@"\b(?<mods>(?:(?:public|internal|private|protected|sealed|abstract|static|partial|unsafe|new)\s+)*)class\s+(?<name>[A-Za-z_]\w*)\s*(?<generic><[^>{]*>)?\s*(?::\s*(?<bases>[^{]+?))?\s*(?:where\b[^{]*)?\{")]
+    private static partial Regex ClassDeclaration();
+
+    [GeneratedRegex(@"//[^\n]*|/\*.*?\*/", RegexOptions.Singleline)]
+    private static partial Regex Comments();
+
+    sealed record ScriptClass(string Name, bool IsAbstract, bool IsStatic, bool IsGeneric, string Base, string File);
+
+    Dictionary<string, List<ScriptClass>> _classes;
+    readonly Dictionary<string, string> _scriptVerdicts = new(StringComparer.Ordinal);
+
+    /// <summary>Every MonoBehaviour's <c>m_Script</c> names a .cs whose file name is a concrete MonoBehaviour/ScriptableObject class in it.</summary>
+    void CheckScripts(string file, UnityYamlFile yaml)
+    {
+        bool isScene = Extension(file) is ".unity" or ".prefab";
+        foreach (var doc in yaml.Documents.Where(d => d.ClassId == 114 && !d.IsStripped))
+        {
+            var where = $"MonoBehaviour &{doc.FileId} (line {doc.Line})";
+            var script = doc.Script;
+            if (script == null || script.IsNull)
+            {
+                ReportAt(file, $"{where} has no m_Script (Missing Script)");
+                continue;
+            }
+            if (script.IsBuiltin || script.Guid == null || UnityKnownIds.PackageScriptGuids.ContainsKey(script.Guid)) continue;
+            if (!_assetByGuid.TryGetValue(script.Guid, out var target)) continue; // unresolved guid: reported by CheckReferences
+            var ext = Extension(target);
+            if (ext.Equals(".dll", StringComparison.OrdinalIgnoreCase)) continue;
+            if (!ext.Equals(".cs", StringComparison.OrdinalIgnoreCase))
+            {
+                ReportAt(file, $"{where} m_Script points at '{Rel(target)}', which is not a C# script");
+                continue;
+            }
+            var verdict = ScriptVerdict(target);
+            if (verdict != null) ReportAt(file, $"{where} uses '{Rel(target)}': {verdict} (Unity shows Missing Script)");
+            if (isScene && EditorOnly(target))
+                ReportAt(file, $"{where} uses '{Rel(target)}', which compiles into an Editor-only assembly (Missing Script in players)");
+        }
+    }
+
+    bool EditorOnly(string csFile)
+    {
+        var asm = AssemblyOf(csFile);
+        if (asm != null) return asm.IsEditorOnly;
+        return Rel(csFile).Split('/').Contains("Editor");
+    }
+
+    /// <summary>Null when the script is fine, else why Unity cannot bind it.</summary>
+    string ScriptVerdict(string csFile)
+    {
+        if (_scriptVerdicts.TryGetValue(csFile, out var cached)) return cached;
+        var className = Path.GetFileNameWithoutExtension(csFile);
+        var own = ReadClasses(csFile).Where(c => c.Name == className).ToList();
+        string verdict = null;
+        if (own.Count == 0) verdict = $"declares no class named '{className}' (the class name must equal the file name)";
+        else
+        {
+            var c = own[0];
+            if (c.IsGeneric) verdict = $"'{className}' is generic";
+            else if (c.IsAbstract) verdict = $"'{className}' is abstract";
+            else if (c.IsStatic) verdict = $"'{className}' is static";
+            else verdict = BaseChainVerdict(c);
+        }
+        _scriptVerdicts[csFile] = verdict;
+        return verdict;
+    }
+
+    string BaseChainVerdict(ScriptClass c)
+    {
+        var seen = new HashSet<string>();
+        var current = c;
+        while (true)
+        {
+            var b = current.Base;
+            if (b == null) return $"'{current.Name}' derives from nothing, so it is not a MonoBehaviour or ScriptableObject";
+            if (UnityKnownIds.SerializableScriptBases.Contains(b)) return null;
+            if (!seen.Add(b)) return $"'{c.Name}' has a base-class cycle";
+            var next = Classes().TryGetValue(b, out var list) ? list.FirstOrDefault() : null;
+            if (next == null) return $"'{c.Name}' derives from '{b}', which is no MonoBehaviour/ScriptableObject the project declares";
+            current = next;
+        }
+    }
+
+    Dictionary<string, List<ScriptClass>> Classes()
+    {
+        if (_classes != null) return _classes;
+        _classes = new Dictionary<string, List<ScriptClass>>(StringComparer.Ordinal);
+        foreach (var cs in _assetFiles.Where(f => Extension(f).Equals(".cs", StringComparison.OrdinalIgnoreCase)))
+            foreach (var c in ReadClasses(cs))
+            {
+                if (!_classes.TryGetValue(c.Name, out var list)) _classes[c.Name] = list = new List<ScriptClass>();
+                list.Add(c);
+            }
+        return _classes;
+    }
+
+    IEnumerable<ScriptClass> ReadClasses(string csFile)
+    {
+        string text;
+        try { text = Comments().Replace(ReadText(csFile), " "); }
+        catch (IOException) { yield break; }
+        foreach (Match m in ClassDeclaration().Matches(text))
+        {
+            var mods = m.Groups["mods"].Value;
+            string firstBase = null;
+            if (m.Groups["bases"].Success)
+            {
+                var b = m.Groups["bases"].Value.Split(',')[0].Trim();
+                int lt = b.IndexOf('<');
+                if (lt >= 0) b = b[..lt];
+                firstBase = b[(b.LastIndexOf('.') + 1)..].Trim();
+            }
+            yield return new ScriptClass(m.Groups["name"].Value, mods.Contains("abstract"), mods.Contains("static"),
+                m.Groups["generic"].Success, firstBase, csFile);
+        }
+    }
+}

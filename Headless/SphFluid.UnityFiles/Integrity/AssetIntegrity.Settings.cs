@@ -1,0 +1,141 @@
+using System;
+using System.IO;
+using System.Linq;
+using System.Text.Json;
+using SphFluid.UnityFiles.Assets;
+using SphFluid.UnityFiles.Yaml;
+
+namespace SphFluid.UnityFiles.Integrity;
+
+public sealed partial class AssetIntegrity
+{
+    /// <summary>Packages the project cannot work without (issue 2, unity-kit §2.1).</summary>
+    public static readonly string[] RequiredPackages =
+        { "com.unity.mathematics", "com.unity.test-framework", "com.unity.inputsystem", "com.unity.ugui" };
+
+    void CheckManifest()
+    {
+        const string path = "Packages/manifest.json";
+        if (!File.Exists(Abs(path)))
+        {
+            Report(path, "is missing");
+            return;
+        }
+        try { _manifest = PackageManifest.Load(Abs(path)); }
+        catch (Exception e) when (e is JsonException or FormatException)
+        {
+            Report(path, $"does not parse: {e.Message}");
+            return;
+        }
+        foreach (var package in RequiredPackages.Where(p => !_manifest.Has(p)))
+            Report(path, $"does not name {package}");
+        foreach (var t in _manifest.Testables.Where(t => !_manifest.Has(t)))
+            Report(path, $"testable '{t}' is not a dependency");
+        foreach (var (name, version) in _manifest.Dependencies)
+            if (string.IsNullOrWhiteSpace(version)) Report(path, $"'{name}' has no version");
+        var stream = TryProjectVersion()?.Stream;
+        if (stream == "2022.3" && _manifest.Has("com.unity.modules.accessibility"))
+            Report(path, "com.unity.modules.accessibility does not exist for 2022.3 (package resolution would fail)");
+    }
+
+    ProjectVersion TryProjectVersion()
+    {
+        var file = Abs("ProjectSettings/ProjectVersion.txt");
+        try { return File.Exists(file) ? ProjectVersion.Load(file) : null; }
+        catch (FormatException) { return null; }
+    }
+
+    void CheckProjectSettings()
+    {
+        var dir = Abs("ProjectSettings");
+        if (!Directory.Exists(dir))
+        {
+            Report("ProjectSettings", "folder is missing");
+            return;
+        }
+        const string versionPath = "ProjectSettings/ProjectVersion.txt";
+        if (!File.Exists(Abs(versionPath))) Report(versionPath, "is missing (the Hub cannot tell which editor to open)");
+        else
+        {
+            try
+            {
+                var v = ProjectVersion.Load(Abs(versionPath));
+                if (string.IsNullOrEmpty(v.EditorVersion)) Report(versionPath, "has no m_EditorVersion");
+            }
+            catch (FormatException e) { Report(versionPath, $"does not parse: {e.Message}"); }
+        }
+        foreach (var file in Directory.GetFiles(dir, "*.asset").OrderBy(f => f, StringComparer.Ordinal))
+            CheckSettingsFile(file);
+        if (!File.Exists(Path.Combine(dir, "ProjectSettings.asset"))) Report("ProjectSettings/ProjectSettings.asset", "is missing (activeInputHandler, names and graphics APIs)");
+        if (!File.Exists(Path.Combine(dir, "EditorSettings.asset"))) Report("ProjectSettings/EditorSettings.asset", "is missing (Force Text serialization)");
+    }
+
+    void CheckSettingsFile(string file)
+    {
+        var name = Path.GetFileName(file);
+        UnityYamlFile yaml;
+        try { yaml = UnityYamlFile.Load(file); }
+        catch (Exception e) when (e is FormatException or IOException)
+        {
+            ReportAt(file, $"does not parse: {e.Message}");
+            return;
+        }
+        if (!yaml.HasUnityHeader) ReportAt(file, $"must start with '{UnityYamlFile.YamlHeader}' and '{UnityYamlFile.TagHeader}'");
+        if (yaml.Documents.Count == 0)
+        {
+            ReportAt(file, "has no document");
+            return;
+        }
+        var doc = yaml.Documents[0];
+        if (doc.FileId != 1) ReportAt(file, $"settings object must be '&1' (was &{doc.FileId})");
+        if (UnityKnownIds.SettingsFiles.TryGetValue(name, out var expected) && (doc.ClassId != expected.ClassId || doc.TypeName != expected.TypeName))
+            ReportAt(file, $"must be '--- !u!{expected.ClassId} &1' with root '{expected.TypeName}:' (was !u!{doc.ClassId} {doc.TypeName})");
+        CheckReferences(file, yaml);
+        var root = doc.Root;
+        switch (name)
+        {
+            case "ProjectSettings.asset":
+                var handler = root.GetLong("activeInputHandler", 0);
+                if (handler != 1 && handler != 2)
+                    ReportAt(file, $"activeInputHandler must be 1 (Input System) or 2 (both), was {handler}: the Input System would prompt to restart the editor");
+                break;
+            case "EditorSettings.asset":
+                if (root.GetLong("m_SerializationMode", 2) != 2) ReportAt(file, "m_SerializationMode must be 2 (Force Text)");
+                break;
+            case "VersionControlSettings.asset":
+                if (root.GetString("m_Mode") != "Visible Meta Files") ReportAt(file, $"m_Mode must be 'Visible Meta Files' (was '{root.GetString("m_Mode")}')");
+                break;
+        }
+    }
+
+    void CheckBuildSettings()
+    {
+        var file = Abs("ProjectSettings/EditorBuildSettings.asset");
+        if (!File.Exists(file)) return;
+        UnityYamlFile yaml;
+        try { yaml = UnityYamlFile.Load(file); }
+        catch (FormatException) { return; } // already reported by CheckSettingsFile
+        var scenes = yaml.Documents.FirstOrDefault()?.Root["m_Scenes"];
+        if (scenes == null) return;
+        foreach (var entry in scenes.Items)
+        {
+            var scenePath = entry.GetString("path");
+            var guid = entry.GetString("guid");
+            if (string.IsNullOrEmpty(scenePath))
+            {
+                ReportAt(file, $"scene entry at line {entry.Line} has no path");
+                continue;
+            }
+            if (!scenePath.EndsWith(".unity", StringComparison.Ordinal)) ReportAt(file, $"scene '{scenePath}' is not a .unity file");
+            var abs = Abs(scenePath);
+            if (!File.Exists(abs))
+            {
+                ReportAt(file, $"scene '{scenePath}' does not exist");
+                continue;
+            }
+            var metaGuid = _metaByAsset.TryGetValue(abs, out var meta) ? meta.Guid : null;
+            if (metaGuid == null) ReportAt(file, $"scene '{scenePath}' has no .meta guid to match");
+            else if (guid != metaGuid) ReportAt(file, $"scene '{scenePath}' is listed with guid {guid} but its .meta has {metaGuid}");
+        }
+    }
+}

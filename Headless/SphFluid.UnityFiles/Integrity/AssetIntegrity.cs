@@ -1,0 +1,100 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using SphFluid.UnityFiles.Assets;
+
+namespace SphFluid.UnityFiles.Integrity;
+
+/// <summary>
+/// Checks a hand-written Unity project the way the editor would see it on first open: metas and GUIDs, references
+/// from scenes and assets, scripts behind <c>m_Script</c>, asmdef references, the manifest, ProjectSettings and
+/// scene structure. Never throws for bad content: every finding is an <see cref="IntegrityProblem"/> naming its file.
+/// </summary>
+public sealed partial class AssetIntegrity
+{
+    readonly string _root;
+    readonly List<IntegrityProblem> _problems = new();
+    readonly List<string> _assetFolders = new();
+    readonly List<string> _assetFiles = new();
+    readonly List<string> _metaFiles = new();
+    readonly Dictionary<string, UnityMeta> _metaByAsset = new(StringComparer.Ordinal);
+    readonly Dictionary<string, string> _assetByGuid = new(StringComparer.Ordinal);
+    PackageManifest _manifest;
+
+    AssetIntegrity(string root) => _root = Path.GetFullPath(root);
+
+    /// <summary>Runs every check on the Unity project at <paramref name="projectRoot"/> (the folder holding Assets/).</summary>
+    public static IReadOnlyList<IntegrityProblem> Check(string projectRoot)
+    {
+        var check = new AssetIntegrity(projectRoot);
+        check.Run();
+        return check._problems;
+    }
+
+    /// <summary>Formats problems one per line, for test failure messages and the CLI.</summary>
+    public static string Describe(IReadOnlyList<IntegrityProblem> problems) =>
+        problems.Count == 0 ? "no problems" : $"{problems.Count} problem(s):\n  " + string.Join("\n  ", problems);
+
+    /// <summary>The closest folder at or above <paramref name="start"/> that holds both Assets/ and ProjectSettings/ (or Packages/).</summary>
+    public static string FindProjectRoot(string start)
+    {
+        for (var dir = new DirectoryInfo(Path.GetFullPath(start)); dir != null; dir = dir.Parent)
+            if (Directory.Exists(Path.Combine(dir.FullName, "Assets")) &&
+                (Directory.Exists(Path.Combine(dir.FullName, "ProjectSettings")) || Directory.Exists(Path.Combine(dir.FullName, "Packages"))))
+                return dir.FullName;
+        throw new DirectoryNotFoundException($"no Unity project (Assets/ + ProjectSettings/) at or above '{start}'");
+    }
+
+    void Run()
+    {
+        if (!Directory.Exists(Path.Combine(_root, "Assets")))
+        {
+            Report("Assets", "folder is missing");
+            return;
+        }
+        Guarded("Assets", ScanAssetRoots);
+        Guarded("Assets", CheckMetas);
+        Guarded("Packages/manifest.json", CheckManifest);
+        Guarded("ProjectSettings", CheckProjectSettings);
+        Guarded("Assets", CheckAssemblies);
+        Guarded("Assets", CheckSerializedFiles);
+        Guarded("ProjectSettings/EditorBuildSettings.asset", CheckBuildSettings);
+    }
+
+    void Guarded(string path, Action check)
+    {
+        try { check(); }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or FormatException or InvalidOperationException)
+        {
+            Report(path, $"check stopped: {e.GetType().Name}: {e.Message}");
+        }
+    }
+
+    void Report(string path, string message) => _problems.Add(new IntegrityProblem(path, message));
+
+    void ReportAt(string absolutePath, string message) => Report(Rel(absolutePath), message);
+
+    string Rel(string absolutePath) => Path.GetRelativePath(_root, absolutePath).Replace('\\', '/');
+
+    string Abs(string relativePath) => Path.GetFullPath(Path.Combine(_root, relativePath));
+
+    string ReadText(string absolutePath) => File.ReadAllText(absolutePath);
+
+    /// <summary>Names Unity never imports: dot-files, <c>name~</c>, <c>cvs</c>, <c>*.tmp</c>.</summary>
+    public static bool IsHiddenFromUnity(string name) =>
+        name.StartsWith('.') || name.EndsWith('~') || name.Equals("cvs", StringComparison.OrdinalIgnoreCase) ||
+        name.EndsWith(".tmp", StringComparison.OrdinalIgnoreCase);
+
+    static string Extension(string path) => Path.GetExtension(path);
+
+    IEnumerable<string> ScannedRoots()
+    {
+        yield return Abs("Assets");
+        var packages = Abs("Packages");
+        if (!Directory.Exists(packages)) yield break;
+        foreach (var dir in Directory.GetDirectories(packages).OrderBy(d => d, StringComparer.Ordinal))
+            if (!IsHiddenFromUnity(Path.GetFileName(dir)) && File.Exists(Path.Combine(dir, "package.json")))
+                yield return dir;
+    }
+}

@@ -1,0 +1,127 @@
+using System.Collections.Generic;
+
+namespace SphFluid.UnityFiles.Integrity;
+
+/// <summary>Fixed Unity identifiers the checks compare against (unity-kit §1.2, §3.2, §4.2, §4.3, §5.2).</summary>
+public static class UnityKnownIds
+{
+    /// <summary>YAML class id to the type name Unity writes as the document's root key.</summary>
+    public static readonly IReadOnlyDictionary<int, string> TypeNames = new Dictionary<int, string>
+    {
+        [1] = "GameObject", [4] = "Transform", [5] = "TimeManager", [11] = "AudioManager", [13] = "InputManager",
+        [19] = "Physics2DSettings", [20] = "Camera", [21] = "Material", [23] = "MeshRenderer", [28] = "Texture2D",
+        [29] = "OcclusionCullingSettings", [30] = "GraphicsSettings", [33] = "MeshFilter", [43] = "Mesh", [47] = "QualitySettings",
+        [48] = "Shader", [49] = "TextAsset", [54] = "Rigidbody", [55] = "PhysicsManager", [64] = "MeshCollider",
+        [65] = "BoxCollider", [72] = "ComputeShader", [78] = "TagManager", [81] = "AudioListener", [82] = "AudioSource",
+        [84] = "RenderTexture", [104] = "RenderSettings", [108] = "Light", [114] = "MonoBehaviour", [115] = "MonoScript",
+        [126] = "NavMeshProjectSettings", [129] = "PlayerSettings", [135] = "SphereCollider", [136] = "CapsuleCollider",
+        [157] = "LightmapSettings", [159] = "EditorSettings", [196] = "NavMeshSettings", [198] = "ParticleSystem",
+        [199] = "ParticleSystemRenderer", [224] = "RectTransform", [236] = "ClusterInputManager", [310] = "UnityConnectSettings",
+        [1001] = "PrefabInstance", [1045] = "EditorBuildSettings", [1660057539] = "SceneRoots", [890905787] = "VersionControlSettings",
+        [937362698] = "VFXManager", [1386491679] = "PresetManager", [387306366] = "MemorySettings",
+    };
+
+    /// <summary>ProjectSettings file name to (class id, type name) of its single <c>&amp;1</c> document.</summary>
+    public static readonly IReadOnlyDictionary<string, (int ClassId, string TypeName)> SettingsFiles = new Dictionary<string, (int, string)>
+    {
+        ["ProjectSettings.asset"] = (129, "PlayerSettings"), ["EditorSettings.asset"] = (159, "EditorSettings"),
+        ["GraphicsSettings.asset"] = (30, "GraphicsSettings"), ["EditorBuildSettings.asset"] = (1045, "EditorBuildSettings"),
+        ["QualitySettings.asset"] = (47, "QualitySettings"), ["TagManager.asset"] = (78, "TagManager"),
+        ["DynamicsManager.asset"] = (55, "PhysicsManager"), ["Physics2DSettings.asset"] = (19, "Physics2DSettings"),
+        ["AudioManager.asset"] = (11, "AudioManager"), ["InputManager.asset"] = (13, "InputManager"),
+        ["TimeManager.asset"] = (5, "TimeManager"), ["NavMeshAreas.asset"] = (126, "NavMeshProjectSettings"),
+        ["UnityConnectSettings.asset"] = (310, "UnityConnectSettings"), ["VFXManager.asset"] = (937362698, "VFXManager"),
+        ["ClusterInputManager.asset"] = (236, "ClusterInputManager"), ["PresetManager.asset"] = (1386491679, "PresetManager"),
+        ["MemorySettings.asset"] = (387306366, "MemorySettings"), ["VersionControlSettings.asset"] = (890905787, "VersionControlSettings"),
+        ["PackageManagerSettings.asset"] = (114, "MonoBehaviour"),
+    };
+
+    /// <summary>Assemblies that packages in the manifest provide, with the package that must be listed for each.</summary>
+    public static readonly IReadOnlyDictionary<string, string> PackageAssemblies = new Dictionary<string, string>
+    {
+        ["Unity.Mathematics"] = "com.unity.mathematics",
+        ["Unity.InputSystem"] = "com.unity.inputsystem",
+        ["Unity.InputSystem.TestFramework"] = "com.unity.inputsystem",
+        ["UnityEngine.TestRunner"] = "com.unity.test-framework",
+        ["UnityEditor.TestRunner"] = "com.unity.test-framework",
+        ["UnityEngine.UI"] = "com.unity.ugui",
+        ["UnityEditor.UI"] = "com.unity.ugui",
+        ["Unity.ugui"] = "com.unity.ugui",
+    };
+
+    /// <summary>asmdef GUIDs of package assemblies (for <c>"GUID:..."</c> references).</summary>
+    public static readonly IReadOnlyDictionary<string, string> PackageAssemblyGuids = new Dictionary<string, string>
+    {
+        ["d8b63aba1907145bea998dd612889d6b"] = "Unity.Mathematics",
+        ["75469ad4d38634e559750d17036d5f7c"] = "Unity.InputSystem",
+        ["dc04f38471c3a459fb4d31124ee9127d"] = "Unity.InputSystem.TestFramework",
+        ["27619889b8ba8c24980f49ee34dbb44a"] = "UnityEngine.TestRunner",
+        ["0acc523941302664db1f4e527237feb3"] = "UnityEditor.TestRunner",
+    };
+
+    /// <summary>Script GUIDs inside packages that project files may reference.</summary>
+    public static readonly IReadOnlyDictionary<string, string> PackageScriptGuids = new Dictionary<string, string>
+    {
+        ["8404be70184654265930450def6a9037"] = "InputActionImporter (com.unity.inputsystem)",
+    };
+
+    /// <summary>
+    /// GUIDs that must never be an asset's own: package GUIDs, the 3D template's SampleScene, and the kit's example
+    /// GUIDs (copying them collides with other projects' assets; unity-kit §3.1).
+    /// </summary>
+    public static readonly IReadOnlySet<string> ForeignGuids = new HashSet<string>
+    {
+        "9fc0d4010bbf28b4594072e72b8655ab",
+        "fc94efff5f024fbc99b8650b37d502a1", "60b2ebf9f4cc401ba5584be098b6bcb0", "70cfa7b43d6049a48a4f19482934acf9",
+        "86eec503b08f4e649a4f1bed71eebdca", "b52d5e8063d14492a4813d14036502dc", "082291b846e5471cac5cd892eb241196",
+        "c4ec5105f7f345e29d3b4fca8df70c4c", "1ec168a53eec478aa7e96ed4acf85120", "57c56eebd7414c62a667d9ebe976a9e1",
+        "0db46a43f75d4c9184ad83c959a0fe23",
+        "d8b63aba1907145bea998dd612889d6b", "75469ad4d38634e559750d17036d5f7c", "dc04f38471c3a459fb4d31124ee9127d",
+        "27619889b8ba8c24980f49ee34dbb44a", "0acc523941302664db1f4e527237feb3", "8404be70184654265930450def6a9037",
+    };
+
+    /// <summary>Precompiled DLLs that packages provide (asmdef <c>precompiledReferences</c>).</summary>
+    public static readonly IReadOnlyDictionary<string, string> PackageDlls = new Dictionary<string, string>
+    {
+        ["nunit.framework.dll"] = "com.unity.test-framework",
+    };
+
+    /// <summary>The importer Unity uses for a file extension (lower case, with dot).</summary>
+    public static readonly IReadOnlyDictionary<string, string> Importers = new Dictionary<string, string>
+    {
+        [".cs"] = "MonoImporter", [".compute"] = "ComputeShaderImporter", [".shader"] = "ShaderImporter",
+        [".hlsl"] = "ShaderIncludeImporter", [".cginc"] = "ShaderIncludeImporter", [".asmdef"] = "AssemblyDefinitionImporter",
+        [".asmref"] = "AssemblyDefinitionReferenceImporter", [".unity"] = "DefaultImporter", [".mat"] = "NativeFormatImporter",
+        [".asset"] = "NativeFormatImporter", [".renderTexture"] = "NativeFormatImporter", [".physicMaterial"] = "NativeFormatImporter",
+        [".prefab"] = "PrefabImporter", [".inputactions"] = "ScriptedImporter", [".md"] = "TextScriptImporter",
+        [".txt"] = "TextScriptImporter", [".json"] = "TextScriptImporter", [".bytes"] = "TextScriptImporter",
+        [".xml"] = "TextScriptImporter", [".csv"] = "TextScriptImporter", [".png"] = "TextureImporter",
+        [".jpg"] = "TextureImporter", [".tga"] = "TextureImporter", [".exr"] = "TextureImporter", [".dll"] = "PluginImporter",
+    };
+
+    /// <summary>
+    /// The reference a file's main object takes: <c>{fileID: classId×100000, type}</c> (unity-kit §4.3). A null fileID means
+    /// "the .meta's mainObjectFileID" (native .asset) or "any non-zero id" (prefabs, ScriptedImporter assets, textures with sprites).
+    /// </summary>
+    public static readonly IReadOnlyDictionary<string, (long? FileId, int Type)> MainObjects = new Dictionary<string, (long?, int)>
+    {
+        [".compute"] = (7200000, 3), [".shader"] = (4800000, 3), [".mat"] = (2100000, 2), [".cs"] = (11500000, 3),
+        [".asset"] = (null, 2), [".renderTexture"] = (8400000, 2), [".physicMaterial"] = (13400000, 2),
+        [".png"] = (null, 3), [".jpg"] = (null, 3), [".tga"] = (null, 3), [".exr"] = (null, 3),
+        [".txt"] = (4900000, 3), [".json"] = (4900000, 3), [".bytes"] = (4900000, 3), [".md"] = (4900000, 3),
+        [".unity"] = (102900000, 3), [".prefab"] = (null, 3), [".inputactions"] = (null, 3),
+    };
+
+    /// <summary>Base classes a scene or asset script may ultimately derive from.</summary>
+    public static readonly IReadOnlySet<string> SerializableScriptBases = new HashSet<string>
+    {
+        "MonoBehaviour", "ScriptableObject", "StateMachineBehaviour", "UIBehaviour", "Graphic", "MaskableGraphic",
+        "Selectable", "BaseInputModule", "PointerInputModule", "BaseRaycaster", "NetworkBehaviour",
+    };
+
+    /// <summary>Scene settings documents every 2022.3 scene starts with (unity-kit §4.1).</summary>
+    public static readonly IReadOnlyList<(int ClassId, string TypeName)> SceneSettings = new[]
+    {
+        (29, "OcclusionCullingSettings"), (104, "RenderSettings"), (157, "LightmapSettings"), (196, "NavMeshSettings"),
+    };
+}

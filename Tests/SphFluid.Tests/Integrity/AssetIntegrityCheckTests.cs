@@ -1,0 +1,142 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+using SphFluid.UnityFiles.Integrity;
+
+namespace SphFluid.Tests.Integrity
+{
+    /// <summary>Each check fires on a tree broken in exactly one way, and stays quiet on the intact tree.</summary>
+    public sealed class AssetIntegrityCheckTests
+    {
+        [Test]
+        public void Intact_synthetic_project_has_no_problems()
+        {
+            using (var project = new SyntheticProject())
+            {
+                var problems = AssetIntegrity.Check(project.Root);
+                Assert.That(problems, Is.Empty, AssetIntegrity.Describe(problems));
+            }
+        }
+
+        [Test]
+        public void Asmdef_reference_by_guid_resolves_to_the_project_asmdef()
+        {
+            using (var project = new SyntheticProject())
+            {
+                project.Replace(SyntheticProject.EditorAsmdefPath, "\"Game.Runtime\"",
+                    "\"GUID:" + project.GuidOf(SyntheticProject.RuntimeAsmdefPath) + "\", \"GUID:27619889b8ba8c24980f49ee34dbb44a\"");
+                var problems = AssetIntegrity.Check(project.Root);
+                Assert.That(problems, Is.Empty, AssetIntegrity.Describe(problems));
+            }
+        }
+
+        public sealed class Breakage
+        {
+            public Breakage(string name, Action<SyntheticProject> damage, string path, string message)
+            {
+                Name = name;
+                Damage = damage;
+                Path = path;
+                Message = message;
+            }
+
+            public string Name { get; }
+            public Action<SyntheticProject> Damage { get; }
+            public string Path { get; }
+            public string Message { get; }
+            public override string ToString() => Name;
+        }
+
+        static IEnumerable<TestCaseData> Breakages()
+        {
+            const string scene = SyntheticProject.ScenePath;
+            const string script = SyntheticProject.ScriptPath;
+            yield return Case("missing meta", p => p.Delete(SyntheticProject.ShaderPath + ".meta"),
+                SyntheticProject.ShaderPath, "has no .meta");
+            yield return Case("missing folder meta", p => Directory.CreateDirectory(p.Abs("Assets/Game/Empty")),
+                "Assets/Game/Empty", "has no .meta");
+            yield return Case("orphan meta", p => File.Move(p.Abs(SyntheticProject.ShaderPath), p.Abs("Assets/Game/Shaders/Renamed.compute")),
+                SyntheticProject.ShaderPath + ".meta", "orphan .meta");
+            yield return Case("duplicate guid", p => p.Replace(SyntheticProject.ShaderPath + ".meta", p.GuidOf(SyntheticProject.ShaderPath), p.GuidOf(script)),
+                "", "duplicate guid " );
+            yield return Case("guid not lowercase hex", p => p.Replace(script + ".meta", p.GuidOf(script), p.GuidOf(script).ToUpperInvariant()),
+                script + ".meta", "not 32 lowercase hex");
+            yield return Case("guid too short", p => p.Replace(script + ".meta", p.GuidOf(script), p.GuidOf(script).Substring(1)),
+                script + ".meta", "not 32 lowercase hex");
+            yield return Case("template guid", p => p.Replace(script + ".meta", p.GuidOf(script), "9fc0d4010bbf28b4594072e72b8655ab"),
+                script + ".meta", "belongs to a Unity package");
+            yield return Case("wrong importer", p => p.Replace(SyntheticProject.ShaderPath + ".meta", "ComputeShaderImporter", "ShaderImporter"),
+                SyntheticProject.ShaderPath + ".meta", "imported by ComputeShaderImporter");
+            yield return Case("unresolved script guid", p => p.Replace(scene, p.GuidOf(script), Guid.NewGuid().ToString("N")),
+                scene, "no .meta in the project has");
+            yield return Case("class name differs from file name", p => p.Replace(script, "class FluidEmitter", "class FluidSpout"),
+                scene, "declares no class named 'FluidEmitter'");
+            yield return Case("script is not a MonoBehaviour", p => p.Replace(script, ": MonoBehaviour", ": IDisposable"),
+                scene, "no MonoBehaviour/ScriptableObject");
+            yield return Case("script in an Editor-only assembly", p => p.Replace(scene, p.GuidOf(script), p.GuidOf(SyntheticProject.EditorScriptPath)),
+                scene, "Editor-only assembly");
+            yield return Case("wrong main fileID for a compute shader", p => p.Replace(scene, "fileID: 7200000", "fileID: 4800000"),
+                scene, "main object is 7200000");
+            yield return Case("wrong type for a compute shader", p => p.Replace(scene, "type: 3}\n  rate", "type: 2}\n  rate"),
+                scene, "takes type 3");
+            yield return Case("dangling local reference", p => p.Replace(scene, "m_Father: {fileID: 101}", "m_Father: {fileID: 999}"),
+                scene, "not in this file");
+            yield return Case("unresolved asmdef reference", p => p.Replace(SyntheticProject.RuntimeAsmdefPath, "\"Unity.InputSystem\"", "\"Unity.Physics.Missing\""),
+                SyntheticProject.RuntimeAsmdefPath, "resolves to no asmdef");
+            yield return Case("unresolved asmdef GUID reference", p => p.Replace(SyntheticProject.EditorAsmdefPath, "\"Game.Runtime\"", "\"GUID:" + Guid.NewGuid().ToString("N") + "\""),
+                SyntheticProject.EditorAsmdefPath, "matches no asmdef .meta");
+            yield return Case("duplicate asmdef name", p => p.Replace(SyntheticProject.EditorAsmdefPath, "\"name\": \"Game.Editor\"", "\"name\": \"Game.Runtime\""),
+                "", "is also used by");
+            yield return Case("asmdef JSON does not parse", p => p.Replace(SyntheticProject.RuntimeAsmdefPath, "\"Unity.InputSystem\"\n", "\"Unity.InputSystem\",\n"),
+                SyntheticProject.RuntimeAsmdefPath, "does not parse");
+            yield return Case("runtime asmdef references the editor", p => p.Replace(SyntheticProject.RuntimeAsmdefPath, "\"Unity.InputSystem\"", "\"Game.Editor\""),
+                SyntheticProject.RuntimeAsmdefPath, "references Editor-only 'Game.Editor'");
+            yield return Case("scene component with broken back-reference", p => p.Replace(scene, "SphereCollider:\n  m_GameObject: {fileID: 200}", "SphereCollider:\n  m_GameObject: {fileID: 100}"),
+                scene, "whose m_GameObject is");
+            yield return Case("scene child not listed by its parent", p => p.Replace(scene, "m_Children:\n  - {fileID: 201}", "m_Children: []"),
+                scene, "does not list it in m_Children");
+            yield return Case("scene root missing from SceneRoots", p => p.Replace(scene, "m_Father: {fileID: 101}", "m_Father: {fileID: 0}"),
+                scene, "missing from SceneRoots");
+            yield return Case("scene class id and type name disagree", p => p.Replace(scene, "--- !u!135 &202", "--- !u!65 &202"),
+                scene, "is class 65 (BoxCollider)");
+            yield return Case("scene duplicate anchor", p => p.Replace(scene, "--- !u!135 &202", "--- !u!135 &201"),
+                scene, "anchor &201");
+            yield return Case("scene YAML merge marker", p => p.Replace(scene, "  rate: 2\n", "  rate: 2\n<<<<<<< HEAD\n"),
+                scene, "Unity would refuse");
+            yield return Case("manifest misses a package", p => p.Replace("Packages/manifest.json", "    \"com.unity.ugui\": \"1.0.0\",\n", ""),
+                "Packages/manifest.json", "does not name com.unity.ugui");
+            yield return Case("manifest does not parse", p => p.Replace("Packages/manifest.json", "\"dependencies\": {", "\"dependencies\" {"),
+                "Packages/manifest.json", "does not parse");
+            yield return Case("build settings scene guid mismatch", p => p.Replace("ProjectSettings/EditorBuildSettings.asset", p.GuidOf(scene), Guid.NewGuid().ToString("N")),
+                "ProjectSettings/EditorBuildSettings.asset", "but its .meta has");
+            yield return Case("build settings scene missing", p => p.Replace("ProjectSettings/EditorBuildSettings.asset", "Main.unity", "Gone.unity"),
+                "ProjectSettings/EditorBuildSettings.asset", "does not exist");
+            yield return Case("legacy input handler", p => p.Replace("ProjectSettings/ProjectSettings.asset", "activeInputHandler: 1", "activeInputHandler: 0"),
+                "ProjectSettings/ProjectSettings.asset", "activeInputHandler must be 1");
+            yield return Case("settings class id wrong", p => p.Replace("ProjectSettings/EditorSettings.asset", "--- !u!159 &1", "--- !u!129 &1"),
+                "ProjectSettings/EditorSettings.asset", "must be '--- !u!159 &1'");
+            yield return Case("bin folder under Assets", p => Directory.CreateDirectory(p.Abs("Assets/Game/Runtime/bin")),
+                "Assets/Game/Runtime/bin", "build output folder");
+            yield return Case("csproj under Assets", p => p.AddAsset("Assets/Game/Runtime/Game.csproj", "<Project />", SyntheticProject.DefaultImporter),
+                "Assets/Game/Runtime/Game.csproj", ".NET project files");
+        }
+
+        static TestCaseData Case(string name, Action<SyntheticProject> damage, string path, string message) =>
+            new TestCaseData(new Breakage(name, damage, path, message)).SetName("Fires_on_" + name.Replace(' ', '_').Replace("'", ""));
+
+        [TestCaseSource(nameof(Breakages))]
+        public void Fires_on(Breakage breakage)
+        {
+            using (var project = new SyntheticProject())
+            {
+                breakage.Damage(project);
+                var problems = AssetIntegrity.Check(project.Root);
+                var matching = problems.Where(p => p.Message.Contains(breakage.Message) && (breakage.Path.Length == 0 || p.Path == breakage.Path)).ToList();
+                Assert.That(matching, Is.Not.Empty,
+                    $"expected '{breakage.Message}' on '{breakage.Path}'; got {AssetIntegrity.Describe(problems)}");
+            }
+        }
+    }
+}
