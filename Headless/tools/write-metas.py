@@ -22,7 +22,17 @@ IMPORTERS = {
     ".unity": "DefaultImporter:\n  externalObjects: {}\n" + TAIL,
     ".mat": "NativeFormatImporter:\n  externalObjects: {}\n  mainObjectFileID: 2100000\n" + TAIL,
     ".asset": "NativeFormatImporter:\n  externalObjects: {}\n  mainObjectFileID: 11400000\n" + TAIL,
+    ".renderTexture": "NativeFormatImporter:\n  externalObjects: {}\n  mainObjectFileID: 8400000\n" + TAIL,
+    ".physicMaterial": "NativeFormatImporter:\n  externalObjects: {}\n  mainObjectFileID: 13400000\n" + TAIL,
+    ".prefab": "PrefabImporter:\n  externalObjects: {}\n" + TAIL,
+    ".asmref": "AssemblyDefinitionReferenceImporter:\n  externalObjects: {}\n" + TAIL,
+    # Short TextureImporter form (unity-kit 3.2): Unity fills in the remaining defaults on first import.
+    ".png": "TextureImporter:\n  externalObjects: {}\n  textureType: 0\n" + TAIL,
+    ".jpg": "TextureImporter:\n  externalObjects: {}\n  textureType: 0\n" + TAIL,
     ".md": "TextScriptImporter:\n  externalObjects: {}\n" + TAIL,
+    ".bytes": "TextScriptImporter:\n  externalObjects: {}\n" + TAIL,
+    ".csv": "TextScriptImporter:\n  externalObjects: {}\n" + TAIL,
+    ".xml": "TextScriptImporter:\n  externalObjects: {}\n" + TAIL,
     ".txt": "TextScriptImporter:\n  externalObjects: {}\n" + TAIL,
     ".json": "TextScriptImporter:\n  externalObjects: {}\n" + TAIL,
     ".inputactions": "ScriptedImporter:\n  internalIDToNameTable: []\n  externalObjects: {}\n"
@@ -59,8 +69,8 @@ def main(root):
         for f in filenames:
             if hidden(f) or f.endswith(".meta"):
                 continue
-            ext = os.path.splitext(f)[1].lower()
-            write_meta(os.path.join(dirpath, f), IMPORTERS.get(ext, DEFAULT))
+            ext = os.path.splitext(f)[1]
+            write_meta(os.path.join(dirpath, f), IMPORTERS.get(ext, IMPORTERS.get(ext.lower(), DEFAULT)))
     # Orphans: a .meta whose asset is gone makes Unity warn and delete it.
     for dirpath, dirnames, filenames in os.walk(assets):
         for f in filenames:
