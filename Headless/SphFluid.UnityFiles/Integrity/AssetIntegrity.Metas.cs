@@ -107,7 +107,7 @@ public sealed partial class AssetIntegrity
         {
             var script = meta.ImporterScript;
             if (script == null || script.Guid == null) Report(path, "ScriptedImporter needs 'script: {fileID: 11500000, guid: ..., type: 3}'");
-            else if (!UnityKnownIds.PackageScriptGuids.ContainsKey(script.Guid) && !_assetByGuid.ContainsKey(script.Guid) && !IsProjectGuidLater(script.Guid))
+            else if (!UnityKnownIds.PackageObjectGuids.ContainsKey(script.Guid) && !_assetByGuid.ContainsKey(script.Guid) && !IsProjectGuidLater(script.Guid))
                 Report(path, $"ScriptedImporter script guid {script.Guid} is neither a known package importer nor a project script");
         }
     }

@@ -30,8 +30,14 @@ public sealed partial class AssetIntegrity
             CheckReferences(file, yaml);
             CheckScripts(file, yaml);
             var ext = Extension(file);
-            if (ext == ".unity" || ext == ".prefab") CheckSceneStructure(file, yaml, ext == ".unity");
+            if (ext == ".unity" || ext == ".prefab")
+            {
+                CheckSceneStructure(file, yaml, ext == ".unity");
+                CheckTagsAndLayers(file, yaml);
+            }
         }
+        foreach (var file in _assetFiles.Where(f => Extension(f) == ".inputactions")) CheckInputActions(file);
+        CheckShadersFoundByName();
     }
 
     static bool StartsWithYamlHeader(string file)
@@ -64,7 +70,15 @@ public sealed partial class AssetIntegrity
                     ReportAt(file, $"{where} has malformed guid '{r.Guid}'");
                     continue;
                 }
-                if (r.IsBuiltin || UnityKnownIds.PackageScriptGuids.ContainsKey(r.Guid)) continue;
+                if (r.IsBuiltin) continue;
+                if (UnityKnownIds.PackageObjectGuids.TryGetValue(r.Guid, out var packaged))
+                {
+                    if (_manifest != null && !_manifest.Has(packaged.Package))
+                        ReportAt(file, $"{where} uses {packaged.Name}, which needs {packaged.Package} in Packages/manifest.json");
+                    continue;
+                }
+                if (Extension(file) == ".unity") _sceneReferencedGuids.Add(r.Guid);
+                if (Extension(file) == ".mat" && path == "m_Shader") _materialShaders[file] = r.Guid;
                 if (!_assetByGuid.TryGetValue(r.Guid, out var target))
                 {
                     ReportAt(file, $"{where} references guid {r.Guid}, which no .meta in the project has");

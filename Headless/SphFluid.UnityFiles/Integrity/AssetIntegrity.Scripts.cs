@@ -33,7 +33,13 @@ public sealed partial class AssetIntegrity
                 ReportAt(file, $"{where} has no m_Script (Missing Script)");
                 continue;
             }
-            if (script.IsBuiltin || script.Guid == null || UnityKnownIds.PackageScriptGuids.ContainsKey(script.Guid)) continue;
+            if (script.IsBuiltin || script.Guid == null) continue;
+            if (UnityKnownIds.PackageObjectGuids.TryGetValue(script.Guid, out var packaged))
+            {
+                if (packaged.Name == UnityKnownIds.StandaloneInputModule && _activeInputHandler == 1)
+                    ReportAt(file, $"{where} is uGUI's StandaloneInputModule, which reads the legacy Input Manager and throws with activeInputHandler 1; use InputSystemUIInputModule");
+                continue;
+            }
             if (!_assetByGuid.TryGetValue(script.Guid, out var target)) continue; // unresolved guid: reported by CheckReferences
             var ext = Extension(target);
             if (ext.Equals(".dll", StringComparison.OrdinalIgnoreCase)) continue;

@@ -13,6 +13,8 @@ public sealed partial class AssetIntegrity
     public static readonly string[] RequiredPackages =
         { "com.unity.mathematics", "com.unity.test-framework", "com.unity.inputsystem", "com.unity.ugui" };
 
+    long _activeInputHandler = -1;
+
     void CheckManifest()
     {
         const string path = "Packages/manifest.json";
@@ -96,6 +98,7 @@ public sealed partial class AssetIntegrity
         {
             case "ProjectSettings.asset":
                 var handler = root.GetLong("activeInputHandler", 0);
+                _activeInputHandler = handler;
                 if (handler != 1 && handler != 2)
                     ReportAt(file, $"activeInputHandler must be 1 (Input System) or 2 (both), was {handler}: the Input System would prompt to restart the editor");
                 break;

@@ -59,11 +59,22 @@ public static class UnityKnownIds
         ["0acc523941302664db1f4e527237feb3"] = "UnityEditor.TestRunner",
     };
 
-    /// <summary>Script GUIDs inside packages that project files may reference.</summary>
-    public static readonly IReadOnlyDictionary<string, string> PackageScriptGuids = new Dictionary<string, string>
+    /// <summary>
+    /// Scripts and assets inside packages that project files may reference by guid, with the package that must be in the
+    /// manifest (guids as seen in public 2022.3 scenes and metas).
+    /// </summary>
+    public static readonly IReadOnlyDictionary<string, (string Name, string Package)> PackageObjectGuids = new Dictionary<string, (string, string)>
     {
-        ["8404be70184654265930450def6a9037"] = "InputActionImporter (com.unity.inputsystem)",
+        ["8404be70184654265930450def6a9037"] = ("InputActionImporter", "com.unity.inputsystem"),
+        ["62899f850307741f2a39c98a8b639597"] = ("PlayerInput", "com.unity.inputsystem"),
+        ["01614664b831546d2ae94a42149d80ac"] = ("InputSystemUIInputModule", "com.unity.inputsystem"),
+        ["ca9f5fa95ffab41fb9a615ab714db018"] = ("DefaultInputActions", "com.unity.inputsystem"),
+        ["76c392e42b5098c458856cdf6ecaaaa1"] = ("EventSystem", "com.unity.ugui"),
+        ["4f231c4fb786f3946a6b90b886c48677"] = (StandaloneInputModule, "com.unity.ugui"),
     };
+
+    /// <summary>uGUI's input module for the legacy Input Manager: throws every frame when only the Input System is active.</summary>
+    public const string StandaloneInputModule = "StandaloneInputModule";
 
     /// <summary>
     /// GUIDs that must never be an asset's own: package GUIDs, the 3D template's SampleScene, and the kit's example
@@ -78,7 +89,18 @@ public static class UnityKnownIds
         "0db46a43f75d4c9184ad83c959a0fe23",
         "d8b63aba1907145bea998dd612889d6b", "75469ad4d38634e559750d17036d5f7c", "dc04f38471c3a459fb4d31124ee9127d",
         "27619889b8ba8c24980f49ee34dbb44a", "0acc523941302664db1f4e527237feb3", "8404be70184654265930450def6a9037",
+        "62899f850307741f2a39c98a8b639597", "01614664b831546d2ae94a42149d80ac", "ca9f5fa95ffab41fb9a615ab714db018",
+        "76c392e42b5098c458856cdf6ecaaaa1", "4f231c4fb786f3946a6b90b886c48677",
     };
+
+    /// <summary>Tags every project has without a TagManager entry.</summary>
+    public static readonly IReadOnlySet<string> BuiltinTags = new HashSet<string>
+    {
+        "Untagged", "Respawn", "Finish", "EditorOnly", "MainCamera", "Player", "GameController",
+    };
+
+    /// <summary>Layers every project has without a TagManager entry: Default, TransparentFX, Ignore Raycast, Water, UI.</summary>
+    public static readonly IReadOnlySet<int> BuiltinLayers = new HashSet<int> { 0, 1, 2, 4, 5 };
 
     /// <summary>Precompiled DLLs that packages provide (asmdef <c>precompiledReferences</c>).</summary>
     public static readonly IReadOnlyDictionary<string, string> PackageDlls = new Dictionary<string, string>

@@ -32,6 +32,33 @@ namespace SphFluid.Tests.Integrity
             }
         }
 
+        const string ShaderImporter = "ShaderImporter:\n  externalObjects: {}\n  defaultTextures: []\n  nonModifiableTextures: []\n  preprocessorOverride: 0\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n";
+
+        const string InputActionsImporter = "ScriptedImporter:\n  internalIDToNameTable: []\n  externalObjects: {}\n  serializedVersion: 2\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n" +
+            "  script: {fileID: 11500000, guid: 8404be70184654265930450def6a9037, type: 3}\n  generateWrapperCode: 0\n  wrapperCodePath: \n  wrapperClassName: \n  wrapperCodeNamespace: \n";
+
+        const string InputActions = "{\n  \"name\": \"Controls\",\n  \"maps\": [\n    {\n      \"name\": \"Fluid\",\n      \"id\": \"5c1d3a52-8a4e-4a8e-9d5e-0f6b1f0c9a01\",\n" +
+            "      \"actions\": [\n        { \"name\": \"Pause\", \"type\": \"Button\", \"id\": \"5c1d3a52-8a4e-4a8e-9d5e-0f6b1f0c9a02\", \"expectedControlType\": \"Button\" }\n      ],\n" +
+            "      \"bindings\": [\n        { \"name\": \"\", \"id\": \"5c1d3a52-8a4e-4a8e-9d5e-0f6b1f0c9a03\", \"path\": \"<Keyboard>/space\", \"action\": \"Pause\", \"isComposite\": false, \"isPartOfComposite\": false }\n      ]\n    }\n  ],\n  \"controlSchemes\": []\n}\n";
+
+        [Test]
+        public void Valid_input_actions_and_a_shader_used_by_a_scene_material_pass()
+        {
+            using (var project = new SyntheticProject())
+            {
+                project.AddAsset("Assets/Game/Controls.inputactions", InputActions, InputActionsImporter);
+                project.AddAsset("Assets/Game/Shaders/Dots.shader", "Shader \"Game/Dots\"\n{\n    SubShader { Pass { } }\n}\n", ShaderImporter);
+                project.AddAsset("Assets/Game/Dots.mat",
+                    "%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n--- !u!21 &2100000\nMaterial:\n  serializedVersion: 8\n  m_Name: Dots\n" +
+                    "  m_Shader: {fileID: 4800000, guid: " + project.GuidOf("Assets/Game/Shaders/Dots.shader") + ", type: 3}\n",
+                    "NativeFormatImporter:\n  externalObjects: {}\n  mainObjectFileID: 2100000\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n");
+                project.Replace(SyntheticProject.ScriptPath, "public float rate = 2f;", "public float rate = 2f;\n        [SerializeField] Material dots;\n        Shader Dots => Shader.Find(\"Game/Dots\");");
+                project.Replace(SyntheticProject.ScenePath, "  rate: 2\n", "  rate: 2\n  dots: {fileID: 2100000, guid: " + project.GuidOf("Assets/Game/Dots.mat") + ", type: 2}\n");
+                var problems = AssetIntegrity.Check(project.Root);
+                Assert.That(problems, Is.Empty, AssetIntegrity.Describe(problems));
+            }
+        }
+
         public sealed class Breakage
         {
             public Breakage(string name, Action<SyntheticProject> damage, string path, string message)
@@ -117,6 +144,31 @@ namespace SphFluid.Tests.Integrity
                 "ProjectSettings/ProjectSettings.asset", "activeInputHandler must be 1");
             yield return Case("settings class id wrong", p => p.Replace("ProjectSettings/EditorSettings.asset", "--- !u!159 &1", "--- !u!129 &1"),
                 "ProjectSettings/EditorSettings.asset", "must be '--- !u!159 &1'");
+            yield return Case("undeclared tag", p => p.Replace(scene, "m_Name: Ball\n", "m_Name: Ball\n  m_TagString: Splashy\n"),
+                scene, "tag 'Splashy'");
+            yield return Case("unnamed layer", p => p.Replace(scene, "m_Layer: 0\n  m_Name: Ball", "m_Layer: 9\n  m_Name: Ball"),
+                scene, "layer 9");
+            yield return Case("legacy input module with Input System only", p => p.Replace(scene, p.GuidOf(script), "4f231c4fb786f3946a6b90b886c48677"),
+                scene, "StandaloneInputModule");
+            yield return Case("package object without its package", p =>
+                {
+                    p.Replace(scene, p.GuidOf(script), "76c392e42b5098c458856cdf6ecaaaa1");
+                    p.Replace("Packages/manifest.json", "    \"com.unity.ugui\": \"1.0.0\",\n", "");
+                },
+                scene, "needs com.unity.ugui");
+            yield return Case("shader found by name but never included", p =>
+                {
+                    p.AddAsset("Assets/Game/Shaders/Dots.shader", "Shader \"Game/Dots\"\n{\n    SubShader { Pass { } }\n}\n", ShaderImporter);
+                    p.Replace(script, "public float rate = 2f;", "public float rate = 2f;\n        Shader Dots => Shader.Find(\"Game/Dots\");");
+                },
+                script, "Shader.Find(\"Game/Dots\")");
+            yield return Case("input binding for an unknown action", p => p.AddAsset("Assets/Game/Controls.inputactions",
+                    InputActions.Replace("\"action\": \"Pause\"", "\"action\": \"Freeze\""), InputActionsImporter),
+                "Assets/Game/Controls.inputactions", "unknown action 'Freeze'");
+            yield return Case("input actions not JSON", p => p.AddAsset("Assets/Game/Controls.inputactions", "{ \"maps\": [", InputActionsImporter),
+                "Assets/Game/Controls.inputactions", "does not parse as JSON");
+            yield return Case("input actions importer missing", p => p.AddAsset("Assets/Game/Controls.inputactions", InputActions, SyntheticProject.DefaultImporter),
+                "Assets/Game/Controls.inputactions.meta", "imported by ScriptedImporter");
             yield return Case("bin folder under Assets", p => Directory.CreateDirectory(p.Abs("Assets/Game/Runtime/bin")),
                 "Assets/Game/Runtime/bin", "build output folder");
             yield return Case("csproj under Assets", p => p.AddAsset("Assets/Game/Runtime/Game.csproj", "<Project />", SyntheticProject.DefaultImporter),
