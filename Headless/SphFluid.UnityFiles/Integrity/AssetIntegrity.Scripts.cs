@@ -72,7 +72,8 @@ public sealed partial class AssetIntegrity
         if (own.Count == 0) verdict = $"declares no class named '{className}' (the class name must equal the file name)";
         else
         {
-            var c = own[0];
+            // A partial class may name its base in another file.
+            var c = own.FirstOrDefault(x => x.Base != null) ?? DeclarationWithBase(className) ?? own[0];
             if (c.IsGeneric) verdict = $"'{className}' is generic";
             else if (c.IsAbstract) verdict = $"'{className}' is abstract";
             else if (c.IsStatic) verdict = $"'{className}' is static";
@@ -92,11 +93,14 @@ public sealed partial class AssetIntegrity
             if (b == null) return $"'{current.Name}' derives from nothing, so it is not a MonoBehaviour or ScriptableObject";
             if (UnityKnownIds.SerializableScriptBases.Contains(b)) return null;
             if (!seen.Add(b)) return $"'{c.Name}' has a base-class cycle";
-            var next = Classes().TryGetValue(b, out var list) ? list.FirstOrDefault() : null;
+            var next = DeclarationWithBase(b) ?? (Classes().TryGetValue(b, out var list) ? list.FirstOrDefault() : null);
             if (next == null) return $"'{c.Name}' derives from '{b}', which is no MonoBehaviour/ScriptableObject the project declares";
             current = next;
         }
     }
+
+    ScriptClass DeclarationWithBase(string name) =>
+        Classes().TryGetValue(name, out var list) ? list.FirstOrDefault(c => c.Base != null) : null;
 
     Dictionary<string, List<ScriptClass>> Classes()
     {
