@@ -16,7 +16,8 @@ public static class UnityKnownIds
         [84] = "RenderTexture", [104] = "RenderSettings", [108] = "Light", [114] = "MonoBehaviour", [115] = "MonoScript",
         [126] = "NavMeshProjectSettings", [129] = "PlayerSettings", [135] = "SphereCollider", [136] = "CapsuleCollider",
         [157] = "LightmapSettings", [159] = "EditorSettings", [196] = "NavMeshSettings", [198] = "ParticleSystem",
-        [199] = "ParticleSystemRenderer", [224] = "RectTransform", [236] = "ClusterInputManager", [310] = "UnityConnectSettings",
+        [199] = "ParticleSystemRenderer", [120] = "LineRenderer", [212] = "SpriteRenderer", [215] = "ReflectionProbe",
+        [222] = "CanvasRenderer", [223] = "Canvas", [224] = "RectTransform", [236] = "ClusterInputManager", [310] = "UnityConnectSettings",
         [1001] = "PrefabInstance", [1045] = "EditorBuildSettings", [1660057539] = "SceneRoots", [890905787] = "VersionControlSettings",
         [937362698] = "VFXManager", [1386491679] = "PresetManager", [387306366] = "MemorySettings",
     };
@@ -71,6 +72,11 @@ public static class UnityKnownIds
         ["ca9f5fa95ffab41fb9a615ab714db018"] = ("DefaultInputActions", "com.unity.inputsystem"),
         ["76c392e42b5098c458856cdf6ecaaaa1"] = ("EventSystem", "com.unity.ugui"),
         ["4f231c4fb786f3946a6b90b886c48677"] = (StandaloneInputModule, "com.unity.ugui"),
+        ["0cd44c1031e13a943bb63640046fad76"] = ("CanvasScaler", "com.unity.ugui"),
+        ["dc42784cf147c0c48a680349fa168899"] = ("GraphicRaycaster", "com.unity.ugui"),
+        ["5f7201a12d95ffc409449d95f23cf332"] = ("Text", "com.unity.ugui"),
+        ["fe87c0e1cc204ed48ad3b37840f39efc"] = ("Image", "com.unity.ugui"),
+        ["4e29b1a8efbd4b44bb3f3716e73f07ff"] = ("Button", "com.unity.ugui"),
     };
 
     /// <summary>uGUI's input module for the legacy Input Manager: throws every frame when only the Input System is active.</summary>
@@ -90,7 +96,9 @@ public static class UnityKnownIds
         "d8b63aba1907145bea998dd612889d6b", "75469ad4d38634e559750d17036d5f7c", "dc04f38471c3a459fb4d31124ee9127d",
         "27619889b8ba8c24980f49ee34dbb44a", "0acc523941302664db1f4e527237feb3", "8404be70184654265930450def6a9037",
         "62899f850307741f2a39c98a8b639597", "01614664b831546d2ae94a42149d80ac", "ca9f5fa95ffab41fb9a615ab714db018",
-        "76c392e42b5098c458856cdf6ecaaaa1", "4f231c4fb786f3946a6b90b886c48677",
+        "76c392e42b5098c458856cdf6ecaaaa1", "4f231c4fb786f3946a6b90b886c48677", "0cd44c1031e13a943bb63640046fad76",
+        "dc42784cf147c0c48a680349fa168899", "5f7201a12d95ffc409449d95f23cf332", "fe87c0e1cc204ed48ad3b37840f39efc",
+        "4e29b1a8efbd4b44bb3f3716e73f07ff",
     };
 
     /// <summary>Tags every project has without a TagManager entry.</summary>
