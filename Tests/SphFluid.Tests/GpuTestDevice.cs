@@ -3,7 +3,11 @@ using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using NUnit.Framework;
+using NUnit.Framework.Interfaces;
 using SphFluid.Vulkan;
+
+// Every test of the assembly ends with a check that the validation layer stayed silent during it.
+[assembly: SphFluid.Tests.GpuValidationClean]
 
 namespace SphFluid.Tests
 {
@@ -104,6 +108,25 @@ namespace SphFluid.Tests
                     .OrderBy(d => d, StringComparer.Ordinal));
             }
             return dirs;
+        }
+    }
+}
+
+namespace SphFluid.Tests
+{
+    /// <summary>After each test that ran while the shared GPU device existed: the Vulkan validation layer
+    /// must have reported nothing (the issue asks for a suite free of validation messages, and a
+    /// per-test check names the test that caused one). Applied to the whole assembly.</summary>
+    [AttributeUsage(AttributeTargets.Assembly)]
+    public sealed class GpuValidationCleanAttribute : Attribute, ITestAction
+    {
+        public ActionTargets Targets => ActionTargets.Test;
+
+        public void BeforeTest(ITest test) { }
+
+        public void AfterTest(ITest test)
+        {
+            if (GpuTestDevice.IsCreated) GpuTestDevice.AssertNoValidationMessages();
         }
     }
 }

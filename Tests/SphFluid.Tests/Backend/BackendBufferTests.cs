@@ -24,9 +24,6 @@ namespace SphFluid.Tests.Backend
             public Vector3 Position;
         }
 
-        [TearDown]
-        public void NoValidationMessages() => GpuTestDevice.AssertNoValidationMessages();
-
         [Test]
         public void StructBufferRoundTripsThroughAKernel()
         {

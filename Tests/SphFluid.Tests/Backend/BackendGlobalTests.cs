@@ -8,9 +8,6 @@ namespace SphFluid.Tests.Backend
     /// <summary>Every global type lands where HLSL reads it (std140 offsets, matrix orientation).</summary>
     public sealed class BackendGlobalTests
     {
-        [TearDown]
-        public void NoValidationMessages() => GpuTestDevice.AssertNoValidationMessages();
-
         static Matrix4x4 Asymmetric()
         {
             // M{r}{c} = 10 r + c: every element differs from its transpose.

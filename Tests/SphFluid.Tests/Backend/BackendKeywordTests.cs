@@ -6,9 +6,6 @@ namespace SphFluid.Tests.Backend
     /// <summary>multi_compile keywords are read from the file and select the variant that runs.</summary>
     public sealed class BackendKeywordTests
     {
-        [TearDown]
-        public void NoValidationMessages() => GpuTestDevice.AssertNoValidationMessages();
-
         [Test]
         public void KeywordsAreListedFromThePragmas()
         {

@@ -5,9 +5,6 @@ namespace SphFluid.Tests.Backend
 {
     public sealed class BackendSmokeTests
     {
-        [TearDown]
-        public void NoValidationMessages() => GpuTestDevice.AssertNoValidationMessages();
-
         [Test]
         public void DispatchWritesWhatTheKernelComputes()
         {
