@@ -16,7 +16,7 @@ namespace SphFluid.Tests.Integrity
             using (var project = new SyntheticProject())
             {
                 var problems = AssetIntegrity.Check(project.Root);
-                Assert.That(problems, Is.Empty, AssetIntegrity.Describe(problems));
+                Assert.That(problems.Count, Is.Zero, AssetIntegrity.Describe(problems));
             }
         }
 
@@ -28,7 +28,7 @@ namespace SphFluid.Tests.Integrity
                 project.Replace(SyntheticProject.EditorAsmdefPath, "\"Game.Runtime\"",
                     "\"GUID:" + project.GuidOf(SyntheticProject.RuntimeAsmdefPath) + "\", \"GUID:27619889b8ba8c24980f49ee34dbb44a\"");
                 var problems = AssetIntegrity.Check(project.Root);
-                Assert.That(problems, Is.Empty, AssetIntegrity.Describe(problems));
+                Assert.That(problems.Count, Is.Zero, AssetIntegrity.Describe(problems));
             }
         }
 
@@ -55,7 +55,7 @@ namespace SphFluid.Tests.Integrity
                 project.Replace(SyntheticProject.ScriptPath, "public float rate = 2f;", "public float rate = 2f;\n        [SerializeField] Material dots;\n        Shader Dots => Shader.Find(\"Game/Dots\");");
                 project.Replace(SyntheticProject.ScenePath, "  rate: 2\n", "  rate: 2\n  dots: {fileID: 2100000, guid: " + project.GuidOf("Assets/Game/Dots.mat") + ", type: 2}\n");
                 var problems = AssetIntegrity.Check(project.Root);
-                Assert.That(problems, Is.Empty, AssetIntegrity.Describe(problems));
+                Assert.That(problems.Count, Is.Zero, AssetIntegrity.Describe(problems));
             }
         }
 

@@ -20,7 +20,7 @@ namespace SphFluid.Tests.Integrity
         public void Unity_would_open_the_project_without_asset_problems()
         {
             var problems = AssetIntegrity.Check(RepoRoot);
-            Assert.That(problems, Is.Empty, AssetIntegrity.Describe(problems));
+            Assert.That(problems.Count, Is.Zero, AssetIntegrity.Describe(problems));
         }
 
         [Test]
