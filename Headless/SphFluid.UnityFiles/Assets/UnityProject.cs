@@ -1,0 +1,96 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using SphFluid.UnityFiles.Scenes;
+using SphFluid.UnityFiles.Yaml;
+
+namespace SphFluid.UnityFiles.Assets;
+
+/// <summary>
+/// A Unity project on disk seen through its GUIDs: turns a reference's guid into the asset path (e.g. which .compute a
+/// scene component points at), a script class name into its guid, and lists scenes and the build's scene list.
+/// Index built once on construction from every .meta under Assets/.
+/// </summary>
+public sealed class UnityProject
+{
+    readonly Dictionary<string, string> _pathByGuid = new(StringComparer.Ordinal);
+    readonly Dictionary<string, string> _guidByPath = new(StringComparer.Ordinal);
+
+    public UnityProject(string root)
+    {
+        Root = Path.GetFullPath(root);
+        var assets = Path.Combine(Root, "Assets");
+        if (!Directory.Exists(assets)) throw new DirectoryNotFoundException($"'{Root}' has no Assets/ folder");
+        foreach (var meta in Directory.EnumerateFiles(assets, "*.meta", SearchOption.AllDirectories))
+        {
+            string guid;
+            try { guid = UnityMeta.Load(meta).Guid; }
+            catch (FormatException) { continue; }
+            if (guid == null) continue;
+            var asset = ToProjectPath(meta[..^5]);
+            _pathByGuid.TryAdd(guid, asset);
+            _guidByPath[asset] = guid;
+        }
+    }
+
+    /// <summary>Absolute path of the folder holding Assets/.</summary>
+    public string Root { get; }
+
+    /// <summary>Finds the project at or above <paramref name="start"/>.</summary>
+    public static UnityProject Find(string start) => new(Integrity.AssetIntegrity.FindProjectRoot(start));
+
+    /// <summary>"Assets/…" path of the asset with <paramref name="guid"/>, or null.</summary>
+    public string AssetPathOf(string guid) => guid != null && _pathByGuid.TryGetValue(guid, out var p) ? p : null;
+
+    /// <summary>"Assets/…" path a reference points at (null for null, local and built-in references).</summary>
+    public string AssetPathOf(UnityReference reference) => reference == null || !reference.IsExternal ? null : AssetPathOf(reference.Guid);
+
+    /// <summary>Guid of an asset given as "Assets/…" (or absolute) path, or null.</summary>
+    public string GuidOf(string assetPath) => _guidByPath.TryGetValue(ToProjectPath(assetPath), out var g) ? g : null;
+
+    /// <summary>Guid of the script file <c>&lt;className&gt;.cs</c> (Unity binds MonoBehaviours by file name); throws when absent or ambiguous.</summary>
+    public string ScriptGuid(string className)
+    {
+        var matches = _guidByPath.Where(kv => Path.GetFileName(kv.Key) == className + ".cs").ToList();
+        if (matches.Count == 1) return matches[0].Value;
+        throw new InvalidOperationException(matches.Count == 0
+            ? $"no {className}.cs under Assets/"
+            : $"{className}.cs exists {matches.Count} times: {string.Join(", ", matches.Select(m => m.Key))}");
+    }
+
+    /// <summary>Absolute path for an "Assets/…" path.</summary>
+    public string FullPath(string projectPath) => Path.GetFullPath(Path.Combine(Root, projectPath));
+
+    /// <summary>Every .unity scene under Assets/, as "Assets/…" paths, sorted.</summary>
+    public IReadOnlyList<string> Scenes =>
+        _guidByPath.Keys.Where(p => p.EndsWith(".unity", StringComparison.Ordinal)).OrderBy(p => p, StringComparer.Ordinal).ToList();
+
+    /// <summary>Enabled scenes of ProjectSettings/EditorBuildSettings.asset in build order (empty when the file is absent).</summary>
+    public IReadOnlyList<string> BuildScenes
+    {
+        get
+        {
+            var file = Path.Combine(Root, "ProjectSettings", "EditorBuildSettings.asset");
+            if (!File.Exists(file)) return Array.Empty<string>();
+            var scenes = UnityYamlFile.Load(file).Documents.FirstOrDefault()?.Root["m_Scenes"];
+            return scenes?.Items.Where(s => s.GetBool("enabled", true)).Select(s => s.GetString("path")).ToList() ?? new List<string>();
+        }
+    }
+
+    /// <summary>Loads a scene given as "Assets/…" path, absolute path, or bare scene name ("DamBreak").</summary>
+    public UnityScene LoadScene(string scene)
+    {
+        var path = scene.EndsWith(".unity", StringComparison.Ordinal)
+            ? ToProjectPath(scene)
+            : Scenes.FirstOrDefault(s => Path.GetFileNameWithoutExtension(s) == scene)
+              ?? throw new FileNotFoundException($"no scene named '{scene}' under Assets/ (have: {string.Join(", ", Scenes.Select(Path.GetFileNameWithoutExtension))})");
+        return UnityScene.Load(FullPath(path));
+    }
+
+    string ToProjectPath(string path)
+    {
+        var full = Path.GetFullPath(Path.IsPathRooted(path) ? path : Path.Combine(Root, path));
+        return Path.GetRelativePath(Root, full).Replace('\\', '/');
+    }
+}
