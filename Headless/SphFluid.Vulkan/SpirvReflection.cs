@@ -8,7 +8,10 @@ namespace SphFluid.Vulkan;
 public enum SpirvResourceKind { StorageBuffer, UniformBuffer }
 
 /// <summary>One descriptor a kernel declares, by the HLSL name of the variable.</summary>
-public sealed record SpirvResource(string Name, SpirvResourceKind Kind, uint Set, uint Binding, int ArrayStride, bool ReadOnly);
+/// <param name="ElementType">For a structured buffer, its element type in HLSL words: "uint", "float4", or the struct's name.</param>
+/// <param name="ElementIsStruct">True when <paramref name="ElementType"/> names a struct.</param>
+public sealed record SpirvResource(string Name, SpirvResourceKind Kind, uint Set, uint Binding, int ArrayStride, bool ReadOnly,
+    string ElementType = "", bool ElementIsStruct = false);
 
 /// <summary>One member of the <c>$Global</c> uniform block: where HLSL reads it and how it is shaped.</summary>
 /// <param name="Columns">SPIR-V columns of a matrix (HLSL rows); 0 for scalars and vectors.</param>
@@ -140,6 +143,19 @@ public sealed class SpirvReflection
         }
 
         var unsupported = new List<string>();
+        string HlslTypeName(uint typeId)
+        {
+            if (!types.TryGetValue(typeId, out var t)) return "?";
+            switch (t.Op)
+            {
+                case 21: return t.Operands[1] == 1 ? "int" : "uint";
+                case 22: return t.Operands[0] == 64 ? "double" : t.Operands[0] == 16 ? "half" : "float";
+                case 23: return HlslTypeName(t.Operands[0]) + t.Operands[1];
+                case 24: return HlslTypeName(types[t.Operands[0]].Operands[0]) + t.Operands[1] + "x" + types[t.Operands[0]].Operands[1];
+                default: return "?";
+            }
+        }
+
         foreach (var (ptrType, id, storage) in variables)
         {
             if (storage == 0 && decorations.ContainsKey((id, DecoBinding)))
@@ -161,10 +177,17 @@ public sealed class SpirvReflection
             {
                 // A structured buffer is a block whose one member is the runtime array of elements.
                 int stride = 0;
+                string elementType = "";
+                bool elementIsStruct = false;
                 bool readOnly = block.Operands.Length > 0 && memberDecorations.ContainsKey((blockType, 0, DecoNonWritable));
                 if (block.Operands.Length > 0 && types.TryGetValue(block.Operands[^1], out var arr) && (arr.Op == 29 || arr.Op == 28))
+                {
                     stride = decorations.TryGetValue((block.Operands[^1], DecoArrayStride), out uint st) ? (int)st : 0;
-                resources.Add(new SpirvResource(varName, SpirvResourceKind.StorageBuffer, set, binding, stride, readOnly));
+                    uint elementId = arr.Operands[0];
+                    elementIsStruct = types.TryGetValue(elementId, out var et) && et.Op == 30;
+                    elementType = elementIsStruct ? (names.TryGetValue(elementId, out var sn) ? sn : "struct") : HlslTypeName(elementId);
+                }
+                resources.Add(new SpirvResource(varName, SpirvResourceKind.StorageBuffer, set, binding, stride, readOnly, elementType, elementIsStruct));
             }
             else if (decorations.ContainsKey((blockType, DecoBlock)))
             {

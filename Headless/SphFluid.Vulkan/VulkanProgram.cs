@@ -94,6 +94,18 @@ public sealed class VulkanProgram : IComputeProgram
         x = r.LocalSizeX; y = r.LocalSizeY; z = r.LocalSizeZ;
     }
 
+    /// <summary>What the kernel's variant for the keywords enabled now declares (compiles it on first use).</summary>
+    public SpirvReflection Reflect(int kernel) => Variant(kernel).Reflection;
+
+    /// <summary>Every keyword combination the file's multi_compile sets allow (one keyword or none per set).</summary>
+    public IReadOnlyList<IReadOnlyList<string>> KeywordCombinations()
+    {
+        IEnumerable<List<string>> combos = new[] { new List<string>() };
+        foreach (var set in Source.KeywordSets)
+            combos = combos.SelectMany(c => set.Select(k => k == null ? c : c.Append(k).ToList())).ToList();
+        return combos.Select(c => (IReadOnlyList<string>)c).ToList();
+    }
+
     internal void CheckKernel(int kernel)
     {
         if (kernel < 0 || kernel >= Bindings.Length)
@@ -135,6 +147,19 @@ public sealed class VulkanProgram : IComputeProgram
         var defines = Source.Kernels.Select(k => k.Defines.Concat(_currentDefines).ToArray()).ToArray();
         Device.Precompile(this, Source.Kernels.Select((k, i) => (k.Name, (IReadOnlyList<string>)defines[i])).ToList());
         for (int i = 0; i < Source.Kernels.Count; i++) Variant(i);
+    }
+
+    /// <summary>Compiles every kernel in every keyword combination, several at a time (a build check;
+    /// dispatches compile only what they use).</summary>
+    public void CompileAllVariants()
+    {
+        var list = new List<(string Kernel, IReadOnlyList<string> Defines)>();
+        foreach (var combo in KeywordCombinations())
+        {
+            var keywords = Source.VariantKeywords(combo.ToList());
+            foreach (var k in Source.Kernels) list.Add((k.Name, k.Defines.Concat(keywords).ToArray()));
+        }
+        Device.Precompile(this, list);
     }
 
     internal bool AnyCompiledVariantDeclares(string name) =>

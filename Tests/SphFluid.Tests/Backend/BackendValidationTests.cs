@@ -1,3 +1,4 @@
+using System;
 using NUnit.Framework;
 using SphFluid.Vulkan;
 
@@ -18,6 +19,17 @@ namespace SphFluid.Tests.Backend
             var device = GpuTestDevice.Shared;
             Assert.That(device.DeviceName, Is.Not.Empty);
             Assert.That(device.DeviceType, Is.Not.Empty);
+        }
+
+        [Test]
+        public void DeviceChosenByNameSubstringOrRefusedNamingTheChoices()
+        {
+            var shared = GpuTestDevice.Shared;
+            string part = shared.DeviceName.Substring(0, Math.Min(6, shared.DeviceName.Length)).ToUpperInvariant();
+            using (var chosen = new VulkanComputeDevice(new VulkanComputeOptions { DeviceName = part }))
+                Assert.That(chosen.DeviceName, Is.EqualTo(shared.DeviceName));
+            Assert.That(() => new VulkanComputeDevice(new VulkanComputeOptions { DeviceName = "NoSuchGpuAnywhere" }),
+                Throws.TypeOf<VulkanUnavailableException>().With.Message.Contains("NoSuchGpuAnywhere").And.Message.Contains(shared.DeviceName));
         }
 
         [Test]
