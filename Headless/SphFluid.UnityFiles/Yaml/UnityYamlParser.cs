@@ -222,10 +222,17 @@ public sealed partial class UnityYamlParser
         }
         if (c == '&' || c == '*' || (c == '!' && text.Length > 1))
             throw Error(line, $"anchors, aliases and tags inside a document are not part of Unity's YAML: '{Shorten(text)}'");
-        var plain = new StringBuilder(text);
+        // In YAML " #" ends a plain scalar (the rest is a comment), so "Water #1" unquoted reads as "Water", as in Unity.
+        var plain = new StringBuilder(StripComment(text));
         while (_pos < _end && _lines[_pos].Indent > ownerIndent && ownerIndent >= 0)
-            plain.Append(' ').Append(_lines[_pos++].Text);
-        return UnityYamlNode.Scalar(plain.ToString(), false, line.Number);
+            plain.Append(' ').Append(StripComment(_lines[_pos++].Text));
+        return UnityYamlNode.Scalar(plain.ToString().TrimEnd(), false, line.Number);
+    }
+
+    static string StripComment(string text)
+    {
+        int hash = text.IndexOf(" #", StringComparison.Ordinal);
+        return hash < 0 ? text : text[..hash];
     }
 
     static bool IsSequenceItem(string text) => text == "-" || text.StartsWith("- ", StringComparison.Ordinal);

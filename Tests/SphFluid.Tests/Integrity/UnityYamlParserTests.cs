@@ -48,6 +48,7 @@ namespace SphFluid.Tests.Integrity
                 "  collisionMask:\n    serializedVersion: 2\n    m_Bits: 4294967295\n" +
                 "  note: a long plain string\n    that Unity wrapped\n" +
                 "  empty: {}\n" +
+                "  tagged: Water #1\n" +
                 "  last: Infinity\n", "b.unity");
 
             var root = file.Find(5).Root;
@@ -70,6 +71,7 @@ namespace SphFluid.Tests.Integrity
             Assert.That(root.GetLong("collisionMask.m_Bits"), Is.EqualTo(4294967295L));
             Assert.That(root.GetString("note"), Is.EqualTo("a long plain string that Unity wrapped"));
             Assert.That(root["empty"].IsMapping, Is.True);
+            Assert.That(root.GetString("tagged"), Is.EqualTo("Water"));
             Assert.That(float.IsPositiveInfinity(root.GetFloat("last")), Is.True);
             Assert.That(root.References().Select(r => r.Path), Is.EqualTo(new[] { "m_Script" }));
         }
