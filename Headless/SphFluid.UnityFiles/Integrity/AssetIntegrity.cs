@@ -65,8 +65,9 @@ public sealed partial class AssetIntegrity
     void Guarded(string path, Action check)
     {
         try { check(); }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException or FormatException or InvalidOperationException)
+        catch (Exception e) when (e is not OutOfMemoryException)
         {
+            // Bad content must become a finding, never a crash: the other checks still run.
             Report(path, $"check stopped: {e.GetType().Name}: {e.Message}");
         }
     }

@@ -128,9 +128,14 @@ public sealed class UnityYamlNode
 
     public long GetLong(string path, long fallback) => TryGetLong(path, out var v) ? v : fallback;
 
-    public int GetInt(string path) => checked((int)GetLong(path));
+    public int GetInt(string path)
+    {
+        var v = GetLong(path);
+        return v is >= int.MinValue and <= int.MaxValue ? (int)v : throw Missing(path, "a 32-bit integer");
+    }
 
-    public int GetInt(string path, int fallback) => TryGetLong(path, out var v) ? checked((int)v) : fallback;
+    public int GetInt(string path, int fallback) =>
+        TryGetLong(path, out var v) && v is >= int.MinValue and <= int.MaxValue ? (int)v : fallback;
 
     public bool TryGetLong(string path, out long value)
     {
