@@ -1,0 +1,95 @@
+using System.Globalization;
+using System.Text;
+using SphFluid.Simulation;
+using UnityEngine;
+
+namespace SphFluid.Runtime
+{
+    /// <summary>On-screen figures of the running simulation (IMGUI): FPS, particles, sub-steps and dt, GPU time,
+    /// density error per phase, the effects the planner switched on.</summary>
+    public sealed class FluidReadout : MonoBehaviour
+    {
+        [SerializeField, Tooltip("The simulator shown; empty = the scene's FluidSimulator.")]
+        FluidSimulator simulator = null;
+
+        [SerializeField, Tooltip("Show the readout.")]
+        bool visible = true;
+
+        [SerializeField, Range(8, 40), Tooltip("Text size, points.")]
+        int fontSize = 14;
+
+        readonly StringBuilder _text = new StringBuilder();
+        GUIStyle _style;
+        float _smoothedDelta = 1f / 60f;
+
+        public bool Visible
+        {
+            get => visible;
+            set => visible = value;
+        }
+
+        void Update()
+        {
+            _smoothedDelta = Mathf.Lerp(_smoothedDelta, Time.unscaledDeltaTime, 0.05f);
+        }
+
+        void OnGUI()
+        {
+            if (!visible) return;
+            if (_style == null || _style.fontSize != fontSize)
+                _style = new GUIStyle(GUI.skin.label) { fontSize = fontSize, richText = false };
+            FluidSimulator target = simulator != null ? simulator : FindFirstObjectByType<FluidSimulator>();
+            Compose(target);
+            GUILayout.BeginArea(new Rect(10f, 10f, Mathf.Min(560f, Screen.width - 20f), Screen.height - 20f));
+            GUILayout.BeginVertical(GUI.skin.box);
+            GUILayout.Label(_text.ToString(), _style);
+            GUILayout.EndVertical();
+            GUILayout.EndArea();
+        }
+
+        void Compose(FluidSimulator target)
+        {
+            CultureInfo c = CultureInfo.InvariantCulture;
+            _text.Clear();
+            _text.AppendFormat(c, "FPS {0:F1} ({1:F1} ms)\n", 1f / Mathf.Max(_smoothedDelta, 1e-6f), _smoothedDelta * 1000f);
+            if (target == null)
+            {
+                _text.Append("No FluidSimulator in the scene");
+                return;
+            }
+            if (!target.IsRunning)
+            {
+                _text.Append("Not running: ").Append(target.FailureReason ?? "disabled");
+                return;
+            }
+
+            _text.AppendFormat(c, "Particles {0}   t = {1:F2} s{2}\n", target.ParticleCount, target.SimulatedTime, target.IsPaused ? "   PAUSED" : "");
+            StepReport step = target.LastStep;
+            _text.AppendFormat(c, "Sub-steps {0} x dt {1:F3} ms (stable {2:F3} ms, limited by {3}){4}\n",
+                step.Substeps, step.TimeStep * 1000f, step.StableTimeStep * 1000f, step.Limit, step.Capped ? "  CAPPED: slower than real time" : "");
+            if (target.TryGetGpuMilliseconds(out double gpu))
+                _text.AppendFormat(c, "GPU {0:F2} ms per frame, {1:F3} ms per sub-step\n", gpu, step.Substeps > 0 ? gpu / step.Substeps : 0.0);
+            else
+                _text.Append("GPU time: not measurable on this platform\n");
+
+            DiagnosticsReport diagnostics = target.LatestDiagnostics;
+            if (diagnostics != null)
+            {
+                foreach (PhaseDiagnostics phase in diagnostics.Phases)
+                    _text.AppendFormat(c, "{0}: {1} particles, density error avg {2:P2} max {3:P2}\n",
+                        phase.Name, phase.Count, phase.AverageDensityError, phase.MaxDensityError);
+                _text.AppendFormat(c, "vmax {0:F2} m/s   KE {1:G3} J   NaN {2}   outside {3}\n",
+                    diagnostics.MaxSpeed, diagnostics.KineticEnergy, diagnostics.NanCount, diagnostics.OutsideCount);
+            }
+
+            SimulationPlan plan = target.Plan;
+            if (plan != null)
+            {
+                _text.Append("Effects: ").Append(plan.Keywords.Count == 0 ? "(single phase, no extras)" : string.Join(" ", plan.Keywords));
+                if (plan.Damping) _text.Append(" DAMPING");
+                _text.Append('\n').Append("Sub-step: ").Append(string.Join(" > ", plan.SubstepPasses)).Append('\n');
+            }
+            _text.Append("RMB orbit  wheel zoom  LMB drag sphere  Space pause  . / N step  R reset  Tab next scene");
+        }
+    }
+}

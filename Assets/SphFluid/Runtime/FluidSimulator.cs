@@ -1,0 +1,437 @@
+using System;
+using System.Collections.Generic;
+using SphFluid.Simulation;
+using UnityEngine;
+using UnityEngine.Rendering;
+
+namespace SphFluid.Runtime
+{
+    /// <summary>
+    /// The SPH fluid of a scene. On enable it gathers the scene's <see cref="SpawnBox"/>es, its
+    /// <see cref="FluidContainer"/> and <see cref="SphereObstacle"/>s into an engine-free scene description and
+    /// starts a <see cref="FluidSimulation"/> (the same pipeline the headless runner drives); every frame it
+    /// pushes the container's and obstacles' motion, steps, and draws the particles with one procedural call.
+    /// GPU resources live exactly from OnEnable to OnDisable; nothing static holds them.
+    /// </summary>
+    [DefaultExecutionOrder(100)] // after whatever moves the container or the spheres this frame
+    [DisallowMultipleComponent]
+    public sealed class FluidSimulator : MonoBehaviour
+    {
+        /// <summary>One press of single-step advances this much simulated time, s.</summary>
+        public const float SingleStepSeconds = 1f / 60f;
+
+        /// <summary>Fastest wall or sphere motion passed on, m/s and rad/s.</summary>
+        const float MaxWallSpeed = 50f, MaxWallSpin = 50f;
+
+        [Header("Compute shaders (Assets/SphFluid/Shaders)")]
+        [SerializeField, Tooltip("FluidSolver.compute: density, forces, integration, boundaries.")]
+        ComputeShader solverShader = null;
+
+        [SerializeField, Tooltip("FluidDiagnostics.compute: motion and health reductions.")]
+        ComputeShader diagnosticsShader = null;
+
+        [SerializeField, Tooltip("ParticleSort.compute: counting sort of particles by grid cell.")]
+        ComputeShader sortShader = null;
+
+        [SerializeField, Tooltip("PrefixSum.compute: the scan the sort is built on.")]
+        ComputeShader prefixSumShader = null;
+
+        [Header("Rendering")]
+        [SerializeField, Tooltip("Material of the particle point shader (reads _Particles, _Phases, _ParticleRadius).")]
+        Material particleMaterial = null;
+
+        [SerializeField, Range(0.25f, 3f), Tooltip("Drawn particle radius in half particle spacings (1 = spheres just touching).")]
+        float particleRadiusScale = 1.2f;
+
+        [Header("Scene")]
+        [SerializeField, Tooltip("The box the fluid lives in; empty = the scene's FluidContainer.")]
+        FluidContainer container = null;
+
+        [Header("Particles")]
+        [SerializeField, Min(0.001f), Tooltip("Lattice spacing s of spawned particles, m, in [0.001, 1].")]
+        float particleSpacing = 0.02f;
+
+        [SerializeField, Min(0.0015f), Tooltip("Kernel support radius h (= grid cell size), m; 1.5 to 3 particle spacings.")]
+        float smoothingRadius = 0.04f;
+
+        [SerializeField, Min(1), Tooltip("Most particles the spawn boxes may hold together, in [1, 16777216].")]
+        int maxParticles = 262144;
+
+        [Header("Pressure")]
+        [SerializeField, Min(1f), Tooltip("Tait stiffness k, Pa, in [1, 1e9]; speed of sound c = sqrt(k gamma / rho0).")]
+        float stiffness = 50000f;
+
+        [SerializeField, Range(1f, 10f), Tooltip("Tait exponent gamma, in [1, 10].")]
+        float gamma = 7f;
+
+        [Header("Forces")]
+        [SerializeField, Tooltip("Gravitational acceleration, m/s^2 (magnitude up to 1000).")]
+        Vector3 gravity = new Vector3(0f, -9.81f, 0f);
+
+        [SerializeField, Range(0f, 1f), Tooltip("XSPH velocity smoothing epsilon, in [0, 1]; 0 turns the pass off.")]
+        float xsphEpsilon = 0.05f;
+
+        [SerializeField, Min(0f), Tooltip("Global velocity damping, 1/s, in [0, 1000]; 0 = none.")]
+        float velocityDamping = 0f;
+
+        [Header("Walls")]
+        [SerializeField, Min(0f), Tooltip("Wall penalty stiffness, 1/s^2 (acceleration per metre of penetration), in [0, 1e8].")]
+        float boundaryStiffness = 20000f;
+
+        [SerializeField, Min(0f), Tooltip("Wall penalty damping of the outward normal velocity, 1/s, in [0, 1e5].")]
+        float boundaryDamping = 100f;
+
+        [Header("Time stepping")]
+        [SerializeField, Range(0.01f, 1f), Tooltip("Courant number of the CFL condition, in (0, 1].")]
+        float cflNumber = 0.4f;
+
+        [SerializeField, Range(1, 1000), Tooltip("Most sub-steps per frame, in [1, 1000]; beyond it the simulation runs slower than real time.")]
+        int maxSubsteps = 32;
+
+        [SerializeField, Min(0.00001f), Tooltip("Largest sub-step, s, in (0, 0.1].")]
+        float maxTimeStep = 0.005f;
+
+        [SerializeField, Range(0.001f, 0.1f), Tooltip("Longest frame simulated, s: a slower frame (a hitch, the editor) is simulated as this long.")]
+        float maxFrameTime = 1f / 30f;
+
+        [Header("Diagnostics")]
+        [SerializeField, Tooltip("Read back mass, energy, density error per phase... asynchronously every frame (for the readout).")]
+        bool requestDiagnostics = true;
+
+        UnityComputeDevice _device;
+        FluidSimulation _simulation;
+        MaterialPropertyBlock _properties;
+        FluidContainer _container;
+        readonly List<SphereObstacle> _obstacles = new List<SphereObstacle>();
+        readonly List<Vector3> _obstaclePositions = new List<Vector3>();
+        readonly List<SphereObstacleDescription> _obstacleDescriptions = new List<SphereObstacleDescription>();
+        Vector3 _containerPosition;
+        Quaternion _containerRotation;
+        bool _paused, _stepRequested;
+        string _failure, _lastMotionError;
+
+        // ------------------------------------------------------------------ read-only state
+
+        /// <summary>True while a simulation runs (enabled, valid scene, GPU resources alive).</summary>
+        public bool IsRunning => _simulation != null;
+
+        /// <summary>Why no simulation runs, or null.</summary>
+        public string FailureReason => _failure;
+
+        public bool IsPaused => _paused;
+
+        public int ParticleCount => _simulation != null ? _simulation.ParticleCount : 0;
+
+        public StepReport LastStep => _simulation != null ? _simulation.LastStep : StepReport.None;
+
+        public SimulationPlan Plan => _simulation?.Plan;
+
+        public double SimulatedTime => _simulation != null ? _simulation.SimulatedTime : 0.0;
+
+        /// <summary>Latest asynchronous diagnostics (a frame or two stale), or null.</summary>
+        public DiagnosticsReport LatestDiagnostics => _simulation?.LatestDiagnostics;
+
+        public IReadOnlyList<PhaseDescription> Phases => _simulation?.Phases;
+
+        /// <summary>Drawn particle radius, m.</summary>
+        public float ParticleRadius => 0.5f * particleSpacing * particleRadiusScale;
+
+        /// <summary>The running simulation (tests and tools); null when not running.</summary>
+        public FluidSimulation Simulation => _simulation;
+
+        /// <summary>The device of the running simulation (tests count its live buffers); null when not running.</summary>
+        public UnityComputeDevice Device => _device;
+
+        /// <summary>GPU time of the solver passes over a recent frame, ms; false where the platform cannot time them.</summary>
+        public bool TryGetGpuMilliseconds(out double milliseconds)
+        {
+            milliseconds = 0;
+            if (_device == null) return false;
+            bool any = false;
+            foreach (string pass in FluidSimulation.SampleNames)
+            {
+                if (pass == PassNames.Diagnostics) continue;
+                if (_device.TryGetSampleMilliseconds(pass, out double ms))
+                {
+                    milliseconds += ms;
+                    any = true;
+                }
+            }
+            return any;
+        }
+
+        // ------------------------------------------------------------------ controls
+
+        public void Pause() => _paused = true;
+
+        public void Resume() => _paused = false;
+
+        public void TogglePause() => _paused = !_paused;
+
+        /// <summary>Pauses and advances exactly one frame of <see cref="SingleStepSeconds"/>.</summary>
+        public void StepOnce()
+        {
+            _paused = true;
+            _stepRequested = true;
+        }
+
+        /// <summary>Respawns from the components as they are now (edited spawn boxes, settings and all).</summary>
+        public void ResetSimulation()
+        {
+            Shutdown();
+            if (isActiveAndEnabled) Startup();
+        }
+
+        // ------------------------------------------------------------------ description
+
+        public FluidSettings DescribeSettings()
+        {
+            return new FluidSettings
+            {
+                ParticleSpacing = particleSpacing,
+                SmoothingRadius = smoothingRadius,
+                Stiffness = stiffness,
+                Gamma = gamma,
+                Gravity = gravity.ToNumerics(),
+                XsphEpsilon = xsphEpsilon,
+                BoundaryStiffness = boundaryStiffness,
+                BoundaryDamping = boundaryDamping,
+                VelocityDamping = velocityDamping,
+                CflNumber = cflNumber,
+                MaxSubsteps = maxSubsteps,
+                MaxTimeStep = maxTimeStep,
+                MaxParticles = maxParticles,
+            };
+        }
+
+        /// <summary>The container this simulator uses: the assigned one, else the scene's.</summary>
+        public FluidContainer FindContainer() => container != null ? container : FindFirstObjectByType<FluidContainer>();
+
+        /// <summary>The scene as the core sees it: settings, every active SpawnBox and SphereObstacle, the container (or null).</summary>
+        public FluidSceneDescription DescribeScene()
+        {
+            var scene = new FluidSceneDescription { Settings = DescribeSettings() };
+            FluidContainer box = FindContainer();
+            scene.Container = box != null ? box.Describe() : null;
+            foreach (SpawnBox spawn in FindObjectsByType<SpawnBox>(FindObjectsSortMode.InstanceID))
+                if (spawn.isActiveAndEnabled) scene.SpawnBoxes.Add(spawn.Describe());
+            foreach (SphereObstacle sphere in ActiveObstacles())
+                scene.Obstacles.Add(sphere.Describe(Vector3.zero));
+            return scene;
+        }
+
+        /// <summary>The core's refusals of the settings fields.</summary>
+        public IReadOnlyList<ValidationError> ValidationErrors() => ComponentValidation.SettingsErrors(DescribeSettings());
+
+        static List<SphereObstacle> ActiveObstacles()
+        {
+            var list = new List<SphereObstacle>();
+            foreach (SphereObstacle sphere in FindObjectsByType<SphereObstacle>(FindObjectsSortMode.InstanceID))
+                if (sphere.isActiveAndEnabled) list.Add(sphere);
+            return list;
+        }
+
+        // ------------------------------------------------------------------ lifetime
+
+        void OnEnable() => Startup();
+
+        void OnDisable() => Shutdown();
+
+        void OnDestroy() => Shutdown();
+
+        void OnValidate() => ComponentValidation.Log(ValidationErrors(), this);
+
+        void Startup()
+        {
+            _failure = null;
+            _lastMotionError = null;
+            if (!SystemInfo.supportsComputeShaders)
+            {
+                Fail("this graphics device has no compute shaders");
+                return;
+            }
+            string missing = MissingShaderField();
+            if (missing != null)
+            {
+                Fail($"field '{missing}' has no compute shader assigned (Assets/SphFluid/Shaders)");
+                return;
+            }
+            _container = FindContainer();
+            if (_container == null)
+            {
+                Fail("the scene has no FluidContainer (assign field 'container')");
+                return;
+            }
+
+            FluidSceneDescription scene = DescribeScene();
+            IReadOnlyList<ValidationError> errors = scene.Validate();
+            if (errors.Count > 0)
+            {
+                foreach (ValidationError e in errors)
+                    Debug.LogError($"FluidSimulator '{name}': {e.Message} [{e.Field}]", this);
+                Fail($"{errors.Count} invalid value(s) in the scene, listed in the Console; the simulation did not start");
+                return;
+            }
+
+            _device = new UnityComputeDevice(new[] { solverShader, diagnosticsShader, sortShader, prefixSumShader });
+            try
+            {
+                _simulation = new FluidSimulation(_device, scene);
+            }
+            catch (Exception e)
+            {
+                Debug.LogException(e, this);
+                Shutdown();
+                Fail(e.Message);
+                return;
+            }
+
+            _properties = new MaterialPropertyBlock();
+            _containerPosition = _container.transform.position;
+            _containerRotation = _container.transform.rotation;
+            _obstacles.Clear();
+            _obstacles.AddRange(ActiveObstacles());
+            _obstaclePositions.Clear();
+            foreach (SphereObstacle sphere in _obstacles) _obstaclePositions.Add(sphere.transform.position);
+            if (particleMaterial == null)
+                Debug.LogWarning($"FluidSimulator '{name}': field 'particleMaterial' is empty; the fluid is simulated but not drawn", this);
+        }
+
+        void Fail(string reason)
+        {
+            _failure = reason;
+            Debug.LogError($"FluidSimulator '{name}': {reason}", this);
+        }
+
+        void Shutdown()
+        {
+            _simulation?.Dispose();
+            _simulation = null;
+            _device?.Dispose(); // releases any buffer the simulation did not
+            _device = null;
+            _obstacles.Clear();
+            _obstaclePositions.Clear();
+        }
+
+        string MissingShaderField()
+        {
+            if (solverShader == null) return nameof(solverShader);
+            if (diagnosticsShader == null) return nameof(diagnosticsShader);
+            if (sortShader == null) return nameof(sortShader);
+            if (prefixSumShader == null) return nameof(prefixSumShader);
+            return null;
+        }
+
+        // ------------------------------------------------------------------ per frame
+
+        void Update()
+        {
+            if (_simulation == null) return;
+            bool advance = !_paused || _stepRequested;
+            float frame = _stepRequested ? SingleStepSeconds : Mathf.Min(Time.deltaTime, maxFrameTime);
+            _stepRequested = false;
+
+            // Walls and spheres move with the velocity that carries them over the simulated frame.
+            float motionSeconds = advance ? frame : Time.deltaTime;
+            try
+            {
+                PushContainer(motionSeconds);
+                PushObstacles(motionSeconds);
+                _lastMotionError = null;
+            }
+            catch (ArgumentException e)
+            {
+                if (e.Message != _lastMotionError) Debug.LogError($"FluidSimulator '{name}': {e.Message}", this);
+                _lastMotionError = e.Message;
+            }
+
+            try
+            {
+                if (advance && frame > 0f) _simulation.Step(frame);
+                if (requestDiagnostics) _simulation.RequestDiagnostics();
+            }
+            catch (Exception e)
+            {
+                Debug.LogException(e, this);
+                Shutdown();
+                Fail("the simulation stopped: " + e.Message);
+                return;
+            }
+            Draw();
+        }
+
+        void PushContainer(float seconds)
+        {
+            if (_container == null) return;
+            Transform t = _container.transform;
+            Vector3 position = t.position;
+            Quaternion rotation = t.rotation;
+            ContainerDescription description = _container.Describe();
+            if (seconds > 0f)
+            {
+                // A teleport (editing the Transform) is not a motion the walls should fling fluid with.
+                description.Velocity = Vector3.ClampMagnitude((position - _containerPosition) / seconds, MaxWallSpeed).ToNumerics();
+                description.AngularVelocity = Vector3.ClampMagnitude(AngularVelocity(_containerRotation, rotation) / seconds, MaxWallSpin).ToNumerics();
+            }
+            _containerPosition = position;
+            _containerRotation = rotation;
+            _simulation.UpdateContainer(description);
+        }
+
+        /// <summary>Rotation from <paramref name="from"/> to <paramref name="to"/> as axis times angle, rad (shortest way).</summary>
+        static Vector3 AngularVelocity(Quaternion from, Quaternion to)
+        {
+            Quaternion delta = to * Quaternion.Inverse(from);
+            delta.ToAngleAxis(out float degrees, out Vector3 axis);
+            if (degrees > 180f) degrees -= 360f;
+            if (float.IsNaN(axis.x) || float.IsInfinity(axis.x) || Mathf.Abs(degrees) < 1e-6f) return Vector3.zero;
+            return axis.normalized * (degrees * Mathf.Deg2Rad);
+        }
+
+        void PushObstacles(float seconds)
+        {
+            if (_obstacles.Count == 0) return;
+            _obstacleDescriptions.Clear();
+            for (int i = 0; i < _obstacles.Count; i++)
+            {
+                SphereObstacle sphere = _obstacles[i];
+                if (sphere == null) continue; // destroyed while running: it simply stops pushing
+                Vector3 position = sphere.transform.position;
+                Vector3 velocity = seconds > 0f ? Vector3.ClampMagnitude((position - _obstaclePositions[i]) / seconds, MaxWallSpeed) : Vector3.zero;
+                _obstaclePositions[i] = position;
+                _obstacleDescriptions.Add(sphere.Describe(velocity));
+            }
+            _simulation.UpdateObstacles(_obstacleDescriptions);
+        }
+
+        void Draw()
+        {
+            if (particleMaterial == null || _container == null) return;
+            var particles = (UnityComputeBuffer)_simulation.Particles; // alternates every sort: fetch each frame
+            var phases = (UnityComputeBuffer)_simulation.PhaseTable;
+            _properties.SetBuffer(ShaderIds.Particles, particles.Buffer);
+            _properties.SetBuffer(ShaderIds.Phases, phases.Buffer);
+            _properties.SetFloat(ShaderIds.ParticleRadius, ParticleRadius);
+
+            Transform box = _container.transform;
+            float reach = box.lossyScale.magnitude + 4f * ParticleRadius; // any rotation of the box fits
+            var parameters = new RenderParams(particleMaterial)
+            {
+                worldBounds = new Bounds(box.position, new Vector3(reach, reach, reach)),
+                matProps = _properties,
+                layer = gameObject.layer,
+                shadowCastingMode = ShadowCastingMode.Off,
+                receiveShadows = false,
+            };
+            Graphics.RenderPrimitives(parameters, MeshTopology.Triangles, 6, _simulation.ParticleCount);
+        }
+
+        /// <summary>Material property ids, looked up once (on first use, on the main thread).</summary>
+        static class ShaderIds
+        {
+            public static readonly int Particles = Shader.PropertyToID("_Particles");
+            public static readonly int Phases = Shader.PropertyToID("_Phases");
+            public static readonly int ParticleRadius = Shader.PropertyToID("_ParticleRadius");
+        }
+    }
+}

@@ -1,0 +1,42 @@
+using System.Collections.Generic;
+using SphFluid.Simulation;
+using UnityEngine;
+
+namespace SphFluid.Runtime
+{
+    /// <summary>
+    /// A solid sphere the fluid flows around. Its centre is this Transform's position; its velocity comes
+    /// from how the Transform moves between frames (drag it, animate it, or use a <see cref="SphereDriver"/>).
+    /// </summary>
+    [DisallowMultipleComponent]
+    public sealed class SphereObstacle : MonoBehaviour
+    {
+        [SerializeField, Min(0.0001f), Tooltip("Radius in local units, m; scaled by the largest lossy-scale component like a SphereCollider (0.5 fits Unity's sphere mesh).")]
+        float radius = 0.5f;
+
+        /// <summary>Radius in metres, world space.</summary>
+        public float WorldRadius
+        {
+            get
+            {
+                Vector3 s = FluidContainer.Abs(transform.lossyScale);
+                return radius * Mathf.Max(s.x, Mathf.Max(s.y, s.z));
+            }
+        }
+
+        public SphereObstacleDescription Describe(Vector3 velocity)
+        {
+            return new SphereObstacleDescription(transform.position.ToNumerics(), WorldRadius, velocity.ToNumerics()) { Name = name };
+        }
+
+        public IReadOnlyList<ValidationError> ValidationErrors() => ComponentValidation.ObstacleErrors(Describe(Vector3.zero));
+
+        void OnValidate() => ComponentValidation.Log(ValidationErrors(), this);
+
+        void OnDrawGizmos()
+        {
+            Gizmos.color = new Color(1f, 0.6f, 0.2f, 1f);
+            Gizmos.DrawWireSphere(transform.position, WorldRadius);
+        }
+    }
+}
