@@ -14,7 +14,7 @@ namespace SphFluid.Simulation
         /// free-surface particles are under-dense by construction and would hide compression in a signed mean).</summary>
         public float AverageDensityError { get; }
 
-        /// <summary>Largest |rho / rho0 - 1| over the phase's particles.</summary>
+        /// <summary>Largest compression max(0, rho / rho0 - 1) over the phase's particles.</summary>
         public float MaxDensityError { get; }
 
         public PhaseDiagnostics(string name, int count, float averageDensityError, float maxDensityError)

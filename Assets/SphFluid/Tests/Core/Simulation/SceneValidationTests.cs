@@ -1,0 +1,116 @@
+using System.Linq;
+using System.Numerics;
+using NUnit.Framework;
+using SphFluid.Simulation;
+
+namespace SphFluid.Tests.Core.Simulation
+{
+    public sealed class SceneValidationTests
+    {
+        static string[] Messages(FluidSceneDescription scene) => scene.Validate().Select(e => e.Message).ToArray();
+
+        [Test]
+        public void ValidScene_HasNoErrors()
+        {
+            Assert.That(SimulationTestScenes.OilOnWater().Validate(), Is.Empty);
+            Assert.That(new FluidSettings().Validate(), Is.Empty);
+        }
+
+        [Test]
+        public void NegativeRestDensity_NamesBoxFieldRangeAndValue()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.SpawnBoxes[0].Phase.RestDensity = -3f;
+            var errors = scene.Validate();
+            Assert.That(errors.Select(e => e.Message).ToArray(), Has.Member("SpawnBox 'Water': RestDensity must be in [1, 100000] kg/m^3 (was -3)"));
+            Assert.That(errors.Select(e => e.Field).ToArray(), Has.Member("SpawnBoxes[0].Phase.RestDensity"));
+        }
+
+        [Test]
+        public void SmoothingRadiusOutsideRatio_IsRefused()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.Settings.SmoothingRadius = 0.1f;
+            Assert.That(Messages(scene), Has.Some.Contains("FluidSettings: SmoothingRadius must be in [0.03, 0.06] m").And.Contains("(was 0.1)"));
+        }
+
+        [TestCase("Stiffness", "Stiffness must be in [1, 1E+09] Pa (was -1)")]
+        [TestCase("Gamma", "Gamma must be in [1, 10] (was -1)")]
+        [TestCase("XsphEpsilon", "XsphEpsilon must be in [0, 1] (was -1)")]
+        [TestCase("CflNumber", "CflNumber must be in (0, 1] (was -1)")]
+        [TestCase("MaxTimeStep", "MaxTimeStep must be in (0, 0.1] s (was -1)")]
+        public void SettingsOutOfRange_NameTheField(string field, string message)
+        {
+            var settings = new FluidSettings();
+            typeof(FluidSettings).GetProperty(field).SetValue(settings, -1f);
+            Assert.That(settings.Validate().Select(e => e.Message).ToArray(), Has.Member("FluidSettings: " + message));
+        }
+
+        [Test]
+        public void ConflictingPhaseDefinitions_NameBothBoxes()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.SpawnBoxes[1].Phase = SimulationTestScenes.Water();
+            scene.SpawnBoxes[1].Phase.RestDensity = 998f;
+            var messages = Messages(scene);
+            Assert.That(messages, Has.Some.Contains("phase 'Water'").And.Contains("SpawnBox 'Water'").And.Contains("SpawnBox 'Oil'"));
+        }
+
+        [Test]
+        public void BoxOutsideTheContainer_NamesTheBox()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.SpawnBoxes[1].Center = new Vector3(0.2f, 0f, 0f);
+            Assert.That(Messages(scene), Has.Some.StartsWith("SpawnBox 'Oil': the box must lie inside the container"));
+        }
+
+        [Test]
+        public void BoxSmallerThanASpacing_IsRefused()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.SpawnBoxes[0].Size = new Vector3(0.01f, 0.1f, 0.1f);
+            Assert.That(Messages(scene), Has.Some.StartsWith("SpawnBox 'Water': each Size component must be in [0.02, 1000] m"));
+        }
+
+        [Test]
+        public void JitterAboveHalf_IsRefused()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.SpawnBoxes[0].Jitter = 0.7f;
+            Assert.That(Messages(scene), Has.Member("SpawnBox 'Water': Jitter must be in [0, 0.5] particle spacings (was 0.7)"));
+        }
+
+        [Test]
+        public void TooManyParticles_IsRefused()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.Settings.MaxParticles = 100;
+            Assert.That(Messages(scene), Has.Some.Contains("the total must be in [1, 100]"));
+        }
+
+        [Test]
+        public void ObstacleWithZeroRadius_IsRefused()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.Obstacles.Add(new SphereObstacleDescription(Vector3.Zero, 0f, Vector3.Zero) { Name = "Ball" });
+            Assert.That(Messages(scene), Has.Member("Sphere 'Ball': Radius must be in (0, 1000] m (was 0)"));
+        }
+
+        [Test]
+        public void EmptyScene_IsRefused()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.SpawnBoxes.Clear();
+            Assert.That(Messages(scene), Has.Member("FluidScene: SpawnBoxes must hold at least one box (was 0)"));
+        }
+
+        [Test]
+        public void GenerateOnInvalidScene_ThrowsWithEveryMessage()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.SpawnBoxes[0].Phase.RestDensity = -3f;
+            Assert.That(() => SpawnLayout.Generate(scene),
+                Throws.ArgumentException.With.Message.Contains("SpawnBox 'Water': RestDensity must be in [1, 100000] kg/m^3 (was -3)"));
+        }
+    }
+}

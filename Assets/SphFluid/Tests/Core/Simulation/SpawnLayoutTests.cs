@@ -1,0 +1,135 @@
+using System;
+using System.Numerics;
+using NUnit.Framework;
+using SphFluid.Simulation;
+
+namespace SphFluid.Tests.Core.Simulation
+{
+    public sealed class SpawnLayoutTests
+    {
+        [Test]
+        public void Count_IsLatticePointsPerAxis()
+        {
+            var settings = new FluidSettings { ParticleSpacing = 0.02f, SmoothingRadius = 0.04f };
+            var box = new SpawnBoxDescription("B", SimulationTestScenes.Water(), Vector3.Zero, new Vector3(0.2f, 0.1f, 0.05f));
+            SpawnLayout.CountPerAxis(settings, box, out int nx, out int ny, out int nz);
+            Assert.That(new[] { nx, ny, nz }, Is.EqualTo(new[] { 10, 5, 2 }));
+            Assert.That(SpawnLayout.Count(settings, box), Is.EqualTo(100L));
+        }
+
+        [Test]
+        public void Generate_GivesTheCountsOfEveryBox()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            var particles = SpawnLayout.Generate(scene);
+            Assert.That(particles.Length, Is.EqualTo(25 * 6 * 25 * 2));
+            Assert.That(SpawnLayout.TotalCount(scene), Is.EqualTo(particles.Length));
+            int water = 0, oil = 0;
+            foreach (var p in particles) { if (p.Phase == 0) water++; else oil++; }
+            Assert.That(water, Is.EqualTo(25 * 6 * 25));
+            Assert.That(oil, Is.EqualTo(25 * 6 * 25));
+        }
+
+        [Test]
+        public void Generate_PutsEveryParticleInsideItsBoxAndTheContainer()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            var rotation = Quaternion.CreateFromAxisAngle(Vector3.Normalize(new Vector3(1f, 1f, 0f)), 0.4f);
+            scene.SpawnBoxes[0].Rotation = rotation;
+            scene.SpawnBoxes[0].Size = new Vector3(0.2f, 0.1f, 0.2f);
+            scene.SpawnBoxes[0].Center = new Vector3(0.05f, -0.1f, 0f);
+            scene.SpawnBoxes[0].Jitter = 0.5f;
+            scene.SpawnBoxes[1].Jitter = 0.5f;
+            var particles = SpawnLayout.Generate(scene);
+            int index = 0;
+            foreach (var box in scene.SpawnBoxes)
+            {
+                long count = SpawnLayout.Count(scene.Settings, box);
+                var inverse = Quaternion.Conjugate(Quaternion.Normalize(box.Rotation));
+                for (long k = 0; k < count; k++, index++)
+                {
+                    var local = Vector3.Transform(particles[index].Position - box.Center, inverse);
+                    var half = box.Size * 0.5f + new Vector3(1e-5f);
+                    Assert.That(Math.Abs(local.X) <= half.X && Math.Abs(local.Y) <= half.Y && Math.Abs(local.Z) <= half.Z, Is.True,
+                        $"particle {index} of box {box.Name} at local {local} is outside half-size {box.Size * 0.5f}");
+                    var q = scene.Container.ToLocal(particles[index].Position);
+                    var c = scene.Container.Size * 0.5f;
+                    Assert.That(Math.Abs(q.X) <= c.X && Math.Abs(q.Y) <= c.Y && Math.Abs(q.Z) <= c.Z, Is.True,
+                        $"particle {index} is outside the container");
+                }
+            }
+        }
+
+        [Test]
+        public void Generate_GivesIdsInOrderAndTheInitialVelocity()
+        {
+            var scene = SimulationTestScenes.SingleWater();
+            scene.SpawnBoxes[0].InitialVelocity = new Vector3(0.5f, 0f, -1f);
+            var particles = SpawnLayout.Generate(scene);
+            for (int i = 0; i < particles.Length; i++)
+            {
+                Assert.That(particles[i].Id, Is.EqualTo((uint)i));
+                Assert.That(particles[i].Velocity, Is.EqualTo(new Vector3(0.5f, 0f, -1f)));
+            }
+        }
+
+        [Test]
+        public void Generate_SameSeedSameParticles_OtherSeedOtherJitter()
+        {
+            var a = SpawnLayout.Generate(SimulationTestScenes.OilOnWater());
+            var b = SpawnLayout.Generate(SimulationTestScenes.OilOnWater());
+            Assert.That(b, Is.EqualTo(a));
+            var other = SimulationTestScenes.OilOnWater();
+            other.SpawnBoxes[0].Seed = 42;
+            var c = SpawnLayout.Generate(other);
+            Assert.That(c[0].Position, Is.Not.EqualTo(a[0].Position));
+        }
+
+        [Test]
+        public void Generate_ZeroJitter_IsARegularLatticeCentredInTheBox()
+        {
+            var scene = SimulationTestScenes.SingleWater();
+            scene.SpawnBoxes[0].Jitter = 0f;
+            var particles = SpawnLayout.Generate(scene);
+            var box = scene.SpawnBoxes[0];
+            Assert.That(particles[0].Position.X, Is.EqualTo(box.Center.X - box.Size.X * 0.5f + 0.01f).Within(1e-5f));
+            Assert.That(particles[1].Position.X - particles[0].Position.X, Is.EqualTo(0.02f).Within(1e-5f));
+        }
+
+        [Test]
+        public void PhaseTable_OneRowPerPhaseName_MassAtRestDensity()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.SpawnBoxes.Add(new SpawnBoxDescription("MoreWater", SimulationTestScenes.Water(), new Vector3(0f, 0.1f, 0f), new Vector3(0.1f, 0.1f, 0.1f)));
+            var table = scene.BuildPhaseTable();
+            Assert.That(table.Length, Is.EqualTo(2));
+            double delta0 = scene.RestNumberDensity();
+            Assert.That(table[0].RestDensity, Is.EqualTo(1000f));
+            Assert.That(table[1].RestDensity, Is.EqualTo(900f));
+            Assert.That(table[0].ParticleMass * delta0, Is.EqualTo(1000.0).Within(1e-3));
+            Assert.That(table[1].ParticleMass * delta0, Is.EqualTo(900.0).Within(1e-3));
+            Assert.That(table[1].Viscosity, Is.EqualTo(0.05f));
+            var particles = SpawnLayout.Generate(scene);
+            Assert.That(particles[particles.Length - 1].Phase, Is.EqualTo(0u), "a box of an existing phase shares its row");
+        }
+
+        [Test]
+        public void PhaseTable_ExplicitMassIsKept()
+        {
+            var scene = SimulationTestScenes.SingleWater();
+            scene.SpawnBoxes[0].Phase.ParticleMass = 0.123f;
+            Assert.That(scene.BuildPhaseTable()[0].ParticleMass, Is.EqualTo(0.123f));
+        }
+
+        [Test]
+        public void RestNumberDensity_MatchesPoly6LatticeSum()
+        {
+            // For h = 2 s the lattice neighbours within h are at squared distances 0,1,2,3,4 (in s^2) with 1,6,12,8,6 points.
+            double s = 0.02, h = 0.04;
+            double expected = 0;
+            int[] multiplicity = { 1, 6, 12, 8, 6 };
+            for (int k = 0; k < 5; k++) expected += multiplicity[k] * SmoothingKernels.Poly6(k * s * s, h);
+            Assert.That(SmoothingKernels.LatticeNumberDensity(s, h), Is.EqualTo(expected).Within(1e-9 * expected));
+        }
+    }
+}

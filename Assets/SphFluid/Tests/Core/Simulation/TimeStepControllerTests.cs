@@ -1,0 +1,116 @@
+using System;
+using NUnit.Framework;
+using SphFluid.Simulation;
+
+namespace SphFluid.Tests.Core.Simulation
+{
+    public sealed class TimeStepControllerTests
+    {
+        static FluidSettings Settings() => new FluidSettings
+        {
+            SmoothingRadius = 0.04f, ParticleSpacing = 0.02f, Stiffness = 70000f, Gamma = 7f,
+            CflNumber = 0.4f, MaxSubsteps = 10, MaxTimeStep = 0.005f,
+        };
+
+        [Test]
+        public void SpeedOfSound_IsTait()
+        {
+            var c = new TimeStepController(Settings(), 1000f, 1e-6f);
+            Assert.That(c.SpeedOfSound, Is.EqualTo((float)Math.Sqrt(70000.0 * 7 / 1000)).Within(1e-4f)); // 22.1 m/s
+        }
+
+        [Test]
+        public void AtRest_CflLimits()
+        {
+            var c = new TimeStepController(Settings(), 1000f, 1e-6f);
+            c.ReportMotion(0f, 0f);
+            c.ReportMotion(0f, 0f);
+            float dt = c.StableTimeStep(out string limit);
+            Assert.That(limit, Is.EqualTo("cfl"));
+            Assert.That(dt, Is.EqualTo(0.4f * 0.04f / c.SpeedOfSound).Within(1e-7f));
+        }
+
+        [Test]
+        public void FastFluid_ShortensTheStep()
+        {
+            var c = new TimeStepController(Settings(), 1000f, 1e-6f);
+            float rest = c.StableTimeStep();
+            c.ReportMotion(20f, 0f);
+            Assert.That(c.StableTimeStep(), Is.LessThan(rest * 0.6f));
+        }
+
+        [Test]
+        public void LargeAcceleration_Limits()
+        {
+            var c = new TimeStepController(Settings(), 1000f, 1e-6f);
+            c.ReportMotion(0f, 10000f);
+            float dt = c.StableTimeStep(out string limit);
+            Assert.That(limit, Is.EqualTo("acceleration"));
+            Assert.That(dt, Is.EqualTo(0.25f * (float)Math.Sqrt(0.04 / 10000.0)).Within(1e-7f));
+        }
+
+        [Test]
+        public void HighViscosity_Limits()
+        {
+            var c = new TimeStepController(Settings(), 1000f, 1f); // nu = 1 m^2/s
+            float dt = c.StableTimeStep(out string limit);
+            Assert.That(limit, Is.EqualTo("viscous"));
+            Assert.That(dt, Is.EqualTo(0.125f * 0.04f * 0.04f).Within(1e-8f));
+        }
+
+        [Test]
+        public void StaleReport_IsUsedConservatively()
+        {
+            var c = new TimeStepController(Settings(), 1000f, 1e-6f);
+            c.ReportMotion(10f, 0f);
+            c.ReportMotion(1f, 0f); // the fluid slowed down, but the newer figure may be a frame stale
+            Assert.That(c.MaxSpeed, Is.EqualTo(10f));
+            c.ReportMotion(float.NaN, 0f);
+            Assert.That(c.MaxSpeed, Is.EqualTo(10f), "a NaN report is ignored");
+        }
+
+        [Test]
+        public void Frame_IsCoveredBySubstepsThatDivideIt()
+        {
+            var settings = Settings();
+            settings.MaxSubsteps = 100;
+            var c = new TimeStepController(settings, 1000f, 1e-6f);
+            var report = c.PlanFrame(1f / 60f);
+            Assert.That(report.Substeps, Is.EqualTo((int)Math.Ceiling((1.0 / 60.0) / c.StableTimeStep())));
+            Assert.That(report.TimeStep * report.Substeps, Is.EqualTo(1f / 60f).Within(1e-6f));
+            Assert.That(report.TimeStep, Is.LessThanOrEqualTo(c.StableTimeStep()));
+            Assert.That(report.Capped, Is.False);
+        }
+
+        [Test]
+        public void LongFrame_IsCappedAndRunsSlowerThanRealTime()
+        {
+            var c = new TimeStepController(Settings(), 1000f, 1e-6f);
+            var report = c.PlanFrame(0.5f);
+            Assert.That(report.Capped, Is.True);
+            Assert.That(report.Substeps, Is.EqualTo(10));
+            Assert.That(report.TimeStep, Is.EqualTo(c.StableTimeStep()));
+            Assert.That(report.SimulatedSeconds, Is.LessThan(0.5f));
+            Assert.That(report.ToString(), Does.Contain("slower than real time"));
+        }
+
+        [Test]
+        public void ZeroFrame_NoSubsteps()
+        {
+            var c = new TimeStepController(Settings(), 1000f, 1e-6f);
+            Assert.That(c.PlanFrame(0f).Substeps, Is.EqualTo(0));
+            Assert.That(c.PlanFrame(float.NaN).Substeps, Is.EqualTo(0));
+        }
+
+        [Test]
+        public void MaxTimeStep_Caps()
+        {
+            var s = Settings();
+            s.Stiffness = 1f;
+            var c = new TimeStepController(s, 1000f, 0f);
+            float dt = c.StableTimeStep(out string limit);
+            Assert.That(limit, Is.EqualTo("max"));
+            Assert.That(dt, Is.EqualTo(0.005f));
+        }
+    }
+}
