@@ -637,7 +637,7 @@ public sealed unsafe partial class VulkanComputeDevice
             }
         }
         double Ms(uint begin, uint end) => ((stamps[end] - stamps[begin]) & _timestampMask) * _timestampPeriodNs / 1e6;
-        if (f.DispatchQueries.Count > 0 || f.Samples.Count > 0)
+        if (f.DispatchQueries.Count > 0)
         {
             var timings = new (string, double)[f.DispatchQueries.Count];
             for (int i = 0; i < timings.Length; i++) timings[i] = (f.DispatchQueries[i].Kernel, Ms(f.DispatchQueries[i].Query, f.DispatchQueries[i].Query + 1));
@@ -646,6 +646,7 @@ public sealed unsafe partial class VulkanComputeDevice
                 _lastDispatchTimings = timings;
                 _lastDispatchTimingsSerial = f.Serial;
             }
+            if (AccumulateDispatchTimings) _accumulatedTimings.AddRange(timings);
         }
         foreach (var (name, begin, end) in f.Samples) _sampleResults[name] = Ms(begin, end);
     }
@@ -660,6 +661,23 @@ public sealed unsafe partial class VulkanComputeDevice
             WaitForSerial(_submittedSerial);
             return _lastDispatchTimings;
         }
+    }
+
+    readonly List<(string Kernel, double Milliseconds)> _accumulatedTimings = new();
+
+    /// <summary>When true, every timed dispatch is also kept for <see cref="TakeDispatchTimings"/>
+    /// (a benchmark over many submits); off by default so a long run does not grow a list.</summary>
+    public bool AccumulateDispatchTimings { get; set; }
+
+    /// <summary>Every dispatch timed since the last call (with <see cref="AccumulateDispatchTimings"/> on),
+    /// in submission order; waits for submitted work first.</summary>
+    public IReadOnlyList<(string Kernel, double Milliseconds)> TakeDispatchTimings()
+    {
+        ThrowIfDisposed();
+        WaitForSerial(_submittedSerial);
+        var result = _accumulatedTimings.ToArray();
+        _accumulatedTimings.Clear();
+        return result;
     }
 
     public bool TryGetSampleMilliseconds(string name, out double milliseconds)

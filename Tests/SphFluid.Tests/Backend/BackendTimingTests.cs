@@ -33,6 +33,34 @@ namespace SphFluid.Tests.Backend
         }
 
         [Test]
+        public void AccumulatedTimingsCoverEverySubmit()
+        {
+            var device = GpuTestDevice.Shared;
+            var program = device.LoadProgram("BackendBuffers");
+            int kernel = program.FindKernel("CountUp");
+            using (var counter = device.CreateBuffer("Counter", 1, sizeof(uint)))
+            {
+                device.SetBuffer(program, kernel, device.PropertyId("_Counter"), counter);
+                device.TakeDispatchTimings();
+                device.AccumulateDispatchTimings = true;
+                try
+                {
+                    for (int i = 0; i < 2; i++) device.Dispatch(program, kernel, 1, 1, 1);
+                    device.Submit();
+                    for (int i = 0; i < 3; i++) device.Dispatch(program, kernel, 1, 1, 1);
+                    device.Submit();
+                    Assert.That(device.TakeDispatchTimings().Select(t => t.Kernel), Is.EqualTo(Enumerable.Repeat("CountUp", 5)));
+                    Assert.That(device.TakeDispatchTimings(), Is.Empty);
+                    Assert.That(device.LastDispatchTimings.Count, Is.EqualTo(3), "the last submit alone");
+                }
+                finally
+                {
+                    device.AccumulateDispatchTimings = false;
+                }
+            }
+        }
+
+        [Test]
         public void UnknownSampleHasNoTime()
         {
             Assert.That(GpuTestDevice.Shared.TryGetSampleMilliseconds("NeverSampled", out _), Is.False);
