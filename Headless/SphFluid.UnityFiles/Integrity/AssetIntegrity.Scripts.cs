@@ -50,10 +50,52 @@ public sealed partial class AssetIntegrity
             }
             var verdict = ScriptVerdict(target);
             if (verdict != null) ReportAt(file, $"{where} uses '{Rel(target)}': {verdict} (Unity shows Missing Script)");
+            else CheckSerializedFieldNames(file, where, doc, target);
             if (isScene && EditorOnly(target))
                 ReportAt(file, $"{where} uses '{Rel(target)}', which compiles into an Editor-only assembly (Missing Script in players)");
         }
     }
+
+    static readonly HashSet<string> BehaviourKeys = new(StringComparer.Ordinal)
+    {
+        "m_ObjectHideFlags", "m_CorrespondingSourceObject", "m_PrefabInstance", "m_PrefabAsset", "m_GameObject", "m_Enabled",
+        "m_EditorHideFlags", "m_Script", "m_Name", "m_EditorClassIdentifier",
+    };
+
+    /// <summary>
+    /// A key the script does not declare is silently dropped by Unity and the field keeps its default: in a hand-written
+    /// scene that is a typo. Each top-level key must appear as a word in the script or one of its project base classes.
+    /// </summary>
+    void CheckSerializedFieldNames(string file, string where, UnityDocument doc, string csFile)
+    {
+        var sources = new List<string> { Comments().Replace(ReadText(csFile), " ") };
+        var current = DeclarationWithBase(Path.GetFileNameWithoutExtension(csFile));
+        for (int depth = 0; current != null && depth < 20; depth++)
+        {
+            if (current.Base == null || UnityKnownIds.SerializableScriptBases.Contains(current.Base)) break;
+            current = DeclarationWithBase(current.Base) ?? (Classes().TryGetValue(current.Base, out var list) ? list[0] : null);
+            if (current != null) sources.Add(Comments().Replace(ReadText(current.File), " "));
+        }
+        foreach (var key in doc.Root.Keys.Where(k => !BehaviourKeys.Contains(k)))
+            if (!sources.Any(src => Regex.IsMatch(src, @"\b" + Regex.Escape(key) + @"\b")))
+                ReportAt(file, $"{where} sets '{key}', which '{Rel(csFile)}' does not declare (Unity drops it and the field keeps its default)");
+    }
+
+    /// <summary>The legacy Input class throws at runtime when only the Input System is active (activeInputHandler 1).</summary>
+    void CheckLegacyInput()
+    {
+        if (_activeInputHandler != 1) return;
+        foreach (var cs in _assetFiles.Where(f => Extension(f) == ".cs"))
+        {
+            var text = Comments().Replace(ReadText(cs), " ");
+            var m = LegacyInputCall().Match(text);
+            if (m.Success)
+                ReportAt(cs, $"uses the legacy Input Manager ('{m.Value}'), which throws with activeInputHandler 1; use the Input System");
+        }
+    }
+
+    [GeneratedRegex(@"(?<![\w.])(?:UnityEngine\.)?Input\.(?:Get(?:Key|KeyDown|KeyUp|Axis|AxisRaw|Button|ButtonDown|ButtonUp|MouseButton|MouseButtonDown|MouseButtonUp|Touch)\b|mousePosition|mouseScrollDelta|anyKey|anyKeyDown|touchCount|inputString)")]
+    private static partial Regex LegacyInputCall();
 
     bool EditorOnly(string csFile)
     {

@@ -59,6 +59,7 @@ public sealed partial class AssetIntegrity
         Guarded("ProjectSettings", CheckProjectSettings);
         Guarded("Assets", CheckAssemblies);
         Guarded("Assets", CheckSerializedFiles);
+        Guarded("Assets", CheckLegacyInput);
         Guarded("ProjectSettings/EditorBuildSettings.asset", CheckBuildSettings);
     }
 

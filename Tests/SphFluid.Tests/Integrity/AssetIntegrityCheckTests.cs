@@ -169,6 +169,10 @@ namespace SphFluid.Tests.Integrity
                 "Assets/Game/Controls.inputactions", "does not parse as JSON");
             yield return Case("input actions importer missing", p => p.AddAsset("Assets/Game/Controls.inputactions", InputActions, SyntheticProject.DefaultImporter),
                 "Assets/Game/Controls.inputactions.meta", "imported by ScriptedImporter");
+            yield return Case("scene sets a field the script does not declare", p => p.Replace(scene, "  rate: 2\n", "  rtae: 2\n"),
+                scene, "sets 'rtae'");
+            yield return Case("legacy Input class with Input System only", p => p.Replace(script, "public float rate = 2f;", "public float rate = 2f;\n        bool Fire => Input.GetKey(KeyCode.Space);"),
+                script, "legacy Input Manager ('Input.GetKey')");
             yield return Case("bin folder under Assets", p => Directory.CreateDirectory(p.Abs("Assets/Game/Runtime/bin")),
                 "Assets/Game/Runtime/bin", "build output folder");
             yield return Case("csproj under Assets", p => p.AddAsset("Assets/Game/Runtime/Game.csproj", "<Project />", SyntheticProject.DefaultImporter),
