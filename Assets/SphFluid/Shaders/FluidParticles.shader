@@ -1,0 +1,179 @@
+// SPH particles as ray-cast sphere impostors that refract, reflect and absorb (Built-in render pipeline).
+//
+// Drawn by ONE procedural call per frame, no mesh and no CPU copy of the particles:
+//   Graphics.RenderPrimitives(renderParams, MeshTopology.Triangles, 6, particleCount)
+//   (or Graphics.DrawProcedural(material, bounds, MeshTopology.Triangles, 6, particleCount))
+// SV_InstanceID is the particle index into _Particles, SV_VertexID (0..5) the corner of its quad.
+// Buffers (material or global): _Particles (StructuredBuffer<Particle>, stride 32),
+// _Phases (StructuredBuffer<PhaseProperties>, stride 48), indexed by Particle.phase.
+// The GrabPass copies what is already drawn (opaques, skybox) into _FluidBackground once per draw;
+// particles refract that image, not each other. The queue is Transparent so the copy comes after them.
+Shader "SphFluid/Particles"
+{
+    Properties
+    {
+        _ParticleRadius ("Particle radius (m)", Range(0.0005, 0.5)) = 0.012
+        _RefractionStrength ("Refraction shift (fraction of half screen)", Range(0, 0.2)) = 0.03
+        _ReflectionStrength ("Reflection strength", Range(0, 2)) = 1
+        _ThicknessScale ("Liquid depth per impostor (x chord)", Range(1, 50)) = 6
+        _ScatterStrength ("Body colour strength", Range(0, 2)) = 0.6
+        _SpecularStrength ("Sun highlight strength", Range(0, 4)) = 1
+        _SpecularPower ("Sun highlight sharpness", Range(8, 2048)) = 400
+        _AmbientMip ("Ambient blur (reflection mip)", Range(0, 8)) = 6
+    }
+
+    SubShader
+    {
+        Tags { "Queue" = "Transparent" "RenderType" = "Transparent" "IgnoreProjector" = "True" }
+
+        GrabPass { "_FluidBackground" }
+
+        Pass
+        {
+            Name "FluidParticles"
+            Tags { "LightMode" = "ForwardBase" }
+            Cull Off
+            ZWrite On
+            ZTest LEqual
+            Blend Off
+
+            HLSLPROGRAM
+            #pragma target 4.5
+            #pragma vertex vert
+            #pragma fragment frag
+
+            #include "UnityCG.cginc"
+            #include "UnityLightingCommon.cginc"
+            #include "Include/Particle.hlsl"
+            #include "Include/Phase.hlsl"
+            #include "Include/ParticleImpostorQuad.hlsl"
+            #include "Include/ParticleImpostorSphere.hlsl"
+            #include "Include/FluidOpticsFresnel.hlsl"
+            #include "Include/FluidOpticsAbsorption.hlsl"
+            #include "Include/FluidOpticsRefraction.hlsl"
+
+            StructuredBuffer<Particle> _Particles;
+            StructuredBuffer<PhaseProperties> _Phases;
+
+            Texture2D _FluidBackground;
+            SamplerState sampler_FluidBackground;
+
+            float _ParticleRadius;
+            float _RefractionStrength;
+            float _ReflectionStrength;
+            float _ThicknessScale;
+            float _ScatterStrength;
+            float _SpecularStrength;
+            float _SpecularPower;
+            float _AmbientMip;
+
+            struct ImpostorVaryings
+            {
+                float4 positionCS : SV_POSITION;
+                float3 quadPointWS : TEXCOORD0;
+                nointerpolation float4 sphere : TEXCOORD1;   // centre (world, m), radius (m)
+                nointerpolation float4 tint : TEXCOORD2;     // phase colour: linear RGB, opacity
+                nointerpolation float2 optics : TEXCOORD3;   // Schlick F0, absorption (1/m)
+            };
+
+            struct ImpostorFragment
+            {
+                float4 color : SV_Target;
+                float depth : SV_Depth;
+            };
+
+            float3 CameraForwardWS()
+            {
+                // Unity's view space looks down -z: row 2 of the view matrix is the world "backward" axis.
+                return -UNITY_MATRIX_V[2].xyz;
+            }
+
+            float3 NormalizeOr(float3 v, float3 fallback)
+            {
+                float lengthSquared = dot(v, v);
+                return lengthSquared > 1e-12 ? v * rsqrt(lengthSquared) : fallback;
+            }
+
+            float3 SampleEnvironment(float3 directionWS, float mip)
+            {
+                float4 encoded = UNITY_SAMPLE_TEXCUBE_LOD(unity_SpecCube0, directionWS, mip);
+                return DecodeHDR(encoded, unity_SpecCube0_HDR);
+            }
+
+            ImpostorVaryings vert(uint vertexId : SV_VertexID, uint instanceId : SV_InstanceID)
+            {
+                Particle particle = _Particles[instanceId];
+                PhaseProperties phase = _Phases[particle.phase];
+
+                float orthographic = unity_OrthoParams.w;
+                float3 toEye = _WorldSpaceCameraPos.xyz - particle.position;
+                float eyeDistance = length(toEye);
+                float3 towardEye = orthographic > 0.5 ? -CameraForwardWS() : NormalizeOr(toEye, -CameraForwardWS());
+                float radius = max(_ParticleRadius, 0.0);
+                float halfSize = ImpostorHalfSize(radius, eyeDistance, orthographic);
+                float3 quadPoint = ImpostorQuadVertex(particle.position, halfSize, ImpostorQuadCorner(vertexId),
+                    towardEye, UNITY_MATRIX_V[1].xyz, UNITY_MATRIX_V[0].xyz);
+
+                ImpostorVaryings o;
+                o.positionCS = mul(UNITY_MATRIX_VP, float4(quadPoint, 1.0));
+                o.quadPointWS = quadPoint;
+                o.sphere = float4(particle.position, radius);
+                o.tint = phase.color;
+                o.optics = float2(phase.fresnelF0, phase.absorption);
+                return o;
+            }
+
+            ImpostorFragment frag(ImpostorVaryings i)
+            {
+                float3 centre = i.sphere.xyz;
+                float radius = i.sphere.w;
+                float3 rayDirection = unity_OrthoParams.w > 0.5
+                    ? CameraForwardWS()
+                    : NormalizeOr(i.quadPointWS - _WorldSpaceCameraPos.xyz, CameraForwardWS());
+                ImpostorHit hit = ImpostorIntersect(i.quadPointWS, rayDirection, centre, radius);
+                clip(hit.covered - 0.5);
+
+                float4 hitCS = mul(UNITY_MATRIX_VP, float4(hit.position, 1.0));
+                float3 n = hit.normal;
+                float3 toEye = -rayDirection;
+                float cosTheta = saturate(dot(n, toEye));
+
+                // Refraction: the opaque image behind, shifted by the normal, filtered by the liquid.
+                float3 normalVS = mul((float3x3)UNITY_MATRIX_V, n);
+                float4 grab = ComputeGrabScreenPos(RefractedClipPosition(hitCS, normalVS, _RefractionStrength));
+                float2 grabUV = grab.xy / max(grab.w, 1e-6);
+                float3 background = _FluidBackground.SampleLevel(sampler_FluidBackground, grabUV, 0.0).rgb;
+                float3 transmittance = BeerLambertTransmittance(i.tint.rgb, i.optics.y, hit.thickness * _ThicknessScale);
+
+                // Light scattered out of the liquid towards the eye (its body colour), lit by the sun
+                // (wrapped so the dark side is not black) and the blurred environment.
+                float4 lightPos = _WorldSpaceLightPos0;
+                float3 toLight = NormalizeOr(lightPos.xyz - hit.position * lightPos.w, float3(0.0, 1.0, 0.0));
+                float3 ambient = SampleEnvironment(n, _AmbientMip);
+                float3 sun = _LightColor0.rgb * (0.5 + 0.5 * dot(n, toLight));
+                float3 body = i.tint.rgb * (1.0 - transmittance) * (sun + ambient) * (_ScatterStrength * i.tint.a);
+                float3 refracted = background * transmittance + body;
+
+                float3 reflected = SampleEnvironment(reflect(rayDirection, n), 0.0) * _ReflectionStrength;
+                float fresnel = SchlickFresnel(i.optics.x, cosTheta);
+
+                // Blinn-Phong highlight of the main directional light, weighted like the reflection.
+                float3 halfVector = NormalizeOr(toLight + toEye, n);
+                float highlight = pow(saturate(dot(n, halfVector)), _SpecularPower) * _SpecularStrength;
+                float3 specular = _LightColor0.rgb * (highlight * SchlickFresnel(i.optics.x, saturate(dot(halfVector, toEye))));
+
+                ImpostorFragment o;
+                o.color = float4(lerp(refracted, reflected, fresnel) + specular, 1.0);
+            #if defined(UNITY_REVERSED_Z)
+                o.depth = ImpostorDeviceDepth(hitCS, 0.0);
+            #else
+                o.depth = ImpostorDeviceDepth(hitCS, UNITY_NEAR_CLIP_VALUE);
+            #endif
+                return o;
+            }
+            ENDHLSL
+        }
+    }
+
+    Fallback Off
+}

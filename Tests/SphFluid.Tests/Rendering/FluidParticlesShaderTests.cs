@@ -1,0 +1,208 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Runtime.InteropServices;
+using System.Text.RegularExpressions;
+using NUnit.Framework;
+using SphFluid.Simulation;
+using SphFluid.Vulkan;
+
+namespace SphFluid.Tests.Rendering
+{
+    /// <summary>
+    /// The particle shader's HLSL compiles (vertex and fragment stage, both depth conventions) with glslang
+    /// against the smallest stand-in for Unity's built-ins, so a syntax or type error is caught in CI instead
+    /// of in the editor; and the shader keeps the contract the Unity side draws it with.
+    /// </summary>
+    public sealed class FluidParticlesShaderTests
+    {
+        const string ShaderRelativePath = "Assets/SphFluid/Shaders/FluidParticles.shader";
+
+        /// <summary>Stand-in platforms: D3D11/Vulkan/Metal-like (reversed Z) and OpenGL Core-like.</summary>
+        static readonly string[][] Platforms = { new string[0], new[] { "SPHFLUID_STANDIN_OPENGL=1" } };
+
+        static string ShaderPath => Path.Combine(GpuTestDevice.RepoRoot, ShaderRelativePath);
+
+        static ShaderLabSource Shader() => ShaderLabSource.Load(ShaderPath);
+
+        [Test]
+        public void Every_program_compiles_for_vertex_and_fragment_stage_on_both_depth_conventions()
+        {
+            GlslangShaderCheck.RequireTool("glslangValidator");
+            GlslangShaderCheck.RequireTool("spirv-val");
+            var shader = Shader();
+            Assert.That(shader.Programs, Is.Not.Empty, ShaderRelativePath + " has no HLSLPROGRAM block");
+
+            string work = GlslangShaderCheck.NewWorkDir();
+            try
+            {
+                var failures = new List<string>();
+                int compiled = 0;
+                for (int p = 0; p < shader.Programs.Count; p++)
+                {
+                    var program = shader.Programs[p];
+                    string hlsl = Path.Combine(work, "FluidParticles.program" + p + ".hlsl");
+                    File.WriteAllText(hlsl, program.WithLineDirective(ShaderRelativePath));
+                    foreach (var defines in Platforms)
+                    {
+                        foreach (var (stage, entry) in new[] { ("vert", program.VertexEntry), ("frag", program.FragmentEntry) })
+                        {
+                            if (entry == null)
+                            {
+                                failures.Add(ShaderRelativePath + ":" + program.FirstLine + ": program has no #pragma " + (stage == "vert" ? "vertex" : "fragment"));
+                                continue;
+                            }
+                            var result = GlslangShaderCheck.CompileStage(hlsl, stage, entry, defines, work);
+                            if (result.Succeeded) compiled++;
+                            else failures.Add("[" + (defines.Length == 0 ? "reversed-Z platform" : string.Join(" ", defines)) + "] " + result.Messages);
+                        }
+                    }
+                }
+                Assert.That(failures, Is.Empty, string.Join("\n\n", failures));
+                Assert.That(compiled, Is.EqualTo(shader.Programs.Count * 2 * Platforms.Length));
+            }
+            finally
+            {
+                GlslangShaderCheck.DeleteWorkDir(work);
+            }
+        }
+
+        [Test]
+        public void A_broken_program_fails_with_the_shader_file_and_line()
+        {
+            GlslangShaderCheck.RequireTool("glslangValidator");
+            GlslangShaderCheck.RequireTool("spirv-val");
+            string text = File.ReadAllText(ShaderPath);
+            var original = ShaderLabSource.Parse(text, ShaderPath).Programs[0];
+            string[] programLines = original.Source.Split('\n');
+            int fragLine = Array.FindIndex(programLines, l => Regex.IsMatch(l, "\\bfrag\\s*\\("));
+            Assume.That(fragLine, Is.GreaterThanOrEqualTo(0), "no frag( line to break");
+            int braceLine = Array.FindIndex(programLines, fragLine, l => l.Trim() == "{");
+            programLines[braceLine + 1] = "float brokenOnPurpose = notDeclaredAnywhere;" + programLines[braceLine + 1];
+            var broken = new ShaderLabProgram
+            {
+                Source = string.Join("\n", programLines),
+                FirstLine = original.FirstLine,
+                VertexEntry = original.VertexEntry,
+                FragmentEntry = original.FragmentEntry,
+            };
+            int expectedLine = original.FirstLine + braceLine + 1;
+
+            string work = GlslangShaderCheck.NewWorkDir();
+            try
+            {
+                string hlsl = Path.Combine(work, "Broken.hlsl");
+                File.WriteAllText(hlsl, broken.WithLineDirective(ShaderRelativePath));
+                var result = GlslangShaderCheck.CompileStage(hlsl, "frag", broken.FragmentEntry, new string[0], work);
+                Assert.That(result.Succeeded, Is.False);
+                Assert.That(result.Messages, Does.Contain(ShaderRelativePath + ":" + expectedLine + ":"));
+                Assert.That(result.Messages, Does.Contain("notDeclaredAnywhere"));
+            }
+            finally
+            {
+                GlslangShaderCheck.DeleteWorkDir(work);
+            }
+        }
+
+        [Test]
+        public void Vertex_stage_reads_the_particle_and_phase_buffers_with_the_CSharp_strides()
+        {
+            GlslangShaderCheck.RequireTool("glslangValidator");
+            GlslangShaderCheck.RequireTool("spirv-val");
+            var program = Shader().Programs[0];
+            string work = GlslangShaderCheck.NewWorkDir();
+            try
+            {
+                string hlsl = Path.Combine(work, "FluidParticles.hlsl");
+                File.WriteAllText(hlsl, program.WithLineDirective(ShaderRelativePath));
+                var result = GlslangShaderCheck.CompileStage(hlsl, "vert", program.VertexEntry, new string[0], work);
+                Assert.That(result.Succeeded, Is.True, result.Messages);
+
+                byte[] bytes = File.ReadAllBytes(result.SpirvPath);
+                var reflection = SpirvReflection.Read(MemoryMarshal.Cast<byte, uint>(bytes));
+                var buffers = reflection.Resources.Where(r => r.Kind == SpirvResourceKind.StorageBuffer).ToDictionary(r => r.Name, r => r);
+                Assert.That(buffers.Keys, Is.EquivalentTo(new[] { "_Particles", "_Phases" }));
+                Assert.That(buffers["_Particles"].ArrayStride, Is.EqualTo(Marshal.SizeOf<Particle>()));
+                Assert.That(buffers["_Phases"].ArrayStride, Is.EqualTo(Marshal.SizeOf<PhaseProperties>()));
+                Assert.That(buffers["_Particles"].ReadOnly && buffers["_Phases"].ReadOnly, Is.True, "the draw must only read the solver's buffers");
+            }
+            finally
+            {
+                GlslangShaderCheck.DeleteWorkDir(work);
+            }
+        }
+
+        [Test]
+        public void Shader_keeps_the_contract_the_Unity_side_draws_it_with()
+        {
+            var shader = Shader();
+            Assert.That(shader.Name, Is.EqualTo("SphFluid/Particles"));
+            Assert.That(shader.Programs.Count, Is.EqualTo(1));
+            var program = shader.Programs[0];
+            Assert.That(program.VertexEntry, Is.EqualTo("vert"));
+            Assert.That(program.FragmentEntry, Is.EqualTo("frag"));
+            Assert.That(program.Target, Is.EqualTo("4.5"), "StructuredBuffer in the vertex stage needs #pragma target 4.5");
+            Assert.That(program.Source, Does.Contain("#include \"UnityCG.cginc\""));
+            Assert.That(program.Source, Does.Match("StructuredBuffer<Particle>\\s+_Particles\\s*;"));
+            Assert.That(program.Source, Does.Match("StructuredBuffer<PhaseProperties>\\s+_Phases\\s*;"));
+            Assert.That(program.Source, Does.Match("vert\\s*\\(\\s*uint\\s+\\w+\\s*:\\s*SV_VertexID\\s*,\\s*uint\\s+\\w+\\s*:\\s*SV_InstanceID\\s*\\)"));
+            Assert.That(program.Source, Does.Contain("SV_Depth"));
+            Assert.That(shader.Text, Does.Match("GrabPass\\s*\\{\\s*\"_FluidBackground\"\\s*\\}"));
+            Assert.That(shader.Text, Does.Match("\"Queue\"\\s*=\\s*\"Transparent\""));
+        }
+
+        [Test]
+        public void Every_material_parameter_the_HLSL_reads_is_a_declared_property_and_back()
+        {
+            var shader = Shader();
+            var declared = shader.Properties.Select(p => p.Name).ToList();
+            Assert.That(declared, Is.Unique);
+
+            // Top-level uniforms of the program that are not Unity built-ins: they must be Properties, or a
+            // material could not hold their value and they would read 0 in the player.
+            var uniforms = new List<string>();
+            foreach (var program in shader.Programs)
+            {
+                foreach (Match m in Regex.Matches(program.Source, "^[ \\t]*(?:float|float2|float3|float4|int|uint|half|half4|Texture2D)\\s+(_[A-Z]\\w*)\\s*;", RegexOptions.Multiline))
+                    uniforms.Add(m.Groups[1].Value);
+            }
+            var grabbed = new[] { "_FluidBackground" };
+            Assert.That(uniforms.Except(grabbed).Except(declared).ToList(), Is.Empty, "uniforms without a Properties entry");
+            Assert.That(declared.Except(uniforms).ToList(), Is.Empty, "Properties the HLSL never declares (they would do nothing)");
+        }
+
+        [Test]
+        public void Every_property_default_lies_in_its_range()
+        {
+            foreach (var property in Shader().Properties.Where(p => p.Type == "Range"))
+            {
+                float value = float.Parse(property.Default, System.Globalization.CultureInfo.InvariantCulture);
+                Assert.That(value, Is.InRange(property.RangeMin.Value, property.RangeMax.Value), property.Name + " (line " + property.Line + ")");
+            }
+        }
+
+        [Test]
+        public void Optional_DXC_compiles_both_stages_when_installed()
+        {
+            if (GlslangShaderCheck.FindOnPath("dxc") == null) Assert.Ignore("dxc (DirectX Shader Compiler) is not installed: optional second compiler");
+            var program = Shader().Programs[0];
+            string work = GlslangShaderCheck.NewWorkDir();
+            try
+            {
+                string hlsl = Path.Combine(work, "FluidParticles.hlsl");
+                File.WriteAllText(hlsl, program.WithLineDirective(ShaderRelativePath));
+                foreach (var (profile, entry) in new[] { ("vs_6_0", program.VertexEntry), ("ps_6_0", program.FragmentEntry) })
+                {
+                    var (exit, output) = GlslangShaderCheck.Run("dxc", new[] { "-T", profile, "-E", entry,
+                        "-I", GlslangShaderCheck.StandInIncludeDir, "-I", GlslangShaderCheck.ShaderDir, "-Fo", Path.Combine(work, entry + ".dxil"), hlsl });
+                    Assert.That(exit, Is.EqualTo(0), "dxc " + profile + ":\n" + output);
+                }
+            }
+            finally
+            {
+                GlslangShaderCheck.DeleteWorkDir(work);
+            }
+        }
+    }
+}
