@@ -1,0 +1,63 @@
+using System.Collections.Generic;
+using NUnit.Framework;
+using SphFluid.Runtime;
+using SphFluid.Simulation;
+using UnityEditor;
+using UnityEditor.SceneManagement;
+using UnityEngine;
+using UnityEngine.SceneManagement;
+
+namespace SphFluid.Tests.EditMode
+{
+    /// <summary>Every scene of the build opens with exactly one fully wired FluidSimulator and a valid fluid scene.</summary>
+    public sealed class SceneWiringTests
+    {
+        static readonly string[][] Shaders =
+        {
+            new[] { "solverShader", "FluidSolver" },
+            new[] { "diagnosticsShader", "FluidDiagnostics" },
+            new[] { "sortShader", "ParticleSort" },
+            new[] { "prefixSumShader", "PrefixSum" },
+        };
+
+        static IEnumerable<string> BuildScenes()
+        {
+            foreach (EditorBuildSettingsScene scene in EditorBuildSettings.scenes)
+                if (scene.enabled) yield return scene.path;
+        }
+
+        [TearDown]
+        public void CloseScenes() => EditorSceneManager.NewScene(NewSceneSetup.EmptyScene, NewSceneMode.Single);
+
+        [Test]
+        public void TheBuildListsScenes()
+        {
+            Assert.That(SphFluid.Editor.BuildScript.EnabledScenes(), Is.Not.Empty, "File > Build Settings has no enabled scene");
+        }
+
+        [TestCaseSource(nameof(BuildScenes))]
+        public void SceneHasOneWiredSimulatorAndAValidFluid(string path)
+        {
+            Scene scene = EditorSceneManager.OpenScene(path, OpenSceneMode.Single);
+            Assert.That(scene.IsValid(), Is.True, $"{path} does not open");
+
+            FluidSimulator[] simulators = Object.FindObjectsByType<FluidSimulator>(FindObjectsInactive.Include, FindObjectsSortMode.None);
+            Assert.That(simulators.Length, Is.EqualTo(1), $"{path}: FluidSimulator components");
+            FluidSimulator simulator = simulators[0];
+
+            var serialized = new SerializedObject(simulator);
+            foreach (string[] shader in Shaders)
+            {
+                Object value = serialized.FindProperty(shader[0]).objectReferenceValue;
+                Assert.That(value, Is.Not.Null, $"{path}: FluidSimulator.{shader[0]} is not assigned");
+                Assert.That(value.name, Is.EqualTo(shader[1]), $"{path}: FluidSimulator.{shader[0]}");
+            }
+            Object material = serialized.FindProperty("particleMaterial").objectReferenceValue;
+            Assert.That(material, Is.Not.Null, $"{path}: FluidSimulator.particleMaterial is not assigned");
+
+            var messages = new List<string>();
+            foreach (ValidationError e in simulator.DescribeScene().Validate()) messages.Add(e.Message);
+            Assert.That(messages, Is.Empty, $"{path}: the fluid scene is invalid");
+        }
+    }
+}
