@@ -69,7 +69,7 @@ namespace SphFluid.Tests.Solver
         /// KNOWN WEAKNESS (see the solver report): at this coarse resolution (8 particles across) the weakly
         /// compressible fluid jams like a soft solid and the separation creeps: after 3 s the oil's mean height
         /// is a few centimetres above the water's, not a clean two-layer state. The test asserts that measured
-        /// drift (mean height of oil minus water > 5 % of the fluid depth), not full layering.
+        /// drift (mean height of oil minus water > 4 % of the fluid depth; 7 % measured on lavapipe), not full layering.
         /// </summary>
         [Test]
         public void MixedOilAndWater_OilRisesAboveWater()
@@ -102,8 +102,8 @@ namespace SphFluid.Tests.Solver
                 Log($"layering after {sim.SimulatedTime:F2} s: {after:F3} m (fluid depth {depth:F3} m)");
                 Assert.That(report.NanCount, Is.EqualTo(0));
                 Assert.That(report.OutsideCount, Is.EqualTo(0));
-                Assert.That(Math.Abs(before), Is.LessThan(0.03 * depthBefore), "mixed at start");
-                Assert.That(after, Is.GreaterThan(0.05 * depth), "oil (lighter) must rise: mean height of oil minus mean height of water");
+                Assert.That(Math.Abs(before), Is.LessThan(0.01 * depthBefore), "mixed at start");
+                Assert.That(after, Is.GreaterThan(0.04 * depth), "oil (lighter) must rise: mean height of oil minus mean height of water");
             }
         }
 

@@ -27,7 +27,7 @@ namespace SphFluid.Tests.Solver
             SmoothingRadius = 2f * spacing,
             Stiffness = 15000f,
             Gamma = 7f,
-            XsphEpsilon = 0.1f,
+            XsphEpsilon = 0.02f,
             BoundaryStiffness = 20000f,
             BoundaryDamping = 100f,
             MaxSubsteps = 64,

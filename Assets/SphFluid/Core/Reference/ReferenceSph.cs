@@ -61,7 +61,7 @@ namespace SphFluid.Reference
             for (int i = 0; i < n; i++)
             {
                 double delta = 0;
-                for (int j = 0; j < n; j++) delta += Poly6((x[i] - x[j]).LengthSquared());
+                for (int j = 0; j < n; j++) delta += SmoothingKernels.Spiky((x[i] - x[j]).Length(), _h);
                 var phase = _phases[particles[i].Phase];
                 double rho = phase.ParticleMass * delta;
                 double p = _settings.Stiffness * (Math.Pow(rho / phase.RestDensity, _settings.Gamma) - 1.0);

@@ -27,8 +27,10 @@ namespace SphFluid.Simulation
         /// <summary>Gravitational acceleration, m/s^2 (|g| up to 1000).</summary>
         public Vector3 Gravity { get; set; } = new Vector3(0f, -9.81f, 0f);
 
-        /// <summary>XSPH velocity smoothing epsilon, in [0, 1]; 0 turns the pass off.</summary>
-        public float XsphEpsilon { get; set; } = 0.05f;
+        /// <summary>XSPH velocity smoothing epsilon, in [0, 1]; 0 turns the pass off. Applied to the velocity every
+        /// sub-step, it pulls each particle towards its neighbours' mean velocity by epsilon per sub-step: keep it
+        /// small (0.02) or it damps buoyancy-driven flow (oil rising through water) along with the noise.</summary>
+        public float XsphEpsilon { get; set; } = 0.02f;
 
         /// <summary>Wall penalty stiffness kb, 1/s^2 (acceleration per metre of penetration), in [0, 1e8].</summary>
         public float BoundaryStiffness { get; set; } = 20000f;

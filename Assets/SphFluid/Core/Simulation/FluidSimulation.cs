@@ -518,6 +518,7 @@ namespace SphFluid.Simulation
 
             _device.SetFloat(_solver, _ids.SmoothingRadius, (float)h);
             _device.SetFloat(_solver, _ids.SmoothingRadius2, (float)(h * h));
+            _device.SetFloat(_solver, _ids.SpikyCoefficient, (float)(15.0 / (Math.PI * Math.Pow(h, 6))));
             _device.SetFloat(_solver, _ids.Poly6Coefficient, (float)(315.0 / (64.0 * Math.PI * Math.Pow(h, 9))));
             _device.SetFloat(_solver, _ids.SpikyGradientCoefficient, (float)(45.0 / (Math.PI * Math.Pow(h, 6))));
             _device.SetFloat(_solver, _ids.ViscosityLaplacianCoefficient, (float)(45.0 / (Math.PI * Math.Pow(h, 6))));
@@ -615,7 +616,7 @@ namespace SphFluid.Simulation
             public readonly int Particles, Phases, Densities, Normals, Accelerations, XsphCorrections, Obstacles, CellStart, CellCount;
             public readonly int MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
             public readonly int ParticleCount, PhaseCount, ReductionGroupCount, ObstacleCount, TimeStep;
-            public readonly int SmoothingRadius, SmoothingRadius2, Poly6Coefficient, SpikyGradientCoefficient, ViscosityLaplacianCoefficient, CohesionCoefficient;
+            public readonly int SmoothingRadius, SmoothingRadius2, SpikyCoefficient, Poly6Coefficient, SpikyGradientCoefficient, ViscosityLaplacianCoefficient, CohesionCoefficient;
             public readonly int Stiffness, Gamma, Gravity, XsphEpsilon, VelocityDamping, ParticleSpacing, BoundaryStiffness, BoundaryDamping;
             public readonly int WorldToContainer, ContainerToWorld, ContainerCenter, ContainerHalfExtent, ContainerClampExtent, ContainerHalfSize, ContainerVelocity, ContainerAngularVelocity;
 
@@ -641,6 +642,7 @@ namespace SphFluid.Simulation
                 TimeStep = d.PropertyId("_TimeStep");
                 SmoothingRadius = d.PropertyId("_SmoothingRadius");
                 SmoothingRadius2 = d.PropertyId("_SmoothingRadius2");
+                SpikyCoefficient = d.PropertyId("_SpikyCoefficient");
                 Poly6Coefficient = d.PropertyId("_Poly6Coefficient");
                 SpikyGradientCoefficient = d.PropertyId("_SpikyGradientCoefficient");
                 ViscosityLaplacianCoefficient = d.PropertyId("_ViscosityLaplacianCoefficient");

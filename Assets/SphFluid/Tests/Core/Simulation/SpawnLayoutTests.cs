@@ -122,13 +122,13 @@ namespace SphFluid.Tests.Core.Simulation
         }
 
         [Test]
-        public void RestNumberDensity_MatchesPoly6LatticeSum()
+        public void RestNumberDensity_MatchesSpikyLatticeSum()
         {
             // For h = 2 s the lattice neighbours within h are at squared distances 0,1,2,3,4 (in s^2) with 1,6,12,8,6 points.
             double s = 0.02, h = 0.04;
             double expected = 0;
             int[] multiplicity = { 1, 6, 12, 8, 6 };
-            for (int k = 0; k < 5; k++) expected += multiplicity[k] * SmoothingKernels.Poly6(k * s * s, h);
+            for (int k = 0; k < 5; k++) expected += multiplicity[k] * SmoothingKernels.Spiky(Math.Sqrt(k) * s, h);
             Assert.That(SmoothingKernels.LatticeNumberDensity(s, h), Is.EqualTo(expected).Within(1e-9 * expected));
         }
     }
