@@ -24,7 +24,7 @@ namespace SphFluid.Runtime
         readonly Dictionary<string, ComputeShader> _shaders = new Dictionary<string, ComputeShader>();
         readonly Dictionary<string, UnityComputeProgram> _programs = new Dictionary<string, UnityComputeProgram>();
         readonly HashSet<UnityComputeBuffer> _buffers = new HashSet<UnityComputeBuffer>();
-        readonly Dictionary<string, Recorder> _recorders = new Dictionary<string, Recorder>();
+        readonly Dictionary<string, CustomSampler> _samplers = new Dictionary<string, CustomSampler>();
         CommandBuffer _commands;
         bool _pending;
 
@@ -136,14 +136,17 @@ namespace SphFluid.Runtime
         public void BeginSample(string name)
         {
             Record();
-            Track(name);
-            _commands.BeginSample(name);
+            CustomSampler sampler = Sampler(name);
+            if (sampler != null) _commands.BeginSample(sampler);
+            else _commands.BeginSample(SamplePrefix + name);
         }
 
         public void EndSample(string name)
         {
             Record();
-            _commands.EndSample(name);
+            CustomSampler sampler = Sampler(name);
+            if (sampler != null) _commands.EndSample(sampler);
+            else _commands.EndSample(SamplePrefix + name);
         }
 
         public void Submit()
@@ -160,7 +163,9 @@ namespace SphFluid.Runtime
         public bool TryGetSampleMilliseconds(string name, out double milliseconds)
         {
             milliseconds = 0;
-            if (!_recorders.TryGetValue(name, out Recorder recorder) || !recorder.isValid) return false;
+            if (!_samplers.TryGetValue(name, out CustomSampler sampler) || sampler == null) return false;
+            Recorder recorder = sampler.GetRecorder();
+            if (recorder == null || !recorder.isValid) return false;
             long nanoseconds = recorder.gpuElapsedNanoseconds;
             if (nanoseconds <= 0) return false;
             milliseconds = nanoseconds * 1e-6;
@@ -176,12 +181,22 @@ namespace SphFluid.Runtime
             return new UnityReadbackRequest(AsyncGPUReadback.Request(unityBuffer.Buffer));
         }
 
-        void Track(string name)
+        /// <summary>Profiler samples are named "SphFluid.&lt;pass&gt;" so no built-in sampler name is taken.</summary>
+        const string SamplePrefix = "SphFluid.";
+
+        /// <summary>The GPU-timed sampler of a range name, created once; null where the platform cannot time the GPU.</summary>
+        CustomSampler Sampler(string name)
         {
-            if (_recorders.ContainsKey(name) || !SystemInfo.supportsGpuRecorder) return;
-            Recorder recorder = Recorder.Get(name);
-            if (recorder.isValid) recorder.enabled = true;
-            _recorders.Add(name, recorder);
+            if (_samplers.TryGetValue(name, out CustomSampler sampler)) return sampler;
+            sampler = SystemInfo.supportsGpuRecorder ? CustomSampler.Create(SamplePrefix + name, true) : null;
+            if (sampler != null && !sampler.isValid) sampler = null;
+            if (sampler != null)
+            {
+                Recorder recorder = sampler.GetRecorder();
+                if (recorder != null && recorder.isValid) recorder.enabled = true;
+            }
+            _samplers.Add(name, sampler);
+            return sampler;
         }
 
         static ComputeShader ShaderOf(IComputeProgram program) => Program(program).Shader;
@@ -211,7 +226,7 @@ namespace SphFluid.Runtime
             foreach (UnityComputeBuffer buffer in new List<UnityComputeBuffer>(_buffers))
                 buffer.Dispose();
             _buffers.Clear();
-            _recorders.Clear(); // recorders are shared per sample name: left enabled for other devices
+            _samplers.Clear(); // samplers are shared per name: their recorders stay enabled for other devices
             _programs.Clear();
             _commands.Release();
             _commands = null;
