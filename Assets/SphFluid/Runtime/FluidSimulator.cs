@@ -20,6 +20,9 @@ namespace SphFluid.Runtime
         /// <summary>One press of single-step advances this much simulated time, s.</summary>
         public const float SingleStepSeconds = 1f / 60f;
 
+        /// <summary>The core's defaults are the inspector's defaults (one source of truth).</summary>
+        static readonly FluidSettings CoreDefaults = new FluidSettings();
+
         /// <summary>Fastest wall or sphere motion passed on, m/s and rad/s.</summary>
         const float MaxWallSpeed = 50f, MaxWallSpin = 50f;
 
@@ -49,47 +52,47 @@ namespace SphFluid.Runtime
 
         [Header("Particles")]
         [SerializeField, Min(0.001f), Tooltip("Lattice spacing s of spawned particles, m, in [0.001, 1].")]
-        float particleSpacing = 0.02f;
+        float particleSpacing = CoreDefaults.ParticleSpacing;
 
         [SerializeField, Min(0.0015f), Tooltip("Kernel support radius h (= grid cell size), m; 1.5 to 3 particle spacings.")]
-        float smoothingRadius = 0.04f;
+        float smoothingRadius = CoreDefaults.SmoothingRadius;
 
         [SerializeField, Min(1), Tooltip("Most particles the spawn boxes may hold together, in [1, 16777216].")]
-        int maxParticles = 262144;
+        int maxParticles = CoreDefaults.MaxParticles;
 
         [Header("Pressure")]
         [SerializeField, Min(1f), Tooltip("Tait stiffness k, Pa, in [1, 1e9]; speed of sound c = sqrt(k gamma / rho0).")]
-        float stiffness = 50000f;
+        float stiffness = CoreDefaults.Stiffness;
 
         [SerializeField, Range(1f, 10f), Tooltip("Tait exponent gamma, in [1, 10].")]
-        float gamma = 7f;
+        float gamma = CoreDefaults.Gamma;
 
         [Header("Forces")]
         [SerializeField, Tooltip("Gravitational acceleration, m/s^2 (magnitude up to 1000).")]
-        Vector3 gravity = new Vector3(0f, -9.81f, 0f);
+        Vector3 gravity = CoreDefaults.Gravity.ToUnity();
 
         [SerializeField, Range(0f, 1f), Tooltip("XSPH velocity smoothing epsilon, in [0, 1]; 0 turns the pass off.")]
-        float xsphEpsilon = 0.05f;
+        float xsphEpsilon = CoreDefaults.XsphEpsilon;
 
         [SerializeField, Min(0f), Tooltip("Global velocity damping, 1/s, in [0, 1000]; 0 = none.")]
-        float velocityDamping = 0f;
+        float velocityDamping = CoreDefaults.VelocityDamping;
 
         [Header("Walls")]
         [SerializeField, Min(0f), Tooltip("Wall penalty stiffness, 1/s^2 (acceleration per metre of penetration), in [0, 1e8].")]
-        float boundaryStiffness = 20000f;
+        float boundaryStiffness = CoreDefaults.BoundaryStiffness;
 
         [SerializeField, Min(0f), Tooltip("Wall penalty damping of the outward normal velocity, 1/s, in [0, 1e5].")]
-        float boundaryDamping = 100f;
+        float boundaryDamping = CoreDefaults.BoundaryDamping;
 
         [Header("Time stepping")]
         [SerializeField, Range(0.01f, 1f), Tooltip("Courant number of the CFL condition, in (0, 1].")]
-        float cflNumber = 0.4f;
+        float cflNumber = CoreDefaults.CflNumber;
 
         [SerializeField, Range(1, 1000), Tooltip("Most sub-steps per frame, in [1, 1000]; beyond it the simulation runs slower than real time.")]
-        int maxSubsteps = 32;
+        int maxSubsteps = CoreDefaults.MaxSubsteps;
 
         [SerializeField, Min(0.00001f), Tooltip("Largest sub-step, s, in (0, 0.1].")]
-        float maxTimeStep = 0.005f;
+        float maxTimeStep = CoreDefaults.MaxTimeStep;
 
         [SerializeField, Range(0.001f, 0.1f), Tooltip("Longest frame simulated, s: a slower frame (a hitch, the editor) is simulated as this long.")]
         float maxFrameTime = 1f / 30f;

@@ -11,41 +11,44 @@ namespace SphFluid.Runtime
     /// </summary>
     public sealed class SpawnBox : MonoBehaviour
     {
+        /// <summary>The core's defaults are the inspector's defaults (one source of truth).</summary>
+        static readonly SpawnBoxDescription CoreDefaults = new SpawnBoxDescription();
+
         [Header("Phase")]
         [SerializeField, Tooltip("Phase name; boxes with the same name are one liquid and must agree on every value below.")]
-        string phaseName = "Water";
+        string phaseName = CoreDefaults.Phase.Name;
 
         [SerializeField, Min(1f), Tooltip("Rest density rho0, kg/m^3, in [1, 100000] (water 1000, oil 900).")]
-        float restDensity = 1000f;
+        float restDensity = CoreDefaults.Phase.RestDensity;
 
         [SerializeField, Min(0f), Tooltip("Dynamic viscosity mu, Pa s, in [0, 1000] (water 0.001; the simulation needs more, e.g. 0.5).")]
-        float viscosity = 0.001f;
+        float viscosity = CoreDefaults.Phase.Viscosity;
 
         [SerializeField, Min(0f), Tooltip("Mass of one particle, kg; 0 = derived so that the spawn lattice sits exactly at rest density.")]
-        float particleMass = 0f;
+        float particleMass = CoreDefaults.Phase.ParticleMass;
 
         [SerializeField, Range(0f, 10f), Tooltip("Surface tension coefficient gamma, N/m, in [0, 10]; 0 = off (water 0.072).")]
-        float surfaceTension = 0f;
+        float surfaceTension = CoreDefaults.Phase.SurfaceTension;
 
         [Header("Look")]
         [SerializeField, Tooltip("Tint and opacity (sRGB as shown here; the phase table stores it linear).")]
         Color color = new Color(0.2f, 0.45f, 0.9f, 0.8f);
 
         [SerializeField, Range(0f, 1f), Tooltip("Schlick reflectance at normal incidence, ((n - 1) / (n + 1))^2: water 0.02, oil 0.035.")]
-        float fresnelF0 = 0.02f;
+        float fresnelF0 = CoreDefaults.Phase.FresnelF0;
 
         [SerializeField, Min(0f), Tooltip("Beer-Lambert absorption coefficient of the tint, 1/m, in [0, 10000].")]
-        float absorption = 2f;
+        float absorption = CoreDefaults.Phase.Absorption;
 
         [Header("Spawn")]
         [SerializeField, Tooltip("Velocity every particle starts with, m/s, world space.")]
         Vector3 initialVelocity = Vector3.zero;
 
         [SerializeField, Range(0f, 0.5f), Tooltip("Random offset of each lattice point, in particle spacings, [0, 0.5].")]
-        float jitter = 0.05f;
+        float jitter = CoreDefaults.Jitter;
 
         [SerializeField, Tooltip("Seed of the jitter: the same seed spawns the same particles.")]
-        int seed = 1;
+        int seed = CoreDefaults.Seed;
 
         public string PhaseName => phaseName;
 
