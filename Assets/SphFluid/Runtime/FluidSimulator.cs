@@ -217,7 +217,7 @@ namespace SphFluid.Runtime
             FluidContainer box = FindContainer();
             scene.Container = box != null ? box.Describe() : null;
             foreach (SpawnBox spawn in FindObjectsByType<SpawnBox>(FindObjectsSortMode.InstanceID))
-                if (spawn.isActiveAndEnabled) scene.SpawnBoxes.Add(spawn.Describe());
+                if (IsLive(spawn)) scene.SpawnBoxes.Add(spawn.Describe());
             foreach (SphereObstacle sphere in ActiveObstacles())
                 scene.Obstacles.Add(sphere.Describe(Vector3.zero));
             return scene;
@@ -230,9 +230,13 @@ namespace SphFluid.Runtime
         {
             var list = new List<SphereObstacle>();
             foreach (SphereObstacle sphere in FindObjectsByType<SphereObstacle>(FindObjectsSortMode.InstanceID))
-                if (sphere.isActiveAndEnabled) list.Add(sphere);
+                if (IsLive(sphere)) list.Add(sphere);
             return list;
         }
+
+        /// <summary>Enabled on an active GameObject. Not isActiveAndEnabled: that turns true only once the component's
+        /// OnEnable has run, which during a scene load may come after this simulator's, and never in edit mode.</summary>
+        static bool IsLive(Behaviour behaviour) => behaviour.enabled && behaviour.gameObject.activeInHierarchy;
 
         // ------------------------------------------------------------------ lifetime
 
