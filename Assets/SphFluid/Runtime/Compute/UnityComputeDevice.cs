@@ -178,7 +178,7 @@ namespace SphFluid.Runtime
             if (!(buffer is UnityComputeBuffer unityBuffer) || unityBuffer.IsReleased)
                 throw new ComputeException($"Read-back: buffer '{buffer?.Name}' is not a live buffer of this device");
             Submit(); // the read-back must see the work recorded before it
-            return new UnityReadbackRequest(AsyncGPUReadback.Request(unityBuffer.Buffer));
+            return new UnityReadbackRequest(unityBuffer.Buffer);
         }
 
         /// <summary>Profiler samples are named "SphFluid.&lt;pass&gt;" so no built-in sampler name is taken.</summary>
