@@ -106,6 +106,53 @@ namespace SphFluid.Tests.Rendering
         }
 
         [Test]
+        public void No_implicit_vector_truncation_that_FXC_would_warn_about()
+        {
+            GlslangShaderCheck.RequireTool("glslangValidator");
+            var program = Shader().Programs[0];
+            string work = GlslangShaderCheck.NewWorkDir();
+            try
+            {
+                string hlsl = Path.Combine(work, "FluidParticles.hlsl");
+                File.WriteAllText(hlsl, program.WithLineDirective(ShaderRelativePath));
+                var problems = new List<string>();
+                foreach (var defines in Platforms)
+                {
+                    foreach (var (stage, entry) in new[] { ("vert", program.VertexEntry), ("frag", program.FragmentEntry) })
+                    {
+                        string tree = GlslangShaderCheck.IntermediateTree(hlsl, stage, entry, defines, work);
+                        problems.AddRange(ImplicitTruncationLint.Find(tree).Select(p => stage + " " + p));
+                    }
+                }
+                Assert.That(problems.Distinct().ToList(), Is.Empty, "lines of " + ShaderRelativePath + " or its includes");
+            }
+            finally
+            {
+                GlslangShaderCheck.DeleteWorkDir(work);
+            }
+        }
+
+        [Test]
+        public void Truncation_lint_finds_a_float4_assigned_to_a_float3_and_passes_explicit_swizzles()
+        {
+            GlslangShaderCheck.RequireTool("glslangValidator");
+            string work = GlslangShaderCheck.NewWorkDir();
+            try
+            {
+                string hlsl = Path.Combine(work, "Truncation.hlsl");
+                File.WriteAllText(hlsl, "float4 _A;\nfloat4 frag() : SV_Target\n{\n    float3 good = _A.xyz;\n    float3 bad = _A;\n    float alsoBad = _A.xy;\n    return float4(good + bad, alsoBad);\n}\n");
+                var problems = ImplicitTruncationLint.Find(GlslangShaderCheck.IntermediateTree(hlsl, "frag", "frag", new string[0], work));
+                Assert.That(problems.Count, Is.EqualTo(2), string.Join("\n", problems));
+                Assert.That(problems[0], Does.StartWith("line 5: 4-component"));
+                Assert.That(problems[1], Does.StartWith("line 6: 2-component"));
+            }
+            finally
+            {
+                GlslangShaderCheck.DeleteWorkDir(work);
+            }
+        }
+
+        [Test]
         public void Vertex_stage_reads_the_particle_and_phase_buffers_with_the_CSharp_strides()
         {
             GlslangShaderCheck.RequireTool("glslangValidator");

@@ -69,6 +69,21 @@ namespace SphFluid.Tests.Rendering
             return new StageCompileResult { SpirvPath = spv, Messages = output.Trim() };
         }
 
+        /// <summary>glslang's intermediate tree (-i) of one stage, for lints glslang itself does not perform.</summary>
+        public static string IntermediateTree(string hlslFile, string stage, string entry, IEnumerable<string> defines, string workDir)
+        {
+            string spv = Path.Combine(workDir, Path.GetFileNameWithoutExtension(hlslFile) + "." + stage + ".tree.spv");
+            var args = new List<string> { "-D", "-V", "-i", "--target-env", "vulkan1.1", "--auto-map-bindings", "--auto-map-locations",
+                "-S", stage, "-e", entry, "-I" + StandInIncludeDir, "-I" + ShaderDir };
+            args.AddRange(defines.Select(d => "-D" + d));
+            args.Add(hlslFile);
+            args.Add("-o");
+            args.Add(spv);
+            var (exit, output) = Run("glslangValidator", args);
+            Assert.That(exit, Is.EqualTo(0), "glslangValidator -i " + stage + " " + entry + ":\n" + output);
+            return output;
+        }
+
         public static (int exitCode, string output) Run(string tool, IReadOnlyList<string> args)
         {
             var start = new ProcessStartInfo(tool)
