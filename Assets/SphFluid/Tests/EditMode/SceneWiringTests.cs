@@ -20,7 +20,7 @@ namespace SphFluid.Tests.EditMode
             new[] { "prefixSumShader", "PrefixSum" },
         };
 
-        static IEnumerable<string> BuildScenes()
+        public static IEnumerable<string> BuildScenes()
         {
             foreach (EditorBuildSettingsScene scene in EditorBuildSettings.scenes)
                 if (scene.enabled) yield return scene.path;
