@@ -65,18 +65,18 @@ namespace SphFluid.Tests.Solver
         }
 
         /// <summary>
-        /// Oil and water mixed at start (a 3-D checkerboard of 2 x 2 x 2-particle blocks) drift apart, oil upwards.
+        /// Oil and water mixed at start (a 3-D checkerboard, particle by particle) drift apart, oil upwards.
         /// KNOWN WEAKNESS (see the solver report): at this coarse resolution (8 particles across) the weakly
-        /// compressible fluid jams like a soft solid and the separation creeps: after 3 s the oil's mean height
-        /// is a few centimetres above the water's, not a clean two-layer state. The test asserts that measured
-        /// drift (mean height of oil minus water > 4 % of the fluid depth; 7 % measured on lavapipe), not full layering.
+        /// compressible fluid partly jams like a soft solid and the separation creeps: after 3 s the oil's mean
+        /// height is about 4 cm above the water's (two clean layers would give about 8 cm). The test asserts
+        /// mean height of oil minus water > 15 % of the fluid depth (about 25 % measured on lavapipe).
         /// </summary>
         [Test]
         public void MixedOilAndWater_OilRisesAboveWater()
         {
             var settings = SolverScenes.Coarse(0.03f);
             settings.Stiffness = 3000f;   // c = 4.8 m/s, about ten times the speeds reached here
-            settings.XsphEpsilon = 0.02f; // XSPH (velocity form) damps relative motion by epsilon per sub-step
+            settings.XsphEpsilon = 0f;    // XSPH (velocity form) damps relative motion by epsilon per sub-step
             var container = new Vector3(0.24f, 0.36f, 0.12f);
             var fluid = new Vector3(0.24f, 0.24f, 0.12f);
             float bottom = -container.Y * 0.5f + fluid.Y * 0.5f;
@@ -85,9 +85,9 @@ namespace SphFluid.Tests.Solver
                 SolverScenes.Box("Upper", SolverScenes.Oil(), new Vector3(0f, bottom + fluid.Y * 0.25f, 0f), new Vector3(fluid.X, fluid.Y * 0.5f, fluid.Z)));
             using (var sim = new FluidSimulation(GpuTestDevice.Shared, scene))
             {
-                // The boxes define the two phases; the test then mixes them in a checkerboard of 2s blocks.
+                // The boxes define the two phases; the test then mixes them in a checkerboard, particle by particle.
                 var particles = SpawnLayout.Generate(scene);
-                float block = 2f * settings.ParticleSpacing;
+                float block = settings.ParticleSpacing;
                 for (int i = 0; i < particles.Length; i++)
                 {
                     var q = particles[i].Position / block + new Vector3(10f);
@@ -102,8 +102,8 @@ namespace SphFluid.Tests.Solver
                 Log($"layering after {sim.SimulatedTime:F2} s: {after:F3} m (fluid depth {depth:F3} m)");
                 Assert.That(report.NanCount, Is.EqualTo(0));
                 Assert.That(report.OutsideCount, Is.EqualTo(0));
-                Assert.That(Math.Abs(before), Is.LessThan(0.01 * depthBefore), "mixed at start");
-                Assert.That(after, Is.GreaterThan(0.04 * depth), "oil (lighter) must rise: mean height of oil minus mean height of water");
+                Assert.That(Math.Abs(before), Is.LessThan(0.02 * depthBefore), "mixed at start");
+                Assert.That(after, Is.GreaterThan(0.15 * depth), "oil (lighter) must rise: mean height of oil minus mean height of water");
             }
         }
 
