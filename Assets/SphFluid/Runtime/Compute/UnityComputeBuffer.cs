@@ -74,6 +74,7 @@ namespace SphFluid.Runtime
         public void Dispose()
         {
             if (_buffer == null) return;
+            _device.FlushBeforeRelease(); // recorded commands that bind this buffer run before it goes
             _buffer.Release();
             _buffer = null;
             _device.Forget(this);

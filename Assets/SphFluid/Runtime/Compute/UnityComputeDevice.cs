@@ -26,7 +26,7 @@ namespace SphFluid.Runtime
         readonly HashSet<UnityComputeBuffer> _buffers = new HashSet<UnityComputeBuffer>();
         readonly Dictionary<string, CustomSampler> _samplers = new Dictionary<string, CustomSampler>();
         CommandBuffer _commands;
-        bool _pending;
+        bool _pending, _disposing;
 
         /// <param name="shaders">The compute shader assets <see cref="LoadProgram"/> may hand out, by asset name.</param>
         public UnityComputeDevice(IEnumerable<ComputeShader> shaders)
@@ -69,6 +69,13 @@ namespace SphFluid.Runtime
             _buffers.Add(buffer);
             LiveBufferTotal++;
             return buffer;
+        }
+
+        /// <summary>Runs pending work before a buffer it may bind is released; while the device itself is
+        /// being disposed, pending work is dropped instead.</summary>
+        internal void FlushBeforeRelease()
+        {
+            if (_commands != null && !_disposing) Submit();
         }
 
         internal void Forget(UnityComputeBuffer buffer)
@@ -223,6 +230,9 @@ namespace SphFluid.Runtime
         public void Dispose()
         {
             if (_commands == null) return;
+            _disposing = true;
+            _commands.Clear();
+            _pending = false;
             foreach (UnityComputeBuffer buffer in new List<UnityComputeBuffer>(_buffers))
                 buffer.Dispose();
             _buffers.Clear();
