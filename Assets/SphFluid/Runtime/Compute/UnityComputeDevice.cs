@@ -128,8 +128,11 @@ namespace SphFluid.Runtime
             Record();
             UnityComputeProgram unityProgram = Program(program);
             LocalKeyword local = unityProgram.Keyword(keyword);
+            // Recorded, so that dispatches recorded before it keep their variant when the buffer runs; and set on the
+            // asset now, which is what a dispatch sees should Unity resolve the variant while recording.
             if (enabled) _commands.EnableKeyword(unityProgram.Shader, local);
             else _commands.DisableKeyword(unityProgram.Shader, local);
+            unityProgram.Shader.SetKeyword(local, enabled);
         }
 
         public void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ)
