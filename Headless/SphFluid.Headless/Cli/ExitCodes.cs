@@ -1,0 +1,19 @@
+namespace SphFluid.Headless.Cli;
+
+/// <summary>What <c>sphfluid</c> returns to the shell.</summary>
+public static class ExitCodes
+{
+    public const int Ok = 0;
+
+    /// <summary>No usable Vulkan device, or an unexpected failure (the message says which).</summary>
+    public const int Failure = 1;
+
+    /// <summary>A command-line argument is unknown, missing or out of range.</summary>
+    public const int BadArguments = 2;
+
+    /// <summary>The scene file cannot be read or describes an impossible fluid.</summary>
+    public const int BadScene = 3;
+
+    /// <summary>The simulation went non-finite or lost particles.</summary>
+    public const int SimulationFailed = 4;
+}

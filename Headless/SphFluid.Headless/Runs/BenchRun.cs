@@ -1,0 +1,134 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Text;
+using SphFluid.Compute;
+using SphFluid.Headless.Cli;
+using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
+using SphFluid.Vulkan;
+
+namespace SphFluid.Headless.Runs;
+
+/// <summary>
+/// <c>sphfluid bench</c>: runs single sub-steps of a fixed stable dt (one submit each, so every GPU timing
+/// range belongs to exactly one sub-step) and reports mean wall-clock and GPU milliseconds per sub-step
+/// and per pass, then per kernel from the backend's per-dispatch timestamps.
+/// </summary>
+public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter stderr)
+{
+    static readonly CultureInfo C = CultureInfo.InvariantCulture;
+    static readonly string[] Passes = { PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.Normals, PassNames.Forces, PassNames.ObstacleForces, PassNames.FullStep };
+
+    /// <summary>A device to use instead of opening one (tests share theirs); not disposed here.</summary>
+    public IComputeDevice Device { get; init; }
+
+    public sealed record Row(int Particles, string Plan, double WallMs, double GpuMs, IReadOnlyDictionary<string, double> PassMs,
+        IReadOnlyList<(string Kernel, int Dispatches, double Ms)> Kernels, float TimeStep, bool Finite);
+
+    public List<Row> Rows { get; } = new();
+
+    public int Execute()
+    {
+        var scene = SceneLoader.Load(options.ScenePath);
+        IComputeDevice device = Device;
+        IDisposable owned = null;
+        if (device == null)
+        {
+            var opened = DeviceFactory.Open(scene.ProjectRoot, options.DeviceName);
+            device = opened;
+            owned = opened;
+        }
+        try
+        {
+            var targets = options.Particles.Count > 0 ? options.Particles.Select(n => (int?)n).ToList() : new List<int?> { null };
+            stdout.WriteLine($"bench: {scene.Path} on {device.DeviceName}; {options.Warmup} warm-up + {options.Steps} timed sub-steps per row, one submit each");
+            foreach (int? target in targets)
+            {
+                var description = SceneLoader.Load(options.ScenePath).Description;
+                if (target.HasValue) ParticleScaling.ScaleTo(description, target.Value);
+                using var sim = new FluidSimulation(device, description);
+                var row = Measure(sim, device);
+                Rows.Add(row);
+                stderr.WriteLine(string.Format(C, "bench: {0} particles: {1:F3} ms/sub-step wall, {2:F3} ms GPU", row.Particles, row.WallMs, row.GpuMs));
+            }
+            stdout.Write(Table(scene.Name, device.DeviceName));
+            return Rows.All(r => r.Finite) ? ExitCodes.Ok : ExitCodes.SimulationFailed;
+        }
+        finally
+        {
+            owned?.Dispose();
+        }
+    }
+
+    Row Measure(FluidSimulation sim, IComputeDevice device)
+    {
+        float dt = sim.TimeStep.StableTimeStep(out _);
+        for (int i = 0; i < options.Warmup; i++) StepAndWait(sim, device, dt);
+        var pass = Passes.ToDictionary(p => p, _ => 0.0);
+        var kernels = new Dictionary<string, (int Dispatches, double Ms)>();
+        double wall = 0, gpu = 0;
+        for (int i = 0; i < options.Steps; i++)
+        {
+            var clock = Stopwatch.StartNew();
+            StepAndWait(sim, device, dt);
+            wall += clock.Elapsed.TotalMilliseconds;
+            foreach (string p in Passes)
+                if (sim.Plan.Runs(p) && device.TryGetSampleMilliseconds(p, out double ms))
+                {
+                    pass[p] += ms;
+                    gpu += ms;
+                }
+            if (device is VulkanComputeDevice vulkan)
+                foreach (var (kernel, ms) in vulkan.LastDispatchTimings)
+                {
+                    kernels.TryGetValue(kernel, out var k);
+                    kernels[kernel] = (k.Dispatches + 1, k.Ms + ms);
+                }
+        }
+        var report = sim.ReadDiagnostics();
+        int n = options.Steps;
+        return new Row(sim.ParticleCount, sim.Plan.ToString(), wall / n, gpu / n,
+            pass.Where(p => sim.Plan.Runs(p.Key)).ToDictionary(p => p.Key, p => p.Value / n),
+            kernels.OrderByDescending(k => k.Value.Ms).Select(k => (k.Key, (int)Math.Round((double)k.Value.Dispatches / n), k.Value.Ms / n)).ToList(),
+            dt, report.NanCount == 0 && report.OutsideCount == 0);
+    }
+
+    static void StepAndWait(FluidSimulation sim, IComputeDevice device, float dt)
+    {
+        sim.StepFixed(1, dt);
+        if (device is VulkanComputeDevice vulkan) vulkan.WaitIdle();
+        else device.TryGetSampleMilliseconds(PassNames.FullStep, out _);
+    }
+
+    /// <summary>The Markdown tables printed on stdout (paste into the README).</summary>
+    public string Table(string sceneName, string deviceName)
+    {
+        var b = new StringBuilder();
+        var passes = Passes.Where(p => Rows.Any(r => r.PassMs.ContainsKey(p))).ToList();
+        b.AppendLine();
+        b.AppendLine($"Scene {sceneName}, device {deviceName}: milliseconds per sub-step (mean of {options.Steps}; GPU = sum of the pass ranges)");
+        b.AppendLine();
+        b.AppendLine("| particles | dt (ms) | wall ms | GPU ms | " + string.Join(" | ", passes) + " |");
+        b.AppendLine("|---:|---:|---:|---:|" + string.Concat(passes.Select(_ => "---:|")));
+        foreach (var r in Rows)
+            b.AppendLine(string.Format(C, "| {0} | {1:F3} | {2:F3} | {3:F3} | ", r.Particles, r.TimeStep * 1000, r.WallMs, r.GpuMs)
+                + string.Join(" | ", passes.Select(p => r.PassMs.TryGetValue(p, out double ms) ? ms.ToString("F3", C) : "-")) + " |");
+        var last = Rows.LastOrDefault();
+        if (last != null && last.Kernels.Count > 0)
+        {
+            b.AppendLine();
+            b.AppendLine($"Per kernel at {last.Particles} particles (ms per sub-step, all dispatches of the kernel):");
+            b.AppendLine();
+            b.AppendLine("| kernel | dispatches | ms | share |");
+            b.AppendLine("|---|---:|---:|---:|");
+            double total = last.Kernels.Sum(k => k.Ms);
+            foreach (var (kernel, dispatches, ms) in last.Kernels)
+                b.AppendLine(string.Format(C, "| {0} | {1} | {2:F3} | {3:P1} |", kernel, dispatches, ms, total > 0 ? ms / total : 0));
+        }
+        return b.ToString();
+    }
+}

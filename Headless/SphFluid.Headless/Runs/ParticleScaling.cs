@@ -1,0 +1,54 @@
+using System;
+using SphFluid.Simulation;
+
+namespace SphFluid.Headless.Runs;
+
+/// <summary>
+/// Changes how many particles a scene spawns without changing the scene: the spacing (and the support
+/// radius with it, keeping h / s) shrinks or grows by the cube root of the factor, so every box holds the
+/// same volume of fluid at a finer or coarser resolution.
+/// </summary>
+public static class ParticleScaling
+{
+    /// <summary>A copy of <paramref name="scene"/>'s settings scaled by <paramref name="factor"/> in particle count.</summary>
+    public static void ScaleBy(FluidSceneDescription scene, double factor)
+    {
+        if (!(factor > 0) || !double.IsFinite(factor)) throw new ArgumentOutOfRangeException(nameof(factor), factor, "particle scale must be a finite number > 0");
+        if (Math.Abs(factor - 1) < 1e-12) return;
+        Apply(scene, scene.Settings.ParticleSpacing / (float)Math.Cbrt(factor));
+    }
+
+    /// <summary>Sets the spacing so the scene spawns about <paramref name="target"/> particles (within a few per cent:
+    /// lattice counts are whole numbers per axis). Returns the count reached.</summary>
+    public static int ScaleTo(FluidSceneDescription scene, int target)
+    {
+        if (target < 1) throw new ArgumentOutOfRangeException(nameof(target), target, "particle count must be >= 1");
+        for (int i = 0; i < 6; i++)
+        {
+            int now = Count(scene);
+            if (now == 0 || Math.Abs(now - target) <= target * 0.01) break;
+            Apply(scene, scene.Settings.ParticleSpacing * (float)Math.Cbrt((double)now / target));
+        }
+        return Count(scene);
+    }
+
+    static int Count(FluidSceneDescription scene)
+    {
+        long total = 0;
+        foreach (var box in scene.SpawnBoxes) total += SpawnLayout.Count(scene.Settings, box);
+        return (int)Math.Min(total, int.MaxValue);
+    }
+
+    static void Apply(FluidSceneDescription scene, float spacing)
+    {
+        var settings = scene.Settings.Clone();
+        float ratio = settings.SmoothingRadius / settings.ParticleSpacing;
+        settings.ParticleSpacing = spacing;
+        settings.SmoothingRadius = spacing * ratio;
+        scene.Settings = settings;
+        long total = 0;
+        foreach (var box in scene.SpawnBoxes) total += SpawnLayout.Count(settings, box);
+        // The scene's MaxParticles guards a Unity session; asking for more particles here is the point.
+        if (total > settings.MaxParticles) settings.MaxParticles = (int)Math.Min(16_777_216, total);
+    }
+}

@@ -1,0 +1,211 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using SphFluid.Compute;
+using SphFluid.Headless.Cli;
+using SphFluid.Headless.Output;
+using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
+
+namespace SphFluid.Headless.Runs;
+
+/// <summary>
+/// <c>sphfluid simulate</c>: steps the scene in 60 Hz frames as the FluidSimulator component would (the
+/// container and spheres moved by their scripts before each frame, on simulated time), and writes what a
+/// reader needs to judge the run: diagnostics lines and CSV, snapshots, the layering figure, a summary.
+/// </summary>
+public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, TextWriter stderr)
+{
+    static readonly CultureInfo C = CultureInfo.InvariantCulture;
+
+    /// <summary>A device to use instead of opening one (tests share theirs); not disposed here.</summary>
+    public IComputeDevice Device { get; init; }
+
+    /// <summary>Draw the progress bar (default: when stderr is a terminal).</summary>
+    public bool InteractiveProgress { get; init; } = ProgressReporter.StderrIsTerminal;
+
+    /// <summary>What the run ended with (null until it ran).</summary>
+    public RunSummary Summary { get; private set; }
+
+    public int Execute()
+    {
+        var scene = SceneLoader.Load(options.ScenePath);
+        var description = scene.Description;
+        int sceneCount = SpawnLayout.TotalCount(description);
+        ParticleScaling.ScaleBy(description, options.ParticlesScale);
+
+        string outDir = options.OutputDirectory ?? Path.Combine("Output", scene.Name);
+        try
+        {
+            Directory.CreateDirectory(outDir);
+            foreach (string old in Directory.EnumerateFiles(outDir, "*.png")) File.Delete(old);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new UsageException($"simulate: --out '{outDir}' cannot be used as the output folder: {e.Message}");
+        }
+
+        IComputeDevice device = Device;
+        IDisposable owned = null;
+        if (device == null)
+        {
+            var opened = DeviceFactory.Open(scene.ProjectRoot, options.DeviceName);
+            device = opened;
+            owned = opened;
+        }
+        try
+        {
+            using var simulation = new FluidSimulation(device, description);
+            return Simulate(scene, simulation, device, outDir, sceneCount);
+        }
+        finally
+        {
+            owned?.Dispose();
+        }
+    }
+
+    int Simulate(LoadedScene scene, FluidSimulation sim, IComputeDevice device, string outDir, int sceneCount)
+    {
+        var description = scene.Description;
+        var settings = description.Settings;
+        var phases = sim.PhaseRows;
+        var restContainer = description.Container.Clone();
+        var restObstacles = description.Obstacles.Select(o => o.Clone()).ToList();
+        int frames = options.FrameCount;
+        double duration = options.Frames > 0 ? frames * options.FrameSeconds : options.Seconds;
+
+        stdout.WriteLine($"scene: {scene.Path} ({scene.Name}): fluid '{scene.SimulatorObject}', container '{scene.ContainerObject}' "
+            + string.Format(C, "{0:G4} x {1:G4} x {2:G4} m", restContainer.Size.X, restContainer.Size.Y, restContainer.Size.Z)
+            + $", {description.SpawnBoxes.Count} spawn box(es), {description.Obstacles.Count} obstacle(s)"
+            + (scene.Motion.MovesContainer ? string.Format(C, ", container spins {0:G3} deg/s after {1:G3} s", scene.Motion.ContainerSpin.DegreesPerSecond, scene.Motion.ContainerSpin.StartDelay) : "")
+            + (scene.Motion.MovesObstacles ? $", {scene.Motion.SphereDrives.Count} driven sphere(s)" : ""));
+        stdout.WriteLine(string.Format(C, "particles: {0}{1} (spacing {2:G4} m, support {3:G4} m); phases: {4}",
+            sim.ParticleCount, sceneCount != sim.ParticleCount ? $" (scene: {sceneCount}, scaled x{options.ParticlesScale:G4})" : "",
+            settings.ParticleSpacing, settings.SmoothingRadius,
+            string.Join(", ", sim.Phases.Select((p, k) => string.Format(C, "{0} {1} rho0 {2:G4} kg/m^3 mu {3:G3} Pa s", p.Name, CountOf(description, settings, k, sim), p.RestDensity, p.Viscosity)))));
+        stdout.WriteLine(sim.Plan.ToString());
+        stdout.WriteLine(string.Format(C, "device: {0}", device.DeviceName));
+        stdout.WriteLine(string.Format(C, "run: {0:G4} s simulated in {1} frames of {2:G4} ms; output: {3}", duration, frames, options.FrameSeconds * 1000, Path.GetFullPath(outDir)));
+        stdout.Flush();
+
+        var views = new List<(SnapshotView View, string Prefix)> { (new SnapshotView(ViewAxis.Side, restContainer, scene.Motion.MovesContainer, options.ImageWidth), "frame") };
+        if (options.TopView) views.Add((new SnapshotView(ViewAxis.Top, restContainer, scene.Motion.MovesContainer, options.ImageWidth), "top"));
+
+        var particles = new Particle[sim.ParticleCount];
+        var layering = new List<LayeringSample>();
+        var progress = options.Quiet ? new ProgressReporter(null, false, duration, "s") : new ProgressReporter(stderr, InteractiveProgress, duration, "s");
+        using var csv = new DiagnosticsCsv(Path.Combine(outDir, "diagnostics.csv"), sim.Phases);
+        var clock = Stopwatch.StartNew();
+        int snapshots = 0, frame = 0, substeps = 0, cappedFrames = 0;
+        double nextSnapshot = 0, nextDiagnostics = 0;
+        DiagnosticsReport first = null, last = null;
+        string failure = null;
+        var container = restContainer;
+        IReadOnlyList<SphereObstacleDescription> obstacles = restObstacles;
+        StepReport step = StepReport.None;
+
+        void Observe(bool force)
+        {
+            double t = sim.SimulatedTime;
+            bool diagnose = force || t >= nextDiagnostics - 1e-9;
+            bool snap = force || t >= nextSnapshot - 1e-9;
+            if (!diagnose && !snap) return;
+            sim.Particles.GetData(particles);
+            if (diagnose)
+            {
+                var report = sim.ReadDiagnostics();
+                var sample = LayeringSample.Measure(t, particles, phases, container, settings.ParticleSpacing);
+                layering.Add(sample);
+                csv.Append(new DiagnosticsRow(t, frame, step, report, sample));
+                progress.Interrupt();
+                stdout.WriteLine(DiagnosticsLine(t, frame, step, report, sample, sim.Phases));
+                stdout.Flush();
+                first ??= report;
+                last = report;
+                failure ??= Health(report, sim.ParticleCount);
+                while (nextDiagnostics <= t + 1e-9) nextDiagnostics += options.DiagnosticsEvery;
+            }
+            if (snap)
+            {
+                foreach (var (view, prefix) in views)
+                    PngEncoder.Write(Path.Combine(outDir, string.Format(C, "{0}_{1:D4}.png", prefix, snapshots)),
+                        SnapshotRenderer.Render(view, particles, phases, container, obstacles, settings.ParticleSpacing));
+                snapshots++;
+                while (nextSnapshot <= t + 1e-9) nextSnapshot += options.SnapshotEvery;
+            }
+        }
+
+        Observe(force: true);
+        while (failure == null && (options.Frames > 0 ? frame < frames : sim.SimulatedTime < duration - 1e-6))
+        {
+            double target = sim.SimulatedTime + options.FrameSeconds;
+            if (scene.Motion.MovesContainer)
+            {
+                container = scene.Motion.ContainerAt(restContainer, target);
+                sim.UpdateContainer(container);
+            }
+            if (scene.Motion.MovesObstacles)
+            {
+                obstacles = scene.Motion.ObstaclesAt(restObstacles, target);
+                sim.UpdateObstacles(obstacles);
+            }
+            float frameSeconds = (float)(options.Frames > 0 ? options.FrameSeconds : Math.Min(options.FrameSeconds, duration - sim.SimulatedTime));
+            step = sim.Step(Math.Max(frameSeconds, 1e-6f));
+            frame++;
+            substeps += step.Substeps;
+            if (step.Capped) cappedFrames++;
+            Observe(force: false);
+            progress.Report(Math.Min(sim.SimulatedTime, duration), string.Format(C, "frame {0}, {1} sub-steps of {2:F3} ms", frame, step.Substeps, step.TimeStep * 1000));
+        }
+        if (layering.Count == 0 || layering[^1].Time < sim.SimulatedTime - 1e-9 || snapshots == 0) Observe(force: true);
+        progress.Finish();
+        double wall = clock.Elapsed.TotalSeconds;
+
+        if (sim.Phases.Count > 1)
+            PngEncoder.Write(Path.Combine(outDir, "layering.png"), LayeringFigure.Render(layering, particles, phases, container));
+
+        Summary = new RunSummary(scene, sim, device.DeviceName, sim.SimulatedTime, frame, substeps, cappedFrames, wall, snapshots,
+            first, last, layering.Count > 0 ? layering[^1] : null, failure, Path.GetFullPath(outDir));
+        File.WriteAllText(Path.Combine(outDir, "summary.txt"), Summary.ToText());
+        stdout.WriteLine(Summary.OneLine());
+        if (failure != null)
+        {
+            stderr.WriteLine($"simulate: {failure}");
+            return ExitCodes.SimulationFailed;
+        }
+        return ExitCodes.Ok;
+    }
+
+    static int CountOf(FluidSceneDescription scene, FluidSettings settings, int phase, FluidSimulation sim)
+    {
+        long n = 0;
+        foreach (var box in scene.SpawnBoxes)
+            if (box.Phase.Name == sim.Phases[phase].Name) n += SpawnLayout.Count(settings, box);
+        return (int)n;
+    }
+
+    /// <summary>Why the state is unacceptable (non-finite values, particles outside, a changed count), or null.</summary>
+    static string Health(DiagnosticsReport report, int spawned)
+    {
+        if (report.NanCount > 0) return string.Format(C, "the simulation went non-finite at t = {0:F3} s: {1} particle(s) have NaN/Inf values", report.SimulatedTime, report.NanCount);
+        if (report.OutsideCount > 0) return string.Format(C, "{0} particle(s) left the container at t = {1:F3} s", report.OutsideCount, report.SimulatedTime);
+        if (report.ParticleCount != spawned) return string.Format(C, "particles were lost: {0} counted at t = {1:F3} s, {2} spawned", report.ParticleCount, report.SimulatedTime, spawned);
+        return null;
+    }
+
+    static string DiagnosticsLine(double t, int frame, StepReport step, DiagnosticsReport r, LayeringSample layering, IReadOnlyList<PhaseDescription> phases)
+    {
+        var line = string.Format(C, "t={0,6:F3} s frame={1,4} substeps={2,2} dt={3,6:F3} ms N={4} mass={5:G6} kg KE={6:G4} J vmax={7:F3} m/s nan={8} out={9}",
+            t, frame, step.Substeps, step.TimeStep * 1000, r.ParticleCount, r.TotalMass, r.KineticEnergy, r.MaxSpeed, r.NanCount, r.OutsideCount);
+        for (int k = 0; k < r.Phases.Count; k++)
+        {
+            var p = r.Phases[k];
+            line += string.Format(C, " | {0}: err {1:P2}/{2:P2} y {3:F3} m", p.Name, p.AverageDensityError, p.MaxDensityError, layering.MeanHeights[k]);
+        }
+        if (phases.Count > 1) line += string.Format(C, " | layering {0:F2}", layering.LayeringIndex);
+        return line;
+    }
+}

@@ -1,0 +1,24 @@
+using System.Collections.Generic;
+using SphFluid.Simulation;
+
+namespace SphFluid.Headless.Scenes;
+
+/// <summary>The Unity components (Assets/SphFluid/Runtime) the runner reads, by class (= .cs file) name.</summary>
+public static class RuntimeScripts
+{
+    public const string FluidSimulator = "FluidSimulator";
+    public const string SpawnBox = "SpawnBox";
+    public const string FluidContainer = "FluidContainer";
+    public const string SphereObstacle = "SphereObstacle";
+    public const string ContainerSpinner = "ContainerSpinner";
+    public const string SphereDriver = "SphereDriver";
+
+    /// <summary>FluidSimulator's compute-shader fields and the program each must be (the pipeline loads them by name).</summary>
+    public static readonly IReadOnlyList<(string Field, string Program)> ShaderFields = new[]
+    {
+        ("solverShader", FluidSimulation.SolverProgramName),
+        ("diagnosticsShader", FluidSimulation.DiagnosticsProgramName),
+        ("sortShader", "ParticleSort"),
+        ("prefixSumShader", "PrefixSum"),
+    };
+}
