@@ -1,0 +1,150 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+using NUnit.Framework;
+using SphFluid.Compute;
+using SphFluid.Simulation;
+
+namespace SphFluid.Tests.Solver
+{
+    /// <summary>FluidSimulation releases every buffer it (and its sorter) created, Dispose is safe twice,
+    /// Reset respawns, and an invalid scene is refused before anything is allocated.</summary>
+    public sealed class SolverLifetimeTests
+    {
+        static FluidSceneDescription SmallScene()
+        {
+            var settings = SolverScenes.Coarse(0.04f);
+            return SolverScenes.Scene(settings, new Vector3(0.24f, 0.24f, 0.16f),
+                SolverScenes.Box("Water", SolverScenes.Water(), new Vector3(0f, -0.06f, 0f), new Vector3(0.24f, 0.12f, 0.16f)));
+        }
+
+        [Test]
+        public void Dispose_ReleasesEveryBuffer_AndIsSafeTwice()
+        {
+            var device = new CountingDevice(GpuTestDevice.Shared);
+            var sim = new FluidSimulation(device, SmallScene());
+            sim.Step(1f / 60f);
+            sim.RequestDiagnostics();
+            Assert.That(device.Live, Is.GreaterThan(10));
+            sim.Dispose();
+            Assert.That(device.Live, Is.EqualTo(0), "buffers still alive: " + string.Join(", ", device.LiveNames()));
+            sim.Dispose();
+            Assert.That(() => sim.Step(1f / 60f), Throws.TypeOf<ObjectDisposedException>());
+        }
+
+        [Test]
+        public void InvalidScene_IsRefusedBeforeAllocating()
+        {
+            var device = new CountingDevice(GpuTestDevice.Shared);
+            var scene = SmallScene();
+            scene.SpawnBoxes[0].Phase.RestDensity = -3f;
+            Assert.That(() => new FluidSimulation(device, scene),
+                Throws.ArgumentException.With.Message.Contains("SpawnBox 'Water': RestDensity must be in [1, 100000] kg/m^3 (was -3)"));
+            Assert.That(device.Created, Is.EqualTo(0));
+        }
+
+        [Test]
+        public void Reset_RespawnsTheSameParticles()
+        {
+            using (var sim = new FluidSimulation(GpuTestDevice.Shared, SmallScene()))
+            {
+                var first = Sorted(sim);
+                for (int i = 0; i < 5; i++) sim.Step(1f / 60f);
+                Assert.That(sim.SimulatedTime, Is.GreaterThan(0.05));
+                sim.Reset();
+                Assert.That(sim.SimulatedTime, Is.EqualTo(0.0));
+                Assert.That(Sorted(sim), Is.EqualTo(first));
+            }
+        }
+
+        [Test]
+        public void LatestDiagnostics_ArriveAfterARequest()
+        {
+            using (var sim = new FluidSimulation(GpuTestDevice.Shared, SmallScene()))
+            {
+                Assert.That(sim.LatestDiagnostics, Is.Null);
+                sim.Step(1f / 60f);
+                sim.RequestDiagnostics();
+                sim.Step(1f / 60f);
+                var report = sim.LatestDiagnostics;
+                Assert.That(report, Is.Not.Null);
+                Assert.That(report.ParticleCount, Is.EqualTo(sim.ParticleCount));
+                Assert.That(report.SimulatedTime, Is.EqualTo(1.0 / 60.0).Within(1e-4));
+                Assert.That(sim.LastStep.Substeps, Is.GreaterThan(0));
+                Assert.That(GpuTestDevice.Shared.TryGetSampleMilliseconds(PassNames.Forces, out double ms), Is.True);
+                Assert.That(ms, Is.GreaterThan(0.0));
+            }
+        }
+
+        static Particle[] Sorted(FluidSimulation sim)
+        {
+            var particles = new Particle[sim.ParticleCount];
+            sim.Particles.GetData(particles);
+            var byId = new Particle[particles.Length];
+            foreach (var p in particles) byId[p.Id] = p;
+            return byId;
+        }
+
+        /// <summary>Forwards to a real device and counts the buffers created and not yet disposed.</summary>
+        sealed class CountingDevice : IComputeDevice
+        {
+            readonly IComputeDevice _inner;
+            readonly HashSet<CountingBuffer> _live = new HashSet<CountingBuffer>();
+
+            public CountingDevice(IComputeDevice inner) { _inner = inner; }
+
+            public int Live => _live.Count;
+            public int Created { get; private set; }
+            public IEnumerable<string> LiveNames() { foreach (var b in _live) yield return b.Name; }
+
+            public string DeviceName => _inner.DeviceName;
+            public IComputeProgram LoadProgram(string name) => _inner.LoadProgram(name);
+
+            public IComputeBuffer CreateBuffer(string name, int count, int stride)
+            {
+                var buffer = new CountingBuffer(this, _inner.CreateBuffer(name, count, stride));
+                _live.Add(buffer);
+                Created++;
+                return buffer;
+            }
+
+            internal void Released(CountingBuffer buffer) => _live.Remove(buffer);
+
+            static IComputeBuffer Unwrap(IComputeBuffer b) => b is CountingBuffer c ? c.Inner : b;
+
+            public int PropertyId(string name) => _inner.PropertyId(name);
+            public void SetBuffer(IComputeProgram program, int kernel, int propertyId, IComputeBuffer buffer) => _inner.SetBuffer(program, kernel, propertyId, Unwrap(buffer));
+            public void SetInt(IComputeProgram program, int propertyId, int value) => _inner.SetInt(program, propertyId, value);
+            public void SetFloat(IComputeProgram program, int propertyId, float value) => _inner.SetFloat(program, propertyId, value);
+            public void SetInts(IComputeProgram program, int propertyId, params int[] values) => _inner.SetInts(program, propertyId, values);
+            public void SetVector(IComputeProgram program, int propertyId, Vector4 value) => _inner.SetVector(program, propertyId, value);
+            public void SetMatrix(IComputeProgram program, int propertyId, Matrix4x4 value) => _inner.SetMatrix(program, propertyId, value);
+            public void SetKeyword(IComputeProgram program, string keyword, bool enabled) => _inner.SetKeyword(program, keyword, enabled);
+            public void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ) => _inner.Dispatch(program, kernel, groupsX, groupsY, groupsZ);
+            public void BeginSample(string name) => _inner.BeginSample(name);
+            public void EndSample(string name) => _inner.EndSample(name);
+            public void Submit() => _inner.Submit();
+            public bool TryGetSampleMilliseconds(string name, out double milliseconds) => _inner.TryGetSampleMilliseconds(name, out milliseconds);
+            public IReadbackRequest RequestReadback(IComputeBuffer buffer) => _inner.RequestReadback(Unwrap(buffer));
+            public void Dispose() { }
+        }
+
+        sealed class CountingBuffer : IComputeBuffer
+        {
+            readonly CountingDevice _owner;
+            public IComputeBuffer Inner { get; }
+            public CountingBuffer(CountingDevice owner, IComputeBuffer inner) { _owner = owner; Inner = inner; }
+            public string Name => Inner.Name;
+            public int Count => Inner.Count;
+            public int Stride => Inner.Stride;
+            public void SetData<T>(T[] data) where T : struct => Inner.SetData(data);
+            public void SetData<T>(T[] data, int sourceIndex, int bufferIndex, int count) where T : struct => Inner.SetData(data, sourceIndex, bufferIndex, count);
+            public void GetData<T>(T[] data) where T : struct => Inner.GetData(data);
+            public void Dispose()
+            {
+                Inner.Dispose();
+                _owner.Released(this);
+            }
+        }
+    }
+}
