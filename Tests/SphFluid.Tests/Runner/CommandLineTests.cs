@@ -1,0 +1,103 @@
+using System.IO;
+using NUnit.Framework;
+using SphFluid.Headless;
+using SphFluid.Headless.Cli;
+
+namespace SphFluid.Tests.Runner
+{
+    public sealed class CommandLineTests
+    {
+        static int Run(out string stdout, out string stderr, params string[] args)
+        {
+            var o = new StringWriter();
+            var e = new StringWriter();
+            int code = Program.Run(args, o, e);
+            stdout = o.ToString();
+            stderr = e.ToString();
+            return code;
+        }
+
+        [Test]
+        public void NegativeSecondsIsABadArgumentNamingItsRange()
+        {
+            int code = Run(out _, out string err, "simulate", RunnerPaths.Scene("PlayModeTest"), "--seconds", "-1");
+            Assert.That(code, Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain("--seconds must be in (0, 3600] s (was -1)"));
+        }
+
+        [Test]
+        public void AnUnknownFlagIsNamed()
+        {
+            int code = Run(out _, out string err, "simulate", RunnerPaths.Scene("PlayModeTest"), "--fast");
+            Assert.That(code, Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain("unknown option --fast"));
+        }
+
+        [TestCase("--steps", "0", "--steps must be in [1, 1000000] (was 0)")]
+        [TestCase("--frames-every", "abc", "--frames-every must be a number in (0, 3600] s (was 'abc')")]
+        [TestCase("--particles-scale", "1000", "--particles-scale must be in [0.01, 100] (was 1000)")]
+        [TestCase("--out", null, "option --out needs a value")]
+        public void OutOfRangeValuesAreRefusedWithTheirRange(string option, string value, string message)
+        {
+            var args = value == null
+                ? new[] { "simulate", RunnerPaths.Scene("PlayModeTest"), option }
+                : new[] { "simulate", RunnerPaths.Scene("PlayModeTest"), option, value };
+            int code = Run(out _, out string err, args);
+            Assert.That(code, Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain(message));
+        }
+
+        [Test]
+        public void SecondsAndStepsTogetherAreRefused()
+        {
+            int code = Run(out _, out string err, "simulate", "x.unity", "--seconds", "1", "--steps", "3");
+            Assert.That(code, Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain("either --seconds or --steps"));
+        }
+
+        [Test]
+        public void BenchRefusesTooFewParticlesAndAMissingScene()
+        {
+            Assert.That(Run(out _, out string err, "bench", RunnerPaths.Scene("PlayModeTest"), "--particles", "10"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain("--particles must be in [64, 16777216] (was 10)"));
+            Assert.That(Run(out _, out err, "bench"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain("the scene file argument is missing"));
+        }
+
+        [Test]
+        public void AnUnknownCommandAndNoArgumentsAreBadArguments()
+        {
+            Assert.That(Run(out _, out string err, "render"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain("unknown command 'render'"));
+            Assert.That(Run(out _, out _), Is.EqualTo(ExitCodes.BadArguments));
+        }
+
+        [Test]
+        public void HelpIsPrintedForEachCommand()
+        {
+            Assert.That(Run(out string top, out _, "--help"), Is.EqualTo(ExitCodes.Ok));
+            Assert.That(top, Does.Contain("sphfluid simulate"));
+            Assert.That(Run(out string simulate, out _, "simulate", "--help"), Is.EqualTo(ExitCodes.Ok));
+            Assert.That(simulate, Does.Contain("--frames-every"));
+            Assert.That(Run(out string bench, out _, "bench", "--help"), Is.EqualTo(ExitCodes.Ok));
+            Assert.That(bench, Does.Contain("--particles"));
+        }
+
+        [Test]
+        public void AMissingSceneFileIsASceneError()
+        {
+            int code = Run(out _, out string err, "simulate", "/nonexistent/Nothing.unity");
+            Assert.That(code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(err, Does.Contain("Nothing.unity: no such scene file"));
+        }
+
+        [Test]
+        public void ABadSceneValueGivesExitCodeThree()
+        {
+            string path = RunnerPaths.EditedScene("PlayModeTest", "restDensity: 1000", "restDensity: -3");
+            int code = Run(out _, out string err, "simulate", path, "--seconds", "0.01");
+            Assert.That(code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(err, Does.Contain("SpawnBox.restDensity"));
+        }
+    }
+}

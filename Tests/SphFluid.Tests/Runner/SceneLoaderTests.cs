@@ -1,0 +1,125 @@
+using System.Linq;
+using NUnit.Framework;
+using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
+
+namespace SphFluid.Tests.Runner
+{
+    public sealed class SceneLoaderTests
+    {
+        [TestCaseSource(typeof(RunnerPaths), nameof(RunnerPaths.ShippedScenes))]
+        public void EveryShippedSceneReadsIntoAValidDescription(string name)
+        {
+            var scene = SceneLoader.Load(RunnerPaths.Scene(name), RunnerPaths.Project);
+
+            Assert.That(scene.Name, Is.EqualTo(name));
+            Assert.That(scene.Description.Validate(), Is.Empty);
+            Assert.That(scene.Description.SpawnBoxes.Count, Is.GreaterThan(0));
+            Assert.That(SpawnLayout.TotalCount(scene.Description), Is.InRange(100, 5000), "lavapipe-sized scenes");
+            Assert.That(scene.SimulatorObject, Is.EqualTo("Fluid"));
+            Assert.That(scene.ContainerObject, Is.EqualTo("Container"));
+        }
+
+        [Test]
+        public void OilAndWaterHasTwoPhasesSideBySideInsideItsContainer()
+        {
+            var scene = SceneLoader.Load(RunnerPaths.Scene("OilAndWater"), RunnerPaths.Project);
+            var d = scene.Description;
+            var phases = d.Phases();
+
+            Assert.That(phases.Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water", "Oil" }));
+            Assert.That(phases[0].RestDensity, Is.EqualTo(1000f));
+            Assert.That(phases[1].RestDensity, Is.EqualTo(900f));
+            Assert.That(d.Container.Size.X, Is.EqualTo(0.6f).Within(1e-6f));
+            Assert.That(d.Container.Position.Y, Is.EqualTo(0.2f).Within(1e-6f), "the floor is at y = 0");
+            Assert.That(d.SpawnBoxes[0].Center.X, Is.LessThan(0f), "water on the left");
+            Assert.That(d.SpawnBoxes[1].Center.X, Is.GreaterThan(0f), "oil on the right");
+            Assert.That(d.Settings.ParticleSpacing, Is.EqualTo(0.015f));
+            Assert.That(SpawnLayout.TotalCount(d), Is.EqualTo(4160));
+            Assert.That(scene.Motion.MovesContainer, Is.False);
+        }
+
+        [Test]
+        public void ColoursAreReadAsSrgbAndStoredLinearAsUnityDoes()
+        {
+            var d = SceneLoader.Load(RunnerPaths.Scene("OilAndWater"), RunnerPaths.Project).Description;
+            // Water's inspector colour is (0.25, 0.55, 0.95): sRGB 0.25 is linear 0.0508.
+            Assert.That(d.Phases()[0].Color.X, Is.EqualTo(0.0508f).Within(1e-3f));
+            Assert.That(d.Phases()[0].Color.W, Is.EqualTo(0.8f).Within(1e-6f));
+        }
+
+        [Test]
+        public void TheRotatingContainerSpinsAndTheSphereIsDriven()
+        {
+            var rotating = SceneLoader.Load(RunnerPaths.Scene("RotatingContainer"), RunnerPaths.Project);
+            Assert.That(rotating.Motion.MovesContainer, Is.True);
+            var atRest = rotating.Motion.ContainerAt(rotating.Description.Container, 0.5);
+            var turned = rotating.Motion.ContainerAt(rotating.Description.Container, 3.0);
+            Assert.That(atRest.Rotation, Is.EqualTo(rotating.Description.Container.Rotation), "still during the start delay");
+            Assert.That(System.Math.Abs(turned.Rotation.Z), Is.GreaterThan(0.3f), "90 degrees about z after 2 s of 45 deg/s");
+            Assert.That(turned.AngularVelocity.Z, Is.EqualTo(45f * System.MathF.PI / 180f).Within(1e-5f));
+
+            var wake = SceneLoader.Load(RunnerPaths.Scene("SphereWake"), RunnerPaths.Project);
+            Assert.That(wake.Description.Obstacles.Count, Is.EqualTo(1));
+            Assert.That(wake.Description.Obstacles[0].Radius, Is.EqualTo(0.045f).Within(1e-6f));
+            var moved = wake.Motion.ObstaclesAt(wake.Description.Obstacles, 4.0)[0];
+            Assert.That(moved.Center.X, Is.EqualTo(-0.35f + 0.5f).Within(1e-4f), "half a period after the delay: the far end");
+        }
+
+        [Test]
+        public void AFieldOutOfRangeIsReportedWithItsGameObjectComponentAndField()
+        {
+            string path = RunnerPaths.EditedScene("PlayModeTest", "restDensity: 1000", "restDensity: -3");
+
+            var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
+
+            Assert.That(error.Message, Does.Contain("GameObject 'Water', SpawnBox.restDensity"));
+            Assert.That(error.Message, Does.Contain("RestDensity must be in [1, 100000] kg/m^3 (was -3)"));
+        }
+
+        [Test]
+        public void ASettingOutOfRangeNamesTheSimulatorField()
+        {
+            string path = RunnerPaths.EditedScene("PlayModeTest", "smoothingRadius: 0.04", "smoothingRadius: 0.5");
+
+            var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
+
+            Assert.That(error.Message, Does.Contain("GameObject 'Fluid', FluidSimulator.smoothingRadius"));
+        }
+
+        [Test]
+        public void AMissingContainerIsNamed()
+        {
+            string containerGuid = RunnerPaths.Project.ScriptGuid("FluidContainer");
+            string spinnerGuid = RunnerPaths.Project.ScriptGuid("FluidReadout");
+            string text = System.IO.File.ReadAllText(RunnerPaths.Scene("PlayModeTest"));
+            // Turn the container component into another script and clear the simulator's reference to it.
+            text = text.Replace("guid: " + containerGuid, "guid: " + spinnerGuid);
+            text = System.Text.RegularExpressions.Regex.Replace(text, @"  container: \{fileID: \d+\}", "  container: {fileID: 0}");
+            string path = System.IO.Path.Combine(RunnerPaths.ScratchFolder("scene"), "NoContainer.unity");
+            System.IO.File.WriteAllText(path, text);
+
+            var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
+
+            Assert.That(error.Message, Does.Contain("no active FluidContainer"));
+            Assert.That(error.Message, Does.Contain("FluidSimulator.container"));
+        }
+
+        [Test]
+        public void ANonNumberNamesTheFieldAndLine()
+        {
+            string path = RunnerPaths.EditedScene("PlayModeTest", "stiffness: 50000", "stiffness: lots");
+
+            var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
+
+            Assert.That(error.Message, Does.Contain("FluidSimulator.stiffness must be a number (was 'lots')"));
+        }
+
+        [Test]
+        public void AMissingFileIsASceneError()
+        {
+            var error = Assert.Throws<SceneException>(() => SceneLoader.Load("/nonexistent/Nothing.unity", RunnerPaths.Project));
+            Assert.That(error.Message, Does.Contain("no such scene file"));
+        }
+    }
+}

@@ -1,0 +1,80 @@
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+using SphFluid.Headless.Cli;
+using SphFluid.Headless.Runs;
+
+namespace SphFluid.Tests.Runner
+{
+    /// <summary>Short headless runs of shipped scenes on the shared test device (lavapipe in CI).</summary>
+    public sealed class SimulateRunTests
+    {
+        static SimulateRun Simulate(string scene, out StringWriter stdout, out StringWriter stderr, params string[] extra)
+        {
+            var args = new[] { RunnerPaths.Scene(scene) }.Concat(extra).ToArray();
+            stdout = new StringWriter();
+            stderr = new StringWriter();
+            return new SimulateRun(SimulateOptions.Parse(args), stdout, stderr) { Device = GpuTestDevice.Shared, InteractiveProgress = false };
+        }
+
+        [Test]
+        public void AShortRunWritesDiagnosticsSnapshotsAndASummary()
+        {
+            string outDir = RunnerPaths.ScratchFolder("simulate");
+            var run = Simulate("PlayModeTest", out var stdout, out var stderr, "--seconds", "0.05", "--frames-every", "0.025", "--diagnostics-every", "0.025", "--out", outDir);
+
+            int code = run.Execute();
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
+            string[] csv = File.ReadAllLines(Path.Combine(outDir, "diagnostics.csv"));
+            Assert.That(csv[0], Does.StartWith("time_s,frame,substeps,dt_s,particles,total_mass_kg,kinetic_energy_J,max_speed_mps,nan_count,outside_count,water_count"));
+            Assert.That(csv.Length, Is.GreaterThanOrEqualTo(3), "t = 0, 0.025 and 0.05 s");
+            Assert.That(csv[1].Split(',')[4], Is.EqualTo("192"));
+            Assert.That(File.Exists(Path.Combine(outDir, "frame_0000.png")), Is.True);
+            Assert.That(File.Exists(Path.Combine(outDir, "frame_0001.png")), Is.True);
+            byte[] png = File.ReadAllBytes(Path.Combine(outDir, "frame_0000.png"));
+            var chunks = PngDecoder.Chunks(png);
+            foreach (var c in chunks) Assert.That(c.StoredCrc, Is.EqualTo(c.ComputedCrc), c.Type + " CRC");
+            Assert.That(File.ReadAllText(Path.Combine(outDir, "summary.txt")), Does.Contain("result: ok"));
+            Assert.That(stdout.ToString(), Does.Contain("plan: 1 phase, 0 obstacles"));
+            Assert.That(stdout.ToString(), Does.Contain("device: "));
+            Assert.That(run.Summary.Ok, Is.True);
+            Assert.That(run.Summary.SimulatedSeconds, Is.EqualTo(0.05).Within(1e-4));
+            Assert.That(run.Summary.Last.TotalMass, Is.EqualTo(run.Summary.First.TotalMass), "mass exactly constant");
+        }
+
+        [Test]
+        public void AMultiPhaseRunWritesTheLayeringFigure()
+        {
+            string outDir = RunnerPaths.ScratchFolder("layering");
+            var run = Simulate("OilAndWater", out var stdout, out var stderr, "--steps", "2", "--particles-scale", "0.1", "--out", outDir, "--top-view");
+
+            int code = run.Execute();
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
+            Assert.That(File.Exists(Path.Combine(outDir, "layering.png")), Is.True);
+            Assert.That(File.Exists(Path.Combine(outDir, "top_0000.png")), Is.True);
+            Assert.That(File.ReadAllLines(Path.Combine(outDir, "diagnostics.csv"))[0], Does.EndWith("oil_mean_height_m,layering_index"));
+            Assert.That(stdout.ToString(), Does.Contain("scaled x0.1"));
+            Assert.That(run.Summary.Frames, Is.EqualTo(2));
+        }
+
+        [Test]
+        public void BenchPrintsATableWithEveryPass()
+        {
+            var stdout = new StringWriter();
+            var bench = new BenchRun(BenchOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--steps", "2", "--warmup", "1" }), stdout, new StringWriter())
+            {
+                Device = GpuTestDevice.Shared,
+            };
+
+            int code = bench.Execute();
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok));
+            Assert.That(bench.Rows.Count, Is.EqualTo(1));
+            Assert.That(bench.Rows[0].Particles, Is.EqualTo(192));
+            Assert.That(stdout.ToString(), Does.Contain("| particles | dt (ms) | wall ms | GPU ms |"));
+            Assert.That(stdout.ToString(), Does.Contain("| 192 |"));
+        }
+    }
+}
