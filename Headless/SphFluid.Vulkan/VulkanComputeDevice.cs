@@ -79,6 +79,8 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
     public ShaderCompiler Compiler { get; }
     public IReadOnlyList<string> ShaderDirectories { get; }
     public bool ValidationEnabled { get; }
+    /// <summary>Whether out-of-range buffer accesses are defined (D3D-like) on this device.</summary>
+    public bool RobustBufferAccess { get; private set; }
     /// <summary>Number of dispatches recorded since the device was created.</summary>
     public long DispatchCount { get; private set; }
     /// <summary>Number of Vulkan queue submissions (frames plus uploads/read-backs through staging).</summary>
@@ -273,7 +275,13 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
             QueueCount = 1,
             PQueuePriorities = &priority,
         };
-        var info = new DeviceCreateInfo { SType = StructureType.DeviceCreateInfo, QueueCreateInfoCount = 1, PQueueCreateInfos = &queueInfo };
+        _vk.GetPhysicalDeviceFeatures(_physical, out var supported);
+        var features = new PhysicalDeviceFeatures { RobustBufferAccess = _options.RobustBufferAccess && supported.RobustBufferAccess };
+        RobustBufferAccess = features.RobustBufferAccess;
+        var info = new DeviceCreateInfo
+        {
+            SType = StructureType.DeviceCreateInfo, QueueCreateInfoCount = 1, PQueueCreateInfos = &queueInfo, PEnabledFeatures = &features,
+        };
         Device device;
         Check(_vk.CreateDevice(_physical, &info, null, &device), "vkCreateDevice");
         _device = device;

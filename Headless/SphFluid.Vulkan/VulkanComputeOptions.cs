@@ -27,9 +27,15 @@ public sealed class VulkanComputeOptions
     /// <summary>Writes a timestamp pair around every dispatch (<see cref="VulkanComputeDevice.LastDispatchTimings"/>).</summary>
     public bool TimeDispatches { get; set; } = true;
 
+    /// <summary>Enables robustBufferAccess where the device has it: an out-of-range buffer read returns zero or an
+    /// in-range value and an out-of-range write is dropped, as D3D11 (and so Unity) defines it, instead of
+    /// undefined behaviour. On by default so kernels behave as they do in Unity.</summary>
+    public bool RobustBufferAccess { get; set; } = true;
+
     /// <summary>Maps storage buffers straight into host memory where the device offers memory that is both
-    /// device-local and host-visible (lavapipe, integrated GPUs). Off forces the staging-copy path a discrete GPU takes.</summary>
-    public bool MapDeviceBuffers { get; set; } = true;
+    /// device-local and host-visible (lavapipe, integrated GPUs). Off forces the staging-copy path a discrete GPU takes
+    /// (default from SPHFLUID_VULKAN_MAP_BUFFERS: "0" turns it off, to rehearse a discrete GPU on lavapipe).</summary>
+    public bool MapDeviceBuffers { get; set; } = Environment.GetEnvironmentVariable("SPHFLUID_VULKAN_MAP_BUFFERS") != "0";
 
     /// <summary>Where compiled SPIR-V is cached; default <see cref="ShaderCompiler.DefaultCacheDirectory"/>.</summary>
     public string ShaderCacheDirectory { get; set; }

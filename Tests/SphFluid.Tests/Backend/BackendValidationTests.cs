@@ -19,6 +19,7 @@ namespace SphFluid.Tests.Backend
             var device = GpuTestDevice.Shared;
             Assert.That(device.DeviceName, Is.Not.Empty);
             Assert.That(device.DeviceType, Is.Not.Empty);
+            Assert.That(device.RobustBufferAccess, Is.True, "out-of-range reads return zero, as in D3D/Unity");
         }
 
         [Test]
