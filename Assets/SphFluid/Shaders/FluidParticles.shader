@@ -48,9 +48,8 @@ Shader "SphFluid/Particles"
             #include "Include/Phase.hlsl"
             #include "Include/ParticleImpostorQuad.hlsl"
             #include "Include/ParticleImpostorSphere.hlsl"
-            #include "Include/FluidOpticsFresnel.hlsl"
-            #include "Include/FluidOpticsAbsorption.hlsl"
             #include "Include/FluidOpticsRefraction.hlsl"
+            #include "Include/FluidOpticsComposite.hlsl"
 
             StructuredBuffer<Particle> _Particles;
             StructuredBuffer<PhaseProperties> _Phases;
@@ -135,35 +134,37 @@ Shader "SphFluid/Particles"
 
                 float4 hitCS = mul(UNITY_MATRIX_VP, float4(hit.position, 1.0));
                 float3 n = hit.normal;
-                float3 toEye = -rayDirection;
-                float cosTheta = saturate(dot(n, toEye));
+                float4 lightPos = _WorldSpaceLightPos0; // directional: w = 0, xyz towards the light
 
-                // Refraction: the opaque image behind, shifted by the normal, filtered by the liquid.
+                LiquidSurface surface;
+                surface.normal = n;
+                surface.toEye = -rayDirection;
+                surface.toLight = NormalizeOr(lightPos.xyz - hit.position * lightPos.w, float3(0.0, 1.0, 0.0));
+                surface.thickness = hit.thickness;
+                surface.tint = i.tint;
+                surface.fresnelF0 = i.optics.x;
+                surface.absorption = i.optics.y;
+
+                // The opaque image behind, at the screen position shifted by the normal.
                 float3 normalVS = mul((float3x3)UNITY_MATRIX_V, n);
                 float4 grab = ComputeGrabScreenPos(RefractedClipPosition(hitCS, normalVS, _RefractionStrength));
                 float2 grabUV = grab.xy / max(grab.w, 1e-6);
-                float3 background = _FluidBackground.SampleLevel(sampler_FluidBackground, grabUV, 0.0).rgb;
-                float3 transmittance = BeerLambertTransmittance(i.tint.rgb, i.optics.y, hit.thickness * _ThicknessScale);
 
-                // Light scattered out of the liquid towards the eye (its body colour), lit by the sun
-                // (wrapped so the dark side is not black) and the blurred environment.
-                float4 lightPos = _WorldSpaceLightPos0;
-                float3 toLight = NormalizeOr(lightPos.xyz - hit.position * lightPos.w, float3(0.0, 1.0, 0.0));
-                float3 ambient = SampleEnvironment(n, _AmbientMip);
-                float3 sun = _LightColor0.rgb * (0.5 + 0.5 * dot(n, toLight));
-                float3 body = i.tint.rgb * (1.0 - transmittance) * (sun + ambient) * (_ScatterStrength * i.tint.a);
-                float3 refracted = background * transmittance + body;
+                LiquidLighting lighting;
+                lighting.background = _FluidBackground.SampleLevel(sampler_FluidBackground, grabUV, 0.0).rgb;
+                lighting.reflected = SampleEnvironment(reflect(rayDirection, n), 0.0);
+                lighting.ambient = SampleEnvironment(n, _AmbientMip);
+                lighting.lightColor = _LightColor0.rgb;
 
-                float3 reflected = SampleEnvironment(reflect(rayDirection, n), 0.0) * _ReflectionStrength;
-                float fresnel = SchlickFresnel(i.optics.x, cosTheta);
-
-                // Blinn-Phong highlight of the main directional light, weighted like the reflection.
-                float3 halfVector = NormalizeOr(toLight + toEye, n);
-                float highlight = pow(saturate(dot(n, halfVector)), _SpecularPower) * _SpecularStrength;
-                float3 specular = _LightColor0.rgb * (highlight * SchlickFresnel(i.optics.x, saturate(dot(halfVector, toEye))));
+                LiquidLook look;
+                look.thicknessScale = _ThicknessScale;
+                look.scatterStrength = _ScatterStrength;
+                look.reflectionStrength = _ReflectionStrength;
+                look.specularStrength = _SpecularStrength;
+                look.specularPower = _SpecularPower;
 
                 ImpostorFragment o;
-                o.color = float4(lerp(refracted, reflected, fresnel) + specular, 1.0);
+                o.color = float4(ShadeLiquid(surface, lighting, look), 1.0);
             #if defined(UNITY_REVERSED_Z)
                 o.depth = ImpostorDeviceDepth(hitCS, 0.0);
             #else
