@@ -6,8 +6,9 @@
 // SV_InstanceID is the particle index into _Particles, SV_VertexID (0..5) the corner of its quad.
 // Buffers (material or global): _Particles (StructuredBuffer<Particle>, stride 32),
 // _Phases (StructuredBuffer<PhaseProperties>, stride 48), indexed by Particle.phase.
-// The GrabPass copies what is already drawn (opaques, skybox) into _FluidBackground once per draw;
-// particles refract that image, not each other. The queue is Transparent so the copy comes after them.
+// The named GrabPass copies what is already drawn into _FluidBackground (once per frame, at its first use);
+// the Transparent queue puts that copy after the opaque objects and the skybox. Particles refract that
+// image, not each other; they write the depth of their true sphere surface.
 Shader "SphFluid/Particles"
 {
     Properties
