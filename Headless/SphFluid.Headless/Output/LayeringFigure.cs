@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Numerics;
 using SphFluid.Simulation;
 
 namespace SphFluid.Headless.Output;
@@ -8,7 +9,8 @@ namespace SphFluid.Headless.Output;
 /// layering.png for multi-phase runs. Left panel: mean height of each phase above the floor against time
 /// (phase colours; grey grid lines every tenth of the container height, time runs left to right over the
 /// run) and the layering index in white (bottom edge -1, top edge 1). Right panel: the final vertical
-/// profile, each height band split into the phases' shares of its particles (floor at the bottom).
+/// profile, each height band split into the phases' shares of its particles (floor at the bottom). Heights
+/// are measured against gravity from the container's lowest corner.
 /// </summary>
 public static class LayeringFigure
 {
@@ -16,13 +18,14 @@ public static class LayeringFigure
     static readonly Rgb Background = new(18, 20, 26), Grid = new(60, 64, 72), Axis = new(150, 150, 150), Index = new(235, 235, 235);
 
     public static RgbImage Render(IReadOnlyList<LayeringSample> samples, ReadOnlySpan<Particle> finalParticles,
-        IReadOnlyList<PhaseProperties> phases, ContainerDescription container)
+        IReadOnlyList<PhaseProperties> phases, ContainerDescription container, Vector3 gravity)
     {
         var image = new RgbImage(Pad * 2 + ChartWidth + Gap + ProfileWidth, Pad * 2 + PanelHeight);
         image.Fill(Background);
         var colors = new Rgb[phases.Count];
         for (int k = 0; k < phases.Count; k++) colors[k] = Rgb.FromLinear(phases[k].Color.X, phases[k].Color.Y, phases[k].Color.Z);
-        double height = container.Size.Y;
+        var (up, floor, extent) = LayeringSample.Vertical(container, gravity);
+        double height = extent;
 
         // Chart frame and grid.
         int x0 = Pad, y0 = Pad, x1 = Pad + ChartWidth, y1 = Pad + PanelHeight;
@@ -60,7 +63,7 @@ public static class LayeringFigure
         foreach (var p in finalParticles)
         {
             if (p.Phase >= phases.Count) continue;
-            double h = container.ToLocal(p.Position).Y + height / 2;
+            double h = Vector3.Dot(p.Position, up) - floor;
             if (!double.IsFinite(h)) continue;
             int band = Math.Clamp((int)(h / height * bands), 0, bands - 1);
             counts[band, p.Phase]++;

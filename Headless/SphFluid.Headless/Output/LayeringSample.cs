@@ -6,27 +6,28 @@ using SphFluid.Simulation;
 namespace SphFluid.Headless.Output;
 
 /// <summary>
-/// Where each phase sits at one instant: its mean height above the container floor (container-local, so a
-/// tilted box measures along its own up axis) and a layering index for multi-phase fluids:
+/// Where each phase sits at one instant: its mean height above the lowest corner of the container, measured
+/// against gravity (so a turning box still measures "up" as the fluid feels it), and a layering index for
+/// multi-phase fluids:
 /// (mean height of the lightest phase - mean height of the heaviest) / (H / 2), where H = fluid volume /
-/// floor area is the depth of the settled pool. Perfect layers give 1 whatever the volume split
+/// floor area (of the upright box) is the depth of the settled pool. Perfect layers give 1 whatever the volume split
 /// (the heavy layer's centre is f_h H / 2 up, the light one's f_h H + f_l H / 2), a uniform mix gives 0,
 /// heavy over light gives a negative value.
 /// </summary>
 public sealed record LayeringSample(double Time, IReadOnlyList<double> MeanHeights, double LayeringIndex)
 {
     public static LayeringSample Measure(double time, ReadOnlySpan<Particle> particles, IReadOnlyList<PhaseProperties> phases,
-        ContainerDescription container, float particleSpacing)
+        ContainerDescription container, Vector3 gravity, float particleSpacing)
     {
         var sum = new double[phases.Count];
         var count = new long[phases.Count];
-        float floor = -container.Size.Y * 0.5f;
+        var (up, floor, _) = Vertical(container, gravity);
         foreach (var p in particles)
         {
             if (p.Phase >= phases.Count) continue;
-            var q = container.ToLocal(p.Position);
-            if (!float.IsFinite(q.Y)) continue;
-            sum[p.Phase] += q.Y - floor;
+            float h = Vector3.Dot(p.Position, up) - floor;
+            if (!float.IsFinite(h)) continue;
+            sum[p.Phase] += h;
             count[p.Phase]++;
         }
         var means = new double[phases.Count];
@@ -46,5 +47,23 @@ public sealed record LayeringSample(double Time, IReadOnlyList<double> MeanHeigh
             if (light != heavy && depth > 0) index = (means[light] - means[heavy]) / (0.5 * depth);
         }
         return new LayeringSample(time, means, index);
+    }
+
+    /// <summary>The up direction (against gravity; +y without gravity), the height of the container's lowest
+    /// corner along it, and the container's extent along it.</summary>
+    public static (Vector3 Up, float Floor, float Height) Vertical(ContainerDescription container, Vector3 gravity)
+    {
+        var up = gravity.LengthSquared() > 1e-12f ? -Vector3.Normalize(gravity) : Vector3.UnitY;
+        float lo = float.MaxValue, hi = float.MinValue;
+        var half = container.Size * 0.5f;
+        var rotation = Quaternion.Normalize(container.Rotation);
+        for (int c = 0; c < 8; c++)
+        {
+            var local = new Vector3((c & 1) != 0 ? half.X : -half.X, (c & 2) != 0 ? half.Y : -half.Y, (c & 4) != 0 ? half.Z : -half.Z);
+            float h = Vector3.Dot(container.Position + Vector3.Transform(local, rotation), up);
+            lo = Math.Min(lo, h);
+            hi = Math.Max(hi, h);
+        }
+        return (up, lo, hi - lo);
     }
 }

@@ -38,7 +38,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         IDisposable owned = null;
         if (device == null)
         {
-            var opened = DeviceFactory.Open(scene.ProjectRoot, options.DeviceName);
+            var opened = DeviceFactory.Open(scene.ProjectRoot, options.DeviceName, "bench");
             device = opened;
             owned = opened;
         }

@@ -1,4 +1,5 @@
 using System.IO;
+using SphFluid.Headless.Cli;
 using SphFluid.Vulkan;
 
 namespace SphFluid.Headless.Runs;
@@ -6,14 +7,22 @@ namespace SphFluid.Headless.Runs;
 /// <summary>Opens the headless Vulkan device on the project's shaders (Assets/SphFluid/Shaders).</summary>
 public static class DeviceFactory
 {
-    /// <exception cref="VulkanUnavailableException">No Vulkan driver or no adapter matching <paramref name="deviceName"/>.</exception>
-    public static VulkanComputeDevice Open(string projectRoot, string deviceName)
+    /// <exception cref="VulkanUnavailableException">No Vulkan driver.</exception>
+    /// <exception cref="UsageException">No adapter's name contains <paramref name="deviceName"/> (the --device argument).</exception>
+    public static VulkanComputeDevice Open(string projectRoot, string deviceName, string command)
     {
         var options = new VulkanComputeOptions
         {
             ShaderDirectories = new[] { Path.Combine(projectRoot, "Assets", "SphFluid", "Shaders") },
         };
         if (!string.IsNullOrEmpty(deviceName)) options.DeviceName = deviceName;
-        return new VulkanComputeDevice(options);
+        try
+        {
+            return new VulkanComputeDevice(options);
+        }
+        catch (VulkanUnavailableException e) when (!string.IsNullOrEmpty(deviceName) && e.Message.Contains($"contains '{deviceName}'"))
+        {
+            throw new UsageException($"{command}: --device '{deviceName}' matches no Vulkan adapter ({e.Message})");
+        }
     }
 }

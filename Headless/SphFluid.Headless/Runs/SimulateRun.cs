@@ -52,7 +52,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         IDisposable owned = null;
         if (device == null)
         {
-            var opened = DeviceFactory.Open(scene.ProjectRoot, options.DeviceName);
+            var opened = DeviceFactory.Open(scene.ProjectRoot, options.DeviceName, "simulate");
             device = opened;
             owned = opened;
         }
@@ -117,7 +117,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             if (diagnose)
             {
                 var report = sim.ReadDiagnostics();
-                var sample = LayeringSample.Measure(t, particles, phases, container, settings.ParticleSpacing);
+                var sample = LayeringSample.Measure(t, particles, phases, container, settings.Gravity, settings.ParticleSpacing);
                 layering.Add(sample);
                 csv.Append(new DiagnosticsRow(t, frame, step, report, sample));
                 progress.Interrupt();
@@ -165,7 +165,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         double wall = clock.Elapsed.TotalSeconds;
 
         if (sim.Phases.Count > 1)
-            PngEncoder.Write(Path.Combine(outDir, "layering.png"), LayeringFigure.Render(layering, particles, phases, container));
+            PngEncoder.Write(Path.Combine(outDir, "layering.png"), LayeringFigure.Render(layering, particles, phases, container, settings.Gravity));
 
         Summary = new RunSummary(scene, sim, device.DeviceName, sim.SimulatedTime, frame, substeps, cappedFrames, wall, snapshots,
             first, last, layering.Count > 0 ? layering[^1] : null, failure, Path.GetFullPath(outDir));

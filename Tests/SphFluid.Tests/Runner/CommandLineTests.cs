@@ -99,5 +99,26 @@ namespace SphFluid.Tests.Runner
             Assert.That(code, Is.EqualTo(ExitCodes.BadScene));
             Assert.That(err, Does.Contain("SpawnBox.restDensity"));
         }
+
+        [Test]
+        public void OptionsAcceptTheEqualsFormAndFlagsRefuseAValue()
+        {
+            var options = SimulateOptions.Parse(new[] { "x.unity", "--seconds=2.5", "--top-view" });
+            Assert.That(options.Seconds, Is.EqualTo(2.5));
+            Assert.That(options.TopView, Is.True);
+            Assert.That(options.FrameCount, Is.EqualTo(150));
+            var error = Assert.Throws<UsageException>(() => SimulateOptions.Parse(new[] { "x.unity", "--top-view=yes" }));
+            Assert.That(error.Message, Does.Contain("option --top-view takes no value"));
+            Assert.That(BenchOptions.Parse(new[] { "x.unity", "--particles", "1000,2000", "4000" }).Particles, Is.EqualTo(new[] { 1000, 2000, 4000 }));
+        }
+
+        [Test]
+        public void ADeviceNameNoAdapterHasIsABadArgument()
+        {
+            int code = Run(out _, out string err, "simulate", RunnerPaths.Scene("PlayModeTest"), "--seconds", "0.01", "--device", "NoSuchAdapter");
+            if (code == ExitCodes.Failure && err.Contains("no Vulkan device")) Assert.Ignore("No Vulkan driver here: " + err);
+            Assert.That(code, Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain("--device 'NoSuchAdapter' matches no Vulkan adapter"));
+        }
     }
 }
