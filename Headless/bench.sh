@@ -4,13 +4,7 @@
 # its own size and at 8k and 32k particles. With arguments: they go to `sphfluid bench` as they are, e.g.
 #   Headless/bench.sh Assets/SphFluid/Scenes/DamBreak.unity --particles 4000 16000 --steps 20
 set -euo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$root/Headless/install-deps.sh"
-
-if [ -z "${VK_DRIVER_FILES:-}${VK_ICD_FILENAMES:-}${VK_LOADER_DRIVERS_SELECT:-}" ]; then
-    export VK_LOADER_DRIVERS_SELECT='*lvp*'
-fi
-export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1 DOTNET_SKIP_FIRST_TIME_EXPERIENCE=1
+source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 
 dotnet build "$root/Headless/SphFluid.Headless/SphFluid.Headless.csproj" -c Release -nologo -v quiet -clp:ErrorsOnly >&2
 cli="$root/Headless/SphFluid.Headless/bin/Release/net10.0/sphfluid.dll"

@@ -4,14 +4,7 @@
 # on lavapipe, and the Unity asset-integrity checks. Installs what it needs first.
 # Extra arguments go to `dotnet test` (e.g. --filter "FullyQualifiedName~Backend").
 set -euo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$root/Headless/install-deps.sh"
-
-# CI has no GPU: pin the loader to lavapipe unless the caller chose a driver.
-if [ -z "${VK_DRIVER_FILES:-}${VK_ICD_FILENAMES:-}${VK_LOADER_DRIVERS_SELECT:-}" ]; then
-    export VK_LOADER_DRIVERS_SELECT='*lvp*'
-fi
-export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1 DOTNET_SKIP_FIRST_TIME_EXPERIENCE=1
+source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 
 results="$root/TestResults"
 rm -rf "$results"
