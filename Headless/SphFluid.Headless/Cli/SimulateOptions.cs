@@ -48,7 +48,10 @@ Options:
   --seconds S              simulated seconds to run, in (0, 3600] (default 3)
   --steps N                run N frames of --frame-seconds instead, N in [1, 1000000]
   --frame-seconds S        real time per frame, in (0, 0.1] s (default 1/60, as a 60 Hz Unity frame)
-  --out DIR                output folder (default Output/<scene name>)
+  --out DIR                output folder (default Output/<scene name>). The run records what it writes in
+                           DIR/.sphfluid-outputs and deletes only the files an earlier run recorded there;
+                           a folder holding frame_NNNN.png, summary.txt ... that sphfluid did not write is
+                           refused (exit 2) and left as it was
   --frames-every S         simulated seconds between PNG snapshots, in (0, 3600] (default 0.25)
   --diagnostics-every S    simulated seconds between diagnostics lines/CSV rows, in (0, 3600] (default 0.25)
   --particles-scale F      multiply the particle count by F, in [0.01, 100] (spacing and support shrink by F^(1/3))

@@ -37,16 +37,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         int sceneCount = SpawnLayout.TotalCount(description);
         ParticleScaling.ScaleBy(description, options.ParticlesScale);
 
-        string outDir = options.OutputDirectory ?? Path.Combine("Output", scene.Name);
-        try
-        {
-            Directory.CreateDirectory(outDir);
-            foreach (string old in Directory.EnumerateFiles(outDir, "*.png")) File.Delete(old);
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            throw new UsageException($"simulate: --out '{outDir}' cannot be used as the output folder: {e.Message}");
-        }
+        var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name), "--out", "simulate");
 
         IComputeDevice device = Device;
         IDisposable owned = null;
@@ -59,7 +50,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         try
         {
             using var simulation = new FluidSimulation(device, description);
-            return Simulate(scene, simulation, device, outDir, sceneCount);
+            return Simulate(scene, simulation, device, output, sceneCount);
         }
         finally
         {
@@ -67,7 +58,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         }
     }
 
-    int Simulate(LoadedScene scene, FluidSimulation sim, IComputeDevice device, string outDir, int sceneCount)
+    int Simulate(LoadedScene scene, FluidSimulation sim, IComputeDevice device, OutputFolder output, int sceneCount)
     {
         var description = scene.Description;
         var settings = description.Settings;
@@ -88,7 +79,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             string.Join(", ", sim.Phases.Select((p, k) => string.Format(C, "{0} {1} rho0 {2:G4} kg/m^3 mu {3:G3} Pa s", p.Name, CountOf(description, settings, k, sim), p.RestDensity, p.Viscosity)))));
         stdout.WriteLine(sim.Plan.ToString());
         stdout.WriteLine(string.Format(C, "device: {0}", device.DeviceName));
-        stdout.WriteLine(string.Format(C, "run: {0:G4} s simulated in {1} frames of {2:G4} ms; output: {3}", duration, frames, options.FrameSeconds * 1000, Path.GetFullPath(outDir)));
+        stdout.WriteLine(string.Format(C, "run: {0:G4} s simulated in {1} frames of {2:G4} ms; output: {3}", duration, frames, options.FrameSeconds * 1000, Path.GetFullPath(output.Path)));
         stdout.Flush();
 
         var views = new List<(SnapshotView View, string Prefix)> { (new SnapshotView(ViewAxis.Side, restContainer, scene.Motion.MovesContainer, options.ImageWidth), "frame") };
@@ -97,7 +88,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         var particles = new Particle[sim.ParticleCount];
         var layering = new List<LayeringSample>();
         var progress = options.Quiet ? new ProgressReporter(null, false, duration, "s") : new ProgressReporter(stderr, InteractiveProgress, duration, "s");
-        using var csv = new DiagnosticsCsv(Path.Combine(outDir, "diagnostics.csv"), sim.Phases);
+        using var csv = new DiagnosticsCsv(output.PathOf("diagnostics.csv"), sim.Phases);
         var clock = Stopwatch.StartNew();
         int snapshots = 0, frame = 0, substeps = 0, cappedFrames = 0;
         double nextSnapshot = 0, nextDiagnostics = 0;
@@ -131,7 +122,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             if (snap)
             {
                 foreach (var (view, prefix) in views)
-                    PngEncoder.Write(Path.Combine(outDir, string.Format(C, "{0}_{1:D4}.png", prefix, snapshots)),
+                    PngEncoder.Write(output.PathOf(string.Format(C, "{0}_{1:D4}.png", prefix, snapshots)),
                         SnapshotRenderer.Render(view, particles, phases, container, obstacles, settings.ParticleSpacing));
                 snapshots++;
                 while (nextSnapshot <= t + 1e-9) nextSnapshot += options.SnapshotEvery;
@@ -165,11 +156,11 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         double wall = clock.Elapsed.TotalSeconds;
 
         if (sim.Phases.Count > 1)
-            PngEncoder.Write(Path.Combine(outDir, "layering.png"), LayeringFigure.Render(layering, particles, phases, container, settings.Gravity));
+            PngEncoder.Write(output.PathOf("layering.png"), LayeringFigure.Render(layering, particles, phases, container, settings.Gravity));
 
         Summary = new RunSummary(scene, sim, device.DeviceName, sim.SimulatedTime, frame, substeps, cappedFrames, wall, snapshots,
-            first, last, layering.Count > 0 ? layering[^1] : null, failure, Path.GetFullPath(outDir));
-        File.WriteAllText(Path.Combine(outDir, "summary.txt"), Summary.ToText());
+            first, last, layering.Count > 0 ? layering[^1] : null, failure, Path.GetFullPath(output.Path));
+        File.WriteAllText(output.PathOf("summary.txt"), Summary.ToText());
         stdout.WriteLine(Summary.OneLine());
         if (failure != null)
         {

@@ -1,0 +1,99 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using IoPath = System.IO.Path;
+using System.Linq;
+using System.Text.RegularExpressions;
+using SphFluid.Headless.Cli;
+
+namespace SphFluid.Headless.Output;
+
+/// <summary>
+/// The folder a run writes into, and the only files of it the run may touch. Every file the runner writes is
+/// first recorded in a manifest (<see cref="ManifestName"/>) in that folder; a later run deletes exactly the
+/// files an earlier run's manifest lists, so stale frames, CSV and summary never outlive their run. A file the
+/// runner would write but that no manifest lists belongs to someone else: the run refuses the folder rather
+/// than overwrite it.
+/// </summary>
+public sealed class OutputFolder
+{
+    /// <summary>The manifest of the files sphfluid wrote here, one file name a line.</summary>
+    public const string ManifestName = ".sphfluid-outputs";
+
+    // Every name the runner may write. Anything else in the folder is never looked at.
+    static readonly Regex OwnName = new(@"^(frame_\d{4,}\.png|top_\d{4,}\.png|layering\.png|diagnostics\.csv|summary\.txt)$", RegexOptions.CultureInvariant);
+
+    readonly HashSet<string> _written = new(StringComparer.Ordinal);
+
+    OutputFolder(string path) => Path = path;
+
+    /// <summary>The folder, as given.</summary>
+    public string Path { get; }
+
+    /// <summary>Whether <paramref name="fileName"/> is a name the runner writes.</summary>
+    public static bool IsRunnerName(string fileName) => OwnName.IsMatch(fileName);
+
+    /// <summary>
+    /// Creates the folder if needed and removes the files an earlier run recorded in its manifest. Refuses
+    /// (<see cref="UsageException"/> naming <paramref name="option"/>) an empty path, a path that is a file,
+    /// and a folder holding a runner-named file that no manifest claims.
+    /// </summary>
+    public static OutputFolder Claim(string path, string option, string command)
+    {
+        if (string.IsNullOrWhiteSpace(path))
+            throw new UsageException($"{command}: {option} needs a folder path (was empty)");
+        try
+        {
+            if (File.Exists(path))
+                throw new UsageException($"{command}: {option} '{path}' is a file, not a folder");
+            Directory.CreateDirectory(path);
+            var folder = new OutputFolder(path);
+            var claimed = folder.ReadManifest();
+            var foreign = Directory.EnumerateFiles(path)
+                .Select(IoPath.GetFileName)
+                .Where(name => IsRunnerName(name) && !claimed.Contains(name))
+                .OrderBy(name => name, StringComparer.Ordinal)
+                .ToList();
+            if (foreign.Count > 0)
+                throw new UsageException($"{command}: {option} '{path}' already holds {string.Join(", ", foreign.Take(3))}"
+                    + (foreign.Count > 3 ? $" and {foreign.Count - 3} more" : "")
+                    + " that sphfluid did not write; choose an empty or new folder (nothing was deleted)");
+            foreach (string name in claimed)
+            {
+                string file = IoPath.Combine(path, name);
+                if (File.Exists(file)) File.Delete(file);
+            }
+            File.WriteAllText(folder.ManifestPath, "");
+            return folder;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
+        {
+            throw new UsageException($"{command}: {option} '{path}' cannot be used as the output folder: {e.Message}");
+        }
+    }
+
+    string ManifestPath => IoPath.Combine(Path, ManifestName);
+
+    /// <summary>The full path for <paramref name="fileName"/>, recorded in the manifest before anything is written to it.</summary>
+    public string PathOf(string fileName)
+    {
+        if (!IsRunnerName(fileName))
+            throw new ArgumentException($"OutputFolder: '{fileName}' is not a name the runner writes", nameof(fileName));
+        if (_written.Add(fileName))
+            File.AppendAllText(ManifestPath, fileName + "\n");
+        return IoPath.Combine(Path, fileName);
+    }
+
+    HashSet<string> ReadManifest()
+    {
+        var names = new HashSet<string>(StringComparer.Ordinal);
+        if (!File.Exists(ManifestPath)) return names;
+        foreach (string line in File.ReadLines(ManifestPath))
+        {
+            // Only bare runner names count: a manifest edited to name "../x" or "notes.txt" deletes nothing.
+            string name = line.Trim();
+            if (IsRunnerName(name)) names.Add(name);
+        }
+        return names;
+    }
+}

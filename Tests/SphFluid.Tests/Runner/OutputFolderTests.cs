@@ -1,0 +1,108 @@
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+using SphFluid.Headless;
+using SphFluid.Headless.Cli;
+using SphFluid.Headless.Output;
+using SphFluid.Headless.Runs;
+
+namespace SphFluid.Tests.Runner
+{
+    /// <summary>The runner writes and deletes only the files it wrote itself (health issue: --out deleted every PNG).</summary>
+    public sealed class OutputFolderTests
+    {
+        static int Simulate(string outDir, string seconds, out string stdout, out string stderr)
+        {
+            var o = new StringWriter();
+            var e = new StringWriter();
+            var options = SimulateOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--seconds", seconds, "--frames-every", "0.0166", "--out", outDir, "--quiet" });
+            int code;
+            try
+            {
+                code = new SimulateRun(options, o, e) { Device = GpuTestDevice.Shared, InteractiveProgress = false }.Execute();
+            }
+            catch (UsageException x)
+            {
+                e.WriteLine(x.Message);
+                code = ExitCodes.BadArguments;
+            }
+            stdout = o.ToString();
+            stderr = e.ToString();
+            return code;
+        }
+
+        [Test]
+        public void AUsersFilesInTheOutputFolderAreLeftAlone()
+        {
+            string dir = RunnerPaths.ScratchFolder("user-files");
+            File.WriteAllText(Path.Combine(dir, "holiday.png"), "not a run's picture");
+            File.WriteAllText(Path.Combine(dir, "notes.txt"), "mine");
+
+            int code = Simulate(dir, "0.02", out string stdout, out string stderr);
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok), stdout + stderr);
+            Assert.That(File.ReadAllText(Path.Combine(dir, "holiday.png")), Is.EqualTo("not a run's picture"));
+            Assert.That(File.ReadAllText(Path.Combine(dir, "notes.txt")), Is.EqualTo("mine"));
+            Assert.That(File.Exists(Path.Combine(dir, "frame_0000.png")), Is.True);
+        }
+
+        [Test]
+        public void AFileWithARunnerNameThatNoRunWroteIsNeverOverwritten()
+        {
+            string dir = RunnerPaths.ScratchFolder("foreign-frame");
+            File.WriteAllText(Path.Combine(dir, "frame_0000.png"), "someone else's");
+
+            int code = Simulate(dir, "0.02", out _, out string stderr);
+
+            Assert.That(code, Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(stderr, Does.Contain("--out '" + dir + "' already holds frame_0000.png that sphfluid did not write"));
+            Assert.That(File.ReadAllText(Path.Combine(dir, "frame_0000.png")), Is.EqualTo("someone else's"));
+            Assert.That(Directory.GetFiles(dir).Select(Path.GetFileName), Is.EquivalentTo(new[] { "frame_0000.png" }), "nothing written either");
+        }
+
+        [Test]
+        public void ASecondRunRemovesTheStaleOutputsOfTheFirst()
+        {
+            string dir = RunnerPaths.ScratchFolder("rerun");
+            Assert.That(Simulate(dir, "0.06", out _, out _), Is.EqualTo(ExitCodes.Ok));
+            Assert.That(File.Exists(Path.Combine(dir, "frame_0003.png")), Is.True, "the first run wrote four frames");
+            File.WriteAllText(Path.Combine(dir, "summary.txt"), "result: ok (stale)");
+
+            Assert.That(Simulate(dir, "0.02", out _, out _), Is.EqualTo(ExitCodes.Ok));
+
+            Assert.That(File.Exists(Path.Combine(dir, "frame_0003.png")), Is.False, "a shorter rerun leaves no frame of the old run");
+            Assert.That(File.ReadAllText(Path.Combine(dir, "summary.txt")), Does.Not.Contain("stale"));
+            Assert.That(File.ReadAllLines(Path.Combine(dir, OutputFolder.ManifestName)), Does.Contain("frame_0001.png").And.Not.Contain("frame_0003.png"));
+        }
+
+        [Test]
+        public void AManifestCannotBeUsedToDeleteOtherFiles()
+        {
+            string dir = RunnerPaths.ScratchFolder("manifest");
+            File.WriteAllText(Path.Combine(dir, "keep.png"), "mine");
+            File.WriteAllText(Path.Combine(dir, OutputFolder.ManifestName), "keep.png\n../keep.png\nsummary.txt\n");
+
+            OutputFolder.Claim(dir, "--out", "simulate");
+
+            Assert.That(File.Exists(Path.Combine(dir, "keep.png")), Is.True);
+        }
+
+        [TestCase("")]
+        [TestCase("   ")]
+        public void AnEmptyOutputPathIsABadArgument(string path)
+        {
+            var e = Assert.Throws<UsageException>(() => OutputFolder.Claim(path, "--out", "simulate"));
+            Assert.That(e.Message, Is.EqualTo("simulate: --out needs a folder path (was empty)"));
+        }
+
+        [Test]
+        public void AnOutputPathThatIsAFileIsABadArgument()
+        {
+            string file = Path.Combine(RunnerPaths.ScratchFolder("file"), "out");
+            File.WriteAllText(file, "x");
+            var e = Assert.Throws<UsageException>(() => OutputFolder.Claim(file, "--out", "simulate"));
+            Assert.That(e.Message, Does.Contain("is a file, not a folder"));
+            Assert.That(File.ReadAllText(file), Is.EqualTo("x"));
+        }
+    }
+}
