@@ -192,8 +192,6 @@ public static class SceneLoader
                 Gravity = Vector(go, mb, c, "gravity", d.Gravity),
                 XsphEpsilon = Float(go, mb, c, "xsphEpsilon", d.XsphEpsilon),
                 VelocityDamping = Float(go, mb, c, "velocityDamping", d.VelocityDamping),
-                BoundaryStiffness = Float(go, mb, c, "boundaryStiffness", d.BoundaryStiffness),
-                BoundaryDamping = Float(go, mb, c, "boundaryDamping", d.BoundaryDamping),
                 CflNumber = Float(go, mb, c, "cflNumber", d.CflNumber),
                 MaxSubsteps = Int(go, mb, c, "maxSubsteps", d.MaxSubsteps),
                 MaxTimeStep = Float(go, mb, c, "maxTimeStep", d.MaxTimeStep),

@@ -28,8 +28,6 @@ namespace SphFluid.Tests.Solver
             Stiffness = 15000f,
             Gamma = 7f,
             XsphEpsilon = 0.02f,
-            BoundaryStiffness = 20000f,
-            BoundaryDamping = 100f,
             MaxSubsteps = 64,
             MaxTimeStep = 0.005f,
         };

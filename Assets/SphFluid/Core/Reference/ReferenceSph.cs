@@ -6,16 +6,18 @@ using SphFluid.Simulation;
 namespace SphFluid.Reference
 {
     /// <summary>
-    /// The SPH of the team notes' physics specification, in double precision and brute force (every pair,
-    /// O(N^2)): used ONLY to check the GPU kernels on small cases, never shipped. It mirrors the kernels
-    /// equation by equation (Shaders/Include/Sph*.hlsl), including the same-phase normals and the penalty
-    /// and clamp boundaries, but shares no code with them.
+    /// The solver's SPH in double precision and brute force (every pair, O(N^2)): used ONLY to check the GPU
+    /// kernels on small cases, never shipped. It mirrors the kernels equation by equation
+    /// (Shaders/Include/Sph*.hlsl): the cubic spline, density with boundary particles, pressure with the
+    /// hydrostatic wall pressure, Morris viscosity, same-phase normals and tension, XSPH, and the clamp;
+    /// it shares no code with them (the boundary samples come from the same BoundarySampling, the input both use).
     /// </summary>
     public sealed class ReferenceSph
     {
         readonly FluidSettings _settings;
         readonly PhaseProperties[] _phases;
-        readonly double _h, _h2, _poly6, _spiky, _viscosityLaplacian, _cohesion;
+        readonly BoundaryParticle[] _boundaryRest;
+        readonly double _h, _h2, _cohesion;
 
         public ContainerDescription Container { get; set; }
         public List<SphereObstacleDescription> Obstacles { get; set; }
@@ -24,21 +26,34 @@ namespace SphFluid.Reference
         {
             _settings = scene.Settings;
             _phases = scene.BuildPhaseTable();
+            _boundaryRest = BoundarySampling.Sample(scene);
             Container = scene.Container.Clone();
             Obstacles = new List<SphereObstacleDescription>(scene.Obstacles ?? new List<SphereObstacleDescription>());
             _h = _settings.SmoothingRadius;
             _h2 = _h * _h;
-            _poly6 = 315.0 / (64.0 * Math.PI * Math.Pow(_h, 9));
-            _spiky = 45.0 / (Math.PI * Math.Pow(_h, 6));
-            _viscosityLaplacian = 45.0 / (Math.PI * Math.Pow(_h, 6));
             _cohesion = 32.0 / (Math.PI * Math.Pow(_h, 9));
         }
 
         public IReadOnlyList<PhaseProperties> PhaseTable => _phases;
 
-        public double Poly6(double r2) => r2 >= _h2 ? 0.0 : _poly6 * Math.Pow(_h2 - r2, 3);
+        double MinRestDensity()
+        {
+            double min = double.MaxValue;
+            foreach (var phase in _phases) min = Math.Min(min, phase.RestDensity);
+            return min;
+        }
 
-        public Double3 SpikyGradient(Double3 rij, double r) => rij * (-_spiky * (_h - r) * (_h - r) / r);
+        public double Kernel(double r) => SmoothingKernels.CubicSpline(r, _h);
+
+        public Double3 Gradient(Double3 rij, double r) => rij * (SmoothingKernels.CubicSplineDerivative(r, _h) / r);
+
+        /// <summary>gradW of a pair, a coincident pair given the id-signed diagonal (SphPressureForce.hlsl).</summary>
+        public Double3 PairGradient(Double3 rij, double r, uint idI, uint idJ)
+        {
+            double rr = Math.Max(r, 0.01 * _h);
+            Double3 direction = r > 0 ? rij / r : new Double3(1, 1, 1) * ((idI > idJ ? 1.0 : -1.0) / Math.Sqrt(3.0));
+            return Gradient(direction * rr, rr);
+        }
 
         public double Cohesion(double r)
         {
@@ -46,6 +61,31 @@ namespace SphFluid.Reference
             double term = Math.Pow(_h - r, 3) * r * r * r;
             if (2 * r > _h) return _cohesion * term;
             return _cohesion * (2 * term - Math.Pow(_h, 6) / 64.0);
+        }
+
+        /// <summary>The boundary particles placed with the current container and obstacles (world space).</summary>
+        public BoundaryParticle[] PlacedBoundary()
+        {
+            var placed = new BoundaryParticle[_boundaryRest.Length];
+            for (int b = 0; b < placed.Length; b++)
+            {
+                var rest = _boundaryRest[b];
+                var p = rest;
+                if (rest.Owner == BoundaryParticle.ContainerOwner)
+                {
+                    var x = ToWorldDirection(new Double3(rest.Position)) + new Double3(Container.Position);
+                    p.Position = x.ToVector3();
+                    p.Velocity = WallVelocity(x).ToVector3();
+                }
+                else
+                {
+                    var o = Obstacles[(int)rest.Owner];
+                    p.Position = (new Double3(o.Center) + new Double3(rest.Position)).ToVector3();
+                    p.Velocity = o.Velocity;
+                }
+                placed[b] = p;
+            }
+            return placed;
         }
 
         /// <summary>Density, pressure, normals, accelerations and XSPH corrections of a particle state
@@ -57,11 +97,15 @@ namespace SphFluid.Reference
             var x = new Double3[n];
             var v = new Double3[n];
             for (int i = 0; i < n; i++) { x[i] = new Double3(particles[i].Position); v[i] = new Double3(particles[i].Velocity); }
+            var walls = PlacedBoundary();
+            var xb = new Double3[walls.Length];
+            for (int b = 0; b < walls.Length; b++) xb[b] = new Double3(walls[b].Position);
 
             for (int i = 0; i < n; i++)
             {
                 double delta = 0;
-                for (int j = 0; j < n; j++) delta += SmoothingKernels.Spiky((x[i] - x[j]).Length(), _h);
+                for (int j = 0; j < n; j++) delta += Kernel((x[i] - x[j]).Length());
+                for (int b = 0; b < walls.Length; b++) delta += walls[b].Weight * Kernel((x[i] - xb[b]).Length());
                 var phase = _phases[particles[i].Phase];
                 double rho = phase.ParticleMass * delta;
                 double p = _settings.Stiffness * (Math.Pow(rho / phase.RestDensity, _settings.Gamma) - 1.0);
@@ -81,17 +125,37 @@ namespace SphFluid.Reference
                     var rij = x[i] - x[j];
                     double r2 = rij.LengthSquared();
                     if (r2 >= _h2 || r2 <= 0) continue;
-                    normal += SpikyGradient(rij, Math.Sqrt(r2)) / s.NumberDensity[j];
+                    normal += Gradient(rij, Math.Sqrt(r2)) / s.NumberDensity[j];
                 }
                 s.Normal[i] = tension ? normal * _h : Double3.Zero;
             }
 
             var gravity = new Double3(_settings.Gravity);
+            // Each wall particle's pressure: the Shepard-weighted fluid pressure around it plus the hydrostatic term.
+            var wallPressure = new double[walls.Length];
+            for (int b = 0; b < walls.Length; b++)
+            {
+                double sum = 0, weights = 0;
+                for (int f = 0; f < n; f++)
+                {
+                    var fluidToWall = xb[b] - x[f];
+                    double r = fluidToWall.Length();
+                    if (r >= _h) continue;
+                    double w = Kernel(r);
+                    sum += (s.Pressure[f] + s.Density[f] * Double3.Dot(gravity, fluidToWall)) * w;
+                    weights += w;
+                }
+                wallPressure[b] = weights > 0 ? Math.Max(0.0, sum / weights) : 0.0;
+            }
+            double speedOfSound = Math.Sqrt(_settings.Stiffness * _settings.Gamma / MinRestDensity());
+            double artificial = _settings.ArtificialViscosity * speedOfSound * 0.5 * _h;
+            double friction = Container.Friction == WallFriction.NoSlip ? 1.0 : 0.0;
             for (int i = 0; i < n; i++)
             {
                 var phaseI = _phases[particles[i].Phase];
                 double mi = phaseI.ParticleMass;
-                double termI = s.Pressure[i] / (s.NumberDensity[i] * s.NumberDensity[i]);
+                double di = s.NumberDensity[i];
+                double termI = s.Pressure[i] / (di * di);
                 var force = Double3.Zero;
                 var xsph = Double3.Zero;
                 for (int j = 0; j < n; j++)
@@ -104,24 +168,38 @@ namespace SphFluid.Reference
                     var phaseJ = _phases[particles[j].Phase];
                     double muI = phaseI.Viscosity, muJ = phaseJ.Viscosity;
                     double mu = muI + muJ > 0 ? 2 * muI * muJ / (muI + muJ) : 0;
-                    force += (v[j] - v[i]) * (mu * _viscosityLaplacian * (_h - r) / (s.NumberDensity[i] * s.NumberDensity[j]));
-                    if (r > 0)
+                    var gradient = PairGradient(rij, r, particles[i].Id, particles[j].Id);
+                    double termJ = s.Pressure[j] / (s.NumberDensity[j] * s.NumberDensity[j]);
+                    force += gradient * -(termI + termJ);
+                    force += (v[i] - v[j]) * (2 * mu / (di * s.NumberDensity[j]) * Double3.Dot(rij, gradient) / (r2 + 0.01 * _h2));
+                    double approach = Math.Min(0.0, Double3.Dot(v[i] - v[j], rij)) / (r2 + 0.01 * _h2);
+                    force += gradient * (artificial * 0.5 * (s.Density[i] + s.Density[j]) / (di * s.NumberDensity[j]) * approach);
+                    if (r > 0 && tension && particles[j].Phase == particles[i].Phase && phaseI.SurfaceTension > 0)
                     {
-                        double termJ = s.Pressure[j] / (s.NumberDensity[j] * s.NumberDensity[j]);
-                        force += SpikyGradient(rij, r) * -(termI + termJ);
-                        if (tension && particles[j].Phase == particles[i].Phase && phaseI.SurfaceTension > 0)
-                        {
-                            double gamma = phaseI.SurfaceTension;
-                            double k = 2 * phaseI.RestDensity / (s.Density[i] + s.Density[j]);
-                            var cohesion = rij * (-gamma * mi * phaseJ.ParticleMass * Cohesion(r) / r);
-                            var curvature = (s.Normal[i] - s.Normal[j]) * (-gamma * mi);
-                            force += (cohesion + curvature) * k;
-                        }
+                        double gamma = phaseI.SurfaceTension;
+                        double k = 2 * phaseI.RestDensity / (s.Density[i] + s.Density[j]);
+                        var cohesion = rij * (-gamma * mi * phaseJ.ParticleMass * Cohesion(r) / r);
+                        var curvature = (s.Normal[i] - s.Normal[j]) * (-gamma * mi);
+                        force += (cohesion + curvature) * k;
                     }
-                    xsph += (v[j] - v[i]) * (2 * Poly6(r2) / (s.NumberDensity[i] + s.NumberDensity[j]));
+                    xsph += (v[j] - v[i]) * (2 * Kernel(r) / (di + s.NumberDensity[j]));
+                }
+                for (int b = 0; b < walls.Length; b++)
+                {
+                    var rib = x[i] - xb[b];
+                    double r2 = rib.LengthSquared();
+                    if (r2 >= _h2) continue;
+                    double r = Math.Sqrt(r2);
+                    var gradient = PairGradient(rib, r, 1, 0);
+                    double weight = walls[b].Weight;
+                    var wallVelocity = new Double3(walls[b].Velocity);
+                    force += gradient * -(weight * (s.Pressure[i] + wallPressure[b]) / (di * di));
+                    force += (v[i] - wallVelocity) * (2 * friction * phaseI.Viscosity * weight / (di * di) * Double3.Dot(rib, gradient) / (r2 + 0.01 * _h2));
+                    double approach = Math.Min(0.0, Double3.Dot(v[i] - wallVelocity, rib)) / (r2 + 0.01 * _h2);
+                    force += gradient * (artificial * s.Density[i] * weight / (di * di) * approach);
                 }
                 s.InternalForce[i] = force;
-                s.Acceleration[i] = force / mi + gravity + ContainerPenalty(x[i], v[i]) + ObstaclePenalty(x[i], v[i]);
+                s.Acceleration[i] = force / mi + gravity;
                 s.Xsph[i] = xsph * _settings.XsphEpsilon;
             }
             return s;
@@ -143,45 +221,10 @@ namespace SphFluid.Reference
             return v + t * q.W + Double3.Cross(u, t);
         }
 
-        Double3 HalfExtent => new Double3(Container.Size * 0.5f) - new Double3(0.5, 0.5, 0.5) * _settings.ParticleSpacing;
-
         Double3 ClampExtent => new Double3(Container.Size * 0.5f) - new Double3(1, 1, 1) * (FluidSimulation.ClampInset * (double)_settings.ParticleSpacing);
 
         Double3 WallVelocity(Double3 x) =>
             new Double3(Container.Velocity) + Double3.Cross(new Double3(Container.AngularVelocity), x - new Double3(Container.Position));
-
-        public Double3 ContainerPenalty(Double3 x, Double3 v)
-        {
-            var q = ToLocal(x);
-            var rel = Rotate(v - WallVelocity(x), Quaternion.Conjugate(Rotation));
-            var H = HalfExtent;
-            var a = Double3.Zero;
-            for (int axis = 0; axis < 3; axis++)
-            {
-                double excess = Math.Abs(q[axis]) - H[axis];
-                if (excess <= 0) continue;
-                double outward = q[axis] >= 0 ? 1 : -1;
-                double approach = Math.Max(0, rel[axis] * outward);
-                a[axis] = -outward * (_settings.BoundaryStiffness * excess + _settings.BoundaryDamping * approach);
-            }
-            return ToWorldDirection(a);
-        }
-
-        public Double3 ObstaclePenalty(Double3 x, Double3 v)
-        {
-            var a = Double3.Zero;
-            foreach (var o in Obstacles)
-            {
-                var d = x - new Double3(o.Center);
-                double dist = d.Length();
-                double surface = o.Radius + 0.5 * _settings.ParticleSpacing;
-                if (dist >= surface) continue;
-                var n = dist > 0 ? d / dist : new Double3(0, 1, 0);
-                double approach = Math.Max(0, -Double3.Dot(v - new Double3(o.Velocity), n));
-                a += n * (_settings.BoundaryStiffness * (surface - dist) + _settings.BoundaryDamping * approach);
-            }
-            return a;
-        }
 
         public void Clamp(ref Double3 x, ref Double3 v)
         {

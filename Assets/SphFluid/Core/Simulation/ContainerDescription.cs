@@ -19,6 +19,9 @@ namespace SphFluid.Simulation
         /// <summary>Angular velocity about the centre, rad/s, world axes.</summary>
         public Vector3 AngularVelocity { get; set; }
 
+        /// <summary>How the walls (and obstacles) hold the fluid tangentially: no slip by default.</summary>
+        public WallFriction Friction { get; set; } = WallFriction.NoSlip;
+
         public ContainerDescription() { }
 
         public ContainerDescription(Vector3 position, Quaternion rotation, Vector3 size)

@@ -48,6 +48,10 @@ namespace SphFluid.Simulation
 
         public IReadOnlyList<PhaseDiagnostics> Phases { get; }
 
+        /// <summary>Particles the last-resort clamp behind the boundary particles has caught since spawn
+        /// (each catch once per integration half-step); zero in a healthy run.</summary>
+        public int ClampHits { get; }
+
         /// <summary>Simulated time of the state the figures describe, s.</summary>
         public double SimulatedTime { get; }
 
@@ -62,8 +66,9 @@ namespace SphFluid.Simulation
         }
 
         public DiagnosticsReport(double totalMass, double kineticEnergy, float maxSpeed, int nanCount, int outsideCount,
-            IReadOnlyList<PhaseDiagnostics> phases, double simulatedTime)
+            IReadOnlyList<PhaseDiagnostics> phases, double simulatedTime, int clampHits = 0)
         {
+            ClampHits = clampHits;
             TotalMass = totalMass;
             KineticEnergy = kineticEnergy;
             MaxSpeed = maxSpeed;
@@ -76,8 +81,8 @@ namespace SphFluid.Simulation
         public override string ToString()
         {
             var b = new StringBuilder();
-            b.AppendFormat(CultureInfo.InvariantCulture, "t={0:F3} s mass={1:G6} kg KE={2:G4} J vmax={3:G4} m/s nan={4} outside={5}",
-                SimulatedTime, TotalMass, KineticEnergy, MaxSpeed, NanCount, OutsideCount);
+            b.AppendFormat(CultureInfo.InvariantCulture, "t={0:F3} s mass={1:G6} kg KE={2:G4} J vmax={3:G4} m/s nan={4} outside={5} clamped={6}",
+                SimulatedTime, TotalMass, KineticEnergy, MaxSpeed, NanCount, OutsideCount, ClampHits);
             foreach (var p in Phases) b.Append(" | ").Append(p);
             return b.ToString();
         }

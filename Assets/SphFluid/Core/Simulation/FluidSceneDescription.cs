@@ -14,6 +14,9 @@ namespace SphFluid.Simulation
         public const int MaxPhases = 64;
         public const int MaxObstacles = 64;
 
+        /// <summary>Most boundary particles (walls and obstacles): the particle sort's limit.</summary>
+        public const int MaxBoundaryParticles = SphFluid.Sorting.ParticleSorter.MaxSupportedParticles;
+
         public FluidSettings Settings { get; set; } = new FluidSettings();
         public List<SpawnBoxDescription> SpawnBoxes { get; set; } = new List<SpawnBoxDescription>();
         public ContainerDescription Container { get; set; } = new ContainerDescription();
@@ -104,6 +107,15 @@ namespace SphFluid.Simulation
                 errors.Add(new ValidationError("Container.Size",
                     $"Container: each Size component must be in [{ValidationRules.Format(minSize)}, 1000] m (two particle spacings or more) (was {ValidationRules.Format(size)})"));
             }
+            else if (Settings.ParticleSpacing > 0 && Settings.SmoothingRadius > 0)
+            {
+                long walls = BoundarySampling.ContainerCount(size, Settings.ParticleSpacing, Settings.SmoothingRadius);
+                if (walls > MaxBoundaryParticles)
+                    errors.Add(new ValidationError("Container.Size",
+                        $"Container: Size {ValidationRules.Format(size)} m needs {walls} wall particles at spacing {ValidationRules.Format(Settings.ParticleSpacing)} m, more than the {MaxBoundaryParticles} allowed; shrink the container or raise ParticleSpacing"));
+            }
+            if (Container.Friction != WallFriction.Slip && Container.Friction != WallFriction.NoSlip)
+                errors.Add(new ValidationError("Container.Friction", $"Container: Friction must be Slip or NoSlip (was {(int)Container.Friction})"));
             ValidationRules.Finite(errors, owner, "Container.", nameof(ContainerDescription.Velocity), Container.Velocity, 1000f, "m/s");
             ValidationRules.Finite(errors, owner, "Container.", nameof(ContainerDescription.AngularVelocity), Container.AngularVelocity, 1000f, "rad/s");
         }

@@ -6,16 +6,18 @@ namespace SphFluid.Simulation
     /// <summary>
     /// Solver settings of one fluid (the SPH component's inspector). Defaults suit a tank of about
     /// 0.5 m: spacing 2 cm, support 2 spacings, a speed of sound of about 20 m/s (ten times the speed
-    /// of a 0.2 m dam break) and a boundary penalty stiff enough to hold a 0.5 m column.
+    /// of a 0.2 m dam break). Walls are boundary particles (BoundarySampling), so they need no settings here.
     /// </summary>
     public sealed class FluidSettings
     {
-        public const float MinSupportRatio = 1.5f, MaxSupportRatio = 3f;
+        public const float MinSupportRatio = 2f, MaxSupportRatio = 4f;
 
         /// <summary>Lattice spacing s of spawned particles, m, in [0.001, 1].</summary>
         public float ParticleSpacing { get; set; } = 0.02f;
 
-        /// <summary>Kernel support radius h (= grid cell size), m; h / s must be in [1.5, 3].</summary>
+        /// <summary>Kernel support radius H (= grid cell size), m; H / s must be in [2, 4]. 2 spacings by default:
+        /// the cubic spline then recovers a linear pressure gradient to 2 % on the lattice at the lowest cost
+        /// (SmoothingKernels.LatticeGradientReproduction).</summary>
         public float SmoothingRadius { get; set; } = 0.04f;
 
         /// <summary>Tait stiffness k, Pa, in [1, 1e9]; speed of sound c = sqrt(k gamma / rho0).</summary>
@@ -32,17 +34,15 @@ namespace SphFluid.Simulation
         /// small (0.02) or it damps buoyancy-driven flow (oil rising through water) along with the noise.</summary>
         public float XsphEpsilon { get; set; } = 0.02f;
 
-        /// <summary>Wall penalty stiffness kb, 1/s^2 (acceleration per metre of penetration), in [0, 1e8].</summary>
-        public float BoundaryStiffness { get; set; } = 20000f;
-
-        /// <summary>Wall penalty damping cb, 1/s, on the outward normal velocity, in [0, 1e5].</summary>
-        public float BoundaryDamping { get; set; } = 100f;
+        /// <summary>Monaghan's artificial viscosity alpha, in [0, 1]: damps the acoustic noise of the weakly
+        /// compressible fluid on approaching particle pairs (SphViscosity.hlsl). 0 turns it off.</summary>
+        public float ArtificialViscosity { get; set; } = 0.02f;
 
         /// <summary>Global velocity damping, 1/s, in [0, 1000]; 0 = none.</summary>
         public float VelocityDamping { get; set; }
 
         /// <summary>Courant number of the CFL condition, in (0, 1].</summary>
-        public float CflNumber { get; set; } = 0.4f;
+        public float CflNumber { get; set; } = 0.3f;
 
         /// <summary>Most sub-steps per frame, in [1, 1000]; beyond it the simulation runs slower than real time.</summary>
         public int MaxSubsteps { get; set; } = 32;
@@ -69,14 +69,13 @@ namespace SphFluid.Simulation
             if (spacingOk)
             {
                 ValidationRules.InRange(errors, owner, path, nameof(SmoothingRadius), SmoothingRadius,
-                    MinSupportRatio * ParticleSpacing, MaxSupportRatio * ParticleSpacing, "m (1.5 to 3 particle spacings)");
+                    MinSupportRatio * ParticleSpacing, MaxSupportRatio * ParticleSpacing, "m (2 to 4 particle spacings)");
             }
             ValidationRules.InRange(errors, owner, path, nameof(Stiffness), Stiffness, 1f, 1e9f, "Pa");
             ValidationRules.InRange(errors, owner, path, nameof(Gamma), Gamma, 1f, 10f, "");
             ValidationRules.Finite(errors, owner, path, nameof(Gravity), Gravity, 1000f, "m/s^2");
             ValidationRules.InRange(errors, owner, path, nameof(XsphEpsilon), XsphEpsilon, 0f, 1f, "");
-            ValidationRules.InRange(errors, owner, path, nameof(BoundaryStiffness), BoundaryStiffness, 0f, 1e8f, "1/s^2");
-            ValidationRules.InRange(errors, owner, path, nameof(BoundaryDamping), BoundaryDamping, 0f, 1e5f, "1/s");
+            ValidationRules.InRange(errors, owner, path, nameof(ArtificialViscosity), ArtificialViscosity, 0f, 1f, "");
             ValidationRules.InRange(errors, owner, path, nameof(VelocityDamping), VelocityDamping, 0f, 1000f, "1/s");
             ValidationRules.Positive(errors, owner, path, nameof(CflNumber), CflNumber, 1f, "");
             ValidationRules.InRange(errors, owner, path, nameof(MaxSubsteps), MaxSubsteps, 1, 1000, "");

@@ -15,7 +15,8 @@ namespace SphFluid.Simulation
     /// Buffers: two particle buffers (the sort writes the other one and they swap: <see cref="Particles"/> is
     /// always the cell-sorted current state), per-particle density/pressure, normals, accelerations and XSPH
     /// corrections (indexed like the current particles), the phase table, the obstacles, the sorter's
-    /// CellStart/CellCount, and the reduction partials and totals.
+    /// CellStart/CellCount, the boundary particles (rest frame, placed, cell-sorted, with their own sorter),
+    /// the clamp-hit counter, and the reduction partials and totals.
     /// </remarks>
     public sealed class FluidSimulation : IDisposable
     {
@@ -23,7 +24,7 @@ namespace SphFluid.Simulation
         public const string DiagnosticsProgramName = "FluidDiagnostics";
         const int ReductionThreads = 256; // REDUCTION_THREADS in Include/SphTimeStep.hlsl
 
-        /// <summary>The clamp surface lies this many particle spacings inside the walls (SphBoundary.hlsl).</summary>
+        /// <summary>The last-resort clamp surface lies this many particle spacings inside the walls (SphBoundary.hlsl).</summary>
         public const float ClampInset = 0.01f;
 
         readonly IComputeDevice _device;
@@ -33,17 +34,21 @@ namespace SphFluid.Simulation
         readonly Particle[] _spawn;
         readonly TimeStepController _timeStep;
         readonly IComputeProgram _solver, _diagnostics;
-        readonly int _halfStep, _densityPressure, _normals, _forces, _obstacleForces, _fullStep;
+        readonly int _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep;
+        readonly int[] _solverKernels;
         readonly int _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal;
         readonly int _reductionGroups;
         readonly ShaderIds _ids;
 
         IComputeBuffer _particles, _particlesOther;
         IComputeBuffer _phaseBuffer, _densities, _normalsBuffer, _accelerations, _xsph, _obstacles;
-        IComputeBuffer _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals;
-        ParticleSorter _sorter;
+        IComputeBuffer _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits;
+        IComputeBuffer _boundaryRest, _boundaryPlaced, _boundarySorted, _boundaryPressures;
+        ParticleSorter _sorter, _boundarySorter;
         CellGrid _grid;
         bool _containerChanged = true;
+        bool _boundaryMoved = true;
+        int _boundaryCount;
         IReadbackRequest _motionReadback, _diagnosticsReadback;
         double _diagnosticsRequestTime;
         readonly Vector4[] _motionRow = new Vector4[1];
@@ -68,11 +73,13 @@ namespace SphFluid.Simulation
             _solver = device.LoadProgram(SolverProgramName);
             _diagnostics = device.LoadProgram(DiagnosticsProgramName);
             _halfStep = _solver.FindKernel("HalfStep");
+            _placeBoundary = _solver.FindKernel("PlaceBoundary");
             _densityPressure = _solver.FindKernel("DensityPressure");
+            _wallPressure = _solver.FindKernel("WallPressure");
             _normals = _solver.FindKernel("Normals");
             _forces = _solver.FindKernel("Forces");
-            _obstacleForces = _solver.FindKernel("ObstacleForces");
             _fullStep = _solver.FindKernel("FullStep");
+            _solverKernels = new[] { _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep };
             _motionPartial = _diagnostics.FindKernel("MotionPartial");
             _motionFinal = _diagnostics.FindKernel("MotionFinal");
             _diagnosticsPartial = _diagnostics.FindKernel("DiagnosticsPartial");
@@ -81,6 +88,7 @@ namespace SphFluid.Simulation
             try
             {
                 CreateBuffers();
+                CreateBoundary();
                 UploadConstants();
                 UploadObstacles();
                 Reset();
@@ -114,6 +122,12 @@ namespace SphFluid.Simulation
         /// <summary>Per particle: XSPH velocity correction (xyz) when XSPH is on, m/s.</summary>
         public IComputeBuffer XsphCorrections => _xsph;
 
+        /// <summary>The boundary particles (<see cref="BoundaryParticle"/>) in world space, sorted by grid cell.</summary>
+        public IComputeBuffer BoundaryParticles => _boundarySorted;
+
+        /// <summary>Number of boundary particles (container walls and obstacles).</summary>
+        public int BoundaryCount => _boundaryCount;
+
         /// <summary>The neighbour grid (container-local cells of size h).</summary>
         public CellGrid Grid => _grid;
 
@@ -141,8 +155,8 @@ namespace SphFluid.Simulation
         /// <summary>Names of the GPU timing ranges a frame may record (device.TryGetSampleMilliseconds).</summary>
         public static IReadOnlyList<string> SampleNames { get; } = new[]
         {
-            PassNames.UploadContainer, PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.Normals,
-            PassNames.Forces, PassNames.ObstacleForces, PassNames.FullStep, PassNames.MotionReduction, PassNames.Diagnostics,
+            PassNames.UploadContainer, PassNames.PlaceBoundary, PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals,
+            PassNames.Forces, PassNames.FullStep, PassNames.MotionReduction, PassNames.Diagnostics,
         };
 
         /// <summary>Advances the simulation by one frame of <paramref name="frameSeconds"/> real time, in as
@@ -190,6 +204,14 @@ namespace SphFluid.Simulation
                 UploadContainer();
                 _device.EndSample(PassNames.UploadContainer);
             }
+            if (_boundaryMoved)
+            {
+                _device.BeginSample(PassNames.PlaceBoundary);
+                _device.DispatchThreads(_solver, _placeBoundary, _boundaryCount);
+                _boundarySorter.Sort(_grid, _boundaryPlaced, _boundarySorted, _boundaryCount);
+                _device.EndSample(PassNames.PlaceBoundary);
+                _boundaryMoved = false;
+            }
         }
 
         /// <summary>One Velocity Verlet sub-step: kick-drift, re-sort, forces, kick.</summary>
@@ -221,6 +243,10 @@ namespace SphFluid.Simulation
             _device.DispatchThreads(_solver, _densityPressure, ParticleCount);
             _device.EndSample(PassNames.DensityPressure);
 
+            _device.BeginSample(PassNames.WallPressure);
+            _device.DispatchThreads(_solver, _wallPressure, _boundaryCount);
+            _device.EndSample(PassNames.WallPressure);
+
             if (Plan.SurfaceTension)
             {
                 _device.BeginSample(PassNames.Normals);
@@ -231,13 +257,6 @@ namespace SphFluid.Simulation
             _device.BeginSample(PassNames.Forces);
             _device.DispatchThreads(_solver, _forces, ParticleCount);
             _device.EndSample(PassNames.Forces);
-
-            if (Plan.Obstacles)
-            {
-                _device.BeginSample(PassNames.ObstacleForces);
-                _device.DispatchThreads(_solver, _obstacleForces, ParticleCount);
-                _device.EndSample(PassNames.ObstacleForces);
-            }
         }
 
         /// <summary>Re-sorts and recomputes density, pressure and accelerations for the current particles
@@ -276,7 +295,12 @@ namespace SphFluid.Simulation
             _scene.Container = container.Clone();
             _containerChanged = true;
             if (old.Size != container.Size)
+            {
                 RebuildGrid();
+                CreateBoundary();
+            }
+            if (old.Friction != container.Friction)
+                UploadConstants();
         }
 
         /// <summary>Replaces the sphere obstacles (any count up to <see cref="FluidSceneDescription.MaxObstacles"/>).</summary>
@@ -292,8 +316,20 @@ namespace SphFluid.Simulation
             foreach (var e in probe.Validate())
                 if (e.Field.StartsWith("Obstacles", StringComparison.Ordinal)) errors.Add(e.Message);
             if (errors.Count > 0) throw new ArgumentException(string.Join("\n", errors));
+            bool reshaped = !SameShapes(_scene.Obstacles, list);
             _scene.Obstacles = list;
             UploadObstacles();
+            if (reshaped) CreateBoundary();
+        }
+
+        /// <summary>Same count and radii: the boundary particles only move with the spheres.</summary>
+        static bool SameShapes(IReadOnlyList<SphereObstacleDescription> a, IReadOnlyList<SphereObstacleDescription> b)
+        {
+            int na = a == null ? 0 : a.Count, nb = b == null ? 0 : b.Count;
+            if (na != nb) return false;
+            for (int i = 0; i < na; i++)
+                if (a[i].Radius != b[i].Radius) return false;
+            return true;
         }
 
         /// <summary>Respawns every particle as at construction and computes the first forces.</summary>
@@ -310,6 +346,7 @@ namespace SphFluid.Simulation
             _diagnosticsReadback = null;
             LatestDiagnostics = null;
             _particles.SetData(_spawn);
+            _clampHits.SetData(new uint[1]);
             ComputeForces();
         }
 
@@ -347,7 +384,7 @@ namespace SphFluid.Simulation
         {
             ThrowIfDisposed();
             DispatchDiagnostics();
-            var rows = new Vector4[1 + _phases.Count];
+            var rows = new Vector4[2 + _phases.Count];
             _diagnosticsTotals.GetData(rows);
             return ToReport(rows, SimulatedTime);
         }
@@ -366,7 +403,7 @@ namespace SphFluid.Simulation
             var request = _diagnosticsReadback;
             _diagnosticsReadback = null;
             if (request.HasError) return;
-            var rows = new Vector4[1 + _phases.Count];
+            var rows = new Vector4[2 + _phases.Count];
             request.GetData(rows);
             _latestDiagnostics = ToReport(rows, _diagnosticsRequestTime);
         }
@@ -382,7 +419,8 @@ namespace SphFluid.Simulation
                 mass += (double)count * _phaseTable[k].ParticleMass;
                 phases[k] = new PhaseDiagnostics(_phases[k].Name, count, row.Y, row.Z);
             }
-            return new DiagnosticsReport(mass, rows[0].X, rows[0].Y, (int)Math.Round(rows[0].Z), (int)Math.Round(rows[0].W), phases, time);
+            return new DiagnosticsReport(mass, rows[0].X, rows[0].Y, (int)Math.Round(rows[0].Z), (int)Math.Round(rows[0].W), phases, time,
+                (int)Math.Round(rows[1 + _phases.Count].X));
         }
 
         void RequestMotion()
@@ -433,7 +471,9 @@ namespace SphFluid.Simulation
             _motionPartials = _device.CreateBuffer("FluidSimulation.MotionPartials", _reductionGroups, 16);
             _motionTotals = _device.CreateBuffer("FluidSimulation.MotionTotals", 1, 16);
             _diagnosticsPartials = _device.CreateBuffer("FluidSimulation.DiagnosticsPartials", _reductionGroups * (1 + _phases.Count), 16);
-            _diagnosticsTotals = _device.CreateBuffer("FluidSimulation.DiagnosticsTotals", 1 + _phases.Count, 16);
+            _diagnosticsTotals = _device.CreateBuffer("FluidSimulation.DiagnosticsTotals", 2 + _phases.Count, 16);
+            _clampHits = _device.CreateBuffer("FluidSimulation.ClampHits", 1, 4);
+            _clampHits.SetData(new uint[1]);
 
             var zero = new Vector4[n];
             _accelerations.SetData(zero);
@@ -444,8 +484,9 @@ namespace SphFluid.Simulation
             RebuildGrid();
             BindParticleBuffers();
 
-            foreach (int k in new[] { _halfStep, _densityPressure, _normals, _forces, _obstacleForces, _fullStep })
+            foreach (int k in _solverKernels)
             {
+                _device.SetBuffer(_solver, k, _ids.ClampHits, _clampHits);
                 _device.SetBuffer(_solver, k, _ids.Phases, _phaseBuffer);
                 _device.SetBuffer(_solver, k, _ids.Densities, _densities);
                 _device.SetBuffer(_solver, k, _ids.Normals, _normalsBuffer);
@@ -463,7 +504,44 @@ namespace SphFluid.Simulation
                 _device.SetBuffer(_diagnostics, k, _ids.DiagnosticsPartials, _diagnosticsPartials);
                 _device.SetBuffer(_diagnostics, k, _ids.DiagnosticsTotals, _diagnosticsTotals);
                 _device.SetBuffer(_diagnostics, k, _ids.Obstacles, _obstacles);
+                _device.SetBuffer(_diagnostics, k, _ids.ClampHits, _clampHits);
             }
+        }
+
+        /// <summary>Samples the walls and obstacles (BoundarySampling) into new boundary buffers and a sorter for
+        /// them; they are placed in the world and sorted before the next sub-step.</summary>
+        void CreateBoundary()
+        {
+            ReleaseBoundary();
+            var rest = BoundarySampling.Sample(_scene);
+            _boundaryCount = rest.Length;
+            _boundaryRest = _device.CreateBuffer("FluidSimulation.BoundaryRest", _boundaryCount, BoundaryParticle.Stride);
+            _boundaryRest.SetData(rest);
+            _boundaryPlaced = _device.CreateBuffer("FluidSimulation.BoundaryPlaced", _boundaryCount, BoundaryParticle.Stride);
+            _boundarySorted = _device.CreateBuffer("FluidSimulation.BoundarySorted", _boundaryCount, BoundaryParticle.Stride);
+            _boundaryPressures = _device.CreateBuffer("FluidSimulation.BoundaryPressures", _boundaryCount, 4);
+            _boundaryPressures.SetData(new float[_boundaryCount]);
+            _boundarySorter = new ParticleSorter(_device, _boundaryCount, _grid.CellCount);
+            foreach (int k in _solverKernels)
+            {
+                _device.SetBuffer(_solver, k, _ids.BoundaryRest, _boundaryRest);
+                _device.SetBuffer(_solver, k, _ids.BoundaryPlaced, _boundaryPlaced);
+                _device.SetBuffer(_solver, k, _ids.BoundaryParticles, _boundarySorted);
+                _device.SetBuffer(_solver, k, _ids.BoundaryPressures, _boundaryPressures);
+                _device.SetBuffer(_solver, k, _ids.BoundaryCellStart, _boundarySorter.CellStart);
+                _device.SetBuffer(_solver, k, _ids.BoundaryCellCount, _boundarySorter.CellCount);
+            }
+            _device.SetInt(_solver, _ids.BoundaryCount, _boundaryCount);
+            _boundaryMoved = true;
+        }
+
+        void ReleaseBoundary()
+        {
+            foreach (var buffer in new[] { _boundaryRest, _boundaryPlaced, _boundarySorted, _boundaryPressures })
+                buffer?.Dispose();
+            _boundaryRest = _boundaryPlaced = _boundarySorted = _boundaryPressures = null;
+            _boundarySorter?.Dispose();
+            _boundarySorter = null;
         }
 
         /// <summary>A new grid for the container's size (and a larger sorter if it needs more cells).</summary>
@@ -476,7 +554,7 @@ namespace SphFluid.Simulation
                 _sorter?.Dispose();
                 _sorter = null;
                 _sorter = new ParticleSorter(_device, ParticleCount, _grid.CellCount);
-                foreach (int k in new[] { _halfStep, _densityPressure, _normals, _forces, _obstacleForces, _fullStep })
+                foreach (int k in _solverKernels)
                 {
                     _device.SetBuffer(_solver, k, _ids.CellStart, _sorter.CellStart);
                     _device.SetBuffer(_solver, k, _ids.CellCount, _sorter.CellCount);
@@ -495,7 +573,7 @@ namespace SphFluid.Simulation
 
         void BindParticleBuffers()
         {
-            foreach (int k in new[] { _halfStep, _densityPressure, _normals, _forces, _obstacleForces, _fullStep })
+            foreach (int k in _solverKernels)
                 _device.SetBuffer(_solver, k, _ids.Particles, _particles);
             foreach (int k in new[] { _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal })
                 _device.SetBuffer(_diagnostics, k, _ids.Particles, _particles);
@@ -510,18 +588,16 @@ namespace SphFluid.Simulation
             {
                 _device.SetInt(program, _ids.ParticleCount, ParticleCount);
                 _device.SetFloat(program, _ids.ParticleSpacing, s.ParticleSpacing);
-                _device.SetFloat(program, _ids.BoundaryStiffness, s.BoundaryStiffness);
-                _device.SetFloat(program, _ids.BoundaryDamping, s.BoundaryDamping);
             }
             _device.SetInt(_diagnostics, _ids.PhaseCount, _phases.Count);
             _device.SetInt(_diagnostics, _ids.ReductionGroupCount, _reductionGroups);
 
             _device.SetFloat(_solver, _ids.SmoothingRadius, (float)h);
             _device.SetFloat(_solver, _ids.SmoothingRadius2, (float)(h * h));
-            _device.SetFloat(_solver, _ids.SpikyCoefficient, (float)(15.0 / (Math.PI * Math.Pow(h, 6))));
-            _device.SetFloat(_solver, _ids.Poly6Coefficient, (float)(315.0 / (64.0 * Math.PI * Math.Pow(h, 9))));
-            _device.SetFloat(_solver, _ids.SpikyGradientCoefficient, (float)(45.0 / (Math.PI * Math.Pow(h, 6))));
-            _device.SetFloat(_solver, _ids.ViscosityLaplacianCoefficient, (float)(45.0 / (Math.PI * Math.Pow(h, 6))));
+            _device.SetFloat(_solver, _ids.KernelCoefficient, (float)(8.0 / (Math.PI * h * h * h)));
+            _device.SetFloat(_solver, _ids.GradientCoefficient, (float)(8.0 / (Math.PI * h * h * h * h)));
+            _device.SetFloat(_solver, _ids.ArtificialViscosity, (float)(s.ArtificialViscosity * _timeStep.SpeedOfSound * 0.5 * h));
+            _device.SetFloat(_solver, _ids.WallFriction, _scene.Container.Friction == WallFriction.NoSlip ? 1f : 0f);
             _device.SetFloat(_solver, _ids.CohesionCoefficient, (float)(32.0 / (Math.PI * Math.Pow(h, 9))));
             _device.SetFloat(_solver, _ids.Stiffness, s.Stiffness);
             _device.SetFloat(_solver, _ids.Gamma, s.Gamma);
@@ -540,14 +616,12 @@ namespace SphFluid.Simulation
                 Matrix4x4.CreateTranslation(-c.Position) * Matrix4x4.CreateFromQuaternion(Quaternion.Conjugate(rotation)));
             Matrix4x4 containerToWorld = Matrix4x4.Transpose(
                 Matrix4x4.CreateFromQuaternion(rotation) * Matrix4x4.CreateTranslation(c.Position));
-            var halfExtent = c.Size * 0.5f - new Vector3(0.5f * _scene.Settings.ParticleSpacing);
             var clampExtent = c.Size * 0.5f - new Vector3(ClampInset * _scene.Settings.ParticleSpacing);
             foreach (var program in new[] { _solver, _diagnostics })
             {
                 _device.SetMatrix(program, _ids.WorldToContainer, worldToContainer);
                 _device.SetMatrix(program, _ids.ContainerToWorld, containerToWorld);
                 _device.SetVector(program, _ids.ContainerCenter, new Vector4(c.Position, 0f));
-                _device.SetVector(program, _ids.ContainerHalfExtent, new Vector4(halfExtent, 0f));
                 _device.SetVector(program, _ids.ContainerClampExtent, new Vector4(clampExtent, 0f));
                 _device.SetVector(program, _ids.ContainerHalfSize, new Vector4(c.Size * 0.5f, 0f));
                 _device.SetVector(program, _ids.ContainerVelocity, new Vector4(c.Velocity, 0f));
@@ -555,6 +629,7 @@ namespace SphFluid.Simulation
             }
             _grid.SetOn(_device, _solver);
             _containerChanged = false;
+            _boundaryMoved = true;
         }
 
         void UploadObstacles()
@@ -566,6 +641,7 @@ namespace SphFluid.Simulation
             _obstacles.SetData(rows, 0, 0, Math.Max(count, 1));
             foreach (var program in new[] { _solver, _diagnostics })
                 _device.SetInt(program, _ids.ObstacleCount, count);
+            _boundaryMoved = true;
         }
 
         static FluidSceneDescription CopyOf(FluidSceneDescription scene)
@@ -597,10 +673,11 @@ namespace SphFluid.Simulation
             _motionReadback = null;
             _diagnosticsReadback = null;
             foreach (var buffer in new[] { _particles, _particlesOther, _phaseBuffer, _densities, _normalsBuffer, _accelerations,
-                         _xsph, _obstacles, _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals })
+                         _xsph, _obstacles, _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits })
                 buffer?.Dispose();
             _particles = _particlesOther = _phaseBuffer = _densities = _normalsBuffer = _accelerations = null;
-            _xsph = _obstacles = _motionPartials = _motionTotals = _diagnosticsPartials = _diagnosticsTotals = null;
+            _xsph = _obstacles = _motionPartials = _motionTotals = _diagnosticsPartials = _diagnosticsTotals = _clampHits = null;
+            ReleaseBoundary();
             _sorter?.Dispose();
             _sorter = null;
         }
@@ -616,9 +693,10 @@ namespace SphFluid.Simulation
             public readonly int Particles, Phases, Densities, Normals, Accelerations, XsphCorrections, Obstacles, CellStart, CellCount;
             public readonly int MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
             public readonly int ParticleCount, PhaseCount, ReductionGroupCount, ObstacleCount, TimeStep;
-            public readonly int SmoothingRadius, SmoothingRadius2, SpikyCoefficient, Poly6Coefficient, SpikyGradientCoefficient, ViscosityLaplacianCoefficient, CohesionCoefficient;
-            public readonly int Stiffness, Gamma, Gravity, XsphEpsilon, VelocityDamping, ParticleSpacing, BoundaryStiffness, BoundaryDamping;
-            public readonly int WorldToContainer, ContainerToWorld, ContainerCenter, ContainerHalfExtent, ContainerClampExtent, ContainerHalfSize, ContainerVelocity, ContainerAngularVelocity;
+            public readonly int SmoothingRadius, SmoothingRadius2, KernelCoefficient, GradientCoefficient, CohesionCoefficient;
+            public readonly int Stiffness, Gamma, Gravity, XsphEpsilon, VelocityDamping, ParticleSpacing, WallFriction, ArtificialViscosity;
+            public readonly int WorldToContainer, ContainerToWorld, ContainerCenter, ContainerClampExtent, ContainerHalfSize, ContainerVelocity, ContainerAngularVelocity;
+            public readonly int BoundaryRest, BoundaryPlaced, BoundaryParticles, BoundaryPressures, BoundaryCellStart, BoundaryCellCount, BoundaryCount, ClampHits;
 
             public ShaderIds(IComputeDevice d)
             {
@@ -642,10 +720,18 @@ namespace SphFluid.Simulation
                 TimeStep = d.PropertyId("_TimeStep");
                 SmoothingRadius = d.PropertyId("_SmoothingRadius");
                 SmoothingRadius2 = d.PropertyId("_SmoothingRadius2");
-                SpikyCoefficient = d.PropertyId("_SpikyCoefficient");
-                Poly6Coefficient = d.PropertyId("_Poly6Coefficient");
-                SpikyGradientCoefficient = d.PropertyId("_SpikyGradientCoefficient");
-                ViscosityLaplacianCoefficient = d.PropertyId("_ViscosityLaplacianCoefficient");
+                KernelCoefficient = d.PropertyId("_KernelCoefficient");
+                GradientCoefficient = d.PropertyId("_GradientCoefficient");
+                WallFriction = d.PropertyId("_WallFriction");
+                ArtificialViscosity = d.PropertyId("_ArtificialViscosity");
+                BoundaryRest = d.PropertyId("_BoundaryRest");
+                BoundaryPlaced = d.PropertyId("_BoundaryPlaced");
+                BoundaryParticles = d.PropertyId("_BoundaryParticles");
+                BoundaryPressures = d.PropertyId("_BoundaryPressures");
+                BoundaryCellStart = d.PropertyId("_BoundaryCellStart");
+                BoundaryCellCount = d.PropertyId("_BoundaryCellCount");
+                BoundaryCount = d.PropertyId("_BoundaryCount");
+                ClampHits = d.PropertyId("_ClampHits");
                 CohesionCoefficient = d.PropertyId("_CohesionCoefficient");
                 Stiffness = d.PropertyId("_Stiffness");
                 Gamma = d.PropertyId("_Gamma");
@@ -653,12 +739,9 @@ namespace SphFluid.Simulation
                 XsphEpsilon = d.PropertyId("_XsphEpsilon");
                 VelocityDamping = d.PropertyId("_VelocityDamping");
                 ParticleSpacing = d.PropertyId("_ParticleSpacing");
-                BoundaryStiffness = d.PropertyId("_BoundaryStiffness");
-                BoundaryDamping = d.PropertyId("_BoundaryDamping");
                 WorldToContainer = d.PropertyId("_WorldToContainer");
                 ContainerToWorld = d.PropertyId("_ContainerToWorld");
                 ContainerCenter = d.PropertyId("_ContainerCenter");
-                ContainerHalfExtent = d.PropertyId("_ContainerHalfExtent");
                 ContainerHalfSize = d.PropertyId("_ContainerHalfSize");
                 ContainerClampExtent = d.PropertyId("_ContainerClampExtent");
                 ContainerVelocity = d.PropertyId("_ContainerVelocity");

@@ -4,12 +4,13 @@ namespace SphFluid.Simulation
     public static class PassNames
     {
         public const string UploadContainer = "UploadContainer";
+        public const string PlaceBoundary = "PlaceBoundary";
         public const string HalfStep = "HalfStep";
         public const string Sort = "Sort";
         public const string DensityPressure = "DensityPressure";
+        public const string WallPressure = "WallPressure";
         public const string Normals = "Normals";
         public const string Forces = "Forces";
-        public const string ObstacleForces = "ObstacleForces";
         public const string FullStep = "FullStep";
         public const string MotionReduction = "MotionReduction";
         public const string Diagnostics = "Diagnostics";

@@ -21,7 +21,8 @@ namespace SphFluid.Simulation
         /// <summary>XsphEpsilon &gt; 0: XSPH velocity correction in the force pass (XSPH).</summary>
         public bool Xsph { get; }
 
-        /// <summary>At least one sphere obstacle: obstacle force pass and obstacle clamp (OBSTACLES).</summary>
+        /// <summary>At least one sphere obstacle: its boundary particles are placed and sorted every frame it moves,
+        /// and the sphere clamp runs (OBSTACLES).</summary>
         public bool Obstacles { get; }
 
         /// <summary>VelocityDamping &gt; 0.</summary>
@@ -57,15 +58,15 @@ namespace SphFluid.Simulation
             if (Obstacles) keywords.Add(SolverKeywords.Obstacles);
             Keywords = keywords;
 
-            var passes = new List<string> { PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure };
+            var passes = new List<string> { PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure };
             if (SurfaceTension) passes.Add(PassNames.Normals);
             passes.Add(PassNames.Forces);
-            if (Obstacles) passes.Add(PassNames.ObstacleForces);
             passes.Add(PassNames.FullStep);
             SubstepPasses = passes;
 
             var frame = new List<string>();
             if (UploadContainerTransform) frame.Add(PassNames.UploadContainer);
+            if (UploadContainerTransform || Obstacles) frame.Add(PassNames.PlaceBoundary);
             frame.Add(PassNames.MotionReduction);
             FramePasses = frame;
         }

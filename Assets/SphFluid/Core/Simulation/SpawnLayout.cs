@@ -6,7 +6,8 @@ namespace SphFluid.Simulation
     /// <summary>
     /// Fills spawn boxes with particles on a regular lattice of spacing s, centred in the box (so the
     /// outermost particles sit s/2 inside each face and adjacent boxes continue the lattice seamlessly),
-    /// each moved by a small deterministic jitter drawn from the box's seed and kept inside the box.
+    /// each moved by a small deterministic jitter drawn from the box's seed and kept inside the box, then
+    /// lowered into hydrostatic equilibrium (<see cref="HydrostaticSpawn"/>).
     /// </summary>
     public static class SpawnLayout
     {
@@ -53,6 +54,7 @@ namespace SphFluid.Simulation
                 uint phase = (uint)IndexOf(phases, box.Phase.Name);
                 next = Fill(scene.Settings, box, phase, particles, next);
             }
+            HydrostaticSpawn.Apply(scene, particles);
             return particles;
         }
 

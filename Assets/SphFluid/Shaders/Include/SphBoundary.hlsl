@@ -1,36 +1,43 @@
 #ifndef SPHFLUID_SPH_BOUNDARY_INCLUDED
 #define SPHFLUID_SPH_BOUNDARY_INCLUDED
 
-// Container and sphere-obstacle boundaries: a penalty force plus a final clamp.
-// Container = box with centre c, rotation R, size S, moving with linear velocity V and angular
-// velocity w (world). A particle's container-local position is q = R^T (x - c).
-// Penalty (spring-damper, the dissertation's F = -k (r_p - r_b) plus damping; cf. Monaghan 1994's
-// repulsive boundaries and Becker & Teschner 2007, sec. 5): on every axis where |q_a| > H_a,
-// H = S/2 - s/2 (half a spacing off the wall, where a spawned lattice particle sits), with outward
-// normal n and penetration d = |q_a| - H_a,
-//   a += -kb d n - cb max(0, (v - v_wall) . n) n        (damping only while moving outward)
-// kb [1/s^2], cb [1/s], v_wall(x) = V + w x (x - c): the walls push the fluid with their own velocity.
-// Clamp (after every position update): q_a is put back into [-Hc_a, Hc_a] and the outward normal
-// component of the velocity relative to the wall is removed, so no particle can ever leave, however
-// stiff the flow or fast the container.
-// DEVIATION from the team notes (which clamp at H itself): the clamp sits at Hc = S/2 - s/100, just
-// inside the wall, not at H. Clamping at H would put every particle that enters the penalty zone back
-// on its edge before the next force pass, so the penalty force would never act (only the hard clamp
-// would, stacking a layer of particles exactly at H). With the clamp at the wall the spring-damper
-// does the work and the clamp is the last-resort guarantee it is meant to be.
-// Sphere obstacle (centre o, radius R, velocity u): the same with the penalty surface at R + s/2, the
-// clamp surface at R + s/100 and the normal pointing out of the sphere.
+#include "SphKernels.hlsl"
+#include "BoundaryParticle.hlsl"
+
+// Walls and obstacles made of particles. The container's walls and every sphere obstacle are sampled
+// with boundary particles (BoundarySampling.cs): a shell of ceil(H / s) layers on the fluid's lattice, so
+// a fluid particle next to a wall finds the neighbourhood it would have inside the fluid. They take part
+// in density and pressure (Akinci, Ihmsen, Akinci, Solenthaler & Teschner 2012, "Versatile rigid-fluid
+// coupling for incompressible SPH", SIGGRAPH 2012: a boundary particle b adds its volume to the fluid's
+// density sum and receives a pressure force), with each particle's volume V_b carried as the weight
+// omega_b = V_b delta0 (1 for a shell on the fluid's lattice):
+//   delta_i += sum_b omega_b W(r_ib)
+//   F_i^p   += -sum_b omega_b (p_i + p_b) / delta_i^2 gradW(r_ib)
+// where the boundary particle's pressure is the fluid's around it, extrapolated hydrostatically as in
+// Adami, Hu & Adams 2012 ("A generalized wall boundary condition for smoothed particle hydrodynamics",
+// JCP 231, eq. 27), one pass over the boundary particles per sub-step (WallPressure):
+//   p_b = max(0, sum_f (p_f + rho_f (g - a_b) . (x_b - x_f)) W(r_bf) / sum_f W(r_bf))
+// (a_b, the wall's acceleration, is left out: walls move smoothly at frame rate). Without the
+// hydrostatic term the bottom layer carries the column only by compressing more than the fluid above it,
+// and with the fluid's own pressure mirrored instead (p_b = p_i, one pair at a time) the wall force is not
+// the same for every fluid neighbour of a wall particle: measured, that pumped energy into a tank at rest
+// through its corners.
+// Friction: the viscous term of SphViscosity.hlsl against the wall's velocity, times _WallFriction
+// (0 = free slip, 1 = no slip).
+// A clamp (after every position update) remains as the last resort: a particle centre beyond the wall
+// (or inside a sphere) is put back on it and loses its outward velocity. Every catch is counted in
+// _ClampHits[0], which the diagnostics report; it stays at zero in normal runs.
+// Container = box with centre c, rotation R, size S, linear velocity V and angular velocity w (world).
+// A particle's container-local position is q = R^T (x - c).
 
 float4x4 _WorldToContainer;        // q = mul(_WorldToContainer, float4(x, 1)).xyz = R^T (x - c)
 float4x4 _ContainerToWorld;        // x = mul(_ContainerToWorld, float4(q, 1)).xyz = R q + c
 float3 _ContainerCenter;           // c, m
-float3 _ContainerHalfExtent;       // H = S/2 - s/2, m: where the penalty begins
 float3 _ContainerClampExtent;      // Hc = S/2 - s/100, m: the clamp (no particle centre beyond)
 float3 _ContainerVelocity;         // V, m/s
 float3 _ContainerAngularVelocity;  // w, rad/s
-float _BoundaryStiffness;          // kb, 1/s^2
-float _BoundaryDamping;            // cb, 1/s
 float _ParticleSpacing;            // s, m
+float _WallFriction;               // 0 free slip, 1 no slip
 
 struct SphereObstacle
 {
@@ -63,32 +70,48 @@ float3 ContainerWallVelocity(float3 x)
     return _ContainerVelocity + cross(_ContainerAngularVelocity, x - _ContainerCenter);
 }
 
-float3 ContainerPenaltyAcceleration(float3 x, float3 v)
+// A rest-frame boundary particle placed in the world with its owner's current pose and velocity.
+BoundaryParticle PlaceBoundaryParticle(BoundaryParticle rest)
 {
-    float3 q = ContainerLocal(x);
-    float3 relative = ContainerDirectionToLocal(v - ContainerWallVelocity(x));
-    float3 excess = abs(q) - _ContainerHalfExtent;
-    float3 a = float3(0.0, 0.0, 0.0);
-    [unroll]
-    for (int axis = 0; axis < 3; axis++)
+    BoundaryParticle placed = rest;
+    if (rest.owner == BOUNDARY_OWNER_CONTAINER)
     {
-        if (excess[axis] > 0.0)
-        {
-            float outward = q[axis] >= 0.0 ? 1.0 : -1.0;
-            float approach = max(0.0, relative[axis] * outward);
-            a[axis] = -outward * (_BoundaryStiffness * excess[axis] + _BoundaryDamping * approach);
-        }
+        placed.position = mul(_ContainerToWorld, float4(rest.position, 1.0)).xyz;
+        placed.velocity = ContainerWallVelocity(placed.position);
     }
-    return ContainerDirectionToWorld(a);
+    else
+    {
+        SphereObstacle sphere = _Obstacles[min(rest.owner, max(_ObstacleCount, 1u) - 1u)];
+        placed.position = sphere.center + rest.position;
+        placed.velocity = sphere.velocity;
+    }
+    return placed;
 }
 
-// Puts x back inside the container and removes the outward wall-relative normal velocity.
-void ContainerClamp(inout float3 x, inout float3 v)
+// One fluid neighbour's share of a wall particle's pressure: (p_f + rho_f g . (x_b - x_f)) W, and W.
+float2 WallPressureTerm(float pressureF, float densityF, float3 gravity, float3 fluidToWall, float weight)
+{
+    return float2((pressureF + densityF * dot(gravity, fluidToWall)) * weight, weight);
+}
+
+float WallPressureOf(float2 sums)
+{
+    return sums.y > 0.0 ? max(0.0, sums.x / sums.y) : 0.0;
+}
+
+// Pressure force on fluid particle i from boundary particle b (divide by m_i).
+float3 BoundaryPressureForcePair(float pressureI, float boundaryPressure, float numberDensityI, float weight, float3 gradient)
+{
+    return -(weight * (pressureI + boundaryPressure) / (numberDensityI * numberDensityI)) * gradient;
+}
+
+// Puts x back inside the container and removes the outward wall-relative normal velocity; true if it did.
+bool ContainerClamp(inout float3 x, inout float3 v)
 {
     float3 q = ContainerLocal(x);
     float3 clamped = clamp(q, -_ContainerClampExtent, _ContainerClampExtent);
     if (all(clamped == q))
-        return;
+        return false;
     float3 xClamped = mul(_ContainerToWorld, float4(clamped, 1.0)).xyz;
     float3 wall = ContainerWallVelocity(xClamped);
     float3 relative = ContainerDirectionToLocal(v - wall);
@@ -104,6 +127,7 @@ void ContainerClamp(inout float3 x, inout float3 v)
     }
     x = xClamped;
     v = wall + ContainerDirectionToWorld(relative);
+    return true;
 }
 
 float3 ObstacleNormal(float3 d, float distance)
@@ -111,27 +135,10 @@ float3 ObstacleNormal(float3 d, float distance)
     return distance > 0.0 ? d / distance : float3(0.0, 1.0, 0.0);
 }
 
-float3 ObstaclePenaltyAcceleration(float3 x, float3 v)
+// Puts x back outside every sphere and removes the inward sphere-relative normal velocity; true if it did.
+bool ObstacleClamp(inout float3 x, inout float3 v)
 {
-    float3 a = float3(0.0, 0.0, 0.0);
-    for (uint o = 0u; o < _ObstacleCount; o++)
-    {
-        SphereObstacle sphere = _Obstacles[o];
-        float3 d = x - sphere.center;
-        float distance = length(d);
-        float surface = sphere.radius + 0.5 * _ParticleSpacing;
-        if (distance < surface)
-        {
-            float3 n = ObstacleNormal(d, distance);
-            float approach = max(0.0, -dot(v - sphere.velocity, n));
-            a += n * (_BoundaryStiffness * (surface - distance) + _BoundaryDamping * approach);
-        }
-    }
-    return a;
-}
-
-void ObstacleClamp(inout float3 x, inout float3 v)
-{
+    bool caught = false;
     for (uint o = 0u; o < _ObstacleCount; o++)
     {
         SphereObstacle sphere = _Obstacles[o];
@@ -145,8 +152,10 @@ void ObstacleClamp(inout float3 x, inout float3 v)
             float inward = dot(v - sphere.velocity, n);
             if (inward < 0.0)
                 v -= inward * n;
+            caught = true;
         }
     }
+    return caught;
 }
 
 #endif

@@ -1,52 +1,54 @@
 #ifndef SPHFLUID_SPH_KERNELS_INCLUDED
 #define SPHFLUID_SPH_KERNELS_INCLUDED
 
-// SPH smoothing kernels of support radius h (Mueller, Charypar & Gross 2003, "Particle-based fluid
-// simulation for interactive applications", SCA 2003, eqs. 20-22; Spiky after Desbrun & Gascuel 1996):
-//   Spiky                 Ws(r)       = 15 / (pi h^6) (h - r)^3                  for r < h, else 0
-//   Spiky gradient        gradW(r_ij) = -45 / (pi h^6) (h - r)^2 r_ij / r        (0 at r = 0)
-//   Poly6                 W(r)        = 315 / (64 pi h^9) (h^2 - r^2)^3          (XSPH only)
-//   viscosity Laplacian   lapW(r)     = 45 / (pi h^6) (h - r)
-// DEVIATION from the team notes (which use Poly6 for the number density): the number density uses the
-// Spiky kernel, the very kernel whose gradient the pressure force uses. With Poly6 density and Spiky
-// gradient the pressure force is not the gradient of any potential energy (the SPH Lagrangian needs one
-// kernel for both; Price 2012, "Smoothed particle hydrodynamics and magnetohydrodynamics", JCP 231,
-// sec. 3), and measured on a 256-particle tank without XSPH the mismatch pumped energy in: the fluid
-// "boiled" at ~2 m/s for as long as it ran. With one kernel the same tank comes to rest. Spiky's
-// gradient does not vanish as r -> 0, so close particles still repel (Poly6's would let them clump).
-// The coefficients are computed once in double precision on the CPU (FluidSimulation) and uploaded:
-// h^9 underflows single precision's comfortable range for small h.
+// ONE smoothing kernel for every sum of the solver: the cubic B-spline of Monaghan & Lattanzio 1985
+// ("A refined particle method for astrophysical problems", A&A 149), in the support-radius form used by
+// Ihmsen et al. 2014 ("SPH fluids in computer graphics", Eurographics STAR). With support H (= the
+// grid cell size, _SmoothingRadius) and q = r / H:
+//   W(q)     = sigma * { 6 (q^3 - q^2) + 1     0 <= q <= 1/2
+//                      { 2 (1 - q)^3           1/2 < q <= 1
+//                      { 0                     q > 1,                 sigma = 8 / (pi H^3)
+//   gradW    = (sigma / H) w'(q) r_ij / r,  w'(q) = 6 (3 q^2 - 2 q) or -6 (1 - q)^2
+// Density, the pressure gradient, viscosity, XSPH and the surface normals all use this one kernel, so
+// the pressure force is the gradient of the SPH potential energy (Price 2012, "Smoothed particle
+// hydrodynamics and magnetohydrodynamics", JCP 231, sec. 3) and the fluid can sit still.
+// Why this kernel at H = 2 spacings by default: on the cubic spawn lattice it sums to the lattice
+// number density to 1e-5 and reproduces a linear pressure field's gradient to 2 % (the Spiky kernel
+// the solver used before recovered 77 %, so a tank at rest was 32 % too steep in pressure);
+// SmoothingKernels.LatticeGradientReproduction (C#) prints the figure for any support.
+// The coefficients are computed once in double precision on the CPU (FluidSimulation) and uploaded.
 
-float _SmoothingRadius;               // h, m
-float _SmoothingRadius2;              // h^2, m^2
-float _SpikyCoefficient;              // 15 / (pi h^6)
-float _Poly6Coefficient;              // 315 / (64 pi h^9)
-float _SpikyGradientCoefficient;      // 45 / (pi h^6) (the sign is applied below)
-float _ViscosityLaplacianCoefficient; // 45 / (pi h^6)
+float _SmoothingRadius;   // H, the support radius, m
+float _SmoothingRadius2;  // H^2, m^2
+float _KernelCoefficient; // sigma = 8 / (pi H^3), 1/m^3
+float _GradientCoefficient; // sigma / H = 8 / (pi H^4), 1/m^4
 
-// The density kernel (number density delta_i = sum_j Ws(r_ij)).
-float SpikyKernel(float r2)
+float KernelShape(float q)
 {
-    float d = max(_SmoothingRadius - sqrt(r2), 0.0);
-    return _SpikyCoefficient * d * d * d;
+    float t = 1.0 - q;
+    float inner = 6.0 * (q * q * q - q * q) + 1.0;
+    float outer = 2.0 * t * t * t;
+    return q <= 0.5 ? inner : (q < 1.0 ? outer : 0.0);
 }
 
-float Poly6(float r2)
+float KernelShapeDerivative(float q)
 {
-    float d = max(_SmoothingRadius2 - r2, 0.0);
-    return _Poly6Coefficient * d * d * d;
+    float t = 1.0 - q;
+    float inner = 6.0 * (3.0 * q * q - 2.0 * q);
+    float outer = -6.0 * t * t;
+    return q <= 0.5 ? inner : (q < 1.0 ? outer : 0.0);
 }
 
-// gradW with respect to x_i of the pair (i, j), rij = x_i - x_j, r = |rij| > 0, r < h.
-float3 SpikyGradient(float3 rij, float r)
+// W(r) from r^2.
+float Kernel(float r2)
 {
-    float d = _SmoothingRadius - r;
-    return (-_SpikyGradientCoefficient * d * d / r) * rij;
+    return _KernelCoefficient * KernelShape(sqrt(r2) / _SmoothingRadius);
 }
 
-float ViscosityLaplacian(float r)
+// gradW with respect to x_i of the pair (i, j): rij = x_i - x_j, r = |rij| > 0.
+float3 KernelGradient(float3 rij, float r)
 {
-    return _ViscosityLaplacianCoefficient * (_SmoothingRadius - r);
+    return (_GradientCoefficient * KernelShapeDerivative(r / _SmoothingRadius) / r) * rij;
 }
 
 #endif

@@ -13,7 +13,7 @@ float _XsphEpsilon;
 
 float3 XsphPair(float3 velocityI, float3 velocityJ, float r2, float numberDensityI, float numberDensityJ)
 {
-    return (2.0 * Poly6(r2) / (numberDensityI + numberDensityJ)) * (velocityJ - velocityI);
+    return (2.0 * Kernel(r2) / (numberDensityI + numberDensityJ)) * (velocityJ - velocityI);
 }
 
 #endif

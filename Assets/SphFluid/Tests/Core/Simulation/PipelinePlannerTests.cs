@@ -26,12 +26,12 @@ namespace SphFluid.Tests.Core.Simulation
         public void NoObstacles_NoObstaclePass()
         {
             var plan = PipelinePlanner.Plan(SimulationTestScenes.OilOnWater(), false);
-            Assert.That(plan.SubstepPasses, Has.No.Member(PassNames.ObstacleForces));
+            Assert.That(plan.FramePasses, Has.No.Member(PassNames.PlaceBoundary), "walls at rest are placed once, not every frame");
             Assert.That(plan.Keywords, Has.No.Member(SolverKeywords.Obstacles));
             var scene = SimulationTestScenes.OilOnWater();
             scene.Obstacles.Add(new SphereObstacleDescription(Vector3.Zero, 0.05f, Vector3.Zero));
             plan = PipelinePlanner.Plan(scene, false);
-            Assert.That(plan.SubstepPasses, Has.Member(PassNames.ObstacleForces));
+            Assert.That(plan.FramePasses, Has.Member(PassNames.PlaceBoundary), "moving spheres re-place their boundary particles");
             Assert.That(plan.Keywords, Has.Member(SolverKeywords.Obstacles));
         }
 
@@ -76,12 +76,12 @@ namespace SphFluid.Tests.Core.Simulation
             var plan = PipelinePlanner.Plan(scene, true);
             Assert.That(plan.SubstepPasses, Is.EqualTo(new[]
             {
-                PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.Normals,
-                PassNames.Forces, PassNames.ObstacleForces, PassNames.FullStep,
+                PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals,
+                PassNames.Forces, PassNames.FullStep,
             }));
             string text = plan.ToString();
             Assert.That(text, Does.Contain("MULTIPHASE SURFACE_TENSION XSPH OBSTACLES"));
-            Assert.That(text, Does.Contain("HalfStep > Sort > DensityPressure > Normals > Forces > ObstacleForces > FullStep"));
+            Assert.That(text, Does.Contain("HalfStep > Sort > DensityPressure > WallPressure > Normals > Forces > FullStep"));
         }
     }
 }

@@ -31,7 +31,7 @@ namespace SphFluid.Tests.Core.Simulation
         {
             var scene = SimulationTestScenes.OilOnWater();
             scene.Settings.SmoothingRadius = 0.1f;
-            Assert.That(Messages(scene), Has.Some.Contains("FluidSettings: SmoothingRadius must be in [0.03, 0.06] m").And.Contains("(was 0.1)"));
+            Assert.That(Messages(scene), Has.Some.Contains("FluidSettings: SmoothingRadius must be in [0.04, 0.08] m (2 to 4 particle spacings)").And.Contains("(was 0.1)"));
         }
 
         [TestCase("Stiffness", "Stiffness must be in [1, 1E+09] Pa (was -1)")]

@@ -122,14 +122,25 @@ namespace SphFluid.Tests.Core.Simulation
         }
 
         [Test]
-        public void RestNumberDensity_MatchesSpikyLatticeSum()
+        public void RestNumberDensity_MatchesTheCubicSplineLatticeSum()
         {
-            // For h = 2 s the lattice neighbours within h are at squared distances 0,1,2,3,4 (in s^2) with 1,6,12,8,6 points.
+            // For H = 2 s the lattice neighbours within H are at squared distances 0,1,2,3 (in s^2) with 1,6,12,8
+            // points (those at 4 s^2 lie on the support's edge, where W = 0). Hand-evaluated spline:
+            // W = 8/(pi H^3) {1, 1/4, 2 (1 - sqrt(2)/2)^3, 2 (1 - sqrt(3)/2)^3}.
             double s = 0.02, h = 0.04;
-            double expected = 0;
-            int[] multiplicity = { 1, 6, 12, 8, 6 };
-            for (int k = 0; k < 5; k++) expected += multiplicity[k] * SmoothingKernels.Spiky(Math.Sqrt(k) * s, h);
+            double sigma = 8.0 / (Math.PI * h * h * h);
+            double expected = sigma * (1.0 + 6 * 0.25 + 12 * 2 * Math.Pow(1 - Math.Sqrt(2) / 2, 3) + 8 * 2 * Math.Pow(1 - Math.Sqrt(3) / 2, 3));
             Assert.That(SmoothingKernels.LatticeNumberDensity(s, h), Is.EqualTo(expected).Within(1e-9 * expected));
+            Assert.That(SmoothingKernels.LatticeNumberDensity(s, h) * s * s * s, Is.EqualTo(1.0).Within(1e-4), "the spline sums to 1 / s^3 on its lattice");
+        }
+
+        [TestCase(2.0, 0.021)]
+        [TestCase(3.0, 0.01)]
+        [TestCase(4.0, 0.002)]
+        public void TheKernelRecoversALinearPressureGradientOnTheLattice(double supportRatio, double tolerance)
+        {
+            // The hydrostatic gradient a resting tank settles to is off by this factor's distance from 1.
+            Assert.That(SmoothingKernels.LatticeGradientReproduction(1.0, supportRatio), Is.EqualTo(1.0).Within(tolerance));
         }
     }
 }

@@ -1,0 +1,100 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace SphFluid.Simulation
+{
+    /// <summary>
+    /// Samples the container's walls and every sphere obstacle with boundary particles (SphBoundary.hlsl
+    /// explains how they act). Each boundary is a shell of <see cref="Layers"/> layers on the fluid's lattice
+    /// spacing, deep enough that a fluid particle touching the wall finds a full neighbourhood within the
+    /// kernel support. A particle's weight is its volume V_b in units of the rest volume of a lattice particle,
+    /// omega = V_b delta0 with delta0 the lattice number density (SmoothingKernels.LatticeNumberDensity):
+    /// 1 on a wall lattice of the fluid's spacing, so a fluid lattice next to a wall sits at rest density.
+    /// </summary>
+    /// <remarks>
+    /// Container: points at -S/2 + (i + 1/2) a on each axis, a = S / round(S / s) (the spacing adjusted so
+    /// the walls are sampled evenly), for i from -L to n + L - 1, keeping those outside the inner box: the
+    /// face layers, the edges and the corners. Sphere of radius R: L concentric layers at radii
+    /// R - (l + 1/2) s, each sampled on a Fibonacci spiral (Gonzalez 2010, "Measurement of areas on a
+    /// sphere using Fibonacci and latitude-longitude lattices", Math. Geosciences 42) with one point per s^2
+    /// of area, weighted by the volume 4 pi r^2 s / n each one stands for.
+    /// </remarks>
+    public static class BoundarySampling
+    {
+        /// <summary>Shell layers for a support of <paramref name="support"/> at spacing <paramref name="spacing"/>: ceil(H / s).</summary>
+        public static int Layers(float spacing, float support) => Math.Max(1, (int)Math.Ceiling(support / spacing - 1e-4));
+
+        /// <summary>Boundary particles of the whole scene: the container's walls first, then each obstacle.</summary>
+        public static BoundaryParticle[] Sample(FluidSceneDescription scene)
+        {
+            var list = new List<BoundaryParticle>();
+            var s = scene.Settings;
+            double delta0 = SmoothingKernels.LatticeNumberDensity(s.ParticleSpacing, s.SmoothingRadius);
+            AddContainer(list, scene.Container.Size, s.ParticleSpacing, s.SmoothingRadius, delta0);
+            if (scene.Obstacles != null)
+                for (int o = 0; o < scene.Obstacles.Count; o++)
+                    AddSphere(list, scene.Obstacles[o].Radius, (uint)o, s.ParticleSpacing, s.SmoothingRadius, delta0);
+            return list.ToArray();
+        }
+
+        /// <summary>Boundary particles the container's walls need (without building them).</summary>
+        public static long ContainerCount(Vector3 size, float spacing, float support)
+        {
+            int layers = Layers(spacing, support);
+            long nx = Cells(size.X, spacing), ny = Cells(size.Y, spacing), nz = Cells(size.Z, spacing);
+            return (nx + 2 * layers) * (ny + 2 * layers) * (nz + 2 * layers) - nx * ny * nz;
+        }
+
+        static int Cells(float size, float spacing) => Math.Max(1, (int)Math.Round(size / (double)spacing));
+
+        static void AddContainer(List<BoundaryParticle> list, Vector3 size, float spacing, float support, double delta0)
+        {
+            int layers = Layers(spacing, support);
+            int nx = Cells(size.X, spacing), ny = Cells(size.Y, spacing), nz = Cells(size.Z, spacing);
+            double ax = size.X / (double)nx, ay = size.Y / (double)ny, az = size.Z / (double)nz;
+            float weight = (float)(ax * ay * az * delta0);
+            for (int k = -layers; k < nz + layers; k++)
+            for (int j = -layers; j < ny + layers; j++)
+            for (int i = -layers; i < nx + layers; i++)
+            {
+                bool inside = i >= 0 && i < nx && j >= 0 && j < ny && k >= 0 && k < nz;
+                if (inside) continue;
+                var local = new Vector3(
+                    (float)(-0.5 * size.X + (i + 0.5) * ax),
+                    (float)(-0.5 * size.Y + (j + 0.5) * ay),
+                    (float)(-0.5 * size.Z + (k + 0.5) * az));
+                list.Add(new BoundaryParticle(local, weight, BoundaryParticle.ContainerOwner));
+            }
+        }
+
+        static void AddSphere(List<BoundaryParticle> list, float radius, uint owner, float spacing, float support, double delta0)
+        {
+            int layers = Layers(spacing, support);
+            double s = spacing;
+            double golden = Math.PI * (3.0 - Math.Sqrt(5.0));
+            for (int l = 0; l < layers; l++)
+            {
+                double r = radius - (l + 0.5) * s;
+                if (r <= 0.25 * s)
+                {
+                    // The core of a small sphere: one particle for the volume left inside.
+                    double rest = Math.Max(0.0, radius - l * s);
+                    double volume = 4.0 / 3.0 * Math.PI * rest * rest * rest;
+                    if (volume > 0) list.Add(new BoundaryParticle(Vector3.Zero, (float)(volume * delta0), owner));
+                    break;
+                }
+                int n = Math.Max(1, (int)Math.Round(4.0 * Math.PI * r * r / (s * s)));
+                float weight = (float)(4.0 * Math.PI * r * r * s / n * delta0);
+                for (int p = 0; p < n; p++)
+                {
+                    double y = 1.0 - 2.0 * (p + 0.5) / n;
+                    double ring = Math.Sqrt(Math.Max(0.0, 1.0 - y * y));
+                    double phi = golden * p;
+                    var direction = new Vector3((float)(ring * Math.Cos(phi)), (float)y, (float)(ring * Math.Sin(phi)));
+                    list.Add(new BoundaryParticle(direction * (float)r, weight, owner));
+                }
+            }
+        }
+    }
+}

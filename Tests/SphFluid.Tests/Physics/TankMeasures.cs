@@ -1,0 +1,33 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using System.Numerics;
+using SphFluid.Simulation;
+
+namespace SphFluid.Tests.Physics
+{
+    /// <summary>What a validation engineer measures in a tank, from read-back particles (container axis-aligned, gravity -y).</summary>
+    public static class TankMeasures
+    {
+        /// <summary>Height of a column of fluid resting on the floor, from its centroid: a uniform column of height
+        /// H has its particles' mean height at H / 2. Unlike the topmost particle, this is not moved by the single
+        /// free-surface layer that summation density packs about a quarter spacing tighter, yet any slump of the
+        /// column shows in full.</summary>
+        public static double ColumnHeight(Particle[] particles, float floorY) =>
+            2.0 * particles.Average(p => (double)(p.Position.Y - floorY));
+
+        /// <summary>Least-squares slope dp/dy over the particles between <paramref name="fromY"/> and <paramref name="toY"/>, Pa/m.</summary>
+        public static double PressureGradient(Particle[] particles, Vector4[] densities, double fromY, double toY)
+        {
+            var points = Enumerable.Range(0, particles.Length)
+                .Where(i => particles[i].Position.Y >= fromY && particles[i].Position.Y <= toY)
+                .Select(i => ((double)particles[i].Position.Y, (double)densities[i].Y)).ToList();
+            double my = points.Average(q => q.Item1), mp = points.Average(q => q.Item2);
+            double sxy = points.Sum(q => (q.Item1 - my) * (q.Item2 - mp));
+            double sxx = points.Sum(q => (q.Item1 - my) * (q.Item1 - my));
+            return sxy / sxx;
+        }
+
+        public static double MaxSpeed(Particle[] particles) => particles.Max(p => (double)p.Velocity.Length());
+    }
+}
