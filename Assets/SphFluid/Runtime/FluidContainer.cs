@@ -12,10 +12,17 @@ namespace SphFluid.Runtime
     public sealed class FluidContainer : MonoBehaviour
     {
         /// <summary>The container at rest where the Transform is now (velocities are the simulator's business).</summary>
-        public ContainerDescription Describe()
+        public ContainerDescription Describe() => DescribeInto(new ContainerDescription());
+
+        /// <summary>Writes the placement (position, rotation, size) into <paramref name="description"/>, leaving its
+        /// velocities alone: the simulator refills one description every frame instead of making one.</summary>
+        public ContainerDescription DescribeInto(ContainerDescription description)
         {
             Transform t = transform;
-            return new ContainerDescription(t.position.ToNumerics(), t.rotation.ToNumerics(), Abs(t.lossyScale).ToNumerics());
+            description.Position = t.position.ToNumerics();
+            description.Rotation = t.rotation.ToNumerics();
+            description.Size = Abs(t.lossyScale).ToNumerics();
+            return description;
         }
 
         /// <summary>The core's refusals of this container alone (its size against the default particle spacing).</summary>

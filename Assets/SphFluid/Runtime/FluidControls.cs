@@ -11,6 +11,7 @@ namespace SphFluid.Runtime
         FluidSimulator simulator = null;
 
         InputAction _pause, _step, _reset, _nextScene;
+        readonly SimulatorTarget _target = new SimulatorTarget();
 
         void OnEnable()
         {
@@ -41,7 +42,7 @@ namespace SphFluid.Runtime
                 LoadNextScene();
                 return;
             }
-            FluidSimulator target = simulator != null ? simulator : FindFirstObjectByType<FluidSimulator>();
+            FluidSimulator target = _target.Resolve(simulator);
             if (target == null) return;
             if (_pause.WasPressedThisFrame()) target.TogglePause();
             if (_step.WasPressedThisFrame()) target.StepOnce();

@@ -1,3 +1,4 @@
+using System.Collections.Generic;
 using System.Globalization;
 using System.Text;
 using SphFluid.Simulation;
@@ -7,6 +8,11 @@ namespace SphFluid.Runtime
 {
     /// <summary>On-screen figures of the running simulation (IMGUI): FPS, particles, sub-steps and dt, GPU time,
     /// density error per phase, the effects the planner switched on.</summary>
+    /// <remarks>
+    /// Formatting numbers makes strings, so the text is composed a few times a second and the same string is
+    /// drawn in between; IMGUI itself still allocates in OnGUI, which is why the fluid's own frames are
+    /// measured without a readout (FluidSimulatorPlayModeTests).
+    /// </remarks>
     public sealed class FluidReadout : MonoBehaviour
     {
         [SerializeField, Tooltip("The simulator shown; empty = the scene's FluidSimulator.")]
@@ -18,7 +24,13 @@ namespace SphFluid.Runtime
         [SerializeField, Range(8, 40), Tooltip("Text size, points.")]
         int fontSize = 14;
 
+        /// <summary>Seconds between two compositions of the text (real time).</summary>
+        public const float RefreshSeconds = 0.25f;
+
         readonly StringBuilder _text = new StringBuilder();
+        string _shown = "";
+        float _nextRefresh;
+        readonly SimulatorTarget _target = new SimulatorTarget();
         GUIStyle _style;
         float _smoothedDelta = 1f / 60f;
 
@@ -38,11 +50,16 @@ namespace SphFluid.Runtime
             if (!visible) return;
             if (_style == null || _style.fontSize != fontSize)
                 _style = new GUIStyle(GUI.skin.label) { fontSize = fontSize, richText = false };
-            FluidSimulator target = simulator != null ? simulator : FindFirstObjectByType<FluidSimulator>();
-            Compose(target);
+            if (Event.current.type == EventType.Layout && Time.unscaledTime >= _nextRefresh)
+            {
+                // Layout comes before Repaint in each OnGUI round, so both draw the same text.
+                _nextRefresh = Time.unscaledTime + RefreshSeconds;
+                Compose(_target.Resolve(simulator));
+                _shown = _text.ToString();
+            }
             GUILayout.BeginArea(new Rect(10f, 10f, Mathf.Min(560f, Screen.width - 20f), Screen.height - 20f));
             GUILayout.BeginVertical(GUI.skin.box);
-            GUILayout.Label(_text.ToString(), _style);
+            GUILayout.Label(_shown, _style);
             GUILayout.EndVertical();
             GUILayout.EndArea();
         }
@@ -85,11 +102,24 @@ namespace SphFluid.Runtime
             SimulationPlan plan = target.Plan;
             if (plan != null)
             {
-                _text.Append("Effects: ").Append(plan.Keywords.Count == 0 ? "(single phase, no extras)" : string.Join(" ", plan.Keywords));
+                _text.Append("Effects: ");
+                if (plan.Keywords.Count == 0) _text.Append("(single phase, no extras)");
+                AppendJoined(plan.Keywords, " ");
                 if (plan.Damping) _text.Append(" DAMPING");
-                _text.Append('\n').Append("Sub-step: ").Append(string.Join(" > ", plan.SubstepPasses)).Append('\n');
+                _text.Append('\n').Append("Sub-step: ");
+                AppendJoined(plan.SubstepPasses, " > ");
+                _text.Append('\n');
             }
             _text.Append("RMB orbit  wheel zoom  LMB drag sphere  Space pause  . / N step  R reset  Tab next scene");
+        }
+
+        void AppendJoined(IReadOnlyList<string> items, string separator)
+        {
+            for (int i = 0; i < items.Count; i++)
+            {
+                if (i > 0) _text.Append(separator);
+                _text.Append(items[i]);
+            }
         }
     }
 }

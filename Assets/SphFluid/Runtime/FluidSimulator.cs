@@ -107,6 +107,9 @@ namespace SphFluid.Runtime
         FluidContainer _container;
         readonly List<SphereObstacle> _obstacles = new List<SphereObstacle>();
         readonly List<Vector3> _obstaclePositions = new List<Vector3>();
+        // Refilled every frame, never remade: the per-frame push is free of garbage (the simulation copies what changed).
+        readonly ContainerDescription _containerDescription = new ContainerDescription();
+        readonly List<SphereObstacleDescription> _obstacleRows = new List<SphereObstacleDescription>();
         readonly List<SphereObstacleDescription> _obstacleDescriptions = new List<SphereObstacleDescription>();
         Vector3 _containerPosition;
         Quaternion _containerRotation;
@@ -151,8 +154,10 @@ namespace SphFluid.Runtime
             milliseconds = 0;
             if (_device == null) return false;
             bool any = false;
-            foreach (string pass in FluidSimulation.SampleNames)
+            IReadOnlyList<string> passes = FluidSimulation.SampleNames;
+            for (int i = 0; i < passes.Count; i++) // not foreach: an interface's enumerator is garbage on every call
             {
+                string pass = passes[i];
                 if (pass == PassNames.Diagnostics) continue;
                 if (_device.TryGetSampleMilliseconds(pass, out double ms))
                 {
@@ -299,7 +304,12 @@ namespace SphFluid.Runtime
             _obstacles.Clear();
             _obstacles.AddRange(ActiveObstacles());
             _obstaclePositions.Clear();
-            foreach (SphereObstacle sphere in _obstacles) _obstaclePositions.Add(sphere.transform.position);
+            _obstacleRows.Clear();
+            foreach (SphereObstacle sphere in _obstacles)
+            {
+                _obstaclePositions.Add(sphere.transform.position);
+                _obstacleRows.Add(sphere.Describe(Vector3.zero)); // its Name is read here, once
+            }
             if (particleMaterial == null)
                 Debug.LogWarning($"FluidSimulator '{name}': field 'particleMaterial' is empty; the fluid is simulated but not drawn", this);
         }
@@ -318,6 +328,8 @@ namespace SphFluid.Runtime
             _device = null;
             _obstacles.Clear();
             _obstaclePositions.Clear();
+            _obstacleRows.Clear();
+            _obstacleDescriptions.Clear();
         }
 
         string MissingShaderField()
@@ -373,7 +385,9 @@ namespace SphFluid.Runtime
             Transform t = _container.transform;
             Vector3 position = t.position;
             Quaternion rotation = t.rotation;
-            ContainerDescription description = _container.Describe();
+            ContainerDescription description = _container.DescribeInto(_containerDescription);
+            description.Velocity = System.Numerics.Vector3.Zero;
+            description.AngularVelocity = System.Numerics.Vector3.Zero;
             if (seconds > 0f)
             {
                 // A teleport (editing the Transform) is not a motion the walls should fling fluid with.
@@ -406,7 +420,7 @@ namespace SphFluid.Runtime
                 Vector3 position = sphere.transform.position;
                 Vector3 velocity = seconds > 0f ? Vector3.ClampMagnitude((position - _obstaclePositions[i]) / seconds, MaxWallSpeed) : Vector3.zero;
                 _obstaclePositions[i] = position;
-                _obstacleDescriptions.Add(sphere.Describe(velocity));
+                _obstacleDescriptions.Add(sphere.DescribeInto(_obstacleRows[i], velocity));
             }
             _simulation.UpdateObstacles(_obstacleDescriptions);
         }

@@ -36,8 +36,8 @@ namespace SphFluid.Runtime
         Camera ViewCamera()
         {
             if (targetCamera != null) return targetCamera;
-            Camera own = GetComponent<Camera>();
-            return own != null ? own : Camera.main;
+            // TryGetComponent: in the editor, GetComponent of a missing component makes a placeholder object every call.
+            return TryGetComponent(out Camera own) ? own : Camera.main;
         }
 
         void Update()

@@ -24,9 +24,18 @@ namespace SphFluid.Runtime
             }
         }
 
-        public SphereObstacleDescription Describe(Vector3 velocity)
+        public SphereObstacleDescription Describe(Vector3 velocity) =>
+            DescribeInto(new SphereObstacleDescription { Name = name }, velocity);
+
+        /// <summary>Writes centre, radius and <paramref name="velocity"/> into <paramref name="description"/> but not
+        /// its Name: reading <c>name</c> makes a new string each time, and the simulator refills one description
+        /// per sphere every frame.</summary>
+        public SphereObstacleDescription DescribeInto(SphereObstacleDescription description, Vector3 velocity)
         {
-            return new SphereObstacleDescription(transform.position.ToNumerics(), WorldRadius, velocity.ToNumerics()) { Name = name };
+            description.Center = transform.position.ToNumerics();
+            description.Radius = WorldRadius;
+            description.Velocity = velocity.ToNumerics();
+            return description;
         }
 
         public IReadOnlyList<ValidationError> ValidationErrors() => ComponentValidation.ObstacleErrors(Describe(Vector3.zero));

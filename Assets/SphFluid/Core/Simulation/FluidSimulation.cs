@@ -280,18 +280,20 @@ namespace SphFluid.Simulation
             ComputeForces();
         }
 
-        /// <summary>Moves (or resizes) the container; its transform is uploaded before the next step.</summary>
+        /// <summary>Moves (or resizes) the container; its transform is uploaded before the next step.
+        /// Callers push the container every frame, so an unchanged one returns before anything is copied or
+        /// validated (it was validated when it was set).</summary>
         public void UpdateContainer(ContainerDescription container)
         {
             ThrowIfDisposed();
             if (container == null) throw new ArgumentNullException(nameof(container));
-            var probe = CopyOf(_scene);
-            probe.Container = container.Clone();
-            var errors = ContainerErrors(probe);
-            if (errors.Count > 0) throw new ArgumentException(string.Join("\n", errors));
             var old = _scene.Container;
             if (old.SamePlacement(container) && old.Velocity == container.Velocity && old.AngularVelocity == container.AngularVelocity)
                 return;
+            // The container's rules read only the settings (its least size), so the probe holds nothing else.
+            var probe = new FluidSceneDescription { Settings = _scene.Settings, Container = container };
+            var errors = ContainerErrors(probe);
+            if (errors.Count > 0) throw new ArgumentException(string.Join("\n", errors));
             _scene.Container = container.Clone();
             _containerChanged = true;
             if (old.Size != container.Size)
@@ -303,15 +305,27 @@ namespace SphFluid.Simulation
                 UploadConstants();
         }
 
-        /// <summary>Replaces the sphere obstacles (any count up to <see cref="FluidSceneDescription.MaxObstacles"/>).</summary>
+        /// <summary>Replaces the sphere obstacles (any count up to <see cref="FluidSceneDescription.MaxObstacles"/>).
+        /// Callers push the obstacles every frame, so the same spheres as now return before anything is copied,
+        /// validated or uploaded.</summary>
         public void UpdateObstacles(IReadOnlyList<SphereObstacleDescription> obstacles)
         {
             ThrowIfDisposed();
-            var list = new List<SphereObstacleDescription>();
-            if (obstacles != null)
-                foreach (var o in obstacles) list.Add(o?.Clone());
-            var probe = CopyOf(_scene);
-            probe.Obstacles = list;
+            int count = obstacles == null ? 0 : obstacles.Count;
+            var current = _scene.Obstacles;
+            bool same = current.Count == count;
+            for (int i = 0; same && i < count; i++)
+            {
+                SphereObstacleDescription now = current[i], next = obstacles[i];
+                same = next != null && now.Name == next.Name && now.Center == next.Center && now.Radius == next.Radius
+                       && now.Velocity == next.Velocity;
+            }
+            if (same) return;
+
+            var list = new List<SphereObstacleDescription>(count);
+            for (int i = 0; i < count; i++) list.Add(obstacles[i]?.Clone());
+            // The obstacles' rules read nothing else of the scene, so the probe holds only them.
+            var probe = new FluidSceneDescription { Obstacles = list };
             var errors = new List<string>();
             foreach (var e in probe.Validate())
                 if (e.Field.StartsWith("Obstacles", StringComparison.Ordinal)) errors.Add(e.Message);

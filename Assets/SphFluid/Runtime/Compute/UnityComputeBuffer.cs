@@ -10,6 +10,7 @@ namespace SphFluid.Runtime
     {
         readonly UnityComputeDevice _device;
         ComputeBuffer _buffer;
+        UnityReadbackRequest _readback;
 
         internal UnityComputeBuffer(UnityComputeDevice device, string name, int count, int stride)
         {
@@ -59,6 +60,17 @@ namespace SphFluid.Runtime
             _buffer.GetData(data, 0, 0, data.Length);
         }
 
+        /// <summary>Starts a read-back of the whole buffer. The previous request of this buffer is restarted once
+        /// it is spent (done, and read or failed), which is how the simulation uses its per-frame read-backs; a
+        /// caller still waiting on it, or one that dropped it unread, gets a new request instead.</summary>
+        internal UnityReadbackRequest StartReadback()
+        {
+            ThrowIfReleased();
+            if (_readback == null || !_readback.IsSpent) _readback = new UnityReadbackRequest(_buffer, Count * Stride);
+            _readback.Start();
+            return _readback;
+        }
+
         void CheckElementSize<T>() where T : struct
         {
             int size = Marshal.SizeOf<T>();
@@ -77,6 +89,7 @@ namespace SphFluid.Runtime
             _device.FlushBeforeRelease(); // recorded commands that bind this buffer run before it goes
             _buffer.Release();
             _buffer = null;
+            _readback = null;
             _device.Forget(this);
         }
     }

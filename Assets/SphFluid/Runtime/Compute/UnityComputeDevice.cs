@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using SphFluid.Compute;
 using UnityEngine;
-using UnityEngine.Profiling;
 using UnityEngine.Rendering;
 using NMatrix4x4 = System.Numerics.Matrix4x4;
 using NVector4 = System.Numerics.Vector4;
@@ -24,7 +23,7 @@ namespace SphFluid.Runtime
         readonly Dictionary<string, ComputeShader> _shaders = new Dictionary<string, ComputeShader>();
         readonly Dictionary<string, UnityComputeProgram> _programs = new Dictionary<string, UnityComputeProgram>();
         readonly HashSet<UnityComputeBuffer> _buffers = new HashSet<UnityComputeBuffer>();
-        readonly Dictionary<string, CustomSampler> _samplers = new Dictionary<string, CustomSampler>();
+        readonly Dictionary<string, GpuPassTimer> _timers = new Dictionary<string, GpuPassTimer>();
         CommandBuffer _commands;
         bool _pending, _disposing;
 
@@ -146,17 +145,17 @@ namespace SphFluid.Runtime
         public void BeginSample(string name)
         {
             Record();
-            CustomSampler sampler = Sampler(name);
-            if (sampler != null) _commands.BeginSample(sampler);
-            else _commands.BeginSample(SamplePrefix + name);
+            GpuPassTimer timer = Timer(name);
+            if (timer.Sampler != null) _commands.BeginSample(timer.Sampler);
+            else _commands.BeginSample(timer.ProfilerName);
         }
 
         public void EndSample(string name)
         {
             Record();
-            CustomSampler sampler = Sampler(name);
-            if (sampler != null) _commands.EndSample(sampler);
-            else _commands.EndSample(SamplePrefix + name);
+            GpuPassTimer timer = Timer(name);
+            if (timer.Sampler != null) _commands.EndSample(timer.Sampler);
+            else _commands.EndSample(timer.ProfilerName);
         }
 
         public void Submit()
@@ -173,14 +172,11 @@ namespace SphFluid.Runtime
         public bool TryGetSampleMilliseconds(string name, out double milliseconds)
         {
             milliseconds = 0;
-            if (!_samplers.TryGetValue(name, out CustomSampler sampler) || sampler == null) return false;
-            Recorder recorder = sampler.GetRecorder();
-            if (recorder == null || !recorder.isValid) return false;
-            long nanoseconds = recorder.gpuElapsedNanoseconds;
-            if (nanoseconds <= 0) return false;
-            milliseconds = nanoseconds * 1e-6;
-            return true;
+            return _timers.TryGetValue(name, out GpuPassTimer timer) && timer.TryGetMilliseconds(out milliseconds);
         }
+
+        /// <summary>The timer of a range name this device has recorded; null before its first range.</summary>
+        public GpuPassTimer RecordedTimer(string name) => _timers.TryGetValue(name, out GpuPassTimer timer) ? timer : null;
 
         public IReadbackRequest RequestReadback(IComputeBuffer buffer)
         {
@@ -188,25 +184,16 @@ namespace SphFluid.Runtime
             if (!(buffer is UnityComputeBuffer unityBuffer) || unityBuffer.IsReleased)
                 throw new ComputeException($"Read-back: buffer '{buffer?.Name}' is not a live buffer of this device");
             Submit(); // the read-back must see the work recorded before it
-            return new UnityReadbackRequest(unityBuffer.Buffer);
+            return unityBuffer.StartReadback();
         }
 
-        /// <summary>Profiler samples are named "SphFluid.&lt;pass&gt;" so no built-in sampler name is taken.</summary>
-        const string SamplePrefix = "SphFluid.";
-
-        /// <summary>The GPU-timed sampler of a range name, created once; null where the platform cannot time the GPU.</summary>
-        CustomSampler Sampler(string name)
+        /// <summary>The timer of a range name, looked up once per device.</summary>
+        GpuPassTimer Timer(string name)
         {
-            if (_samplers.TryGetValue(name, out CustomSampler sampler)) return sampler;
-            sampler = SystemInfo.supportsGpuRecorder ? CustomSampler.Create(SamplePrefix + name, true) : null;
-            if (sampler != null && !sampler.isValid) sampler = null;
-            if (sampler != null)
-            {
-                Recorder recorder = sampler.GetRecorder();
-                if (recorder != null && recorder.isValid) recorder.enabled = true;
-            }
-            _samplers.Add(name, sampler);
-            return sampler;
+            if (_timers.TryGetValue(name, out GpuPassTimer timer)) return timer;
+            timer = GpuPassTimer.Of(name);
+            _timers.Add(name, timer);
+            return timer;
         }
 
         static ComputeShader ShaderOf(IComputeProgram program) => Program(program).Shader;
@@ -239,7 +226,7 @@ namespace SphFluid.Runtime
             foreach (UnityComputeBuffer buffer in new List<UnityComputeBuffer>(_buffers))
                 buffer.Dispose();
             _buffers.Clear();
-            _samplers.Clear(); // samplers are shared per name: their recorders stay enabled for other devices
+            _timers.Clear(); // the timers outlive the device: they stay enabled for the next one
             _programs.Clear();
             _commands.Release();
             _commands = null;

@@ -1,6 +1,7 @@
 using System;
 using System.Runtime.InteropServices;
 using SphFluid.Compute;
+using Unity.Collections;
 using UnityEngine;
 using UnityEngine.Rendering;
 
@@ -10,20 +11,49 @@ namespace SphFluid.Runtime
     /// An <see cref="AsyncGPUReadback"/> of a whole buffer. Unity keeps a finished request's data for one frame
     /// only, so the completion callback copies it at once: a caller may poll any number of frames later.
     /// </summary>
+    /// <remarks>
+    /// The simulation reads its motion and diagnostics back every frame, so one request object per buffer is
+    /// restarted rather than a new one made: the copy, the callback delegate and the object itself are
+    /// allocated once (see <see cref="UnityComputeBuffer.StartReadback"/> for when it may be restarted).
+    /// </remarks>
     public sealed class UnityReadbackRequest : IReadbackRequest
     {
-        byte[] _bytes;
-        bool _done, _failed;
+        readonly ComputeBuffer _buffer;
+        readonly byte[] _bytes;
+        readonly Action<AsyncGPUReadbackRequest> _onComplete;
+        bool _inFlight, _done, _failed, _read;
 
-        public UnityReadbackRequest(ComputeBuffer buffer)
+        internal UnityReadbackRequest(ComputeBuffer buffer, int byteCount)
         {
-            AsyncGPUReadback.Request(buffer, OnComplete);
+            _buffer = buffer;
+            _bytes = new byte[byteCount];
+            _onComplete = OnComplete;
+        }
+
+        /// <summary>Finished, and its caller has read it or seen it fail: nobody waits on it any more.</summary>
+        internal bool IsSpent => _done && (_read || _failed);
+
+        /// <summary>How many read-backs this object has carried (tests check it is reused).</summary>
+        public int Starts { get; private set; }
+
+        internal void Start()
+        {
+            if (_inFlight) throw new ComputeException("Read-back: a request still in flight cannot be restarted");
+            _inFlight = true;
+            _done = _failed = _read = false;
+            Starts++;
+            AsyncGPUReadback.Request(_buffer, _onComplete);
         }
 
         void OnComplete(AsyncGPUReadbackRequest request)
         {
+            _inFlight = false;
             if (request.hasError) _failed = true;
-            else _bytes = request.GetData<byte>().ToArray();
+            else
+            {
+                NativeArray<byte> data = request.GetData<byte>();
+                NativeArray<byte>.Copy(data, _bytes, Math.Min(data.Length, _bytes.Length));
+            }
             _done = true;
         }
 
@@ -39,6 +69,7 @@ namespace SphFluid.Runtime
             ReadOnlySpan<T> values = MemoryMarshal.Cast<byte, T>(_bytes);
             int n = Math.Min(values.Length, destination.Length);
             for (int i = 0; i < n; i++) destination[i] = values[i];
+            _read = true;
         }
     }
 }

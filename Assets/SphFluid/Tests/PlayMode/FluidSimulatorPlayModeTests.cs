@@ -1,6 +1,5 @@
 using System.Collections;
 using System.Collections.Generic;
-using System.Reflection;
 using NUnit.Framework;
 using SphFluid.Runtime;
 using SphFluid.Simulation;
@@ -19,75 +18,20 @@ namespace SphFluid.Tests.PlayMode
     public sealed class FluidSimulatorPlayModeTests
     {
         const int Frames = 30;
-        const float Spacing = 0.02f;
-        static readonly Vector3 ContainerCentre = new Vector3(0f, 0.15f, 0f);
-        static readonly Vector3 ContainerSize = new Vector3(0.3f, 0.3f, 0.3f);
+        static readonly Vector3 ContainerCentre = TestTank.ContainerCentre;
+        static readonly Vector3 ContainerSize = TestTank.ContainerSize;
 
-        readonly List<GameObject> _objects = new List<GameObject>();
+        readonly TestTank _tank = new TestTank();
 
         [TearDown]
-        public void DestroyObjects()
-        {
-            foreach (GameObject o in _objects)
-                if (o != null) Object.DestroyImmediate(o);
-            _objects.Clear();
-        }
+        public void DestroyObjects() => _tank.Destroy();
 
-        static void RequireGpu()
-        {
-            Assume.That(SystemInfo.supportsComputeShaders, Is.True, "needs a graphics device with compute shaders (run without -nographics)");
-#if !UNITY_EDITOR
-            Assert.Ignore("loads the compute shaders through the editor's AssetDatabase");
-#endif
-        }
+        static void RequireGpu() => TestTank.RequireGpu();
 
-        static ComputeShader LoadShader(string name)
-        {
-#if UNITY_EDITOR
-            var shader = UnityEditor.AssetDatabase.LoadAssetAtPath<ComputeShader>($"Assets/SphFluid/Shaders/{name}.compute");
-            Assert.That(shader, Is.Not.Null, $"Assets/SphFluid/Shaders/{name}.compute");
-            return shader;
-#else
-            return null;
-#endif
-        }
-
-        static void Set(object component, string field, object value)
-        {
-            FieldInfo info = component.GetType().GetField(field, BindingFlags.Instance | BindingFlags.NonPublic);
-            Assert.That(info, Is.Not.Null, $"{component.GetType().Name} has no serialized field '{field}'");
-            info.SetValue(component, value);
-        }
-
-        GameObject Create(string objectName, Vector3 position, Vector3 scale)
-        {
-            var o = new GameObject(objectName);
-            o.transform.position = position;
-            o.transform.localScale = scale;
-            _objects.Add(o);
-            return o;
-        }
-
-        /// <summary>A 0.3 m tank with a 0.12 m cube of water (6 x 6 x 6 particles) and, optionally, a sphere.</summary>
         FluidSimulator CreateFluid(bool withSphere, out int expectedParticles)
         {
-            FluidContainer container = Create("Tank", ContainerCentre, ContainerSize).AddComponent<FluidContainer>();
-            Create("Water", new Vector3(0f, 0.1f, 0f), new Vector3(0.12f, 0.12f, 0.12f)).AddComponent<SpawnBox>();
-            expectedParticles = 6 * 6 * 6;
-            if (withSphere)
-                Create("Ball", new Vector3(0.08f, 0.22f, 0f), new Vector3(0.08f, 0.08f, 0.08f)).AddComponent<SphereObstacle>();
-
-            GameObject fluid = Create("Fluid", Vector3.zero, Vector3.one);
-            fluid.SetActive(false); // wire it before OnEnable
-            FluidSimulator simulator = fluid.AddComponent<FluidSimulator>();
-            Set(simulator, "solverShader", LoadShader("FluidSolver"));
-            Set(simulator, "diagnosticsShader", LoadShader("FluidDiagnostics"));
-            Set(simulator, "sortShader", LoadShader("ParticleSort"));
-            Set(simulator, "prefixSumShader", LoadShader("PrefixSum"));
-            Set(simulator, "container", container);
-            Set(simulator, "particleSpacing", Spacing);
-            fluid.SetActive(true);
-            return simulator;
+            expectedParticles = TestTank.ExpectedParticles;
+            return _tank.CreateFluid(withSphere);
         }
 
         [UnityTest]

@@ -1,0 +1,29 @@
+using UnityEngine;
+
+namespace SphFluid.Runtime
+{
+    /// <summary>
+    /// The simulator a control or readout acts on: the one assigned in its inspector, else the scene's.
+    /// The scene is searched once, and again at most once a second while it has none: a search makes an array,
+    /// and the callers ask every frame.
+    /// </summary>
+    internal sealed class SimulatorTarget
+    {
+        /// <summary>Real-time seconds between two searches while the scene has no simulator.</summary>
+        const float SearchInterval = 1f;
+
+        FluidSimulator _found;
+        float _nextSearch;
+
+        public FluidSimulator Resolve(FluidSimulator assigned)
+        {
+            if (assigned != null) return assigned;
+            if (_found == null && Time.unscaledTime >= _nextSearch)
+            {
+                _nextSearch = Time.unscaledTime + SearchInterval;
+                _found = Object.FindFirstObjectByType<FluidSimulator>();
+            }
+            return _found;
+        }
+    }
+}
