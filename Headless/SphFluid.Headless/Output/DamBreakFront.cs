@@ -10,7 +10,8 @@ namespace SphFluid.Headless.Output;
 /// from the back wall (x = -size/2), reached by fluid within <see cref="BandSpacings"/> spacings of the floor;
 /// the column is the greatest height above the floor of fluid within as many spacings of the back wall.
 /// Isolated particles (fewer than <see cref="Company"/> others within the support radius) are spray and count
-/// for neither. NaN where no fluid qualifies.
+/// for neither. NaN where no fluid qualifies, and while the container is turned so far that its x faces are the
+/// floor and ceiling: x is then the height, and a run along the floor has no x to reach.
 /// </summary>
 public static class DamBreakFront
 {
@@ -23,6 +24,7 @@ public static class DamBreakFront
     /// <param name="local">Container-local positions.</param>
     public static (double SurgeFront, double Column) Measure(Vector3[] local, GravityFrame frame, float particleSpacing, float supportRadius)
     {
+        if (frame.FloorAxis == 0) return (double.NaN, double.NaN);
         float band = BandSpacings * particleSpacing;
         var neighbourhood = new ParticleNeighbourhood(local, supportRadius);
 

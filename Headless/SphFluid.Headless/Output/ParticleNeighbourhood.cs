@@ -38,6 +38,7 @@ public sealed class ParticleNeighbourhood
     {
         var p = _positions[i];
         if (!Finite(p)) return true;
+        if (company <= 0) return false;
         float r2 = _radius * _radius;
         int cx = Cell(p, 0), cy = Cell(p, 1), cz = Cell(p, 2), found = 0;
         for (int dz = -1; dz <= 1; dz++)

@@ -84,6 +84,20 @@ namespace SphFluid.Tests.Output
         }
 
         [Test]
+        public void ATankTurnedOntoItsBackWallHasNoFront()
+        {
+            // Turned 90 degrees about z: the back wall (x = -0.5) is now the floor, and x the height.
+            var turned = new ContainerDescription(Vector3.Zero, Quaternion.CreateFromAxisAngle(Vector3.UnitZ, MathF.PI / 2), Tank.Size);
+            var local = new List<Vector3>();
+            Block(local, 0, 15, 10);
+
+            var (front, column) = DamBreakFront.Measure(local.ToArray(), new GravityFrame(turned, Gravity), Spacing, Support);
+
+            Assert.That(front, Is.NaN);
+            Assert.That(column, Is.NaN);
+        }
+
+        [Test]
         public void FluidMeasuresReadTheFrontInTheContainersOwnFrame()
         {
             // The same column in a tank moved to (5, 1, 0): the figures do not move with it.
