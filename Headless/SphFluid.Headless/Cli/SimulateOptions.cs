@@ -47,12 +47,13 @@ FluidContainer, SphereObstacles, ContainerSpinner/SphereDriver motion) and simul
 Vulkan backend. Writes diagnostics.csv, frame_NNNN.png snapshots, layering.png (multi-phase scenes) and
 summary.txt into the output folder.
 
-Measures (console, diagnostics.csv, summary.txt): kinetic and potential energy; per phase compression
-max(0, rho/rho0 - 1) and expansion max(0, 1 - rho/rho0) (mean, max), mean height, bottom and top (along gravity from the container's
-lowest corner), and its share of the floor and wall layers (particles within one spacing of the face);
-the layering index (pairs of different density: (ordered - inverted) / pairs; 1 = perfectly layered,
-0 = mixed, -1 = upside down); the surge front (container-local x from the back wall reached within 2
-spacings of the floor) and the column height at the back wall, spray ignored.
+Measures (console, diagnostics.csv, summary.txt): kinetic and potential energy; per phase the
+compression max(0, rho/rho0 - 1) and expansion max(0, 1 - rho/rho0) (mean and max), the mean, bottom
+and top height (along gravity from the container's lowest corner) and its share of the floor and wall
+layers (particles within one spacing of the face); the layering index over pairs of different density,
+(ordered - inverted) / pairs (1 = perfectly layered, 0 = mixed, -1 = upside down); the surge front
+(container-local x from the back wall reached within 2 spacings of the floor) and the column height at
+the back wall, spray ignored.
 
 Options:
   --seconds S              simulated seconds to run, in (0, 3600] (default 3)

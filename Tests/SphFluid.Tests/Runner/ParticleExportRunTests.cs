@@ -117,6 +117,20 @@ namespace SphFluid.Tests.Runner
             Assert.That(stdout.ToString(), Does.Contain("3 particle export(s)"));
         }
 
+        [Test]
+        public void TheHelpNamesTheExportAndTheMeasures()
+        {
+            var stdout = new StringWriter();
+
+            int code = Program.Run(new[] { "simulate", "--help" }, stdout, new StringWriter());
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok));
+            Assert.That(stdout.ToString(), Does.Contain("--export-every S"));
+            Assert.That(stdout.ToString(), Does.Contain("particles.pvd"));
+            Assert.That(stdout.ToString(), Does.Contain("(ordered - inverted) / pairs"));
+            Assert.That(stdout.ToString(), Does.Contain("surge front"));
+        }
+
         [TestCase("0", "--export-every must be in (0, 3600] s (was 0)")]
         [TestCase("soon", "--export-every must be a number in (0, 3600] s (was 'soon')")]
         public void ABadExportIntervalIsRefusedWithItsRange(string value, string message)
