@@ -16,8 +16,8 @@ public static class LayeringIndex
 {
     /// <summary>
     /// The index of particles with the given heights and phase rest densities (same length), or NaN when no
-    /// pair has different rest densities. Sorting by height makes it O(N log N); each particle then counts the
-    /// lower particles of each density class, O(classes) per particle.
+    /// pair has different rest densities. O(N log N): one sort by height, then each particle counts the lighter
+    /// and heavier particles below it in a Fenwick tree over the density classes.
     /// </summary>
     public static double Of(ReadOnlySpan<float> heights, ReadOnlySpan<float> restDensities)
     {
@@ -26,9 +26,10 @@ public static class LayeringIndex
         int n = heights.Length;
 
         // Density classes, lightest first.
-        var distinct = new SortedSet<float>();
+        var distinct = new HashSet<float>();
         foreach (float d in restDensities) distinct.Add(d);
         var classes = new List<float>(distinct);
+        classes.Sort();
         var classOf = new int[n];
         var order = new int[n];
         var keys = new float[n];
@@ -47,8 +48,9 @@ public static class LayeringIndex
             for (int b = a + 1; b < classes.Count; b++) pairs += (double)classSize[a] * classSize[b];
         if (pairs == 0) return double.NaN;
 
-        var below = new long[classes.Count];
-        long ordered = 0, inverted = 0;
+        // Fenwick tree over the classes: how many particles already passed (strictly lower) are lighter or heavier.
+        var below = new long[classes.Count + 1];
+        long passed = 0, ordered = 0, inverted = 0;
         for (int start = 0; start < n;)
         {
             int end = start + 1;
@@ -57,12 +59,27 @@ public static class LayeringIndex
             for (int s = start; s < end; s++)
             {
                 int c = classOf[order[s]];
-                for (int other = 0; other < c; other++) inverted += below[other];
-                for (int other = c + 1; other < classes.Count; other++) ordered += below[other];
+                long lighter = CountUpTo(below, c - 1), notHeavier = CountUpTo(below, c);
+                inverted += lighter;
+                ordered += passed - notHeavier;
             }
-            for (int s = start; s < end; s++) below[classOf[order[s]]]++;
+            for (int s = start; s < end; s++) Add(below, classOf[order[s]]);
+            passed += end - start;
             start = end;
         }
         return (ordered - inverted) / pairs;
+    }
+
+    /// <summary>Particles counted in classes 0..<paramref name="c"/>.</summary>
+    static long CountUpTo(long[] tree, int c)
+    {
+        long sum = 0;
+        for (int i = c + 1; i > 0; i -= i & -i) sum += tree[i];
+        return sum;
+    }
+
+    static void Add(long[] tree, int c)
+    {
+        for (int i = c + 1; i < tree.Length; i += i & -i) tree[i]++;
     }
 }

@@ -99,6 +99,36 @@ namespace SphFluid.Tests.Output
         }
 
         [Test]
+        public void TheSortedCountAgreesWithCountingEveryPair()
+        {
+            // Five phases and heights on a coarse grid, so many pairs tie; checked against the definition itself.
+            var random = new Random(11);
+            var heights = new float[600];
+            var densities = new float[600];
+            for (int i = 0; i < heights.Length; i++)
+            {
+                int phase = random.Next(5);
+                densities[i] = 700f + 100f * phase;
+                heights[i] = MathF.Round((float)(random.NextDouble() * 0.5 + 0.1 * (4 - phase)) * 20f) / 20f; // heavier lower, on average
+            }
+            long ordered = 0, inverted = 0, pairs = 0;
+            for (int i = 0; i < heights.Length; i++)
+                for (int j = i + 1; j < heights.Length; j++)
+                {
+                    if (densities[i] == densities[j]) continue;
+                    pairs++;
+                    int heavier = densities[i] > densities[j] ? i : j, lighter = heavier == i ? j : i;
+                    if (heights[heavier] < heights[lighter]) ordered++;
+                    else if (heights[heavier] > heights[lighter]) inverted++;
+                }
+
+            double index = LayeringIndex.Of(heights, densities);
+
+            Assert.That(index, Is.EqualTo((double)(ordered - inverted) / pairs).Within(1e-12));
+            Assert.That(index, Is.InRange(0.3, 0.95), "this set is mostly, not perfectly, ordered");
+        }
+
+        [Test]
         public void OnePhaseHasNoIndex()
         {
             Assert.That(LayeringIndex.Of(new float[] { 0f, 1f }, new float[] { 1000f, 1000f }), Is.NaN);
