@@ -25,6 +25,9 @@ public sealed class SimulateOptions
     public double SnapshotEvery { get; set; } = 0.25;
     public double DiagnosticsEvery { get; set; } = 0.25;
 
+    /// <summary>Simulated seconds between particle exports (.vtu, .ply, .pvd); 0 = no export.</summary>
+    public double ExportEvery { get; set; }
+
     /// <summary>Multiplies the scene's particle count (the spacing shrinks by its cube root).</summary>
     public double ParticlesScale { get; set; } = 1.0;
 
@@ -44,6 +47,14 @@ FluidContainer, SphereObstacles, ContainerSpinner/SphereDriver motion) and simul
 Vulkan backend. Writes diagnostics.csv, frame_NNNN.png snapshots, layering.png (multi-phase scenes) and
 summary.txt into the output folder.
 
+Measures (console, diagnostics.csv, summary.txt): kinetic and potential energy; per phase the
+compression max(0, rho/rho0 - 1) and expansion max(0, 1 - rho/rho0) (mean and max), the mean, bottom
+and top height (along gravity from the container's lowest corner) and its share of the floor and wall
+layers (particles within one spacing of the face); the layering index over pairs of different density,
+(ordered - inverted) / pairs (1 = perfectly layered, 0 = mixed, -1 = upside down); the surge front
+(container-local x from the back wall reached within 2 spacings of the floor) and the column height at
+the back wall, spray ignored.
+
 Options:
   --seconds S              simulated seconds to run, in (0, 3600] (default 3)
   --steps N                run N frames of --frame-seconds instead, N in [1, 1000000]
@@ -54,6 +65,10 @@ Options:
                            refused (exit 2) and left as it was
   --frames-every S         simulated seconds between PNG snapshots, in (0, 3600] (default 0.25)
   --diagnostics-every S    simulated seconds between diagnostics lines/CSV rows, in (0, 3600] (default 0.25)
+  --export-every S         simulated seconds between particle exports, in (0, 3600] (default: none). Each
+                           writes particles_NNNN.vtu (ParaView; inline base64 binary) and particles_NNNN.ply
+                           (Blender, MeshLab; binary little-endian) with position, velocity, phase, density
+                           and pressure, and particles.pvd indexes the .vtu files by time
   --particles-scale F      multiply the particle count by F, in [0.01, 100] (spacing and support shrink by F^(1/3))
   --device NAME            Vulkan adapter whose name contains NAME (default: SPHFLUID_VULKAN_DEVICE, else the best)
   --top-view               also write top_NNNN.png (looking down)
@@ -81,6 +96,7 @@ Exit codes: 0 ok, 1 no Vulkan device or unexpected failure, 2 bad arguments, 3 s
                 case "--out": options.OutputDirectory = reader.Value(token); break;
                 case "--frames-every": options.SnapshotEvery = reader.Double(token, 0, 3600, true, "s"); break;
                 case "--diagnostics-every": options.DiagnosticsEvery = reader.Double(token, 0, 3600, true, "s"); break;
+                case "--export-every": options.ExportEvery = reader.Double(token, 0, 3600, true, "s"); break;
                 case "--particles-scale": options.ParticlesScale = reader.Double(token, 0.01, 100, false, ""); break;
                 case "--device": options.DeviceName = reader.Value(token); break;
                 case "--top-view": options.TopView = true; break;

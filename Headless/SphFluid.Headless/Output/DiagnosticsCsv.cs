@@ -7,16 +7,22 @@ using SphFluid.Simulation;
 
 namespace SphFluid.Headless.Output;
 
-/// <summary>One row of diagnostics.csv: the GPU diagnostics plus how the frame was stepped and where each phase sits.</summary>
-public sealed record DiagnosticsRow(double Time, int Frame, StepReport Step, DiagnosticsReport Report, LayeringSample Layering);
+/// <summary>One row of diagnostics.csv: the GPU diagnostics, how the frame was stepped, and the CPU measures of the same state.</summary>
+public sealed record DiagnosticsRow(double Time, int Frame, StepReport Step, DiagnosticsReport Report, FluidMeasures Measures);
 
 /// <summary>
-/// Writes diagnostics.csv: time_s, frame, substeps, dt_s, particles, total_mass_kg, kinetic_energy_J,
-/// max_speed_mps, nan_count, outside_count, then per phase &lt;name&gt;_count, _density_error_avg,
-/// _density_error_max, _mean_height_m, and finally layering_index. Invariant culture, one row per line.
+/// Writes diagnostics.csv, invariant culture, one row per line:
+/// time_s, frame, substeps, dt_s, particles, total_mass_kg, kinetic_energy_J, max_speed_mps, nan_count,
+/// outside_count (GPU reductions); then per phase &lt;name&gt;_count, _compression_avg, _compression_max,
+/// _expansion_avg, _expansion_max, _mean_height_m, _bottom_m, _top_m, _floor_share, _wall_share
+/// (<see cref="PhaseMeasures"/>); then layering_index, surge_front_m, back_wall_column_m, potential_energy_J
+/// (<see cref="FluidMeasures"/>). NaN where a figure does not exist (an empty phase, no pair to order).
 /// </summary>
 public sealed class DiagnosticsCsv : IDisposable
 {
+    static readonly string[] PhaseColumns =
+        { "count", "compression_avg", "compression_max", "expansion_avg", "expansion_max", "mean_height_m", "bottom_m", "top_m", "floor_share", "wall_share" };
+
     readonly StreamWriter _writer;
     readonly int _phaseCount;
 
@@ -28,9 +34,9 @@ public sealed class DiagnosticsCsv : IDisposable
         foreach (var p in phases)
         {
             string n = Column(p.Name);
-            header.Append($",{n}_count,{n}_density_error_avg,{n}_density_error_max,{n}_mean_height_m");
+            foreach (string column in PhaseColumns) header.Append(',').Append(n).Append('_').Append(column);
         }
-        header.Append(",layering_index");
+        header.Append(",layering_index,surge_front_m,back_wall_column_m,potential_energy_J");
         _writer.WriteLine(header);
     }
 
@@ -38,16 +44,20 @@ public sealed class DiagnosticsCsv : IDisposable
     {
         var c = CultureInfo.InvariantCulture;
         var r = row.Report;
+        var m = row.Measures;
         var line = new StringBuilder();
         line.Append(string.Format(c, "{0:F4},{1},{2},{3:G6},{4},{5:G9},{6:G6},{7:G6},{8},{9}",
             row.Time, row.Frame, row.Step.Substeps, row.Step.TimeStep, r.ParticleCount, r.TotalMass, r.KineticEnergy, r.MaxSpeed, r.NanCount, r.OutsideCount));
         for (int k = 0; k < _phaseCount; k++)
         {
             var p = k < r.Phases.Count ? r.Phases[k] : null;
-            double height = row.Layering != null && k < row.Layering.MeanHeights.Count ? row.Layering.MeanHeights[k] : double.NaN;
-            line.Append(string.Format(c, ",{0},{1:G6},{2:G6},{3:G6}", p?.Count ?? 0, p?.AverageDensityError ?? float.NaN, p?.MaxDensityError ?? float.NaN, height));
+            var q = m != null && k < m.Phases.Count ? m.Phases[k] : null;
+            line.Append(string.Format(c, ",{0},{1:G6},{2:G6},{3:G6},{4:G6},{5:G6},{6:G6},{7:G6},{8:G6},{9:G6}", p?.Count ?? 0,
+                q?.CompressionAverage ?? double.NaN, q?.CompressionMax ?? double.NaN, q?.ExpansionAverage ?? double.NaN, q?.ExpansionMax ?? double.NaN,
+                q?.MeanHeight ?? double.NaN, q?.Bottom ?? double.NaN, q?.Top ?? double.NaN, q?.FloorShare ?? double.NaN, q?.WallShare ?? double.NaN));
         }
-        line.Append(string.Format(c, ",{0:G6}", row.Layering?.LayeringIndex ?? double.NaN));
+        line.Append(string.Format(c, ",{0:G6},{1:G6},{2:G6},{3:G6}",
+            m?.LayeringIndex ?? double.NaN, m?.SurgeFront ?? double.NaN, m?.BackWallColumn ?? double.NaN, m?.PotentialEnergy ?? double.NaN));
         _writer.WriteLine(line);
         _writer.Flush();
     }

@@ -17,15 +17,15 @@ public static class LayeringFigure
     const int PanelHeight = 320, ChartWidth = 480, ProfileWidth = 160, Gap = 16, Pad = 12;
     static readonly Rgb Background = new(18, 20, 26), Grid = new(60, 64, 72), Axis = new(150, 150, 150), Index = new(235, 235, 235);
 
-    public static RgbImage Render(IReadOnlyList<LayeringSample> samples, ReadOnlySpan<Particle> finalParticles,
+    public static RgbImage Render(IReadOnlyList<FluidMeasures> samples, ReadOnlySpan<Particle> finalParticles,
         IReadOnlyList<PhaseProperties> phases, ContainerDescription container, Vector3 gravity)
     {
         var image = new RgbImage(Pad * 2 + ChartWidth + Gap + ProfileWidth, Pad * 2 + PanelHeight);
         image.Fill(Background);
         var colors = new Rgb[phases.Count];
         for (int k = 0; k < phases.Count; k++) colors[k] = Rgb.FromLinear(phases[k].Color.X, phases[k].Color.Y, phases[k].Color.Z);
-        var (up, floor, extent) = LayeringSample.Vertical(container, gravity);
-        double height = extent;
+        var frame = new GravityFrame(container, gravity);
+        double height = frame.Extent;
 
         // Chart frame and grid.
         int x0 = Pad, y0 = Pad, x1 = Pad + ChartWidth, y1 = Pad + PanelHeight;
@@ -47,9 +47,10 @@ public static class LayeringFigure
                 var b = samples[s];
                 for (int k = 0; k < phases.Count; k++)
                 {
-                    if (!double.IsFinite(a.MeanHeights[k]) || !double.IsFinite(b.MeanHeights[k])) continue;
+                    double ha = a.Phases[k].MeanHeight, hb = b.Phases[k].MeanHeight;
+                    if (!double.IsFinite(ha) || !double.IsFinite(hb)) continue;
                     for (int w = -1; w <= 1; w++)
-                        image.DrawLine(X(a.Time), YHeight(a.MeanHeights[k]) + w, X(b.Time), YHeight(b.MeanHeights[k]) + w, colors[k]);
+                        image.DrawLine(X(a.Time), YHeight(ha) + w, X(b.Time), YHeight(hb) + w, colors[k]);
                 }
                 if (double.IsFinite(a.LayeringIndex) && double.IsFinite(b.LayeringIndex))
                     image.DrawLine(X(a.Time), YIndex(a.LayeringIndex), X(b.Time), YIndex(b.LayeringIndex), Index);
@@ -63,7 +64,7 @@ public static class LayeringFigure
         foreach (var p in finalParticles)
         {
             if (p.Phase >= phases.Count) continue;
-            double h = Vector3.Dot(p.Position, up) - floor;
+            double h = frame.HeightOf(p.Position);
             if (!double.IsFinite(h)) continue;
             int band = Math.Clamp((int)(h / height * bands), 0, bands - 1);
             counts[band, p.Phase]++;

@@ -10,17 +10,21 @@ namespace SphFluid.Headless.Runs;
 /// <summary>The outcome of a simulate run, as summary.txt and the closing line print it.</summary>
 public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, string Device, double SimulatedSeconds, int Frames,
     int Substeps, int CappedFrames, double WallSeconds, int Snapshots, DiagnosticsReport First, DiagnosticsReport Last,
-    LayeringSample Layering, string Failure, string OutputDirectory)
+    FluidMeasures Measures, string Failure, string OutputDirectory)
 {
     static readonly CultureInfo C = CultureInfo.InvariantCulture;
 
     public bool Ok => Failure == null;
 
+    /// <summary>Particle exports written (particles_NNNN.vtu/.ply), 0 without --export-every.</summary>
+    public int Exports { get; init; }
+
     public string OneLine() => string.Format(C,
-        "{0}: {1:F3} s simulated in {2} frames / {3} sub-steps, {4:F1} s wall ({5:F2} s per simulated s){6}; {7} snapshot(s){8}; mass {9}",
+        "{0}: {1:F3} s simulated in {2} frames / {3} sub-steps, {4:F1} s wall ({5:F2} s per simulated s){6}; {7} snapshot(s){8}{9}; mass {10}",
         Ok ? "done" : "FAILED", SimulatedSeconds, Frames, Substeps, WallSeconds, SimulatedSeconds > 0 ? WallSeconds / SimulatedSeconds : 0,
         CappedFrames > 0 ? $", {CappedFrames} frame(s) capped at MaxSubsteps" : "", Snapshots,
-        Layering != null && double.IsFinite(Layering.LayeringIndex) ? string.Format(C, "; layering index {0:F2}", Layering.LayeringIndex) : "",
+        Exports > 0 ? $", {Exports} particle export(s)" : "",
+        Measures != null && double.IsFinite(Measures.LayeringIndex) ? string.Format(C, "; layering index {0:F2}", Measures.LayeringIndex) : "",
         First != null && Last != null ? string.Format(C, "{0:G9} -> {1:G9} kg", First.TotalMass, Last.TotalMass) : "n/a");
 
     public string ToText()
@@ -35,19 +39,32 @@ public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, s
         b.AppendLine($"result: {(Ok ? "ok" : "FAILED: " + Failure)}");
         if (First != null) b.AppendLine($"first diagnostics: {First}");
         if (Last != null) b.AppendLine($"last diagnostics:  {Last}");
-        if (Layering != null)
-        {
-            var phases = Simulation.Phases;
-            b.Append("final mean height above the floor:");
-            for (int k = 0; k < phases.Count; k++) b.Append(string.Format(C, " {0} {1:F4} m", phases[k].Name, Layering.MeanHeights[k]));
-            b.AppendLine();
-            if (phases.Count > 1)
-            {
-                string order = string.Join(" < ", Enumerable.Range(0, phases.Count).OrderBy(k => Layering.MeanHeights[k]).Select(k => phases[k].Name));
-                b.AppendLine(string.Format(C, "layering index: {0:F3} (1 = lightest phase fully above the heaviest, 0 = mixed); order from the floor up: {1}", Layering.LayeringIndex, order));
-            }
-        }
-        b.AppendLine($"files: diagnostics.csv, frame_0000.png .. frame_{Snapshots - 1:D4}.png{(Simulation.Phases.Count > 1 ? ", layering.png" : "")}, summary.txt");
+        if (Measures != null) AppendMeasures(b);
+        b.Append($"files: diagnostics.csv, frame_0000.png .. frame_{Snapshots - 1:D4}.png{(Simulation.Phases.Count > 1 ? ", layering.png" : "")}");
+        if (Exports > 0) b.Append($", particles_0000.vtu/.ply .. particles_{Exports - 1:D4}.vtu/.ply, {ParticleExport.IndexName}");
+        b.AppendLine(", summary.txt");
         return b.ToString();
+    }
+
+    void AppendMeasures(StringBuilder b)
+    {
+        var phases = Simulation.Phases;
+        var m = Measures;
+        b.AppendLine(string.Format(C, "final measures at t = {0:F4} s (heights along -gravity from the container's lowest corner; layers within one spacing of a face):", m.Time));
+        b.AppendLine("  phase | compression avg / max | expansion avg / max | mean height m | bottom m | top m | floor share | wall share");
+        for (int k = 0; k < phases.Count; k++)
+        {
+            var p = m.Phases[k];
+            b.AppendLine(string.Format(C, "  {0} | {1:P2} / {2:P2} | {3:P2} / {4:P2} | {5:F4} | {6:F4} | {7:F4} | {8:P1} | {9:P1}", phases[k].Name,
+                p.CompressionAverage, p.CompressionMax, p.ExpansionAverage, p.ExpansionMax, p.MeanHeight, p.Bottom, p.Top, p.FloorShare, p.WallShare));
+        }
+        if (phases.Count > 1)
+        {
+            string order = string.Join(" < ", Enumerable.Range(0, phases.Count).OrderBy(k => m.Phases[k].MeanHeight).Select(k => phases[k].Name));
+            b.AppendLine(string.Format(C, "layering index: {0:F3} (pairs of different density, (ordered - inverted) / pairs: 1 = perfectly layered, 0 = mixed, -1 = upside down); mean heights from the floor up: {1}", m.LayeringIndex, order));
+        }
+        b.AppendLine(string.Format(C, "surge front: {0:F4} m from the back wall (container-local x, fluid within 2 spacings of the floor, spray ignored)", m.SurgeFront));
+        b.AppendLine(string.Format(C, "column at the back wall: {0:F4} m above the floor", m.BackWallColumn));
+        b.AppendLine(string.Format(C, "energy: kinetic {0:G6} J (GPU), potential {1:G6} J (above the container's lowest corner)", Last?.KineticEnergy ?? double.NaN, m.PotentialEnergy));
     }
 }

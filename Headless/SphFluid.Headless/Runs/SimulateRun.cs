@@ -4,6 +4,7 @@ using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
+using System.Numerics;
 using SphFluid.Compute;
 using SphFluid.Headless.Cli;
 using SphFluid.Headless.Output;
@@ -86,12 +87,14 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         if (options.TopView) views.Add((new SnapshotView(ViewAxis.Top, restContainer, scene.Motion.MovesContainer, options.ImageWidth), "top"));
 
         var particles = new Particle[sim.ParticleCount];
-        var layering = new List<LayeringSample>();
+        var densities = new Vector4[sim.ParticleCount];
+        var layering = new List<FluidMeasures>();
+        var export = options.ExportEvery > 0 ? new ParticleExport(output) : null;
         var progress = options.Quiet ? new ProgressReporter(null, false, duration, "s") : new ProgressReporter(stderr, InteractiveProgress, duration, "s");
         using var csv = new DiagnosticsCsv(output.PathOf("diagnostics.csv"), sim.Phases);
         var clock = Stopwatch.StartNew();
         int snapshots = 0, frame = 0, substeps = 0, cappedFrames = 0;
-        double nextSnapshot = 0, nextDiagnostics = 0;
+        double nextSnapshot = 0, nextDiagnostics = 0, nextExport = 0;
         DiagnosticsReport first = null, last = null;
         string failure = null;
         var container = restContainer;
@@ -103,12 +106,15 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             double t = sim.SimulatedTime;
             bool diagnose = force || t >= nextDiagnostics - 1e-9;
             bool snap = force || t >= nextSnapshot - 1e-9;
-            if (!diagnose && !snap) return;
+            // Exports keep to their own schedule (0, S, 2S ...): the forced last look adds none.
+            bool exportNow = export != null && t >= nextExport - 1e-9;
+            if (!diagnose && !snap && !exportNow) return;
             sim.Particles.GetData(particles);
+            if (diagnose || exportNow) sim.Densities.GetData(densities);
             if (diagnose)
             {
                 var report = sim.ReadDiagnostics();
-                var sample = LayeringSample.Measure(t, particles, phases, container, settings.Gravity, settings.ParticleSpacing);
+                var sample = FluidMeasures.Measure(t, particles, densities, phases, container, settings.Gravity, settings.ParticleSpacing, settings.SmoothingRadius);
                 layering.Add(sample);
                 csv.Append(new DiagnosticsRow(t, frame, step, report, sample));
                 progress.Interrupt();
@@ -126,6 +132,11 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
                         SnapshotRenderer.Render(view, particles, phases, container, obstacles, settings.ParticleSpacing));
                 snapshots++;
                 while (nextSnapshot <= t + 1e-9) nextSnapshot += options.SnapshotEvery;
+            }
+            if (exportNow)
+            {
+                export.Write(t, particles, densities);
+                while (nextExport <= t + 1e-9) nextExport += options.ExportEvery;
             }
         }
 
@@ -159,7 +170,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             PngEncoder.Write(output.PathOf("layering.png"), LayeringFigure.Render(layering, particles, phases, container, settings.Gravity));
 
         Summary = new RunSummary(scene, sim, device.DeviceName, sim.SimulatedTime, frame, substeps, cappedFrames, wall, snapshots,
-            first, last, layering.Count > 0 ? layering[^1] : null, failure, Path.GetFullPath(output.Path));
+            first, last, layering.Count > 0 ? layering[^1] : null, failure, Path.GetFullPath(output.Path)) { Exports = export?.Count ?? 0 };
         File.WriteAllText(output.PathOf("summary.txt"), Summary.ToText());
         stdout.WriteLine(Summary.OneLine());
         if (failure != null)
@@ -187,16 +198,19 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         return null;
     }
 
-    static string DiagnosticsLine(double t, int frame, StepReport step, DiagnosticsReport r, LayeringSample layering, IReadOnlyList<PhaseDescription> phases)
+    static string DiagnosticsLine(double t, int frame, StepReport step, DiagnosticsReport r, FluidMeasures m, IReadOnlyList<PhaseDescription> phases)
     {
-        var line = string.Format(C, "t={0,6:F3} s frame={1,4} substeps={2,2} dt={3,6:F3} ms N={4} mass={5:G6} kg KE={6:G4} J vmax={7:F3} m/s nan={8} out={9}",
-            t, frame, step.Substeps, step.TimeStep * 1000, r.ParticleCount, r.TotalMass, r.KineticEnergy, r.MaxSpeed, r.NanCount, r.OutsideCount);
-        for (int k = 0; k < r.Phases.Count; k++)
+        var line = string.Format(C, "t={0,6:F3} s frame={1,4} substeps={2,2} dt={3,6:F3} ms N={4} mass={5:G6} kg KE={6:G4} J PE={7:G4} J vmax={8:F3} m/s nan={9} out={10}",
+            t, frame, step.Substeps, step.TimeStep * 1000, r.ParticleCount, r.TotalMass, r.KineticEnergy, m.PotentialEnergy, r.MaxSpeed, r.NanCount, r.OutsideCount);
+        for (int k = 0; k < phases.Count; k++)
         {
-            var p = r.Phases[k];
-            line += string.Format(C, " | {0}: err {1:P2}/{2:P2} y {3:F3} m", p.Name, p.AverageDensityError, p.MaxDensityError, layering.MeanHeights[k]);
+            var p = m.Phases[k];
+            line += string.Format(C, " | {0}: comp {1:P2}/{2:P2} exp {3:P2}/{4:P2} y {5:F3} m", phases[k].Name,
+                p.CompressionAverage, p.CompressionMax, p.ExpansionAverage, p.ExpansionMax, p.MeanHeight);
+            if (phases.Count > 1) line += string.Format(C, " floor {0:P0} wall {1:P0}", p.FloorShare, p.WallShare);
         }
-        if (phases.Count > 1) line += string.Format(C, " | layering {0:F2}", layering.LayeringIndex);
+        if (phases.Count > 1) line += string.Format(C, " | layering {0:F2}", m.LayeringIndex);
+        line += string.Format(C, " | front {0:F3} m column {1:F3} m", m.SurgeFront, m.BackWallColumn);
         return line;
     }
 }

@@ -1,0 +1,147 @@
+using System.IO;
+using System.Linq;
+using System.Numerics;
+using System.Xml;
+using NUnit.Framework;
+using SphFluid.Headless;
+using SphFluid.Headless.Cli;
+using SphFluid.Headless.Output;
+using SphFluid.Headless.Runs;
+using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
+using SphFluid.Tests.Output;
+
+namespace SphFluid.Tests.Runner
+{
+    /// <summary>Particle export and the new measures against the GPU's own buffers and reductions.</summary>
+    public sealed class ParticleExportRunTests
+    {
+        static FluidSimulation OilAndWater()
+        {
+            var scene = SceneLoader.Load(RunnerPaths.Scene("OilAndWater"));
+            ParticleScaling.ScaleBy(scene.Description, 0.1);
+            return new FluidSimulation(GpuTestDevice.Shared, scene.Description);
+        }
+
+        [Test]
+        public void AVtuReadBackEqualsTheGpuBuffers()
+        {
+            using var sim = OilAndWater();
+            for (int frame = 0; frame < 3; frame++) sim.Step(1f / 60f);
+            var particles = new Particle[sim.ParticleCount];
+            var densities = new Vector4[sim.ParticleCount];
+            sim.Particles.GetData(particles);
+            sim.Densities.GetData(densities);
+            string path = Path.Combine(RunnerPaths.ScratchFolder("gpu-vtu"), "particles_0000.vtu");
+
+            VtuParticles.Write(path, sim.SimulatedTime, particles, densities);
+
+            // Read the buffers again: the file must hold what the GPU holds, bit for bit.
+            var gpuParticles = new Particle[sim.ParticleCount];
+            var gpuDensities = new Vector4[sim.ParticleCount];
+            sim.Particles.GetData(gpuParticles);
+            sim.Densities.GetData(gpuDensities);
+            var vtu = new VtuReader(path);
+            float[] positions = vtu.Positions, velocities = vtu.PointData("velocity", 3), density = vtu.PointData("density"), pressure = vtu.PointData("pressure");
+            uint[] phase = vtu.UInts("PointData/DataArray[@Name='phase']"), id = vtu.UInts("PointData/DataArray[@Name='id']");
+            Assert.That(vtu.Points, Is.EqualTo(sim.ParticleCount));
+            Assert.That(vtu.Time, Is.EqualTo(sim.SimulatedTime));
+            int pressured = 0;
+            for (int i = 0; i < sim.ParticleCount; i++)
+            {
+                var p = gpuParticles[i];
+                Assert.That(new Vector3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]), Is.EqualTo(p.Position), "position " + i);
+                Assert.That(new Vector3(velocities[3 * i], velocities[3 * i + 1], velocities[3 * i + 2]), Is.EqualTo(p.Velocity), "velocity " + i);
+                Assert.That(phase[i], Is.EqualTo(p.Phase));
+                Assert.That(id[i], Is.EqualTo(p.Id));
+                Assert.That(density[i], Is.EqualTo(gpuDensities[i].X), "density " + i);
+                Assert.That(pressure[i], Is.EqualTo(gpuDensities[i].Y), "pressure " + i);
+                if (pressure[i] > 0) pressured++;
+            }
+            Assert.That(density.Min(), Is.GreaterThan(100f), "real densities, not an empty buffer");
+            Assert.That(pressured, Is.GreaterThan(0), "some particle is compressed, so pressure is exported too");
+            Assert.That(phase.Distinct().Count(), Is.EqualTo(2));
+        }
+
+        [Test]
+        public void CpuCompressionMatchesTheGpuReduction()
+        {
+            using var sim = OilAndWater();
+            for (int frame = 0; frame < 3; frame++) sim.Step(1f / 60f);
+            var particles = new Particle[sim.ParticleCount];
+            var densities = new Vector4[sim.ParticleCount];
+            sim.Particles.GetData(particles);
+            sim.Densities.GetData(densities);
+            var settings = sim.Scene.Settings;
+
+            var measures = FluidMeasures.Measure(sim.SimulatedTime, particles, densities, sim.PhaseRows, sim.Scene.Container, settings.Gravity, settings.ParticleSpacing, settings.SmoothingRadius);
+            var report = sim.ReadDiagnostics();
+
+            for (int k = 0; k < 2; k++)
+            {
+                Assert.That(measures.Phases[k].Count, Is.EqualTo(report.Phases[k].Count));
+                Assert.That(measures.Phases[k].CompressionAverage, Is.EqualTo(report.Phases[k].AverageDensityError).Within(1e-5), report.Phases[k].Name);
+                Assert.That(measures.Phases[k].CompressionMax, Is.EqualTo(report.Phases[k].MaxDensityError).Within(1e-6), report.Phases[k].Name);
+                Assert.That(measures.Phases[k].ExpansionAverage, Is.GreaterThan(0.0), "the free surface is under-dense");
+            }
+        }
+
+        [Test]
+        public void SimulateExportsOnItsOwnScheduleAndIndexesTheExports()
+        {
+            string outDir = RunnerPaths.ScratchFolder("export-run");
+            var stdout = new StringWriter();
+            var stderr = new StringWriter();
+            var options = SimulateOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--seconds", "0.05", "--export-every", "0.025", "--out", outDir, "--quiet" });
+            var run = new SimulateRun(options, stdout, stderr) { Device = GpuTestDevice.Shared, InteractiveProgress = false };
+
+            int code = run.Execute();
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
+            // 60 Hz frames: exports at t = 0, at the first frame past 0.025 s (0.0333) and at 0.05 s.
+            var pvd = new XmlDocument();
+            pvd.Load(Path.Combine(outDir, "particles.pvd"));
+            var sets = pvd.SelectNodes("/VTKFile/Collection/DataSet").Cast<XmlElement>().ToArray();
+            Assert.That(sets.Select(s => s.GetAttribute("file")).ToArray(), Is.EqualTo(new[] { "particles_0000.vtu", "particles_0001.vtu", "particles_0002.vtu" }));
+            Assert.That(double.Parse(sets[1].GetAttribute("timestep"), System.Globalization.CultureInfo.InvariantCulture), Is.EqualTo(2.0 / 60).Within(1e-4));
+            var last = new VtuReader(Path.Combine(outDir, "particles_0002.vtu"));
+            Assert.That(last.Points, Is.EqualTo(192));
+            Assert.That(last.Time, Is.EqualTo(run.Summary.SimulatedSeconds).Within(1e-9));
+            Assert.That(new PlyReader(Path.Combine(outDir, "particles_0002.ply")).Vertices, Is.EqualTo(192));
+            Assert.That(File.Exists(Path.Combine(outDir, "particles_0003.vtu")), Is.False);
+            Assert.That(run.Summary.Exports, Is.EqualTo(3));
+            string summary = File.ReadAllText(Path.Combine(outDir, "summary.txt"));
+            Assert.That(summary, Does.Contain("particles_0000.vtu/.ply .. particles_0002.vtu/.ply, particles.pvd"));
+            Assert.That(summary, Does.Contain("surge front: "));
+            Assert.That(stdout.ToString(), Does.Contain(" PE="));
+            Assert.That(stdout.ToString(), Does.Contain("3 particle export(s)"));
+        }
+
+        [Test]
+        public void TheHelpNamesTheExportAndTheMeasures()
+        {
+            var stdout = new StringWriter();
+
+            int code = Program.Run(new[] { "simulate", "--help" }, stdout, new StringWriter());
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok));
+            Assert.That(stdout.ToString(), Does.Contain("--export-every S"));
+            Assert.That(stdout.ToString(), Does.Contain("particles.pvd"));
+            Assert.That(stdout.ToString(), Does.Contain("(ordered - inverted) / pairs"));
+            Assert.That(stdout.ToString(), Does.Contain("surge front"));
+        }
+
+        [TestCase("0", "--export-every must be in (0, 3600] s (was 0)")]
+        [TestCase("soon", "--export-every must be a number in (0, 3600] s (was 'soon')")]
+        public void ABadExportIntervalIsRefusedWithItsRange(string value, string message)
+        {
+            var stdout = new StringWriter();
+            var stderr = new StringWriter();
+
+            int code = Program.Run(new[] { "simulate", RunnerPaths.Scene("PlayModeTest"), "--export-every", value }, stdout, stderr);
+
+            Assert.That(code, Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(stderr.ToString(), Does.Contain(message));
+        }
+    }
+}
