@@ -11,6 +11,9 @@ namespace SphFluid.Runtime
     [DisallowMultipleComponent]
     public sealed class FluidContainer : MonoBehaviour
     {
+        [SerializeField, Tooltip("How the walls and obstacles hold the fluid tangentially: NoSlip (a real wall) or Slip (free slip).")]
+        WallFriction friction = WallFriction.NoSlip;
+
         /// <summary>The container at rest where the Transform is now (velocities are the simulator's business).</summary>
         public ContainerDescription Describe() => DescribeInto(new ContainerDescription());
 
@@ -22,6 +25,7 @@ namespace SphFluid.Runtime
             description.Position = t.position.ToNumerics();
             description.Rotation = t.rotation.ToNumerics();
             description.Size = Abs(t.lossyScale).ToNumerics();
+            description.Friction = friction;
             return description;
         }
 

@@ -77,12 +77,8 @@ namespace SphFluid.Runtime
         [SerializeField, Min(0f), Tooltip("Global velocity damping, 1/s, in [0, 1000]; 0 = none.")]
         float velocityDamping = CoreDefaults.VelocityDamping;
 
-        [Header("Walls")]
-        [SerializeField, Min(0f), Tooltip("Wall penalty stiffness, 1/s^2 (acceleration per metre of penetration), in [0, 1e8].")]
-        float boundaryStiffness = CoreDefaults.BoundaryStiffness;
-
-        [SerializeField, Min(0f), Tooltip("Wall penalty damping of the outward normal velocity, 1/s, in [0, 1e5].")]
-        float boundaryDamping = CoreDefaults.BoundaryDamping;
+        [SerializeField, Range(0f, 1f), Tooltip("Monaghan artificial viscosity alpha, in [0, 1]: damps the acoustic noise of the weakly compressible fluid; 0 turns it off.")]
+        float artificialViscosity = CoreDefaults.ArtificialViscosity;
 
         [Header("Time stepping")]
         [SerializeField, Range(0.01f, 1f), Tooltip("Courant number of the CFL condition, in (0, 1].")]
@@ -202,8 +198,7 @@ namespace SphFluid.Runtime
                 Gamma = gamma,
                 Gravity = gravity.ToNumerics(),
                 XsphEpsilon = xsphEpsilon,
-                BoundaryStiffness = boundaryStiffness,
-                BoundaryDamping = boundaryDamping,
+                ArtificialViscosity = artificialViscosity,
                 VelocityDamping = velocityDamping,
                 CflNumber = cflNumber,
                 MaxSubsteps = maxSubsteps,

@@ -16,7 +16,8 @@ public sealed record DiagnosticsRow(double Time, int Frame, StepReport Step, Dia
 /// outside_count (GPU reductions); then per phase &lt;name&gt;_count, _compression_avg, _compression_max,
 /// _expansion_avg, _expansion_max, _mean_height_m, _bottom_m, _top_m, _floor_share, _wall_share
 /// (<see cref="PhaseMeasures"/>); then layering_index, surge_front_m, back_wall_column_m, potential_energy_J
-/// (<see cref="FluidMeasures"/>). NaN where a figure does not exist (an empty phase, no pair to order).
+/// (<see cref="FluidMeasures"/>); then clamp_hits (particles the last-resort wall clamp caught since spawn:
+/// 0 while the boundary particles hold the fluid). NaN where a figure does not exist (an empty phase, no pair to order).
 /// </summary>
 public sealed class DiagnosticsCsv : IDisposable
 {
@@ -36,7 +37,7 @@ public sealed class DiagnosticsCsv : IDisposable
             string n = Column(p.Name);
             foreach (string column in PhaseColumns) header.Append(',').Append(n).Append('_').Append(column);
         }
-        header.Append(",layering_index,surge_front_m,back_wall_column_m,potential_energy_J");
+        header.Append(",layering_index,surge_front_m,back_wall_column_m,potential_energy_J,clamp_hits");
         _writer.WriteLine(header);
     }
 
@@ -56,8 +57,8 @@ public sealed class DiagnosticsCsv : IDisposable
                 q?.CompressionAverage ?? double.NaN, q?.CompressionMax ?? double.NaN, q?.ExpansionAverage ?? double.NaN, q?.ExpansionMax ?? double.NaN,
                 q?.MeanHeight ?? double.NaN, q?.Bottom ?? double.NaN, q?.Top ?? double.NaN, q?.FloorShare ?? double.NaN, q?.WallShare ?? double.NaN));
         }
-        line.Append(string.Format(c, ",{0:G6},{1:G6},{2:G6},{3:G6}",
-            m?.LayeringIndex ?? double.NaN, m?.SurgeFront ?? double.NaN, m?.BackWallColumn ?? double.NaN, m?.PotentialEnergy ?? double.NaN));
+        line.Append(string.Format(c, ",{0:G6},{1:G6},{2:G6},{3:G6},{4}",
+            m?.LayeringIndex ?? double.NaN, m?.SurgeFront ?? double.NaN, m?.BackWallColumn ?? double.NaN, m?.PotentialEnergy ?? double.NaN, r.ClampHits));
         _writer.WriteLine(line);
         _writer.Flush();
     }

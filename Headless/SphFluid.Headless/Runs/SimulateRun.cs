@@ -200,8 +200,8 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
 
     static string DiagnosticsLine(double t, int frame, StepReport step, DiagnosticsReport r, FluidMeasures m, IReadOnlyList<PhaseDescription> phases)
     {
-        var line = string.Format(C, "t={0,6:F3} s frame={1,4} substeps={2,2} dt={3,6:F3} ms N={4} mass={5:G6} kg KE={6:G4} J PE={7:G4} J vmax={8:F3} m/s nan={9} out={10}",
-            t, frame, step.Substeps, step.TimeStep * 1000, r.ParticleCount, r.TotalMass, r.KineticEnergy, m.PotentialEnergy, r.MaxSpeed, r.NanCount, r.OutsideCount);
+        var line = string.Format(C, "t={0,6:F3} s frame={1,4} substeps={2,2} dt={3,6:F3} ms N={4} mass={5:G6} kg KE={6:G4} J PE={7:G4} J vmax={8:F3} m/s nan={9} out={10} clamped={11}",
+            t, frame, step.Substeps, step.TimeStep * 1000, r.ParticleCount, r.TotalMass, r.KineticEnergy, m.PotentialEnergy, r.MaxSpeed, r.NanCount, r.OutsideCount, r.ClampHits);
         for (int k = 0; k < phases.Count; k++)
         {
             var p = m.Phases[k];

@@ -192,6 +192,7 @@ public static class SceneLoader
                 Gravity = Vector(go, mb, c, "gravity", d.Gravity),
                 XsphEpsilon = Float(go, mb, c, "xsphEpsilon", d.XsphEpsilon),
                 VelocityDamping = Float(go, mb, c, "velocityDamping", d.VelocityDamping),
+                ArtificialViscosity = Float(go, mb, c, "artificialViscosity", d.ArtificialViscosity),
                 CflNumber = Float(go, mb, c, "cflNumber", d.CflNumber),
                 MaxSubsteps = Int(go, mb, c, "maxSubsteps", d.MaxSubsteps),
                 MaxTimeStep = Float(go, mb, c, "maxTimeStep", d.MaxTimeStep),
@@ -217,7 +218,11 @@ public static class SceneLoader
                 _containerGo = found[0].Go;
             }
             var w = _containerGo.World;
-            return new ContainerDescription(w.Position, w.Rotation, Abs(w.Scale));
+            var container = new ContainerDescription(w.Position, w.Rotation, Abs(w.Scale));
+            var component = Active(containerGuid).Find(found => found.Go == _containerGo).Behaviour;
+            if (component != null)
+                container.Friction = (WallFriction)Int(_containerGo, component, RuntimeScripts.FluidContainer, "friction", (int)container.Friction);
+            return container;
         }
 
         SpawnBoxDescription ReadSpawnBox(UnityGameObject go, UnityDocument mb)

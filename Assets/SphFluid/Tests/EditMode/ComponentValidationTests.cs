@@ -122,8 +122,7 @@ namespace SphFluid.Tests.EditMode
             Assert.That(mirrored.Gamma, Is.EqualTo(core.Gamma));
             Assert.That(mirrored.Gravity, Is.EqualTo(core.Gravity));
             Assert.That(mirrored.XsphEpsilon, Is.EqualTo(core.XsphEpsilon));
-            Assert.That(mirrored.BoundaryStiffness, Is.EqualTo(core.BoundaryStiffness));
-            Assert.That(mirrored.BoundaryDamping, Is.EqualTo(core.BoundaryDamping));
+            Assert.That(mirrored.ArtificialViscosity, Is.EqualTo(core.ArtificialViscosity));
             Assert.That(mirrored.VelocityDamping, Is.EqualTo(core.VelocityDamping));
             Assert.That(mirrored.CflNumber, Is.EqualTo(core.CflNumber));
             Assert.That(mirrored.MaxSubsteps, Is.EqualTo(core.MaxSubsteps));
