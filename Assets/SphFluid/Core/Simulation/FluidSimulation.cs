@@ -311,6 +311,9 @@ namespace SphFluid.Simulation
             LatestDiagnostics = null;
             _particles.SetData(_spawn);
             ComputeForces();
+            // The first frame plans with the acceleration the first force pass computed, not gravity alone.
+            ReadMotion(out float firstSpeed, out float firstAcceleration);
+            _timeStep.ReportMotion(firstSpeed, firstAcceleration);
         }
 
         // ---------------------------------------------------------------- diagnostics
