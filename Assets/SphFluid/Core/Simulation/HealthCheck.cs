@@ -36,7 +36,6 @@ namespace SphFluid.Simulation
         /// <summary>Allowed acoustic speed as a fraction of the speed of sound.</summary>
         public const float AcousticFraction = 0.01f;
 
-
         /// <summary>Energy growth allowed for integration error, as a fraction of the potential energy M |g| D.</summary>
         public const double EnergyAllowance = 0.05;
 
