@@ -150,7 +150,8 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             frame++;
             substeps += step.Substeps;
             if (step.Capped) cappedFrames++;
-            Observe(force: false);
+            // The time step's free max-speed read-back catches a blow-up between diagnostics: check at once.
+            Observe(force: sim.TimeStep.MaxSpeed > health.SpeedBound);
             progress.Report(Math.Min(sim.SimulatedTime, duration), string.Format(C, "frame {0}, {1} sub-steps of {2:F3} ms", frame, step.Substeps, step.TimeStep * 1000));
         }
         if (layering.Count == 0 || layering[^1].Time < sim.SimulatedTime - 1e-9 || snapshots == 0) Observe(force: true);
