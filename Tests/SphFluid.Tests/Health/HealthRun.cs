@@ -24,6 +24,7 @@ namespace SphFluid.Tests.Health
         public float MostCompressed { get; private set; }
         public int Frames { get; private set; }
         public int Substeps { get; private set; }
+        public double MostEnergyGained { get; private set; }
 
         public bool Refused => Refusals.Count > 0;
 
@@ -56,7 +57,8 @@ namespace SphFluid.Tests.Health
                     run.Observe(sim, particles);
                 }
                 TestContext.WriteLine($"{run.Frames} frames, {run.Substeps} sub-steps, {sim.SimulatedTime:F3} s simulated in {clock.Elapsed.TotalSeconds:F1} s wall; "
-                    + $"speed bound {run.Check.SpeedBound:G4} m/s, fastest {run.FastestSeen:G4} m/s, most compressed {run.MostCompressed:P2}; last: {run.Last}"
+                    + $"speed bound {run.Check.SpeedBound:G4} m/s, fastest {run.FastestSeen:G4} m/s, most compressed {run.MostCompressed:P2} (bounds {run.Check.MeanCompressionBound:P1} mean, {run.Check.MaxCompressionBound:P1} max), "
+                    + $"largest energy growth {run.MostEnergyGained:G4} J (bound {run.Check.EnergyBound:G4} J{(run.Check.Driven ? ", not checked: driven" : "")}); last: {run.Last}"
                     + (run.Problem != null ? "\nPROBLEM: " + run.Problem.Message : ""));
             }
             return run;
@@ -69,6 +71,7 @@ namespace SphFluid.Tests.Health
             FastestSeen = Math.Max(FastestSeen, float.IsNaN(Last.MaxSpeed) ? float.PositiveInfinity : Last.MaxSpeed);
             foreach (var p in Last.Phases) MostCompressed = Math.Max(MostCompressed, p.MaxDensityError);
             Problem ??= Check.Check(Last, particles);
+            MostEnergyGained = Math.Max(MostEnergyGained, Check.EnergyGrowth);
         }
     }
 }

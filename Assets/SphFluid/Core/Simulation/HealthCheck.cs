@@ -103,6 +103,9 @@ namespace SphFluid.Simulation
         /// <summary>A container wall or sphere has moved: energy may come in from outside.</summary>
         public bool Driven => WallSpeed > 0f || ObstacleSpeed > 0f;
 
+        /// <summary>Mechanical energy of the last state checked with particles minus that of the first, J (0 until two were checked).</summary>
+        public double EnergyGrowth { get; private set; }
+
         /// <summary>Energy growth allowed over the first state checked with particles, J.</summary>
         public double EnergyBound
         {
@@ -169,7 +172,8 @@ namespace SphFluid.Simulation
                     _firstEnergy = energy;
                     foreach (var phase in report.Phases) _firstCompression = Math.Max(_firstCompression, phase.MaxDensityError);
                 }
-                else if (!(energy - _firstEnergy <= EnergyBound))
+                else EnergyGrowth = energy - _firstEnergy;
+                if (!(EnergyGrowth <= EnergyBound))
                     return new HealthProblem(t, all, "mechanical energy growth", energy - _firstEnergy, EnergyBound, "J",
                         "nothing in the scene feeds energy in: no moving wall or sphere");
             }

@@ -140,6 +140,7 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(problem.Figure, Is.EqualTo("mechanical energy growth"));
             double mass = 8 * scene.BuildPhaseTable()[0].ParticleMass;
             Assert.That(problem.Value, Is.EqualTo(mass * (9.81 * 0.2 + 0.5)).Within(1e-3));
+            Assert.That(check.EnergyGrowth, Is.EqualTo(problem.Value));
             Assert.That(problem.Bound, Is.EqualTo(mass * 0.05 * 9.81 * Math.Sqrt(0.75)).Within(1e-4));
 
             var driven = new HealthCheck(scene);
