@@ -164,7 +164,7 @@ namespace SphFluid.Simulation
                     errors.Add(new ValidationError(path + "Center",
                         $"{owner}: the box must lie inside the container (centre {ValidationRules.Format(Container.Position)}, size {ValidationRules.Format(Container.Size)} m); its corner {ValidationRules.Format(corner)} is outside"));
                 }
-                if (errors.Count == before) ParticleMassRule.Validate(Settings, box.Phase, owner, path + "Phase.", errors);
+                if (errors.Count == before) ParticleMassRule.Validate(this, box.Phase, owner, path + "Phase.", errors);
             }
             if (firstOfPhase.Count > MaxPhases)
                 errors.Add(new ValidationError("SpawnBoxes", $"FluidScene: the number of phases must be in [1, {MaxPhases}] (was {firstOfPhase.Count})"));

@@ -13,15 +13,15 @@ namespace SphFluid.Simulation
     internal static class ParticleMassRule
     {
         /// <summary>m0 = rho0 / delta0, kg: the mass at which the spawn lattice sits at rest density.</summary>
-        internal static double DerivedMass(FluidSettings settings, PhaseDescription phase) =>
-            phase.RestDensity / SmoothingKernels.LatticeNumberDensity(settings.ParticleSpacing, settings.SmoothingRadius);
+        internal static double DerivedMass(FluidSceneDescription scene, PhaseDescription phase) =>
+            phase.RestDensity / scene.RestNumberDensity();
 
         /// <summary>Needs valid settings and a valid rest density.</summary>
-        internal static void Validate(FluidSettings settings, PhaseDescription phase, string owner, string path, List<ValidationError> errors)
+        internal static void Validate(FluidSceneDescription scene, PhaseDescription phase, string owner, string path, List<ValidationError> errors)
         {
             if (phase.ParticleMass == 0f) return;
-            double derived = DerivedMass(settings, phase);
-            double factor = SpeedOfSoundRule.SonicImpactDensityRatio(settings.Gamma);
+            double derived = DerivedMass(scene, phase);
+            double factor = SpeedOfSoundRule.SonicImpactDensityRatio(scene.Settings.Gamma);
             double min = derived / factor, max = derived * factor;
             if (phase.ParticleMass >= min && phase.ParticleMass <= max) return;
             errors.Add(new ValidationError(path + nameof(PhaseDescription.ParticleMass),
