@@ -14,6 +14,7 @@ public static class ExitCodes
     /// <summary>The scene file cannot be read or describes an impossible fluid.</summary>
     public const int BadScene = 3;
 
-    /// <summary>The simulation went non-finite or lost particles.</summary>
+    /// <summary>The run became unhealthy (SphFluid.Simulation.HealthCheck): non-finite, particles lost, or faster,
+    /// more compressed or more energetic than the scene allows.</summary>
     public const int SimulationFailed = 4;
 }

@@ -77,7 +77,8 @@ Options:
   --help                   this text
 
 Exit codes: 0 ok, 1 no Vulkan device or unexpected failure, 2 bad arguments, 3 scene errors,
-4 the simulation went non-finite or lost particles.";
+4 the run became unhealthy: non-finite, particles lost, or faster, more compressed or more
+energetic than the scene allows (the message names the time, phase and figure).";
 
     public static SimulateOptions Parse(string[] args)
     {

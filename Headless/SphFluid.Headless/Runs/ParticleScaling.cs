@@ -32,6 +32,19 @@ public static class ParticleScaling
         return Count(scene);
     }
 
+    /// <summary>An explicit particle mass keeps its ratio to the derived one (which goes with s^3): the finer
+    /// lattice must still start at the density the scene meant.</summary>
+    static void ScaleExplicitMasses(FluidSceneDescription scene, float spacingRatio)
+    {
+        float volumeRatio = spacingRatio * spacingRatio * spacingRatio;
+        foreach (var box in scene.SpawnBoxes)
+        {
+            if (box.Phase == null || box.Phase.ParticleMass <= 0f) continue;
+            box.Phase = box.Phase.Clone();
+            box.Phase.ParticleMass *= volumeRatio;
+        }
+    }
+
     static int Count(FluidSceneDescription scene)
     {
         long total = 0;
@@ -45,6 +58,7 @@ public static class ParticleScaling
         float ratio = settings.SmoothingRadius / settings.ParticleSpacing;
         settings.ParticleSpacing = spacing;
         settings.SmoothingRadius = spacing * ratio;
+        ScaleExplicitMasses(scene, spacing / scene.Settings.ParticleSpacing);
         scene.Settings = settings;
         long total = 0;
         foreach (var box in scene.SpawnBoxes) total += SpawnLayout.Count(settings, box);

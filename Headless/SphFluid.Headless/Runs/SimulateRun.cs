@@ -100,6 +100,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         var container = restContainer;
         IReadOnlyList<SphereObstacleDescription> obstacles = restObstacles;
         StepReport step = StepReport.None;
+        var health = new HealthCheck(description);
 
         void Observe(bool force)
         {
@@ -122,7 +123,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
                 stdout.Flush();
                 first ??= report;
                 last = report;
-                failure ??= Health(report, sim.ParticleCount);
+                failure ??= Health(health, report, particles);
                 while (nextDiagnostics <= t + 1e-9) nextDiagnostics += options.DiagnosticsEvery;
             }
             if (snap)
@@ -154,12 +155,14 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
                 obstacles = scene.Motion.ObstaclesAt(restObstacles, target);
                 sim.UpdateObstacles(obstacles);
             }
+            health.ObserveDrivers(container, obstacles);
             float frameSeconds = (float)(options.Frames > 0 ? options.FrameSeconds : Math.Min(options.FrameSeconds, duration - sim.SimulatedTime));
             step = sim.Step(Math.Max(frameSeconds, 1e-6f));
             frame++;
             substeps += step.Substeps;
             if (step.Capped) cappedFrames++;
-            Observe(force: false);
+            // The time step's free max-speed read-back catches a blow-up between diagnostics: check at once.
+            Observe(force: sim.TimeStep.MaxSpeed > health.SpeedBound);
             progress.Report(Math.Min(sim.SimulatedTime, duration), string.Format(C, "frame {0}, {1} sub-steps of {2:F3} ms", frame, step.Substeps, step.TimeStep * 1000));
         }
         if (layering.Count == 0 || layering[^1].Time < sim.SimulatedTime - 1e-9 || snapshots == 0) Observe(force: true);
@@ -189,14 +192,9 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         return (int)n;
     }
 
-    /// <summary>Why the state is unacceptable (non-finite values, particles outside, a changed count), or null.</summary>
-    static string Health(DiagnosticsReport report, int spawned)
-    {
-        if (report.NanCount > 0) return string.Format(C, "the simulation went non-finite at t = {0:F3} s: {1} particle(s) have NaN/Inf values", report.SimulatedTime, report.NanCount);
-        if (report.OutsideCount > 0) return string.Format(C, "{0} particle(s) left the container at t = {1:F3} s", report.OutsideCount, report.SimulatedTime);
-        if (report.ParticleCount != spawned) return string.Format(C, "particles were lost: {0} counted at t = {1:F3} s, {2} spawned", report.ParticleCount, report.SimulatedTime, spawned);
-        return null;
-    }
+    /// <summary>Why the state is unacceptable, or null: <see cref="HealthCheck"/> names the first bad time, phase and
+    /// figure (non-finite, outside, lost, faster than the scene allows, over-compressed, energy from nowhere).</summary>
+    static string Health(HealthCheck health, DiagnosticsReport report, Particle[] particles) => health.Check(report, particles)?.Message;
 
     static string DiagnosticsLine(double t, int frame, StepReport step, DiagnosticsReport r, FluidMeasures m, IReadOnlyList<PhaseDescription> phases)
     {

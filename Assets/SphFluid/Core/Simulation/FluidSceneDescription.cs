@@ -86,6 +86,9 @@ namespace SphFluid.Simulation
             ValidateContainer(errors);
             ValidateBoxes(errors, settingsOk);
             ValidateObstacles(errors);
+            if (errors.Count > 0) return errors;
+            SpawnOverlapRule.Validate(this, errors);
+            SpeedOfSoundRule.Validate(this, errors);
             return errors;
         }
 
@@ -173,6 +176,7 @@ namespace SphFluid.Simulation
                     errors.Add(new ValidationError(path + "Center",
                         $"{owner}: the box must lie inside the container (centre {ValidationRules.Format(Container.Position)}, size {ValidationRules.Format(Container.Size)} m); its corner {ValidationRules.Format(corner)} is outside"));
                 }
+                if (errors.Count == before) ParticleMassRule.Validate(this, box.Phase, owner, path + "Phase.", errors);
             }
             if (firstOfPhase.Count > MaxPhases)
                 errors.Add(new ValidationError("SpawnBoxes", $"FluidScene: the number of phases must be in [1, {MaxPhases}] (was {firstOfPhase.Count})"));

@@ -20,13 +20,15 @@ namespace SphFluid.Simulation
         /// (SmoothingKernels.LatticeGradientReproduction).</summary>
         public float SmoothingRadius { get; set; } = 0.04f;
 
-        /// <summary>Tait stiffness k, Pa, in [1, 1e9]; speed of sound c = sqrt(k gamma / rho0).</summary>
+        /// <summary>Tait stiffness k, Pa, in [1, 1e9]; speed of sound c = sqrt(k gamma / rho0). The scene narrows it:
+        /// c must exceed the scene's fastest speed and stay within 100 times it (<see cref="SpeedOfSoundRule"/>).</summary>
         public float Stiffness { get; set; } = 50000f;
 
         /// <summary>Tait exponent gamma, in [1, 10].</summary>
         public float Gamma { get; set; } = 7f;
 
-        /// <summary>Gravitational acceleration, m/s^2 (|g| up to 1000).</summary>
+        /// <summary>Gravitational acceleration, m/s^2 (|g| up to 1000, and a fall along the container's diagonal
+        /// must stay below the speed of sound: <see cref="SpeedOfSoundRule"/>).</summary>
         public Vector3 Gravity { get; set; } = new Vector3(0f, -9.81f, 0f);
 
         /// <summary>XSPH velocity smoothing epsilon, in [0, 1]; 0 turns the pass off. Applied to the velocity every

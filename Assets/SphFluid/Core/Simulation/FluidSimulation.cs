@@ -362,6 +362,9 @@ namespace SphFluid.Simulation
             _particles.SetData(_spawn);
             _clampHits.SetData(new uint[1]);
             ComputeForces();
+            // The first frame plans with the acceleration the first force pass computed, not gravity alone.
+            ReadMotion(out float firstSpeed, out float firstAcceleration);
+            _timeStep.ReportMotion(firstSpeed, firstAcceleration);
         }
 
         // ---------------------------------------------------------------- diagnostics

@@ -22,7 +22,8 @@ namespace SphFluid.Simulation
         /// <summary>Dynamic viscosity mu, Pa·s, in [0, 1000].</summary>
         public float Viscosity { get; set; } = 0.001f;
 
-        /// <summary>Mass of one particle, kg; 0 = derived so that the spawn lattice sits exactly at rest density.</summary>
+        /// <summary>Mass of one particle, kg; 0 = derived so that the spawn lattice sits exactly at rest density.
+        /// Otherwise within a factor (1 + gamma / 2)^(1 / gamma) of the derived mass (<see cref="ParticleMassRule"/>).</summary>
         public float ParticleMass { get; set; }
 
         /// <summary>Surface tension coefficient gamma, N/m, in [0, 10]; 0 = none.</summary>

@@ -2,7 +2,8 @@ using System.Numerics;
 
 namespace SphFluid.Simulation
 {
-    /// <summary>A box filled with one phase on a regular lattice at start (and on reset).</summary>
+    /// <summary>A box filled with one phase on a regular lattice at start (and on reset). Boxes may touch but not
+    /// overlap (<see cref="SpawnOverlapRule"/>).</summary>
     public sealed class SpawnBoxDescription
     {
         public const float MaxJitter = 0.5f;
@@ -19,7 +20,8 @@ namespace SphFluid.Simulation
         /// <summary>Edge lengths, m; each at least one particle spacing.</summary>
         public Vector3 Size { get; set; } = new Vector3(0.2f, 0.2f, 0.2f);
 
-        /// <summary>World-space velocity every particle starts with, m/s.</summary>
+        /// <summary>World-space velocity every particle starts with, m/s; with the scene's other speeds, below the
+        /// speed of sound (<see cref="SpeedOfSoundRule"/>).</summary>
         public Vector3 InitialVelocity { get; set; }
 
         /// <summary>Random offset of each lattice point, as a fraction of the spacing, in [0, 0.5].</summary>

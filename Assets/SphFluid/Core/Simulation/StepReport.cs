@@ -22,7 +22,7 @@ namespace SphFluid.Simulation
         /// <summary>The largest stable sub-step found from the conditions, s.</summary>
         public float StableTimeStep { get; }
 
-        /// <summary>Which condition set <see cref="StableTimeStep"/>: "cfl", "acceleration", "viscous" or "max".</summary>
+        /// <summary>Which condition set <see cref="StableTimeStep"/>: "cfl", "acceleration", "viscous", "capillary" or "max".</summary>
         public string Limit { get; }
 
         public StepReport(int substeps, float timeStep, float simulatedSeconds, bool capped, float stableTimeStep, string limit)

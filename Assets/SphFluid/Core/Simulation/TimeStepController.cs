@@ -4,9 +4,13 @@ namespace SphFluid.Simulation
 {
     /// <summary>
     /// Adaptive time stepping, engine-free. The stable step is
-    /// dt = min(cfl h / (c + vmax), 0.25 sqrt(h / amax), 0.125 h^2 / nu_max, MaxTimeStep)
+    /// dt = min(cfl h / (c + vmax), 0.25 sqrt(h / amax), 0.125 h^2 / nu_max, dt_capillary, MaxTimeStep)
     /// (CFL with the Tait speed of sound c = sqrt(k gamma / rho0_min); acceleration condition; viscous
-    /// condition, Monaghan 1992 / Becker &amp; Teschner 2007). vmax and amax come from the GPU's max-reduction,
+    /// condition, Monaghan 1992 / Becker &amp; Teschner 2007; capillary condition
+    /// dt_capillary = sqrt(rho0_min s^3 / (2 pi sigma_max)) of Brackbill, Kothe &amp; Zemach 1992, "A continuum
+    /// method for modeling surface tension", with the particle spacing s as the grid size). nu_max is taken over
+    /// every pair of phases, 2 min(mu_i, mu_j) / rho0_i bounding the shader's harmonic mixing, because a light
+    /// phase next to a viscous one feels more than its own nu. vmax and amax come from the GPU's max-reduction,
     /// read back asynchronously and possibly a frame stale, so the controller uses the larger of the last two
     /// reports. A frame of length T is covered by n = ceil(T / dt) sub-steps of T / n, capped at MaxSubsteps
     /// (then each sub-step is dt and the simulation runs slower than real time).
@@ -22,30 +26,45 @@ namespace SphFluid.Simulation
         /// <summary>Largest kinematic viscosity nu = mu / rho0 over the phases, m^2/s.</summary>
         public float MaxKinematicViscosity { get; }
 
+        /// <summary>The capillary step limit of surface tension, s (infinite without tension).</summary>
+        public float CapillaryTimeStep { get; }
+
         /// <summary>The speed the next frame plans with (max of the last two reports), m/s.</summary>
         public float MaxSpeed => Math.Max(_reportedSpeed, _previousSpeed);
 
         /// <summary>The acceleration the next frame plans with (max of the last two reports), m/s^2.</summary>
         public float MaxAcceleration => Math.Max(_reportedAcceleration, _previousAcceleration);
 
-        public TimeStepController(FluidSettings settings, float minRestDensity, float maxKinematicViscosity)
+        public TimeStepController(FluidSettings settings, float minRestDensity, float maxKinematicViscosity,
+            float capillaryTimeStep = float.PositiveInfinity)
         {
             _settings = settings ?? throw new ArgumentNullException(nameof(settings));
-            SpeedOfSound = (float)Math.Sqrt(settings.Stiffness * settings.Gamma / Math.Max(minRestDensity, 1e-6f));
+            SpeedOfSound = SpeedOfSoundRule.SpeedOfSound(settings, minRestDensity);
             MaxKinematicViscosity = Math.Max(0f, maxKinematicViscosity);
+            CapillaryTimeStep = capillaryTimeStep > 0f ? capillaryTimeStep : float.PositiveInfinity;
             Reset();
         }
 
         public static TimeStepController ForScene(FluidSceneDescription scene)
         {
-            float minRho = float.MaxValue, maxNu = 0f;
-            foreach (var phase in scene.Phases())
+            float minRho = float.MaxValue, maxNu = 0f, maxTension = 0f;
+            var phases = scene.Phases();
+            foreach (var phase in phases)
             {
                 minRho = Math.Min(minRho, phase.RestDensity);
+                maxTension = Math.Max(maxTension, phase.SurfaceTension);
                 maxNu = Math.Max(maxNu, phase.Viscosity / phase.RestDensity);
+                // Across phases the shader's harmonic mean is at most twice the smaller viscosity.
+                foreach (var other in phases)
+                    if (other.Name != phase.Name)
+                        maxNu = Math.Max(maxNu, 2f * Math.Min(phase.Viscosity, other.Viscosity) / phase.RestDensity);
             }
             if (minRho == float.MaxValue) minRho = 1000f;
-            var controller = new TimeStepController(scene.Settings, minRho, maxNu);
+            double s = scene.Settings.ParticleSpacing;
+            float capillary = maxTension > 0f
+                ? (float)Math.Sqrt(minRho * s * s * s / (2.0 * Math.PI * maxTension))
+                : float.PositiveInfinity;
+            var controller = new TimeStepController(scene.Settings, minRho, maxNu, capillary);
             float speed = 0f;
             foreach (var box in scene.SpawnBoxes) speed = Math.Max(speed, box.InitialVelocity.Length());
             controller.ReportMotion(speed, scene.Settings.Gravity.Length());
@@ -89,6 +108,7 @@ namespace SphFluid.Simulation
                 double visc = 0.125 * h * h / MaxKinematicViscosity;
                 if (visc < dt) { dt = visc; limit = "viscous"; }
             }
+            if (CapillaryTimeStep < dt) { dt = CapillaryTimeStep; limit = "capillary"; }
             return (float)dt;
         }
 

@@ -40,6 +40,7 @@ namespace SphFluid.Tests.Core.Simulation
             scene.SpawnBoxes[0].Center = new Vector3(0.05f, -0.1f, 0f);
             scene.SpawnBoxes[0].Jitter = 0.5f;
             scene.SpawnBoxes[1].Jitter = 0.5f;
+            scene.SpawnBoxes[1].Center = new Vector3(0f, 0.1f, 0f); // clear of the tilted box: overlapping boxes are refused
             var particles = SpawnLayout.Generate(scene);
             int index = 0;
             foreach (var box in scene.SpawnBoxes)

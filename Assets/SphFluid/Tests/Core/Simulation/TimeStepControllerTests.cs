@@ -112,5 +112,29 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(limit, Is.EqualTo("max"));
             Assert.That(dt, Is.EqualTo(0.005f));
         }
+    
+        [Test]
+        public void SurfaceTension_AddsTheCapillaryLimit()
+        {
+            var scene = SimulationTestScenes.SingleWater();
+            scene.SpawnBoxes[0].Phase.SurfaceTension = 10f;
+            var c = TimeStepController.ForScene(scene);
+            Assert.That(c.CapillaryTimeStep, Is.EqualTo((float)Math.Sqrt(1000 * 0.02 * 0.02 * 0.02 / (2 * Math.PI * 10))).Within(1e-7f)); // 11.3 ms
+            Assert.That(TimeStepController.ForScene(SimulationTestScenes.SingleWater()).CapillaryTimeStep, Is.EqualTo(float.PositiveInfinity));
+
+            var limited = new TimeStepController(Settings(), 1000f, 1e-6f, 1e-4f);
+            Assert.That(limited.StableTimeStep(out string limit), Is.EqualTo(1e-4f));
+            Assert.That(limit, Is.EqualTo("capillary"));
+        }
+
+        [Test]
+        public void LightPhaseNextToAViscousOne_BoundsTheViscosityAcrossPhases()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.SpawnBoxes[0].Phase.Viscosity = 10f;                              // water: nu = 0.01 m^2/s
+            scene.SpawnBoxes[1].Phase = new PhaseDescription("Light", 100f, 1f);    // own nu = 0.01 m^2/s
+            var c = TimeStepController.ForScene(scene);
+            Assert.That(c.MaxKinematicViscosity, Is.EqualTo(2f * 1f / 100f).Within(1e-7f), "2 min(mu) / rho0 of the light phase");
+        }
     }
 }

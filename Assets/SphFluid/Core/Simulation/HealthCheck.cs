@@ -1,0 +1,211 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace SphFluid.Simulation
+{
+    /// <summary>
+    /// Decides whether a simulated state is still a liquid the scene could have produced, from bounds derived
+    /// from the scene itself. Engine-free: the headless runner and the Unity simulator ask the same questions and
+    /// print the same message. A state is unhealthy, in this order, when
+    /// <list type="number">
+    /// <item>a particle is NaN or infinite, one is outside the container, or the count changed;</item>
+    /// <item>a particle is faster than the speed bound
+    ///   V = <see cref="SpeedMargin"/> (sqrt(2 |g| D) + v_spawn + 2 v_wall + 2 v_obstacle) + <see cref="AcousticFraction"/> c,
+    ///   where D is the container's diagonal (the longest fall in any orientation), v_spawn the fastest initial
+    ///   velocity, v_wall the fastest wall point of the moving container (|V| + |w| D / 2) and v_obstacle the
+    ///   fastest sphere, both the largest seen so far (a wall can at most double the speed of what it hits),
+    ///   and c the highest speed of sound of the phases (the acoustic noise of a weakly compressible liquid
+    ///   with a 1 % density error; validation keeps c / 100 below the scene's own speeds);</item>
+    /// <item>a phase's mean compression max(0, rho / rho0 - 1) exceeds <see cref="MeanCompressionBound"/>, what a
+    ///   Mach-1 impact leaves ((1 + gamma / 2)^(1 / gamma) - 1, 24 % at gamma = 7: validation keeps every scene
+    ///   subsonic), or one particle's exceeds twice that, <see cref="MaxCompressionBound"/>;</item>
+    /// <item>with no moving wall or obstacle seen, the mechanical energy (kinetic plus gravitational,
+    ///   <see cref="FluidEnergy"/>) grew above its first value by more than M (<see cref="EnergyAllowance"/> |g| D
+    ///   + (c e0)^2 / 2): nothing else can feed it but the elastic energy the first state stores, which the second
+    ///   term bounds from above (the linearised Tait energy c^2 e^2 / 2 per kilogram, with e0 the largest
+    ///   compression of the first state and c the highest speed of sound); the first term absorbs integration
+    ///   error. With a driver, the speed bound caps the energy instead.</item>
+    /// </list>
+    /// </summary>
+    public sealed class HealthCheck
+    {
+        /// <summary>Factor on the fastest physical speed of the scene.</summary>
+        public const float SpeedMargin = 2f;
+
+        /// <summary>Allowed acoustic speed as a fraction of the speed of sound.</summary>
+        public const float AcousticFraction = 0.01f;
+
+        /// <summary>Energy growth allowed for integration error, as a fraction of the potential energy M |g| D.</summary>
+        public const double EnergyAllowance = 0.05;
+
+        readonly IReadOnlyList<PhaseProperties> _phases;
+        readonly IReadOnlyList<PhaseDescription> _phaseNames;
+        readonly Vector3 _gravity;
+        readonly int _spawned;
+        readonly double _totalMass;
+        double _firstEnergy = double.NaN;
+        float _firstCompression;
+
+        /// <summary>Bounds for <paramref name="scene"/> (validated), whose particles the simulation spawned.</summary>
+        public HealthCheck(FluidSceneDescription scene)
+        {
+            if (scene == null) throw new ArgumentNullException(nameof(scene));
+            _phaseNames = scene.Phases();
+            _phases = scene.BuildPhaseTable();
+            _gravity = scene.Settings.Gravity;
+            _spawned = SpawnLayout.TotalCount(scene);
+            for (int k = 0; k < _phaseNames.Count; k++)
+            {
+                long count = 0;
+                foreach (var box in scene.SpawnBoxes)
+                    if (box.Phase.Name == _phaseNames[k].Name) count += SpawnLayout.Count(scene.Settings, box);
+                _totalMass += count * (double)_phases[k].ParticleMass;
+            }
+
+            ContainerDiagonal = scene.Container.Size.Length();
+            FreeFallSpeed = (float)Math.Sqrt(2.0 * scene.Settings.Gravity.Length() * ContainerDiagonal);
+            foreach (var box in scene.SpawnBoxes) SpawnSpeed = Math.Max(SpawnSpeed, box.InitialVelocity.Length());
+            foreach (var phase in _phaseNames)
+                SpeedOfSound = Math.Max(SpeedOfSound, SpeedOfSoundRule.SpeedOfSound(scene.Settings, phase.RestDensity));
+            MeanCompressionBound = (float)(SpeedOfSoundRule.SonicImpactDensityRatio(scene.Settings.Gamma) - 1.0);
+            ObserveDrivers(scene.Container, scene.Obstacles);
+        }
+
+        /// <summary>Mean compression allowed in any phase: that of a Mach-1 impact.</summary>
+        public float MeanCompressionBound { get; }
+
+        /// <summary>Compression allowed for any one particle: twice the mean bound.</summary>
+        public float MaxCompressionBound => 2f * MeanCompressionBound;
+
+        /// <summary>sqrt(2 |g| D): the speed of a fall along the container's diagonal D, m/s.</summary>
+        public float FreeFallSpeed { get; }
+
+        /// <summary>The container's diagonal D, m.</summary>
+        public float ContainerDiagonal { get; }
+
+        /// <summary>Fastest initial velocity of the spawn boxes, m/s.</summary>
+        public float SpawnSpeed { get; }
+
+        /// <summary>Fastest container wall point seen so far, m/s.</summary>
+        public float WallSpeed { get; private set; }
+
+        /// <summary>Fastest sphere obstacle seen so far, m/s.</summary>
+        public float ObstacleSpeed { get; private set; }
+
+        /// <summary>Highest speed of sound over the phases (the lightest phase's), m/s.</summary>
+        public float SpeedOfSound { get; }
+
+        /// <summary>The speed no particle may exceed, m/s (grows when faster drivers are observed).</summary>
+        public float SpeedBound => SpeedMargin * (FreeFallSpeed + SpawnSpeed + 2f * WallSpeed + 2f * ObstacleSpeed)
+            + AcousticFraction * SpeedOfSound;
+
+        /// <summary>A container wall or sphere has moved: energy may come in from outside.</summary>
+        public bool Driven => WallSpeed > 0f || ObstacleSpeed > 0f;
+
+        /// <summary>Mechanical energy of the last state checked with particles minus that of the first, J (0 until two were checked).</summary>
+        public double EnergyGrowth { get; private set; }
+
+        /// <summary>Energy growth allowed over the first state checked with particles, J.</summary>
+        public double EnergyBound
+        {
+            get
+            {
+                double elastic = SpeedOfSound * (double)_firstCompression;
+                return _totalMass * (EnergyAllowance * _gravity.Length() * ContainerDiagonal + 0.5 * elastic * elastic);
+            }
+        }
+
+        /// <summary>Takes in the container and spheres as they move now (call before each frame or check):
+        /// the speed bound follows the fastest driver seen so far.</summary>
+        public void ObserveDrivers(ContainerDescription container, IReadOnlyList<SphereObstacleDescription> obstacles)
+        {
+            if (container != null)
+            {
+                float wall = container.Velocity.Length() + container.AngularVelocity.Length() * 0.5f * container.Size.Length();
+                if (ValidationRules.IsFinite(wall)) WallSpeed = Math.Max(WallSpeed, wall);
+            }
+            if (obstacles != null)
+            {
+                foreach (var o in obstacles)
+                {
+                    if (o == null) continue;
+                    float speed = o.Velocity.Length();
+                    if (ValidationRules.IsFinite(speed)) ObstacleSpeed = Math.Max(ObstacleSpeed, speed);
+                }
+            }
+        }
+
+        /// <summary>
+        /// The first problem of the state, or null when it is healthy. <paramref name="particles"/> (a read-back
+        /// of <see cref="FluidSimulation.Particles"/> at the report's time) adds the phase of the fastest particle
+        /// and the energy test; without it the speed is the report's maximum over all phases.
+        /// </summary>
+        public HealthProblem Check(DiagnosticsReport report, IReadOnlyList<Particle> particles = null)
+        {
+            if (report == null) throw new ArgumentNullException(nameof(report));
+            double t = report.SimulatedTime;
+            const string all = "all phases";
+            if (report.NanCount > 0)
+                return new HealthProblem(t, all, "non-finite particle count", report.NanCount, 0, "", "the simulation went non-finite: a position or velocity is NaN or infinite");
+            if (report.OutsideCount > 0)
+                return new HealthProblem(t, all, "count of particles outside the container", report.OutsideCount, 0, "", "the walls must hold every particle");
+            if (report.ParticleCount != _spawned)
+                return new HealthProblem(t, all, "particle count change", Math.Abs(report.ParticleCount - _spawned), 0, "", $"{report.ParticleCount} counted, {_spawned} spawned");
+
+            var speed = SpeedProblem(report, particles);
+            if (speed != null) return speed;
+
+            foreach (var phase in report.Phases)
+            {
+                if (!(phase.AverageDensityError <= MeanCompressionBound))
+                    return new HealthProblem(t, phase.Name, "mean compression", phase.AverageDensityError, MeanCompressionBound, "", "no subsonic impact compresses a Tait liquid this much");
+                if (!(phase.MaxDensityError <= MaxCompressionBound))
+                    return new HealthProblem(t, phase.Name, "max compression", phase.MaxDensityError, MaxCompressionBound, "", "twice what a subsonic impact leaves");
+            }
+
+            if (particles != null && !Driven)
+            {
+                double energy = FluidEnergy.Mechanical(particles, _phases, _gravity);
+                if (double.IsNaN(_firstEnergy))
+                {
+                    _firstEnergy = energy;
+                    foreach (var phase in report.Phases) _firstCompression = Math.Max(_firstCompression, phase.MaxDensityError);
+                }
+                else EnergyGrowth = energy - _firstEnergy;
+                if (!(EnergyGrowth <= EnergyBound))
+                    return new HealthProblem(t, all, "mechanical energy growth", energy - _firstEnergy, EnergyBound, "J",
+                        "nothing in the scene feeds energy in: no moving wall or sphere");
+            }
+            return null;
+        }
+
+        HealthProblem SpeedProblem(DiagnosticsReport report, IReadOnlyList<Particle> particles)
+        {
+            float bound = SpeedBound;
+            string why = string.Format(System.Globalization.CultureInfo.InvariantCulture,
+                "{0} x (free fall over the container {1:G3} + spawn {2:G3} + 2 x wall {3:G3} + 2 x obstacle {4:G3} m/s) + {5} x speed of sound {6:G3} m/s",
+                SpeedMargin, FreeFallSpeed, SpawnSpeed, WallSpeed, ObstacleSpeed, AcousticFraction, SpeedOfSound);
+            if (particles == null)
+            {
+                return report.MaxSpeed > bound
+                    ? new HealthProblem(report.SimulatedTime, "all phases", "speed", report.MaxSpeed, bound, "m/s", why)
+                    : null;
+            }
+            float fastest = 0f;
+            int phase = -1;
+            for (int i = 0; i < particles.Count; i++)
+            {
+                float v = particles[i].Velocity.Length();
+                if (v > fastest || float.IsNaN(v)) { fastest = v; phase = (int)particles[i].Phase; }
+                if (float.IsNaN(v)) break;
+            }
+            if (!(fastest <= bound))
+            {
+                string name = phase >= 0 && phase < _phaseNames.Count ? _phaseNames[phase].Name : "all phases";
+                return new HealthProblem(report.SimulatedTime, name, "speed", fastest, bound, "m/s", why);
+            }
+            return null;
+        }
+    }
+}

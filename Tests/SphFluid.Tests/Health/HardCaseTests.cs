@@ -1,0 +1,236 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using System.Numerics;
+using NUnit.Framework;
+using SphFluid.Simulation;
+using SphFluid.Tests.Solver;
+
+namespace SphFluid.Tests.Health
+{
+    /// <summary>
+    /// "A blow-up is never ok": every hard case of the Health issue, as a small scene (a few hundred particles,
+    /// a fraction of a second), either stays within the health bounds or is refused at validation with a
+    /// message naming the field and its range.
+    /// </summary>
+    public sealed class HardCaseTests
+    {
+        const float Spacing = 0.04f;
+        static readonly Vector3 Tank = new Vector3(0.48f, 0.4f, 0.16f);
+
+        /// <summary>A pool 0.16 m deep across the tank floor: 12 x 4 x 4 = 192 particles, c = 10.2 m/s.</summary>
+        static FluidSceneDescription Pool(PhaseDescription phase = null)
+        {
+            var water = new Vector3(Tank.X, 0.16f, Tank.Z);
+            return SolverScenes.Scene(SolverScenes.Coarse(Spacing), Tank,
+                SolverScenes.Box("Water", phase ?? SolverScenes.Water(), new Vector3(0f, -0.5f * Tank.Y + 0.08f, 0f), water));
+        }
+
+        static void AssertHealthy(HealthRun run)
+        {
+            Assert.That(run.Refusals, Is.Empty, "the scene is valid");
+            Assert.That(run.Problem, Is.Null, run.Problem?.Message);
+            Assert.That(run.Last.NanCount, Is.EqualTo(0));
+            Assert.That(run.Last.OutsideCount, Is.EqualTo(0));
+            Assert.That(run.FastestSeen, Is.LessThanOrEqualTo(run.Check.SpeedBound));
+        }
+
+        [Test]
+        public void InitialVelocity50IntoAWall_IsRefusedAsSupersonic()
+        {
+            var scene = Pool();
+            scene.SpawnBoxes[0].Size = new Vector3(0.16f, 0.16f, 0.16f);
+            scene.SpawnBoxes[0].InitialVelocity = new Vector3(50f, 0f, 0f);
+            var run = HealthRun.Of(scene, 0.1);
+            Assert.That(run.Refusals, Has.Some.StartsWith("SpawnBox 'Water': InitialVelocity must have magnitude in [0, 6.68963] m/s for this scene, or Stiffness must be at least 409769 Pa")
+                .And.Contains("or Stiffness must be at least").And.Contains("(was 50)"));
+        }
+
+        [Test]
+        public void InitialVelocityIntoAWall_BelowTheSpeedOfSound_StaysHealthy()
+        {
+            var scene = Pool();
+            scene.SpawnBoxes[0].Size = new Vector3(0.16f, 0.16f, 0.16f);
+            scene.SpawnBoxes[0].InitialVelocity = new Vector3(5f, 0f, 0f);
+            AssertHealthy(HealthRun.Of(scene, 0.25));
+        }
+
+        [Test]
+        public void ThirtyBoxesAtOneSpot_AreRefusedAsOverlapping()
+        {
+            var scene = Pool();
+            var box = scene.SpawnBoxes[0];
+            box.Size = new Vector3(0.16f, 0.16f, 0.16f);
+            scene.SpawnBoxes = Enumerable.Range(0, 30).Select(i => SolverScenes.Box("Water" + i, box.Phase, box.Center, box.Size, seed: i)).ToList();
+            var run = HealthRun.Of(scene, 0.1);
+            Assert.That(run.Refusals, Has.Member("SpawnBox 'Water1': the box must not overlap SpawnBox 'Water0' (they interpenetrate by 0.16 m; boxes may only touch, within 0.0004 m): overlapping boxes spawn particles on top of each other"));
+            Assert.That(run.Refusals.Count, Is.EqualTo(30 * 29 / 2), "one message per overlapping pair");
+        }
+
+        [Test]
+        public void TwoHundredOneParticleBoxesAtOnePoint_AreRefusedAsOverlapping()
+        {
+            var scene = Pool();
+            var phase = scene.SpawnBoxes[0].Phase;
+            scene.SpawnBoxes = Enumerable.Range(0, 200)
+                .Select(i => SolverScenes.Box("Drop" + i, phase, new Vector3(0f, 0f, 0f), new Vector3(Spacing, Spacing, Spacing), seed: i)).ToList();
+            Assert.That(SpawnLayout.TotalCount(scene), Is.EqualTo(200));
+            var run = HealthRun.Of(scene, 0.1);
+            Assert.That(run.Refusals, Has.Some.StartsWith("SpawnBox 'Drop1': the box must not overlap SpawnBox 'Drop0'"));
+        }
+
+        [Test]
+        public void TouchingBoxes_AreAccepted()
+        {
+            var scene = Pool();
+            var phase = scene.SpawnBoxes[0].Phase;
+            scene.SpawnBoxes = new List<SpawnBoxDescription>
+            {
+                SolverScenes.Box("Left", phase, new Vector3(-0.12f, -0.12f, 0f), new Vector3(0.24f, 0.16f, 0.16f)),
+                SolverScenes.Box("Right", phase, new Vector3(0.12f, -0.12f, 0f), new Vector3(0.24f, 0.16f, 0.16f), seed: 2),
+            };
+            Assert.That(scene.Validate(), Is.Empty);
+        }
+
+        [Test]
+        public void Stiffness1e9FromRest_IsRefusedAsNeedlesslyStiff()
+        {
+            var scene = Pool();
+            scene.Settings.Stiffness = 1e9f;
+            var run = HealthRun.Of(scene, 0.05);
+            Assert.That(run.Refusals, Has.Some.StartsWith("FluidSettings: Stiffness must be in [1, 1.80")
+                .And.Contains("the speed of sound 2645.75 m/s of phase 'Water' must be at most 100 times").And.Contains("(was 1E+09)"));
+        }
+
+        [Test]
+        public void StiffnessAtItsBound_StaysHealthy()
+        {
+            var scene = Pool();
+            double fastest = Math.Sqrt(2 * 9.81 * Tank.Length());
+            scene.Settings.Stiffness = (float)(Math.Pow(100 * fastest, 2) * 1000 / 7 * 0.999);
+            Assert.That(scene.Validate(), Is.Empty);
+            AssertHealthy(HealthRun.Of(scene, 0.05, maxFrames: 6));
+        }
+
+        [Test]
+        public void Gravity1000_IsRefusedAsSupersonic()
+        {
+            var scene = Pool();
+            scene.Settings.Gravity = new Vector3(0f, -1000f, 0f);
+            var run = HealthRun.Of(scene, 0.1);
+            Assert.That(run.Refusals, Has.Some.StartsWith("FluidSettings: Gravity must have magnitude in [0, 81.3978] m/s^2 for this scene, or Stiffness must be at least 184280 Pa")
+                .And.Contains("(was 1000)"));
+        }
+
+        [Test]
+        public void GravityAtItsBound_StaysHealthy()
+        {
+            var scene = Pool();
+            scene.Settings.Gravity = new Vector3(0f, -80f, 0f);
+            Assert.That(scene.Validate(), Is.Empty);
+            AssertHealthy(HealthRun.Of(scene, 0.25));
+        }
+
+        [TestCase(2.5f)]
+        [TestCase(0.4f)]
+        public void ParticleMassFarFromTheDerivedOne_IsRefused(float factor)
+        {
+            var scene = Pool();
+            float derived = scene.BuildPhaseTable()[0].ParticleMass;
+            scene.SpawnBoxes[0].Phase.ParticleMass = factor * derived;
+            var run = HealthRun.Of(scene, 0.1);
+            Assert.That(run.Refusals, Has.Some.StartsWith("SpawnBox 'Water': ParticleMass must be 0 (derived: 0.0517846 kg) or in [0.0417719, 0.0641972] kg")
+                .And.Contains("(0.806648 to 1.2397 times the derived mass"));
+        }
+
+        [TestCase(1e-9f)]
+        [TestCase(1e6f)]
+        public void ExtremeParticleMass_IsRefused(float mass)
+        {
+            var scene = Pool();
+            scene.SpawnBoxes[0].Phase.ParticleMass = mass;
+            Assert.That(HealthRun.Of(scene, 0.1).Refusals, Has.Some.StartsWith("SpawnBox 'Water': ParticleMass must be 0 (derived: "));
+        }
+
+        [TestCase(true)]
+        [TestCase(false)]
+        public void ParticleMassAtTheEdgeOfItsRange_StaysHealthy(bool heavier)
+        {
+            var scene = Pool();
+            float derived = scene.BuildPhaseTable()[0].ParticleMass;
+            double edge = Math.Pow(1 + 7 / 2.0, 1 / 7.0); // (1 + gamma / 2)^(1 / gamma) = 1.2397
+            scene.SpawnBoxes[0].Phase.ParticleMass = (float)(heavier ? derived * edge * 0.999 : derived / edge * 1.001);
+            AssertHealthy(HealthRun.Of(scene, 0.25));
+        }
+
+        [Test]
+        public void ContainerSpinningAt360DegreesPerSecond_StaysHealthy()
+        {
+            var scene = Pool();
+            float w = 2f * MathF.PI;
+            var run = HealthRun.Of(scene, 0.5, drive: (sim, t) => sim.UpdateContainer(new ContainerDescription
+            {
+                Size = Tank,
+                Rotation = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, (float)(w * t)),
+                AngularVelocity = new Vector3(0f, 0f, w),
+            }));
+            AssertHealthy(run);
+            Assert.That(run.Check.WallSpeed, Is.EqualTo(w * 0.5f * Tank.Length()).Within(1e-3f), "the spin raised the bound");
+        }
+
+        [Test]
+        public void ObstacleDrivenAtFiveTimesTheWaveSpeed_StaysHealthy()
+        {
+            var scene = Pool();
+            float wave = MathF.Sqrt(9.81f * 0.16f); // shallow-water wave speed over the 0.16 m pool, 1.25 m/s
+            float speed = 5f * wave;
+            var start = new Vector3(-0.16f, -0.12f, 0f);
+            scene.Obstacles.Add(new SphereObstacleDescription(start, 0.05f, Vector3.Zero));
+            var run = HealthRun.Of(scene, 0.3, drive: (sim, t) =>
+            {
+                // Back and forth across the pool at the full speed, turning at the ends.
+                double travel = 0.32, leg = travel / speed;
+                double phase = t % (2 * leg);
+                float x = (float)(phase < leg ? -0.16 + speed * phase : 0.16 - speed * (phase - leg));
+                float v = phase < leg ? speed : -speed;
+                sim.UpdateObstacles(new[] { new SphereObstacleDescription(new Vector3(x, start.Y, 0f), 0.05f, new Vector3(v, 0f, 0f)) });
+            });
+            AssertHealthy(run);
+            Assert.That(run.Check.ObstacleSpeed, Is.EqualTo(speed).Within(1e-4f));
+        }
+
+        [TestCase(100f)]
+        [TestCase(1f)]
+        public void LightPhaseOverWater_StaysHealthy(float lightDensity)
+        {
+            var scene = Pool();
+            var light = new PhaseDescription { Name = "Light", RestDensity = lightDensity, Viscosity = 0.05f * lightDensity / 1000f };
+            scene.SpawnBoxes[0].Size = new Vector3(Tank.X, 0.08f, Tank.Z);
+            scene.SpawnBoxes[0].Center = new Vector3(0f, -0.16f, 0f);
+            scene.SpawnBoxes.Add(SolverScenes.Box("Light", light, new Vector3(0f, -0.08f, 0f), new Vector3(Tank.X, 0.08f, Tank.Z), seed: 2));
+            AssertHealthy(HealthRun.Of(scene, 0.1, maxFrames: 6));
+        }
+
+        [Test]
+        public void AllParticlesInOneCell_StayHealthy()
+        {
+            var scene = Pool();
+            scene.SpawnBoxes[0].Size = new Vector3(2f * Spacing, 2f * Spacing, 2f * Spacing); // 8 particles within h = 2 s
+            scene.SpawnBoxes[0].Center = new Vector3(0f, -0.1f, 0f);
+            var run = HealthRun.Of(scene, 0.5);
+            Assert.That(run.Last.ParticleCount, Is.EqualTo(8));
+            AssertHealthy(run);
+        }
+
+        [Test]
+        public void OneParticle_FallsAndStaysHealthy()
+        {
+            var scene = Pool();
+            scene.SpawnBoxes[0].Size = new Vector3(Spacing, Spacing, Spacing);
+            scene.SpawnBoxes[0].Center = new Vector3(0f, 0.1f, 0f);
+            var run = HealthRun.Of(scene, 0.5);
+            Assert.That(run.Last.ParticleCount, Is.EqualTo(1));
+            AssertHealthy(run);
+        }
+    }
+}
