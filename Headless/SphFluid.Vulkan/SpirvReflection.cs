@@ -39,8 +39,9 @@ public sealed class SpirvReflection
     public SpirvResource GlobalBlock { get; private init; }
     /// <summary>Every uniform block, <c>$Global</c> included; globals set by name may live in any of them.</summary>
     public IReadOnlyList<SpirvUniformBlock> UniformBlocks { get; private init; } = Array.Empty<SpirvUniformBlock>();
-    /// <summary>Bound resources the backend cannot provide (textures, typed buffers, samplers), by name.</summary>
-    public IReadOnlyList<string> UnsupportedResources { get; private init; } = Array.Empty<string>();
+    /// <summary>Bound resources the backend cannot provide (textures, typed buffers, samplers): their names and
+    /// HLSL types ("RWTexture3D", "Buffer", "SamplerState").</summary>
+    public IReadOnlyList<(string Name, string HlslType)> UnsupportedResources { get; private init; } = Array.Empty<(string, string)>();
 
     const uint Magic = 0x07230203;
 
@@ -85,7 +86,7 @@ public sealed class SpirvReflection
                     break;
                 case 71: decorations[(ops[0], ops[1])] = ops.Length > 2 ? ops[2] : 1; break; // OpDecorate
                 case 72: memberDecorations[(ops[0], ops[1], ops[2])] = ops.Length > 3 ? ops[3] : 1; break; // OpMemberDecorate
-                case 21: case 22: case 23: case 24: case 28: case 29: case 30: case 32: // int float vector matrix array rtarray struct pointer
+                case 21: case 22: case 23: case 24: case 25: case 26: case 27: case 28: case 29: case 30: case 32: // int float vector matrix image sampler sampled-image array rtarray struct pointer
                     types[ops[0]] = new TypeInfo { Op = op, Operands = ops.Slice(1).ToArray() };
                     break;
                 case 43: // OpConstant
@@ -142,7 +143,7 @@ public sealed class SpirvReflection
             }
         }
 
-        var unsupported = new List<string>();
+        var unsupported = new List<(string, string)>();
         string HlslTypeName(uint typeId)
         {
             if (!types.TryGetValue(typeId, out var t)) return "?";
@@ -156,11 +157,26 @@ public sealed class SpirvReflection
             }
         }
 
+        // HLSL's name for a texture, typed buffer or sampler type, from the SPIR-V image operands
+        // (sampled type, Dim, Depth, Arrayed, MS, Sampled, Format).
+        string OpaqueTypeName(uint typeId)
+        {
+            if (!types.TryGetValue(typeId, out var t)) return "resource";
+            if (t.Op == 28 || t.Op == 29) return OpaqueTypeName(t.Operands[0]) + "[]";
+            if (t.Op == 26) return "SamplerState";
+            if (t.Op == 27) return OpaqueTypeName(t.Operands[0]);
+            if (t.Op != 25 || t.Operands.Length < 6) return "resource";
+            string rw = t.Operands[5] == 2 ? "RW" : "";
+            string shape = t.Operands[1] switch { 0 => "Texture1D", 1 => "Texture2D", 2 => "Texture3D", 3 => "TextureCube", 5 => "Buffer", _ => "Texture" };
+            return rw + shape + (t.Operands[4] == 1 ? "MS" : "") + (t.Operands[3] == 1 ? "Array" : "");
+        }
+
         foreach (var (ptrType, id, storage) in variables)
         {
             if (storage == 0 && decorations.ContainsKey((id, DecoBinding)))
             {
-                unsupported.Add(names.TryGetValue(id, out var un) && un.Length > 0 ? un : $"%{id}");
+                unsupported.Add((names.TryGetValue(id, out var un) && un.Length > 0 ? un : $"%{id}",
+                    types.TryGetValue(ptrType, out var opaque) && opaque.Op == 32 ? OpaqueTypeName(opaque.Operands[1]) : "resource"));
                 continue;
             }
             if (storage != StorageUniform && storage != StorageStorageBuffer) continue;

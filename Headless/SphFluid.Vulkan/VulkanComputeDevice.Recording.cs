@@ -128,16 +128,26 @@ public sealed unsafe partial class VulkanComputeDevice
         v.UniformBlocks = reflection.UniformBlocks
             .Select(b => (b, b.Members.Values.Select(m => (PropertyIdOf(m.Name), m)).ToArray()))
             .ToArray();
-        if (reflection.UnsupportedResources.Count > 0)
-            throw new ComputeException($"{path}: kernel '{kernel}' binds {string.Join(", ", reflection.UnsupportedResources.Select(n => "'" + n + "'"))}, a texture or typed buffer; " +
-                                       "the headless backend binds only StructuredBuffer/ByteAddressBuffer and globals");
-        foreach (var r in reflection.Resources)
-            if (r.Name.EndsWith("@count", StringComparison.Ordinal))
-                throw new ComputeException($"{path}: kernel '{kernel}' uses a hidden counter buffer '{r.Name}' (IncrementCounter/Append/Consume), which the headless backend does not support; count with InterlockedAdd on a buffer of its own");
-        foreach (var r in reflection.Resources)
-            if (r.Set != 0) throw new ComputeException($"{path}: kernel '{kernel}' puts '{r.Name}' in descriptor set {r.Set}; only set 0 is supported");
+        v.Unsupported = WhyUnrunnable(reflection, words);
         _variantCache[key] = v;
         return v;
+    }
+
+    /// <summary>Why this device cannot run a kernel variant that compiled, or null. Such a kernel fails alone, at its
+    /// first dispatch, so the other kernels of its program stay usable (as a texture kernel beside buffer kernels).</summary>
+    string WhyUnrunnable(SpirvReflection reflection, uint[] words)
+    {
+        if (reflection.UnsupportedResources.Count > 0)
+            return $"it binds {string.Join(", ", reflection.UnsupportedResources.Select(r => $"'{r.Name}' ({r.HlslType})"))}; " +
+                   "the headless backend binds only StructuredBuffer, RWStructuredBuffer, ByteAddressBuffer and globals, no textures, typed buffers or samplers";
+        foreach (var r in reflection.Resources)
+            if (r.Name.EndsWith("@count", StringComparison.Ordinal))
+                return $"it uses a hidden counter buffer '{r.Name}' (IncrementCounter/Append/Consume), which the headless backend does not support; count with InterlockedAdd on a buffer of its own";
+        foreach (var r in reflection.Resources)
+            if (r.Set != 0) return $"it puts '{r.Name}' in descriptor set {r.Set}; only set 0 is supported";
+        if (!ScalarBlockLayout && !StructuredBufferPacking.FollowsStd430(words))
+            return $"its structured buffers are packed as in D3D/Unity (e.g. 12-byte float3), which needs the scalarBlockLayout feature that {DeviceName} lacks";
+        return null;
     }
 
     /// <summary>Compiles variants that are not yet cached in memory, several glslang processes at a time.</summary>
@@ -237,7 +247,7 @@ public sealed unsafe partial class VulkanComputeDevice
     {
         if (r.ArrayStride == 0 || r.ArrayStride == b.Stride) return;
         throw new ComputeException($"Stride mismatch: buffer '{b.Name}' has {b.Stride}-byte elements but kernel '{v.Kernel}' of {p.Path} reads '{r.Name}' as {r.ArrayStride}-byte elements " +
-                                   "(build structs that cross buffers from 16-byte groups so C#, D3D and SPIR-V agree)");
+                                   "(laid out as D3D/Unity packs structured buffers: members one after another, float3 = 12 bytes; the C# struct must match)");
     }
 
     GlobalValue Global(IComputeProgram program, int propertyId, string what)
@@ -345,6 +355,7 @@ public sealed unsafe partial class VulkanComputeDevice
         if ((uint)groupsX > max[0] || (uint)groupsY > max[1] || (uint)groupsZ > max[2])
             throw new ComputeException($"Dispatch of kernel '{p.KernelName(kernel)}' in {p.Path}: {groupsX} x {groupsY} x {groupsZ} groups exceed this device's limit of {max[0]} x {max[1]} x {max[2]}");
         var v = p.Variant(kernel);
+        if (v.Unsupported != null) throw new ComputeException($"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: {v.Unsupported}");
         var bound = p.Bindings[kernel];
         int nBuffers = v.StorageBuffers.Length;
         var resolved = new VulkanBuffer[nBuffers];

@@ -18,6 +18,8 @@ public sealed class KernelVariant
     internal PipelineLayout Layout;
     internal Pipeline Pipeline;
     internal bool Created;
+    /// <summary>Why this device cannot run the variant (it fails at dispatch), or null.</summary>
+    internal string Unsupported;
     /// <summary>Property ids of the storage buffers, parallel to <see cref="StorageBuffers"/>.</summary>
     internal int[] StorageBufferIds = Array.Empty<int>();
     internal SpirvResource[] StorageBuffers = Array.Empty<SpirvResource>();
