@@ -5,13 +5,17 @@ using System.Text;
 namespace SphFluid.Vulkan;
 
 /// <summary>Kind of a resource a kernel binds.</summary>
-public enum SpirvResourceKind { StorageBuffer, UniformBuffer }
+public enum SpirvResourceKind { StorageBuffer, UniformBuffer, StorageImage, SampledImage }
 
 /// <summary>One descriptor a kernel declares, by the HLSL name of the variable.</summary>
 /// <param name="ElementType">For a structured buffer, its element type in HLSL words: "uint", "float4", or the struct's name.</param>
 /// <param name="ElementIsStruct">True when <paramref name="ElementType"/> names a struct.</param>
+/// <param name="ImageDimensions">For a texture: 2 or 3 (<c>Texture2D</c>, <c>RWTexture3D</c>...); its
+/// <paramref name="ElementType"/> is the scalar it holds ("float", "uint", "int").</param>
+/// <param name="ImageFormat">For an <c>RWTexture</c>: the SPIR-V image format glslang chose from its element type
+/// (1 Rgba32f, 3 R32f, 6 Rg32f, 24 R32i, 30 Rgba32ui, 33 R32ui); 0 where any format of that scalar fits.</param>
 public sealed record SpirvResource(string Name, SpirvResourceKind Kind, uint Set, uint Binding, int ArrayStride, bool ReadOnly,
-    string ElementType = "", bool ElementIsStruct = false);
+    string ElementType = "", bool ElementIsStruct = false, int ImageDimensions = 0, uint ImageFormat = 0);
 
 /// <summary>One member of the <c>$Global</c> uniform block: where HLSL reads it and how it is shaped.</summary>
 /// <param name="Columns">SPIR-V columns of a matrix (HLSL rows); 0 for scalars and vectors.</param>
@@ -39,8 +43,8 @@ public sealed class SpirvReflection
     public SpirvResource GlobalBlock { get; private init; }
     /// <summary>Every uniform block, <c>$Global</c> included; globals set by name may live in any of them.</summary>
     public IReadOnlyList<SpirvUniformBlock> UniformBlocks { get; private init; } = Array.Empty<SpirvUniformBlock>();
-    /// <summary>Bound resources the backend cannot provide (textures, typed buffers, samplers): their names and
-    /// HLSL types ("RWTexture3D", "Buffer", "SamplerState").</summary>
+    /// <summary>Bound resources the backend cannot provide (texture arrays, cube maps, multisampled textures, typed
+    /// buffers, samplers): their names and HLSL types ("Texture2DArray", "Buffer", "SamplerState").</summary>
     public IReadOnlyList<(string Name, string HlslType)> UnsupportedResources { get; private init; } = Array.Empty<(string, string)>();
 
     const uint Magic = 0x07230203;
@@ -173,6 +177,19 @@ public sealed class SpirvReflection
 
         foreach (var (ptrType, id, storage) in variables)
         {
+            if (storage == 0 && decorations.ContainsKey((id, DecoBinding)) && types.TryGetValue(ptrType, out var imagePtr) && imagePtr.Op == 32
+                && types.TryGetValue(imagePtr.Operands[1], out var image) && image.Op == 25 && image.Operands.Length >= 7
+                && (image.Operands[1] == 1 || image.Operands[1] == 2) && image.Operands[3] == 0 && image.Operands[4] == 0
+                && (image.Operands[5] == 1 || image.Operands[5] == 2))
+            {
+                // A Texture2D/3D or RWTexture2D/3D (Dim 2D or 3D, not arrayed, not multisampled): bound by the backend.
+                bool storageImage = image.Operands[5] == 2;
+                resources.Add(new SpirvResource(names.TryGetValue(id, out var imageName) ? imageName : $"%{id}",
+                    storageImage ? SpirvResourceKind.StorageImage : SpirvResourceKind.SampledImage,
+                    decorations.TryGetValue((id, DecoSet), out uint imageSet) ? imageSet : 0, decorations[(id, DecoBinding)], 0, !storageImage,
+                    HlslTypeName(image.Operands[0]), false, image.Operands[1] == 1 ? 2 : 3, image.Operands[6]));
+                continue;
+            }
             if (storage == 0 && decorations.ContainsKey((id, DecoBinding)))
             {
                 unsupported.Add((names.TryGetValue(id, out var un) && un.Length > 0 ? un : $"%{id}",

@@ -125,6 +125,8 @@ public sealed unsafe partial class VulkanComputeDevice
         var v = new KernelVariant(kernel, defines, words, reflection);
         v.StorageBuffers = reflection.Resources.Where(r => r.Kind == SpirvResourceKind.StorageBuffer).ToArray();
         v.StorageBufferIds = v.StorageBuffers.Select(r => PropertyIdOf(r.Name)).ToArray();
+        v.Textures = reflection.Resources.Where(r => r.Kind == SpirvResourceKind.StorageImage || r.Kind == SpirvResourceKind.SampledImage).ToArray();
+        v.TextureIds = v.Textures.Select(r => PropertyIdOf(r.Name)).ToArray();
         v.UniformBlocks = reflection.UniformBlocks
             .Select(b => (b, b.Members.Values.Select(m => (PropertyIdOf(m.Name), m)).ToArray()))
             .ToArray();
@@ -139,7 +141,8 @@ public sealed unsafe partial class VulkanComputeDevice
     {
         if (reflection.UnsupportedResources.Count > 0)
             return $"it binds {string.Join(", ", reflection.UnsupportedResources.Select(r => $"'{r.Name}' ({r.HlslType})"))}; " +
-                   "the headless backend binds only StructuredBuffer, RWStructuredBuffer, ByteAddressBuffer and globals, no textures, typed buffers or samplers";
+                   "the headless backend binds structured and byte-address buffers, globals and Texture2D/3D or RWTexture2D/3D read with Load or [], " +
+                   "but no samplers, typed buffers, texture arrays, cube or multisampled textures";
         foreach (var r in reflection.Resources)
             if (r.Name.EndsWith("@count", StringComparison.Ordinal))
                 return $"it uses a hidden counter buffer '{r.Name}' (IncrementCounter/Append/Consume), which the headless backend does not support; count with InterlockedAdd on a buffer of its own";
@@ -187,7 +190,7 @@ public sealed unsafe partial class VulkanComputeDevice
             bindings[i] = new DescriptorSetLayoutBinding
             {
                 Binding = resources[i].Binding,
-                DescriptorType = resources[i].Kind == SpirvResourceKind.StorageBuffer ? DescriptorType.StorageBuffer : DescriptorType.UniformBuffer,
+                DescriptorType = DescriptorTypeOf(resources[i].Kind),
                 DescriptorCount = 1,
                 StageFlags = ShaderStageFlags.ComputeBit,
             };
@@ -213,6 +216,14 @@ public sealed unsafe partial class VulkanComputeDevice
         finally { SilkMarshal.Free((nint)entry); }
         v.Created = true;
     }
+
+    static DescriptorType DescriptorTypeOf(SpirvResourceKind kind) => kind switch
+    {
+        SpirvResourceKind.StorageBuffer => DescriptorType.StorageBuffer,
+        SpirvResourceKind.StorageImage => DescriptorType.StorageImage,
+        SpirvResourceKind.SampledImage => DescriptorType.SampledImage,
+        _ => DescriptorType.UniformBuffer,
+    };
 
     void DestroyVariant(KernelVariant v)
     {
@@ -368,6 +379,18 @@ public sealed unsafe partial class VulkanComputeDevice
             CheckStride(p, v, v.StorageBuffers[i], b);
             resolved[i] = b;
         }
+        var boundTextures = p.TextureBindings[kernel];
+        int nTextures = v.Textures.Length;
+        var textures = new VulkanTexture[nTextures];
+        for (int i = 0; i < nTextures; i++)
+        {
+            if (!boundTextures.TryGetValue(v.TextureIds[i], out var t))
+                throw new ComputeException($"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: texture '{v.Textures[i].Name}' ({Declaration(v.Textures[i])}) was never bound (SetTexture)");
+            if (t.IsDisposed)
+                throw new ObjectDisposedException(t.Name, $"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: texture '{t.Name}' bound to '{v.Textures[i].Name}' was disposed");
+            CheckTexture(p, v, v.Textures[i], t);
+            textures[i] = t;
+        }
         if (groupsX == 0 || groupsY == 0 || groupsZ == 0) return;
         CreatePipeline(v);
 
@@ -401,6 +424,18 @@ public sealed unsafe partial class VulkanComputeDevice
             {
                 SType = StructureType.WriteDescriptorSet, DstSet = set, DstBinding = block.Resource.Binding, DescriptorCount = 1,
                 DescriptorType = DescriptorType.UniformBuffer, PBufferInfo = &infos[w],
+            };
+            w++;
+        }
+        var images = stackalloc DescriptorImageInfo[Math.Max(1, nTextures)];
+        for (int i = 0; i < nTextures; i++)
+        {
+            textures[i].LastUsedSerial = frame.Serial;
+            images[i] = new DescriptorImageInfo(default, textures[i].View, ImageLayout.General);
+            writes[w] = new WriteDescriptorSet
+            {
+                SType = StructureType.WriteDescriptorSet, DstSet = set, DstBinding = v.Textures[i].Binding, DescriptorCount = 1,
+                DescriptorType = DescriptorTypeOf(v.Textures[i].Kind), PImageInfo = &images[i],
             };
             w++;
         }
@@ -479,13 +514,16 @@ public sealed unsafe partial class VulkanComputeDevice
         return f;
     }
 
+    const uint PoolSizeCount = 4;
     static readonly DescriptorPoolSize* PoolSizes = CreatePoolSizes();
 
     static DescriptorPoolSize* CreatePoolSizes()
     {
-        var sizes = (DescriptorPoolSize*)NativeMemory.Alloc(2, (nuint)sizeof(DescriptorPoolSize));
+        var sizes = (DescriptorPoolSize*)NativeMemory.Alloc(PoolSizeCount, (nuint)sizeof(DescriptorPoolSize));
         sizes[0] = new DescriptorPoolSize(DescriptorType.StorageBuffer, SetsPerDescriptorPool * 8);
         sizes[1] = new DescriptorPoolSize(DescriptorType.UniformBuffer, SetsPerDescriptorPool * 2);
+        sizes[2] = new DescriptorPoolSize(DescriptorType.StorageImage, SetsPerDescriptorPool * 2);
+        sizes[3] = new DescriptorPoolSize(DescriptorType.SampledImage, SetsPerDescriptorPool * 2);
         return sizes;
     }
 
@@ -496,7 +534,7 @@ public sealed unsafe partial class VulkanComputeDevice
             if (f.DescriptorPoolIndex == f.DescriptorPools.Count)
             {
                 var sizes = PoolSizes;
-                var info = new DescriptorPoolCreateInfo { SType = StructureType.DescriptorPoolCreateInfo, MaxSets = SetsPerDescriptorPool, PoolSizeCount = 2, PPoolSizes = sizes };
+                var info = new DescriptorPoolCreateInfo { SType = StructureType.DescriptorPoolCreateInfo, MaxSets = SetsPerDescriptorPool, PoolSizeCount = PoolSizeCount, PPoolSizes = sizes };
                 Check(_vk.CreateDescriptorPool(_device, &info, null, out var pool), "vkCreateDescriptorPool");
                 f.DescriptorPools.Add(pool);
             }
@@ -731,6 +769,7 @@ public sealed unsafe partial class VulkanComputeDevice
         {
             foreach (var b in _liveBuffers.ToList()) DestroyBuffer(b);
             _deferredRelease.Clear();
+            DestroyAllTextures();
             foreach (var v in _variantCache.Values) DestroyVariant(v);
             _variantCache.Clear();
             for (int i = 0; i < _frames.Length; i++) { DestroyFrame(_frames[i]); _frames[i] = null; }

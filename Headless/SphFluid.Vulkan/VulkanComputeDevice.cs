@@ -281,7 +281,12 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
             PQueuePriorities = &priority,
         };
         _vk.GetPhysicalDeviceFeatures(_physical, out var supported);
-        var features = new PhysicalDeviceFeatures { RobustBufferAccess = _options.RobustBufferAccess && supported.RobustBufferAccess };
+        var features = new PhysicalDeviceFeatures
+        {
+            RobustBufferAccess = _options.RobustBufferAccess && supported.RobustBufferAccess,
+            // RWTexture<float2> is an Rg32f storage image, one of the "extended" formats.
+            ShaderStorageImageExtendedFormats = supported.ShaderStorageImageExtendedFormats,
+        };
         RobustBufferAccess = features.RobustBufferAccess;
         var info = new DeviceCreateInfo
         {
@@ -519,6 +524,7 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
             DestroyBuffer(_deferredRelease[i]);
             _deferredRelease.RemoveAt(i);
         }
+        ReleaseDeferredTextures();
     }
 
     public IReadbackRequest RequestReadback(IComputeBuffer buffer)
