@@ -115,7 +115,7 @@ public sealed class ShaderCompiler
             args.Add(output);
             var (code, text) = Run(_glslang, args);
             if (code != 0 || !File.Exists(output))
-                throw new ComputeException(DescribeErrors(source, kernel, defines, text));
+                throw new ComputeException(DescribeErrors(source, tree.MainFile, kernel, defines, text));
             var changed = MeaningChangingWarnings(text);
             if (changed.Count > 0)
                 throw new ComputeException($"HLSL that glslang would compile differently from Unity in {source.Path}, kernel '{kernel}'{DefinesText(defines)}:\n  " + string.Join("\n  ", changed));
@@ -176,8 +176,9 @@ public sealed class ShaderCompiler
 
     static readonly Regex ErrorLine = new(@"^(?:ERROR|WARNING):\s*(.+?):(\d+):\s*(.*)$", RegexOptions.Multiline);
 
-    /// <summary>glslang's errors as <c>file:line: message</c>, the file path first so an editor can jump to it.</summary>
-    static string DescribeErrors(ComputeSource source, string kernel, IReadOnlyList<string> defines, string output)
+    /// <summary>glslang's errors as <c>file:line: message</c>, the file path first so an editor can jump to it; the
+    /// prepared copy glslang read (<paramref name="compiledCopy"/>) never appears, as its #line names the original.</summary>
+    static string DescribeErrors(ComputeSource source, string compiledCopy, string kernel, IReadOnlyList<string> defines, string output)
     {
         var lines = new List<string>();
         foreach (Match m in ErrorLine.Matches(output))
@@ -187,7 +188,7 @@ public sealed class ShaderCompiler
             lines.Add($"{file}:{m.Groups[2].Value}: {m.Groups[3].Value.Trim()}");
         }
         if (lines.Count == 0)
-            lines.AddRange(output.Split('\n').Select(l => l.Trim()).Where(l => l.Length > 0 && l != source.Path && !l.EndsWith("No code generated.", StringComparison.Ordinal)));
+            lines.AddRange(output.Split('\n').Select(l => l.Trim()).Where(l => l.Length > 0 && l != source.Path && l != compiledCopy && !l.EndsWith("No code generated.", StringComparison.Ordinal)));
         return $"HLSL compile error in {source.Path}, kernel '{kernel}'{DefinesText(defines)}:\n  " + string.Join("\n  ", lines);
     }
 

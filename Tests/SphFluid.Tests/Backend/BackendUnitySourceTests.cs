@@ -176,6 +176,18 @@ namespace SphFluid.Tests.Backend
         }
 
         [Test]
+        public void ErrorsNameTheOriginalFileNeverThePreparedCopyGlslangRead()
+        {
+            string path = Path.Combine(_dir, "Faults.compute");
+            File.WriteAllText(path, "#pragma kernel Main\nRWStructuredBuffer<float> _Out;\n[numthreads(1, 1, 1)]\nvoid Main(uint3 id : SV_DispatchThreadID) { _Out[0] = missing; }\n");
+            var syntax = Assert.Throws<ComputeException>(() => GpuTestDevice.Shared.LoadProgram(path));
+            Assert.That(syntax.Message, Does.Contain(path + ":4:").And.Not.Contain("sphfluid-spirv-"));
+            File.WriteAllText(path, "#pragma kernel Main\n#pragma kernel Absent\nRWStructuredBuffer<float> _Out;\n[numthreads(1, 1, 1)]\nvoid Main(uint3 id : SV_DispatchThreadID) { _Out[0] = 1.0f; }\n");
+            var entry = Assert.Throws<ComputeException>(() => GpuTestDevice.Shared.LoadProgram(path));
+            Assert.That(entry.Message, Does.Contain("Absent").And.Not.Contain("sphfluid-spirv-"));
+        }
+
+        [Test]
         public void StructMemberInitializersThatGlslangIgnoresAreAnError()
         {
             string path = Path.Combine(_dir, "MemberInit.compute");
