@@ -5,7 +5,7 @@ using System.Text;
 namespace SphFluid.Vulkan;
 
 /// <summary>Kind of a resource a kernel binds.</summary>
-public enum SpirvResourceKind { StorageBuffer, UniformBuffer, StorageImage, SampledImage }
+public enum SpirvResourceKind { StorageBuffer, UniformBuffer, StorageImage, SampledImage, Sampler }
 
 /// <summary>One descriptor a kernel declares, by the HLSL name of the variable.</summary>
 /// <param name="ElementType">For a structured buffer, its element type in HLSL words: "uint", "float4", or the struct's name.</param>
@@ -44,7 +44,7 @@ public sealed class SpirvReflection
     /// <summary>Every uniform block, <c>$Global</c> included; globals set by name may live in any of them.</summary>
     public IReadOnlyList<SpirvUniformBlock> UniformBlocks { get; private init; } = Array.Empty<SpirvUniformBlock>();
     /// <summary>Bound resources the backend cannot provide (texture arrays, cube maps, multisampled textures, typed
-    /// buffers, samplers): their names and HLSL types ("Texture2DArray", "Buffer", "SamplerState").</summary>
+    /// buffers): their names and HLSL types ("Texture2DArray", "Buffer").</summary>
     public IReadOnlyList<(string Name, string HlslType)> UnsupportedResources { get; private init; } = Array.Empty<(string, string)>();
 
     const uint Magic = 0x07230203;
@@ -188,6 +188,13 @@ public sealed class SpirvReflection
                     storageImage ? SpirvResourceKind.StorageImage : SpirvResourceKind.SampledImage,
                     decorations.TryGetValue((id, DecoSet), out uint imageSet) ? imageSet : 0, decorations[(id, DecoBinding)], 0, !storageImage,
                     HlslTypeName(image.Operands[0]), false, image.Operands[1] == 1 ? 2 : 3, image.Operands[6]));
+                continue;
+            }
+            if (storage == 0 && decorations.ContainsKey((id, DecoBinding)) && types.TryGetValue(ptrType, out var samplerPtr) && samplerPtr.Op == 32
+                && types.TryGetValue(samplerPtr.Operands[1], out var sampler) && sampler.Op == 26)
+            {
+                resources.Add(new SpirvResource(names.TryGetValue(id, out var samplerName) ? samplerName : $"%{id}", SpirvResourceKind.Sampler,
+                    decorations.TryGetValue((id, DecoSet), out uint samplerSet) ? samplerSet : 0, decorations[(id, DecoBinding)], 0, true));
                 continue;
             }
             if (storage == 0 && decorations.ContainsKey((id, DecoBinding)))

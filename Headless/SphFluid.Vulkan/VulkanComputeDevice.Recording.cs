@@ -127,6 +127,7 @@ public sealed unsafe partial class VulkanComputeDevice
         v.StorageBufferIds = v.StorageBuffers.Select(r => PropertyIdOf(r.Name)).ToArray();
         v.Textures = reflection.Resources.Where(r => r.Kind == SpirvResourceKind.StorageImage || r.Kind == SpirvResourceKind.SampledImage).ToArray();
         v.TextureIds = v.Textures.Select(r => PropertyIdOf(r.Name)).ToArray();
+        v.Samplers = reflection.Resources.Where(r => r.Kind == SpirvResourceKind.Sampler).ToArray();
         v.UniformBlocks = reflection.UniformBlocks
             .Select(b => (b, b.Members.Values.Select(m => (PropertyIdOf(m.Name), m)).ToArray()))
             .ToArray();
@@ -141,8 +142,8 @@ public sealed unsafe partial class VulkanComputeDevice
     {
         if (reflection.UnsupportedResources.Count > 0)
             return $"it binds {string.Join(", ", reflection.UnsupportedResources.Select(r => $"'{r.Name}' ({r.HlslType})"))}; " +
-                   "the headless backend binds structured and byte-address buffers, globals and Texture2D/3D or RWTexture2D/3D read with Load or [], " +
-                   "but no samplers, typed buffers, texture arrays, cube or multisampled textures";
+                   "the headless backend binds structured and byte-address buffers, globals, Texture2D/3D, RWTexture2D/3D and SamplerState, " +
+                   "but no typed buffers, texture arrays, cube or multisampled textures";
         foreach (var r in reflection.Resources)
             if (r.Name.EndsWith("@count", StringComparison.Ordinal))
                 return $"it uses a hidden counter buffer '{r.Name}' (IncrementCounter/Append/Consume), which the headless backend does not support; count with InterlockedAdd on a buffer of its own";
@@ -222,6 +223,7 @@ public sealed unsafe partial class VulkanComputeDevice
         SpirvResourceKind.StorageBuffer => DescriptorType.StorageBuffer,
         SpirvResourceKind.StorageImage => DescriptorType.StorageImage,
         SpirvResourceKind.SampledImage => DescriptorType.SampledImage,
+        SpirvResourceKind.Sampler => DescriptorType.Sampler,
         _ => DescriptorType.UniformBuffer,
     };
 
@@ -391,6 +393,8 @@ public sealed unsafe partial class VulkanComputeDevice
             CheckTexture(p, v, v.Textures[i], t);
             textures[i] = t;
         }
+        var samplers = new Sampler[v.Samplers.Length];
+        for (int i = 0; i < samplers.Length; i++) samplers[i] = SamplerObject(SamplerFor(p, v, v.Samplers[i], textures));
         if (groupsX == 0 || groupsY == 0 || groupsZ == 0) return;
         CreatePipeline(v);
 
@@ -427,7 +431,7 @@ public sealed unsafe partial class VulkanComputeDevice
             };
             w++;
         }
-        var images = stackalloc DescriptorImageInfo[Math.Max(1, nTextures)];
+        var images = stackalloc DescriptorImageInfo[Math.Max(1, nTextures + samplers.Length)];
         for (int i = 0; i < nTextures; i++)
         {
             textures[i].LastUsedSerial = frame.Serial;
@@ -436,6 +440,16 @@ public sealed unsafe partial class VulkanComputeDevice
             {
                 SType = StructureType.WriteDescriptorSet, DstSet = set, DstBinding = v.Textures[i].Binding, DescriptorCount = 1,
                 DescriptorType = DescriptorTypeOf(v.Textures[i].Kind), PImageInfo = &images[i],
+            };
+            w++;
+        }
+        for (int i = 0; i < samplers.Length; i++)
+        {
+            images[nTextures + i] = new DescriptorImageInfo(samplers[i], default, ImageLayout.Undefined);
+            writes[w] = new WriteDescriptorSet
+            {
+                SType = StructureType.WriteDescriptorSet, DstSet = set, DstBinding = v.Samplers[i].Binding, DescriptorCount = 1,
+                DescriptorType = DescriptorType.Sampler, PImageInfo = &images[nTextures + i],
             };
             w++;
         }
@@ -514,7 +528,7 @@ public sealed unsafe partial class VulkanComputeDevice
         return f;
     }
 
-    const uint PoolSizeCount = 4;
+    const uint PoolSizeCount = 5;
     static readonly DescriptorPoolSize* PoolSizes = CreatePoolSizes();
 
     static DescriptorPoolSize* CreatePoolSizes()
@@ -524,6 +538,7 @@ public sealed unsafe partial class VulkanComputeDevice
         sizes[1] = new DescriptorPoolSize(DescriptorType.UniformBuffer, SetsPerDescriptorPool * 2);
         sizes[2] = new DescriptorPoolSize(DescriptorType.StorageImage, SetsPerDescriptorPool * 2);
         sizes[3] = new DescriptorPoolSize(DescriptorType.SampledImage, SetsPerDescriptorPool * 2);
+        sizes[4] = new DescriptorPoolSize(DescriptorType.Sampler, SetsPerDescriptorPool * 2);
         return sizes;
     }
 

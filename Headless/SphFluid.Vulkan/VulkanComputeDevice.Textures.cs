@@ -10,6 +10,7 @@ public sealed unsafe partial class VulkanComputeDevice
 {
     readonly HashSet<VulkanTexture> _liveTextures = new();
     readonly List<VulkanTexture> _deferredTextureRelease = new();
+    readonly Dictionary<SamplerSettings, Sampler> _samplers = new();
 
     /// <summary>A zeroed 2D texture for <c>Texture2D</c> / <c>RWTexture2D</c> (Unity: a RenderTexture with random write).</summary>
     public VulkanTexture CreateTexture2D(string name, int width, int height, VulkanTextureFormat format) =>
@@ -235,5 +236,49 @@ public sealed unsafe partial class VulkanComputeDevice
     {
         foreach (var t in _liveTextures.ToList()) DestroyTexture(t);
         _deferredTextureRelease.Clear();
+        foreach (var s in _samplers.Values) _vk.DestroySampler(_device, s, null);
+        _samplers.Clear();
+    }
+
+    /// <summary>The settings a kernel's <c>SamplerState</c> stands for: an inline sampler name, else
+    /// <c>sampler&lt;Texture&gt;</c> of a texture bound to the same kernel, as in Unity.</summary>
+    static SamplerSettings SamplerFor(VulkanProgram p, KernelVariant v, SpirvResource sampler, IReadOnlyList<VulkanTexture> textures)
+    {
+        SamplerSettings? inline;
+        try { inline = SamplerSettings.FromInlineName(sampler.Name); }
+        catch (ArgumentException e) { throw new ComputeException($"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: {e.Message}"); }
+        if (inline != null) return inline.Value;
+        if (sampler.Name.StartsWith("sampler", StringComparison.Ordinal))
+        {
+            string textureName = sampler.Name.Substring("sampler".Length);
+            for (int i = 0; i < v.Textures.Length; i++)
+                if (v.Textures[i].Name == textureName) return new SamplerSettings(textures[i].Filter, textures[i].Wrap);
+        }
+        throw new ComputeException($"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: SamplerState '{sampler.Name}' is neither an inline sampler " +
+                                   "(a name with Point, Linear or Trilinear and Clamp, Repeat, Mirror or MirrorOnce, e.g. sampler_linear_clamp) " +
+                                   "nor sampler<Texture> of a texture this kernel reads");
+    }
+
+    Sampler SamplerObject(SamplerSettings settings)
+    {
+        if (_samplers.TryGetValue(settings, out var sampler)) return sampler;
+        var filter = settings.Filter == TextureFilter.Point ? Filter.Nearest : Filter.Linear;
+        var wrap = settings.Wrap switch
+        {
+            TextureWrap.Clamp => SamplerAddressMode.ClampToEdge,
+            TextureWrap.Mirror => SamplerAddressMode.MirroredRepeat,
+            TextureWrap.MirrorOnce => SamplerAddressMode.MirrorClampToEdge,
+            _ => SamplerAddressMode.Repeat,
+        };
+        var info = new SamplerCreateInfo
+        {
+            SType = StructureType.SamplerCreateInfo,
+            MagFilter = filter, MinFilter = filter, MipmapMode = SamplerMipmapMode.Nearest,
+            AddressModeU = wrap, AddressModeV = wrap, AddressModeW = wrap,
+            MaxLod = 0,
+        };
+        Check(_vk.CreateSampler(_device, &info, null, out sampler), $"vkCreateSampler ({settings.Filter}, {settings.Wrap})");
+        _samplers[settings] = sampler;
+        return sampler;
     }
 }

@@ -26,6 +26,7 @@ public sealed class KernelVariant
     /// <summary>Property ids of the textures, parallel to <see cref="Textures"/>.</summary>
     internal int[] TextureIds = Array.Empty<int>();
     internal SpirvResource[] Textures = Array.Empty<SpirvResource>();
+    internal SpirvResource[] Samplers = Array.Empty<SpirvResource>();
     internal (SpirvUniformBlock Block, (int Id, SpirvGlobal Member)[] Members)[] UniformBlocks = Array.Empty<(SpirvUniformBlock, (int, SpirvGlobal)[])>();
 
     internal KernelVariant(string kernel, IReadOnlyList<string> defines, uint[] spirv, SpirvReflection reflection)

@@ -31,6 +31,12 @@ public sealed class VulkanTexture : IDisposable
     public long SizeInBytes => (long)Width * Height * Depth * Format.BytesPerTexel();
     public bool IsDisposed { get; private set; }
 
+    /// <summary>How <c>sampler&lt;Name&gt;</c> filters this texture; linear by default, as a new Unity texture.</summary>
+    public TextureFilter Filter { get; set; } = TextureFilter.Linear;
+
+    /// <summary>How <c>sampler&lt;Name&gt;</c> wraps this texture; repeat by default, as a new Unity texture.</summary>
+    public TextureWrap Wrap { get; set; } = TextureWrap.Repeat;
+
     internal VulkanTexture(VulkanComputeDevice device, string name, int width, int height, int depth, int dimensions, VulkanTextureFormat format)
     {
         _device = device;
