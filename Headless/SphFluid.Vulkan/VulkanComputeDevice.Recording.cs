@@ -394,7 +394,12 @@ public sealed unsafe partial class VulkanComputeDevice
             textures[i] = t;
         }
         var samplers = new Sampler[v.Samplers.Length];
-        for (int i = 0; i < samplers.Length; i++) samplers[i] = SamplerObject(SamplerFor(p, v, v.Samplers[i], textures));
+        for (int i = 0; i < samplers.Length; i++)
+        {
+            var settings = SamplerFor(p, v, v.Samplers[i], textures);
+            if (settings.Filter == TextureFilter.Linear) CheckLinearFiltering(p, v, v.Samplers[i], textures);
+            samplers[i] = SamplerObject(settings);
+        }
         if (groupsX == 0 || groupsY == 0 || groupsZ == 0) return;
         CreatePipeline(v);
 

@@ -259,6 +259,20 @@ public sealed unsafe partial class VulkanComputeDevice
                                    "nor sampler<Texture> of a texture this kernel reads");
     }
 
+    /// <summary>Linear filtering of 32-bit float formats is optional in Vulkan: refuse it by name where the device lacks
+    /// it rather than let the driver return undefined values.</summary>
+    void CheckLinearFiltering(VulkanProgram p, KernelVariant v, SpirvResource sampler, VulkanTexture[] textures)
+    {
+        for (int i = 0; i < textures.Length; i++)
+        {
+            if (v.Textures[i].Kind != SpirvResourceKind.SampledImage) continue;
+            _vk.GetPhysicalDeviceFormatProperties(_physical, textures[i].Format.VulkanFormat(), out var support);
+            if ((support.OptimalTilingFeatures & FormatFeatureFlags.SampledImageFilterLinearBit) == 0)
+                throw new ComputeException($"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: SamplerState '{sampler.Name}' filters linearly, " +
+                                           $"but {DeviceName} cannot filter {textures[i].Format} textures such as '{textures[i].Name}'; use a point sampler");
+        }
+    }
+
     Sampler SamplerObject(SamplerSettings settings)
     {
         if (_samplers.TryGetValue(settings, out var sampler)) return sampler;
