@@ -18,7 +18,7 @@ public static class StructuredBufferPacking
 {
     const ushort OpTypeInt = 21, OpTypeFloat = 22, OpTypeVector = 23, OpTypeMatrix = 24, OpTypeArray = 28, OpTypeRuntimeArray = 29,
         OpTypeStruct = 30, OpTypePointer = 32, OpConstant = 43, OpVariable = 59, OpDecorate = 71, OpMemberDecorate = 72;
-    const uint DecoBlock = 2, DecoBufferBlock = 3, DecoRowMajor = 4, DecoArrayStride = 6, DecoMatrixStride = 7, DecoOffset = 35;
+    const uint DecoBufferBlock = 3, DecoRowMajor = 4, DecoArrayStride = 6, DecoMatrixStride = 7, DecoOffset = 35;
     const uint StorageUniform = 2, StoragePushConstant = 9, StorageStorageBuffer = 12;
 
     /// <summary>A copy of <paramref name="spirv"/> whose storage-buffer types carry D3D's packing.</summary>
