@@ -4,6 +4,7 @@ using System.IO;
 using System.Linq;
 using System.Text;
 using System.Text.RegularExpressions;
+using SphFluid.Compute;
 
 namespace SphFluid.Vulkan;
 
@@ -30,11 +31,19 @@ public sealed class ComputeSource
     /// <summary>The file itself and every file it includes, directly or not, with their texts.</summary>
     public IReadOnlyList<(string Path, string Text)> Files { get; }
 
-    static readonly Regex IncludeRegex = new(@"^\s*#\s*include\s*[""<]([^"">]+)["">]", RegexOptions.Multiline);
+    /// <summary>Where each <c>#include</c> was found: (including file, name as written) to the full path.</summary>
+    public IReadOnlyDictionary<(string File, string Name), string> ResolvedIncludes { get; }
+
+    /// <summary>An <c>#include "name"</c> or <c>#include &lt;name&gt;</c> line; group 1 is the name.</summary>
+    internal static readonly Regex IncludeRegex = new(@"^\s*#\s*include\s*[""<]([^"">]+)["">]", RegexOptions.Multiline);
+    static readonly Regex Identifier = new(@"^[A-Za-z_][A-Za-z0-9_]*$");
+    static readonly Regex DefineWord = new(@"^[A-Za-z_][A-Za-z0-9_]*(=\S+)?$");
     static readonly Regex PragmaRegex = new(@"^\s*#\s*pragma\s+(kernel|multi_compile|multi_compile_local|shader_feature|shader_feature_local)\b([^\r\n]*)", RegexOptions.Multiline);
 
-    ComputeSource(string path, string text, List<KernelDeclaration> kernels, List<IReadOnlyList<string>> sets, List<(string, string)> files)
+    ComputeSource(string path, string text, List<KernelDeclaration> kernels, List<IReadOnlyList<string>> sets, List<(string, string)> files,
+        Dictionary<(string, string), string> includes)
     {
+        ResolvedIncludes = includes;
         Path = path;
         Text = text;
         Kernels = kernels;
@@ -54,8 +63,18 @@ public sealed class ComputeSource
             var tokens = m.Groups[2].Value.Split((char[])null, StringSplitOptions.RemoveEmptyEntries);
             if (m.Groups[1].Value == "kernel")
             {
-                if (tokens.Length == 0) continue;
-                kernels.Add(new KernelDeclaration(tokens[0], tokens.Skip(1).ToList()));
+                // Unity reads the pragma up to a ';' and ignores the rest, so "#pragma kernel K;" names K.
+                string declaration = m.Groups[2].Value.Split(';')[0];
+                var words = declaration.Split((char[])null, StringSplitOptions.RemoveEmptyEntries);
+                int line = code.Take(m.Index).Count(c => c == '\n') + 1;
+                if (words.Length == 0)
+                    throw new ComputeException($"{path}:{line}: #pragma kernel needs a kernel name (#pragma kernel Name [DEFINE or DEFINE=value ...])");
+                if (!Identifier.IsMatch(words[0]))
+                    throw new ComputeException($"{path}:{line}: '{words[0]}' is not a kernel name; #pragma kernel takes an HLSL function name, then optional DEFINE or DEFINE=value words");
+                foreach (string define in words.Skip(1))
+                    if (!DefineWord.IsMatch(define))
+                        throw new ComputeException($"{path}:{line}: '{define}' after kernel '{words[0]}' is not a define; write DEFINE or DEFINE=value");
+                kernels.Add(new KernelDeclaration(words[0], words.Skip(1).ToList()));
             }
             else
             {
@@ -68,6 +87,7 @@ public sealed class ComputeSource
         }
 
         var files = new List<(string, string)>();
+        var includes = new Dictionary<(string, string), string>();
         var seen = new HashSet<string>(StringComparer.Ordinal);
         void Visit(string file, string content)
         {
@@ -76,11 +96,13 @@ public sealed class ComputeSource
             foreach (Match inc in IncludeRegex.Matches(StripComments(content)))
             {
                 string resolved = ResolveInclude(inc.Groups[1].Value, System.IO.Path.GetDirectoryName(file), includeDirs);
-                if (resolved != null) Visit(resolved, File.ReadAllText(resolved));
+                if (resolved == null) continue;
+                includes[(file, inc.Groups[1].Value)] = resolved;
+                Visit(resolved, File.ReadAllText(resolved));
             }
         }
         Visit(System.IO.Path.GetFullPath(path), text);
-        return new ComputeSource(System.IO.Path.GetFullPath(path), text, kernels, sets, files);
+        return new ComputeSource(System.IO.Path.GetFullPath(path), text, kernels, sets, files, includes);
     }
 
     static string ResolveInclude(string name, string fromDir, IReadOnlyList<string> includeDirs)

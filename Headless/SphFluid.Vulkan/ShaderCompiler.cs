@@ -18,7 +18,8 @@ namespace SphFluid.Vulkan;
 /// </summary>
 public sealed class ShaderCompiler
 {
-    const string CacheFormat = "sphfluid-spirv-1";
+    // 2: sources prepared by GlslangSourceTree, structured buffers repacked by StructuredBufferPacking.
+    const string CacheFormat = "sphfluid-spirv-2";
     int _compileCount;
     readonly string _glslang;
     readonly string _spirvVal;
@@ -103,21 +104,30 @@ public sealed class ShaderCompiler
         string tmpDir = Path.Combine(Path.GetTempPath(), "sphfluid-spirv-" + Environment.ProcessId);
         Directory.CreateDirectory(tmpDir);
         string output = Path.Combine(tmpDir, $"{key}.{Guid.NewGuid():N}.spv");
+        using var tree = GlslangSourceTree.Write(source, tmpDir);
         try
         {
             var args = Arguments(kernel, defines).ToList();
             args.Add("-I" + Path.GetDirectoryName(source.Path));
             args.AddRange(includeDirs.Select(d => "-I" + d));
-            args.Add(source.Path);
+            args.Add(tree.MainFile);
             args.Add("-o");
             args.Add(output);
             var (code, text) = Run(_glslang, args);
             if (code != 0 || !File.Exists(output))
-                throw new ComputeException(DescribeErrors(source, kernel, defines, text));
-            var (valCode, valText) = Run(_spirvVal, new[] { "--target-env", "vulkan1.1", output });
+                throw new ComputeException(DescribeErrors(source, tree.MainFile, kernel, defines, text));
+            var changed = MeaningChangingWarnings(text);
+            if (changed.Count > 0)
+                throw new ComputeException($"HLSL that glslang would compile differently from Unity in {source.Path}, kernel '{kernel}'{DefinesText(defines)}:\n  " + string.Join("\n  ", changed));
+            uint[] packed;
+            try { packed = StructuredBufferPacking.Apply(ToWords(File.ReadAllBytes(output))); }
+            catch (FormatException e) { throw new ComputeException($"{source.Path}: kernel '{kernel}'{DefinesText(defines)}: its structured buffers cannot be laid out as Unity does: {e.Message}", e); }
+            var bytes = new byte[packed.Length * 4];
+            Buffer.BlockCopy(packed, 0, bytes, 0, bytes.Length);
+            File.WriteAllBytes(output, bytes);
+            var (valCode, valText) = Run(_spirvVal, new[] { "--target-env", "vulkan1.1", "--scalar-block-layout", output });
             if (valCode != 0)
                 throw new ComputeException($"{source.Path}: kernel '{kernel}'{DefinesText(defines)} compiled to invalid SPIR-V (spirv-val): {valText.Trim()}");
-            var bytes = File.ReadAllBytes(output);
             try
             {
                 Directory.CreateDirectory(CacheDirectory);
@@ -137,12 +147,38 @@ public sealed class ShaderCompiler
         }
     }
 
+    /// <summary>glslang warnings after which the kernel would not do what the same HLSL does in Unity; each is
+    /// reported as an error (file:line: message) instead of compiling something else in silence.</summary>
+    static readonly (string Warning, string Advice)[] MeaningChanging =
+    {
+        ("not initialized; zero initializing", "give the constant a value (static const) or drop const to make it a global the host sets"),
+        ("struct-member initializers ignored", "HLSL ignores struct member initializers too; remove them"),
+        ("mul() matrix size mismatch", "the operands of mul() do not fit; glslang would multiply something else"),
+        ("unknown pack_matrix pragma value", "use #pragma pack_matrix(row_major) or (column_major)"),
+        ("unknown requalification", "glslang dropped a qualifier"),
+    };
+
+    static List<string> MeaningChangingWarnings(string output)
+    {
+        var found = new List<string>();
+        foreach (Match m in ErrorLine.Matches(output))
+        {
+            if (!m.Value.StartsWith("WARNING", StringComparison.Ordinal)) continue;
+            string message = m.Groups[3].Value.Trim();
+            foreach (var (warning, advice) in MeaningChanging)
+                if (message.Contains(warning, StringComparison.Ordinal))
+                    found.Add($"{m.Groups[1].Value.Trim()}:{m.Groups[2].Value}: {message} ({advice})");
+        }
+        return found;
+    }
+
     static string DefinesText(IReadOnlyList<string> defines) => defines.Count == 0 ? "" : $" [{string.Join(" ", defines)}]";
 
     static readonly Regex ErrorLine = new(@"^(?:ERROR|WARNING):\s*(.+?):(\d+):\s*(.*)$", RegexOptions.Multiline);
 
-    /// <summary>glslang's errors as <c>file:line: message</c>, the file path first so an editor can jump to it.</summary>
-    static string DescribeErrors(ComputeSource source, string kernel, IReadOnlyList<string> defines, string output)
+    /// <summary>glslang's errors as <c>file:line: message</c>, the file path first so an editor can jump to it; the
+    /// prepared copy glslang read (<paramref name="compiledCopy"/>) never appears, as its #line names the original.</summary>
+    static string DescribeErrors(ComputeSource source, string compiledCopy, string kernel, IReadOnlyList<string> defines, string output)
     {
         var lines = new List<string>();
         foreach (Match m in ErrorLine.Matches(output))
@@ -152,7 +188,7 @@ public sealed class ShaderCompiler
             lines.Add($"{file}:{m.Groups[2].Value}: {m.Groups[3].Value.Trim()}");
         }
         if (lines.Count == 0)
-            lines.AddRange(output.Split('\n').Select(l => l.Trim()).Where(l => l.Length > 0 && l != source.Path && !l.EndsWith("No code generated.", StringComparison.Ordinal)));
+            lines.AddRange(output.Split('\n').Select(l => l.Trim()).Where(l => l.Length > 0 && l != source.Path && l != compiledCopy && !l.EndsWith("No code generated.", StringComparison.Ordinal)));
         return $"HLSL compile error in {source.Path}, kernel '{kernel}'{DefinesText(defines)}:\n  " + string.Join("\n  ", lines);
     }
 

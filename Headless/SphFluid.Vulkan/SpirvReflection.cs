@@ -5,13 +5,17 @@ using System.Text;
 namespace SphFluid.Vulkan;
 
 /// <summary>Kind of a resource a kernel binds.</summary>
-public enum SpirvResourceKind { StorageBuffer, UniformBuffer }
+public enum SpirvResourceKind { StorageBuffer, UniformBuffer, StorageImage, SampledImage, Sampler }
 
 /// <summary>One descriptor a kernel declares, by the HLSL name of the variable.</summary>
 /// <param name="ElementType">For a structured buffer, its element type in HLSL words: "uint", "float4", or the struct's name.</param>
 /// <param name="ElementIsStruct">True when <paramref name="ElementType"/> names a struct.</param>
+/// <param name="ImageDimensions">For a texture: 2 or 3 (<c>Texture2D</c>, <c>RWTexture3D</c>...); its
+/// <paramref name="ElementType"/> is the scalar it holds ("float", "uint", "int").</param>
+/// <param name="ImageFormat">For an <c>RWTexture</c>: the SPIR-V image format glslang chose from its element type
+/// (1 Rgba32f, 3 R32f, 6 Rg32f, 24 R32i, 30 Rgba32ui, 33 R32ui); 0 where any format of that scalar fits.</param>
 public sealed record SpirvResource(string Name, SpirvResourceKind Kind, uint Set, uint Binding, int ArrayStride, bool ReadOnly,
-    string ElementType = "", bool ElementIsStruct = false);
+    string ElementType = "", bool ElementIsStruct = false, int ImageDimensions = 0, uint ImageFormat = 0);
 
 /// <summary>One member of the <c>$Global</c> uniform block: where HLSL reads it and how it is shaped.</summary>
 /// <param name="Columns">SPIR-V columns of a matrix (HLSL rows); 0 for scalars and vectors.</param>
@@ -39,8 +43,9 @@ public sealed class SpirvReflection
     public SpirvResource GlobalBlock { get; private init; }
     /// <summary>Every uniform block, <c>$Global</c> included; globals set by name may live in any of them.</summary>
     public IReadOnlyList<SpirvUniformBlock> UniformBlocks { get; private init; } = Array.Empty<SpirvUniformBlock>();
-    /// <summary>Bound resources the backend cannot provide (textures, typed buffers, samplers), by name.</summary>
-    public IReadOnlyList<string> UnsupportedResources { get; private init; } = Array.Empty<string>();
+    /// <summary>Bound resources the backend cannot provide (texture arrays, cube maps, multisampled textures, typed
+    /// buffers): their names and HLSL types ("Texture2DArray", "Buffer").</summary>
+    public IReadOnlyList<(string Name, string HlslType)> UnsupportedResources { get; private init; } = Array.Empty<(string, string)>();
 
     const uint Magic = 0x07230203;
 
@@ -85,7 +90,7 @@ public sealed class SpirvReflection
                     break;
                 case 71: decorations[(ops[0], ops[1])] = ops.Length > 2 ? ops[2] : 1; break; // OpDecorate
                 case 72: memberDecorations[(ops[0], ops[1], ops[2])] = ops.Length > 3 ? ops[3] : 1; break; // OpMemberDecorate
-                case 21: case 22: case 23: case 24: case 28: case 29: case 30: case 32: // int float vector matrix array rtarray struct pointer
+                case 21: case 22: case 23: case 24: case 25: case 26: case 27: case 28: case 29: case 30: case 32: // int float vector matrix image sampler sampled-image array rtarray struct pointer
                     types[ops[0]] = new TypeInfo { Op = op, Operands = ops.Slice(1).ToArray() };
                     break;
                 case 43: // OpConstant
@@ -142,7 +147,7 @@ public sealed class SpirvReflection
             }
         }
 
-        var unsupported = new List<string>();
+        var unsupported = new List<(string, string)>();
         string HlslTypeName(uint typeId)
         {
             if (!types.TryGetValue(typeId, out var t)) return "?";
@@ -156,11 +161,46 @@ public sealed class SpirvReflection
             }
         }
 
+        // HLSL's name for a texture, typed buffer or sampler type, from the SPIR-V image operands
+        // (sampled type, Dim, Depth, Arrayed, MS, Sampled, Format).
+        string OpaqueTypeName(uint typeId)
+        {
+            if (!types.TryGetValue(typeId, out var t)) return "resource";
+            if (t.Op == 28 || t.Op == 29) return OpaqueTypeName(t.Operands[0]) + "[]";
+            if (t.Op == 26) return "SamplerState";
+            if (t.Op == 27) return OpaqueTypeName(t.Operands[0]);
+            if (t.Op != 25 || t.Operands.Length < 6) return "resource";
+            string rw = t.Operands[5] == 2 ? "RW" : "";
+            string shape = t.Operands[1] switch { 0 => "Texture1D", 1 => "Texture2D", 2 => "Texture3D", 3 => "TextureCube", 5 => "Buffer", _ => "Texture" };
+            return rw + shape + (t.Operands[4] == 1 ? "MS" : "") + (t.Operands[3] == 1 ? "Array" : "");
+        }
+
         foreach (var (ptrType, id, storage) in variables)
         {
+            if (storage == 0 && decorations.ContainsKey((id, DecoBinding)) && types.TryGetValue(ptrType, out var imagePtr) && imagePtr.Op == 32
+                && types.TryGetValue(imagePtr.Operands[1], out var image) && image.Op == 25 && image.Operands.Length >= 7
+                && (image.Operands[1] == 1 || image.Operands[1] == 2) && image.Operands[3] == 0 && image.Operands[4] == 0
+                && (image.Operands[5] == 1 || image.Operands[5] == 2))
+            {
+                // A Texture2D/3D or RWTexture2D/3D (Dim 2D or 3D, not arrayed, not multisampled): bound by the backend.
+                bool storageImage = image.Operands[5] == 2;
+                resources.Add(new SpirvResource(names.TryGetValue(id, out var imageName) ? imageName : $"%{id}",
+                    storageImage ? SpirvResourceKind.StorageImage : SpirvResourceKind.SampledImage,
+                    decorations.TryGetValue((id, DecoSet), out uint imageSet) ? imageSet : 0, decorations[(id, DecoBinding)], 0, !storageImage,
+                    HlslTypeName(image.Operands[0]), false, image.Operands[1] == 1 ? 2 : 3, image.Operands[6]));
+                continue;
+            }
+            if (storage == 0 && decorations.ContainsKey((id, DecoBinding)) && types.TryGetValue(ptrType, out var samplerPtr) && samplerPtr.Op == 32
+                && types.TryGetValue(samplerPtr.Operands[1], out var sampler) && sampler.Op == 26)
+            {
+                resources.Add(new SpirvResource(names.TryGetValue(id, out var samplerName) ? samplerName : $"%{id}", SpirvResourceKind.Sampler,
+                    decorations.TryGetValue((id, DecoSet), out uint samplerSet) ? samplerSet : 0, decorations[(id, DecoBinding)], 0, true));
+                continue;
+            }
             if (storage == 0 && decorations.ContainsKey((id, DecoBinding)))
             {
-                unsupported.Add(names.TryGetValue(id, out var un) && un.Length > 0 ? un : $"%{id}");
+                unsupported.Add((names.TryGetValue(id, out var un) && un.Length > 0 ? un : $"%{id}",
+                    types.TryGetValue(ptrType, out var opaque) && opaque.Op == 32 ? OpaqueTypeName(opaque.Operands[1]) : "resource"));
                 continue;
             }
             if (storage != StorageUniform && storage != StorageStorageBuffer) continue;

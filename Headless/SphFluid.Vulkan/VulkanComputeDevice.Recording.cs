@@ -125,19 +125,33 @@ public sealed unsafe partial class VulkanComputeDevice
         var v = new KernelVariant(kernel, defines, words, reflection);
         v.StorageBuffers = reflection.Resources.Where(r => r.Kind == SpirvResourceKind.StorageBuffer).ToArray();
         v.StorageBufferIds = v.StorageBuffers.Select(r => PropertyIdOf(r.Name)).ToArray();
+        v.Textures = reflection.Resources.Where(r => r.Kind == SpirvResourceKind.StorageImage || r.Kind == SpirvResourceKind.SampledImage).ToArray();
+        v.TextureIds = v.Textures.Select(r => PropertyIdOf(r.Name)).ToArray();
+        v.Samplers = reflection.Resources.Where(r => r.Kind == SpirvResourceKind.Sampler).ToArray();
         v.UniformBlocks = reflection.UniformBlocks
             .Select(b => (b, b.Members.Values.Select(m => (PropertyIdOf(m.Name), m)).ToArray()))
             .ToArray();
-        if (reflection.UnsupportedResources.Count > 0)
-            throw new ComputeException($"{path}: kernel '{kernel}' binds {string.Join(", ", reflection.UnsupportedResources.Select(n => "'" + n + "'"))}, a texture or typed buffer; " +
-                                       "the headless backend binds only StructuredBuffer/ByteAddressBuffer and globals");
-        foreach (var r in reflection.Resources)
-            if (r.Name.EndsWith("@count", StringComparison.Ordinal))
-                throw new ComputeException($"{path}: kernel '{kernel}' uses a hidden counter buffer '{r.Name}' (IncrementCounter/Append/Consume), which the headless backend does not support; count with InterlockedAdd on a buffer of its own");
-        foreach (var r in reflection.Resources)
-            if (r.Set != 0) throw new ComputeException($"{path}: kernel '{kernel}' puts '{r.Name}' in descriptor set {r.Set}; only set 0 is supported");
+        v.Unsupported = WhyUnrunnable(reflection, words);
         _variantCache[key] = v;
         return v;
+    }
+
+    /// <summary>Why this device cannot run a kernel variant that compiled, or null. Such a kernel fails alone, at its
+    /// first dispatch, so the other kernels of its program stay usable (as a texture kernel beside buffer kernels).</summary>
+    string WhyUnrunnable(SpirvReflection reflection, uint[] words)
+    {
+        if (reflection.UnsupportedResources.Count > 0)
+            return $"it binds {string.Join(", ", reflection.UnsupportedResources.Select(r => $"'{r.Name}' ({r.HlslType})"))}; " +
+                   "the headless backend binds structured and byte-address buffers, globals, Texture2D/3D, RWTexture2D/3D and SamplerState, " +
+                   "but no typed buffers, texture arrays, cube or multisampled textures";
+        foreach (var r in reflection.Resources)
+            if (r.Name.EndsWith("@count", StringComparison.Ordinal))
+                return $"it uses a hidden counter buffer '{r.Name}' (IncrementCounter/Append/Consume), which the headless backend does not support; count with InterlockedAdd on a buffer of its own";
+        foreach (var r in reflection.Resources)
+            if (r.Set != 0) return $"it puts '{r.Name}' in descriptor set {r.Set}; only set 0 is supported";
+        if (!ScalarBlockLayout && !StructuredBufferPacking.FollowsStd430(words))
+            return $"its structured buffers are packed as in D3D/Unity (e.g. 12-byte float3), which needs the scalarBlockLayout feature that {DeviceName} lacks";
+        return null;
     }
 
     /// <summary>Compiles variants that are not yet cached in memory, several glslang processes at a time.</summary>
@@ -177,7 +191,7 @@ public sealed unsafe partial class VulkanComputeDevice
             bindings[i] = new DescriptorSetLayoutBinding
             {
                 Binding = resources[i].Binding,
-                DescriptorType = resources[i].Kind == SpirvResourceKind.StorageBuffer ? DescriptorType.StorageBuffer : DescriptorType.UniformBuffer,
+                DescriptorType = DescriptorTypeOf(resources[i].Kind),
                 DescriptorCount = 1,
                 StageFlags = ShaderStageFlags.ComputeBit,
             };
@@ -203,6 +217,15 @@ public sealed unsafe partial class VulkanComputeDevice
         finally { SilkMarshal.Free((nint)entry); }
         v.Created = true;
     }
+
+    static DescriptorType DescriptorTypeOf(SpirvResourceKind kind) => kind switch
+    {
+        SpirvResourceKind.StorageBuffer => DescriptorType.StorageBuffer,
+        SpirvResourceKind.StorageImage => DescriptorType.StorageImage,
+        SpirvResourceKind.SampledImage => DescriptorType.SampledImage,
+        SpirvResourceKind.Sampler => DescriptorType.Sampler,
+        _ => DescriptorType.UniformBuffer,
+    };
 
     void DestroyVariant(KernelVariant v)
     {
@@ -237,7 +260,7 @@ public sealed unsafe partial class VulkanComputeDevice
     {
         if (r.ArrayStride == 0 || r.ArrayStride == b.Stride) return;
         throw new ComputeException($"Stride mismatch: buffer '{b.Name}' has {b.Stride}-byte elements but kernel '{v.Kernel}' of {p.Path} reads '{r.Name}' as {r.ArrayStride}-byte elements " +
-                                   "(build structs that cross buffers from 16-byte groups so C#, D3D and SPIR-V agree)");
+                                   "(laid out as D3D/Unity packs structured buffers: members one after another, float3 = 12 bytes; the C# struct must match)");
     }
 
     GlobalValue Global(IComputeProgram program, int propertyId, string what)
@@ -345,6 +368,7 @@ public sealed unsafe partial class VulkanComputeDevice
         if ((uint)groupsX > max[0] || (uint)groupsY > max[1] || (uint)groupsZ > max[2])
             throw new ComputeException($"Dispatch of kernel '{p.KernelName(kernel)}' in {p.Path}: {groupsX} x {groupsY} x {groupsZ} groups exceed this device's limit of {max[0]} x {max[1]} x {max[2]}");
         var v = p.Variant(kernel);
+        if (v.Unsupported != null) throw new ComputeException($"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: {v.Unsupported}");
         var bound = p.Bindings[kernel];
         int nBuffers = v.StorageBuffers.Length;
         var resolved = new VulkanBuffer[nBuffers];
@@ -356,6 +380,25 @@ public sealed unsafe partial class VulkanComputeDevice
                 throw new ObjectDisposedException(b.Name, $"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: buffer '{b.Name}' bound to '{v.StorageBuffers[i].Name}' was disposed");
             CheckStride(p, v, v.StorageBuffers[i], b);
             resolved[i] = b;
+        }
+        var boundTextures = p.TextureBindings[kernel];
+        int nTextures = v.Textures.Length;
+        var textures = new VulkanTexture[nTextures];
+        for (int i = 0; i < nTextures; i++)
+        {
+            if (!boundTextures.TryGetValue(v.TextureIds[i], out var t))
+                throw new ComputeException($"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: texture '{v.Textures[i].Name}' ({Declaration(v.Textures[i])}) was never bound (SetTexture)");
+            if (t.IsDisposed)
+                throw new ObjectDisposedException(t.Name, $"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: texture '{t.Name}' bound to '{v.Textures[i].Name}' was disposed");
+            CheckTexture(p, v, v.Textures[i], t);
+            textures[i] = t;
+        }
+        var samplers = new Sampler[v.Samplers.Length];
+        for (int i = 0; i < samplers.Length; i++)
+        {
+            var settings = SamplerFor(p, v, v.Samplers[i], textures);
+            if (settings.Filter == TextureFilter.Linear) CheckLinearFiltering(p, v, v.Samplers[i], textures);
+            samplers[i] = SamplerObject(settings);
         }
         if (groupsX == 0 || groupsY == 0 || groupsZ == 0) return;
         CreatePipeline(v);
@@ -390,6 +433,28 @@ public sealed unsafe partial class VulkanComputeDevice
             {
                 SType = StructureType.WriteDescriptorSet, DstSet = set, DstBinding = block.Resource.Binding, DescriptorCount = 1,
                 DescriptorType = DescriptorType.UniformBuffer, PBufferInfo = &infos[w],
+            };
+            w++;
+        }
+        var images = stackalloc DescriptorImageInfo[Math.Max(1, nTextures + samplers.Length)];
+        for (int i = 0; i < nTextures; i++)
+        {
+            textures[i].LastUsedSerial = frame.Serial;
+            images[i] = new DescriptorImageInfo(default, textures[i].View, ImageLayout.General);
+            writes[w] = new WriteDescriptorSet
+            {
+                SType = StructureType.WriteDescriptorSet, DstSet = set, DstBinding = v.Textures[i].Binding, DescriptorCount = 1,
+                DescriptorType = DescriptorTypeOf(v.Textures[i].Kind), PImageInfo = &images[i],
+            };
+            w++;
+        }
+        for (int i = 0; i < samplers.Length; i++)
+        {
+            images[nTextures + i] = new DescriptorImageInfo(samplers[i], default, ImageLayout.Undefined);
+            writes[w] = new WriteDescriptorSet
+            {
+                SType = StructureType.WriteDescriptorSet, DstSet = set, DstBinding = v.Samplers[i].Binding, DescriptorCount = 1,
+                DescriptorType = DescriptorType.Sampler, PImageInfo = &images[nTextures + i],
             };
             w++;
         }
@@ -468,13 +533,17 @@ public sealed unsafe partial class VulkanComputeDevice
         return f;
     }
 
+    const uint PoolSizeCount = 5;
     static readonly DescriptorPoolSize* PoolSizes = CreatePoolSizes();
 
     static DescriptorPoolSize* CreatePoolSizes()
     {
-        var sizes = (DescriptorPoolSize*)NativeMemory.Alloc(2, (nuint)sizeof(DescriptorPoolSize));
+        var sizes = (DescriptorPoolSize*)NativeMemory.Alloc(PoolSizeCount, (nuint)sizeof(DescriptorPoolSize));
         sizes[0] = new DescriptorPoolSize(DescriptorType.StorageBuffer, SetsPerDescriptorPool * 8);
         sizes[1] = new DescriptorPoolSize(DescriptorType.UniformBuffer, SetsPerDescriptorPool * 2);
+        sizes[2] = new DescriptorPoolSize(DescriptorType.StorageImage, SetsPerDescriptorPool * 2);
+        sizes[3] = new DescriptorPoolSize(DescriptorType.SampledImage, SetsPerDescriptorPool * 2);
+        sizes[4] = new DescriptorPoolSize(DescriptorType.Sampler, SetsPerDescriptorPool * 2);
         return sizes;
     }
 
@@ -485,7 +554,7 @@ public sealed unsafe partial class VulkanComputeDevice
             if (f.DescriptorPoolIndex == f.DescriptorPools.Count)
             {
                 var sizes = PoolSizes;
-                var info = new DescriptorPoolCreateInfo { SType = StructureType.DescriptorPoolCreateInfo, MaxSets = SetsPerDescriptorPool, PoolSizeCount = 2, PPoolSizes = sizes };
+                var info = new DescriptorPoolCreateInfo { SType = StructureType.DescriptorPoolCreateInfo, MaxSets = SetsPerDescriptorPool, PoolSizeCount = PoolSizeCount, PPoolSizes = sizes };
                 Check(_vk.CreateDescriptorPool(_device, &info, null, out var pool), "vkCreateDescriptorPool");
                 f.DescriptorPools.Add(pool);
             }
@@ -720,6 +789,7 @@ public sealed unsafe partial class VulkanComputeDevice
         {
             foreach (var b in _liveBuffers.ToList()) DestroyBuffer(b);
             _deferredRelease.Clear();
+            DestroyAllTextures();
             foreach (var v in _variantCache.Values) DestroyVariant(v);
             _variantCache.Clear();
             for (int i = 0; i < _frames.Length; i++) { DestroyFrame(_frames[i]); _frames[i] = null; }

@@ -42,6 +42,7 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
     Queue _queue;
     uint _queueFamily;
     PhysicalDeviceLimits _limits;
+    uint _deviceApiVersion;
     PhysicalDeviceMemoryProperties _memory;
     readonly bool _canTime;
     readonly double _timestampPeriodNs;
@@ -81,6 +82,9 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
     public bool ValidationEnabled { get; }
     /// <summary>Whether out-of-range buffer accesses are defined (D3D-like) on this device.</summary>
     public bool RobustBufferAccess { get; private set; }
+    /// <summary>Whether the device lays out buffers with scalar alignment (Vulkan 1.2 <c>scalarBlockLayout</c>), which
+    /// structured buffers packed as in D3D/Unity need; without it, kernels that use such buffers are refused at dispatch.</summary>
+    public bool ScalarBlockLayout { get; private set; }
     /// <summary>Number of dispatches recorded since the device was created.</summary>
     public long DispatchCount { get; private set; }
     /// <summary>Number of Vulkan queue submissions (frames plus uploads/read-backs through staging).</summary>
@@ -109,6 +113,7 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
             DeviceType = props.DeviceType.ToString();
             ApiVersion = $"{props.ApiVersion >> 22}.{(props.ApiVersion >> 12) & 0x3FF}.{props.ApiVersion & 0xFFF}";
             _limits = props.Limits;
+            _deviceApiVersion = props.ApiVersion;
             _vk.GetPhysicalDeviceMemoryProperties(_physical, out _memory);
             _canTime = timestampBits > 0 && props.Limits.TimestampPeriod > 0;
             _timestampPeriodNs = props.Limits.TimestampPeriod;
@@ -168,7 +173,7 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
                 SType = StructureType.ApplicationInfo,
                 PApplicationName = appName,
                 PEngineName = appName,
-                ApiVersion = Vk.Version11,
+                ApiVersion = Vk.Version12, // a 1.1 device still works; 1.2 makes scalarBlockLayout core where the device has it
             };
             var info = new InstanceCreateInfo { SType = StructureType.InstanceCreateInfo, PApplicationInfo = &app };
             var messengerInfo = default(DebugUtilsMessengerCreateInfoEXT);
@@ -276,16 +281,59 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
             PQueuePriorities = &priority,
         };
         _vk.GetPhysicalDeviceFeatures(_physical, out var supported);
-        var features = new PhysicalDeviceFeatures { RobustBufferAccess = _options.RobustBufferAccess && supported.RobustBufferAccess };
+        var features = new PhysicalDeviceFeatures
+        {
+            RobustBufferAccess = _options.RobustBufferAccess && supported.RobustBufferAccess,
+            // RWTexture<float2> is an Rg32f storage image, one of the "extended" formats.
+            ShaderStorageImageExtendedFormats = supported.ShaderStorageImageExtendedFormats,
+        };
         RobustBufferAccess = features.RobustBufferAccess;
         var info = new DeviceCreateInfo
         {
             SType = StructureType.DeviceCreateInfo, QueueCreateInfoCount = 1, PQueueCreateInfos = &queueInfo, PEnabledFeatures = &features,
         };
-        Device device;
-        Check(_vk.CreateDevice(_physical, &info, null, &device), "vkCreateDevice");
-        _device = device;
+
+        // Structured buffers are packed as D3D packs them (StructuredBufferPacking), which needs scalar block
+        // layout: core in Vulkan 1.2, else the extension it came from.
+        var scalarLayout = new PhysicalDeviceScalarBlockLayoutFeatures { SType = StructureType.PhysicalDeviceScalarBlockLayoutFeatures };
+        var query = new PhysicalDeviceFeatures2 { SType = StructureType.PhysicalDeviceFeatures2, PNext = &scalarLayout };
+        bool core12 = _deviceApiVersion >= Vk.Version12;
+        bool extension = !core12 && HasDeviceExtension(ScalarBlockLayoutExtension);
+        if (core12 || extension) _vk.GetPhysicalDeviceFeatures2(_physical, &query);
+        ScalarBlockLayout = scalarLayout.ScalarBlockLayout;
+        var extensionName = (byte*)SilkMarshal.StringToPtr(ScalarBlockLayoutExtension);
+        try
+        {
+            if (ScalarBlockLayout)
+            {
+                scalarLayout = new PhysicalDeviceScalarBlockLayoutFeatures { SType = StructureType.PhysicalDeviceScalarBlockLayoutFeatures, ScalarBlockLayout = true };
+                info.PNext = &scalarLayout;
+                if (extension)
+                {
+                    info.EnabledExtensionCount = 1;
+                    info.PpEnabledExtensionNames = &extensionName;
+                }
+            }
+            Device device;
+            Check(_vk.CreateDevice(_physical, &info, null, &device), "vkCreateDevice");
+            _device = device;
+        }
+        finally { SilkMarshal.Free((nint)extensionName); }
         _vk.GetDeviceQueue(_device, _queueFamily, 0, out _queue);
+    }
+
+    const string ScalarBlockLayoutExtension = "VK_EXT_scalar_block_layout";
+
+    bool HasDeviceExtension(string name)
+    {
+        uint count = 0;
+        _vk.EnumerateDeviceExtensionProperties(_physical, (byte*)null, &count, null);
+        var extensions = new ExtensionProperties[count];
+        fixed (ExtensionProperties* p = extensions) _vk.EnumerateDeviceExtensionProperties(_physical, (byte*)null, &count, p);
+        for (int i = 0; i < count; i++)
+            fixed (byte* n = extensions[i].ExtensionName)
+                if (SilkMarshal.PtrToString((nint)n) == name) return true;
+        return false;
     }
 
     void CreateImmediateContext()
@@ -476,6 +524,7 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
             DestroyBuffer(_deferredRelease[i]);
             _deferredRelease.RemoveAt(i);
         }
+        ReleaseDeferredTextures();
     }
 
     public IReadbackRequest RequestReadback(IComputeBuffer buffer)

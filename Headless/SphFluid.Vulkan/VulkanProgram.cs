@@ -18,9 +18,15 @@ public sealed class KernelVariant
     internal PipelineLayout Layout;
     internal Pipeline Pipeline;
     internal bool Created;
+    /// <summary>Why this device cannot run the variant (it fails at dispatch), or null.</summary>
+    internal string Unsupported;
     /// <summary>Property ids of the storage buffers, parallel to <see cref="StorageBuffers"/>.</summary>
     internal int[] StorageBufferIds = Array.Empty<int>();
     internal SpirvResource[] StorageBuffers = Array.Empty<SpirvResource>();
+    /// <summary>Property ids of the textures, parallel to <see cref="Textures"/>.</summary>
+    internal int[] TextureIds = Array.Empty<int>();
+    internal SpirvResource[] Textures = Array.Empty<SpirvResource>();
+    internal SpirvResource[] Samplers = Array.Empty<SpirvResource>();
     internal (SpirvUniformBlock Block, (int Id, SpirvGlobal Member)[] Members)[] UniformBlocks = Array.Empty<(SpirvUniformBlock, (int, SpirvGlobal)[])>();
 
     internal KernelVariant(string kernel, IReadOnlyList<string> defines, uint[] spirv, SpirvReflection reflection)
@@ -52,6 +58,7 @@ public sealed class VulkanProgram : IComputeProgram
     internal readonly HashSet<string> EnabledKeywords = new(StringComparer.Ordinal);
     internal readonly Dictionary<int, GlobalValue> Globals = new();
     internal readonly Dictionary<int, VulkanBuffer>[] Bindings;
+    internal readonly Dictionary<int, VulkanTexture>[] TextureBindings;
     readonly Dictionary<string, KernelVariant>[] _variants;
     string[] _currentDefines;
     string _currentDefinesKey = "";
@@ -68,10 +75,12 @@ public sealed class VulkanProgram : IComputeProgram
         KernelNames = source.Kernels.Select(k => k.Name).ToList();
         for (int i = 0; i < source.Kernels.Count; i++) _kernelIndex.TryAdd(source.Kernels[i].Name, i);
         Bindings = new Dictionary<int, VulkanBuffer>[source.Kernels.Count];
+        TextureBindings = new Dictionary<int, VulkanTexture>[source.Kernels.Count];
         _variants = new Dictionary<string, KernelVariant>[source.Kernels.Count];
         for (int i = 0; i < Bindings.Length; i++)
         {
             Bindings[i] = new Dictionary<int, VulkanBuffer>();
+            TextureBindings[i] = new Dictionary<int, VulkanTexture>();
             _variants[i] = new Dictionary<string, KernelVariant>(StringComparer.Ordinal);
         }
         UpdateDefines();

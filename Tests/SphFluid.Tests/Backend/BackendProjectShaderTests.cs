@@ -10,9 +10,10 @@ using SphFluid.Vulkan;
 namespace SphFluid.Tests.Backend
 {
     /// <summary>
-    /// The project's own kernels, every variant: they compile to valid SPIR-V, and every structured
-    /// buffer's element stride as Vulkan lays it out equals the C# struct that fills it (or, for plain
-    /// HLSL types, the D3D size Unity uses) - the float3 stride trap caught at build time.
+    /// The project's own kernels, every variant: they compile to valid SPIR-V, every structured buffer's
+    /// element stride (packed as D3D packs it) equals the C# struct that fills it (or, for plain HLSL types,
+    /// the D3D size Unity uses), and, because their structs are built from whole 16-byte groups, the
+    /// packing is also std430's, so they run on a device without scalar block layout.
     /// </summary>
     public sealed class BackendProjectShaderTests
     {
@@ -54,6 +55,34 @@ namespace SphFluid.Tests.Backend
         }
 
         [Test]
+        public void EveryProjectKernelVariantNeedsNoScalarBlockLayout()
+        {
+            var device = GpuTestDevice.Shared;
+            string shaders = Path.Combine(GpuTestDevice.RepoRoot, "Assets", "SphFluid", "Shaders");
+            var dirs = new[] { shaders };
+            var notStd430 = new List<string>();
+            int variants = 0;
+            foreach (string file in Directory.GetFiles(shaders, "*.compute").OrderBy(f => f, StringComparer.Ordinal))
+            {
+                var program = (VulkanProgram)device.LoadProgram(Path.GetFileNameWithoutExtension(file));
+                var source = ComputeSource.Load(file, dirs);
+                foreach (var combo in program.KeywordCombinations())
+                {
+                    var keywords = source.VariantKeywords(combo.ToList());
+                    foreach (var kernel in source.Kernels)
+                    {
+                        variants++;
+                        var words = device.Compiler.Compile(source, kernel.Name, kernel.Defines.Concat(keywords).ToList(), dirs);
+                        if (!StructuredBufferPacking.FollowsStd430(words))
+                            notStd430.Add(Path.GetFileName(file) + " " + kernel.Name + " [" + string.Join(" ", combo) + "]");
+                    }
+                }
+            }
+            Assert.That(variants, Is.GreaterThan(0));
+            Assert.That(notStd430, Is.Empty, "variants whose buffers need scalar block layout:\n" + string.Join("\n", notStd430));
+        }
+
+        [Test]
         public void Float3ElementsAreCaught()
         {
             var float3 = new SpirvResource("_Positions", SpirvResourceKind.StorageBuffer, 0, 0, 16, false, "float3", false);
@@ -77,7 +106,7 @@ namespace SphFluid.Tests.Backend
             }
             int d3d = D3DSize(buffer.ElementType);
             return d3d == buffer.ArrayStride ? null
-                : buffer.ElementType + " elements are " + buffer.ArrayStride + " bytes in SPIR-V but " + d3d + " in D3D/Unity (use float4, or float3 plus a scalar in a struct)";
+                : buffer.ElementType + " elements are " + buffer.ArrayStride + " bytes in SPIR-V but " + d3d + " in D3D/Unity (the backend must pack structured buffers as D3D does)";
         }
 
         /// <summary>D3D's structured-buffer size of a plain HLSL type: "uint" 4, "float3" 12, "float4x4" 64.</summary>
