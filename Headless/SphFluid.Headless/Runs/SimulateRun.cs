@@ -100,7 +100,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         var container = restContainer;
         IReadOnlyList<SphereObstacleDescription> obstacles = restObstacles;
         StepReport step = StepReport.None;
-        var health = new HealthCheck(description);
+        var health = new HealthCheck(description, sim.ParticleCount);
 
         void Observe(bool force)
         {

@@ -23,7 +23,7 @@ namespace SphFluid.Tests.Health
                 Assert.That(acceleration, Is.GreaterThan(10f * 9.81f), "the compressed lattice pushes far harder than gravity");
                 Assert.That(sim.TimeStep.MaxAcceleration, Is.EqualTo(acceleration), "the controller plans with the read-back figure");
                 Assert.That(sim.TimeStep.StableTimeStep(), Is.EqualTo(Math.Min(
-                    0.4 * 0.08 / sim.TimeStep.SpeedOfSound, 0.25 * Math.Sqrt(0.08 / acceleration))).Within(1e-6));
+                    scene.Settings.CflNumber * 0.08 / sim.TimeStep.SpeedOfSound, 0.25 * Math.Sqrt(0.08 / acceleration))).Within(1e-6));
             }
         }
     }

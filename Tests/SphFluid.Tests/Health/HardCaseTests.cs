@@ -139,7 +139,7 @@ namespace SphFluid.Tests.Health
             float derived = scene.BuildPhaseTable()[0].ParticleMass;
             scene.SpawnBoxes[0].Phase.ParticleMass = factor * derived;
             var run = HealthRun.Of(scene, 0.1);
-            Assert.That(run.Refusals, Has.Some.StartsWith("SpawnBox 'Water': ParticleMass must be 0 (derived: 0.0517846 kg) or in [0.0417719, 0.0641972] kg")
+            Assert.That(run.Refusals, Has.Some.StartsWith("SpawnBox 'Water': ParticleMass must be 0 (derived: 0.0640018 kg) or in [0.0516269, 0.0793429] kg")
                 .And.Contains("(0.806648 to 1.2397 times the derived mass"));
         }
 

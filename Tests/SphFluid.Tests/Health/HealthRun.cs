@@ -44,7 +44,7 @@ namespace SphFluid.Tests.Health
             var clock = Stopwatch.StartNew();
             using (var sim = new FluidSimulation(GpuTestDevice.Shared, scene))
             {
-                run.Check = new HealthCheck(scene);
+                run.Check = new HealthCheck(scene, sim.ParticleCount);
                 var particles = new Particle[sim.ParticleCount];
                 run.Observe(sim, particles);
                 while (run.Problem == null && sim.SimulatedTime < seconds - 1e-6 && run.Frames < maxFrames)

@@ -43,21 +43,20 @@ namespace SphFluid.Tests.Health
         }
 
         /// <summary>
-        /// Wall penalty stiffness 1e8 1/s^2 (its allowed maximum; the step ignores it, as the Health issue measured)
-        /// shoots the PlayModeTest scene's particles off the walls: the runner stops with exit 4 at the first frame the
-        /// time step's speed read-back exceeds the bound, between the 0.25 s diagnostics lines. The penalty walls
-        /// and this setting go away with the boundary particles; this test then needs another unstable setting.
+        /// The PlayModeTest scene on a device that runs every sub-step 8 times longer than planned (a broken step
+        /// controller, <see cref="OversteppingDevice"/>): the particles fly, and the runner stops with exit 4 at the first
+        /// frame the time step's speed read-back exceeds the bound, between the 0.25 s diagnostics lines.
         /// </summary>
         [Test]
         public void SimulateExitsFourOnTheFirstUnhealthyState()
         {
-            string scene = RunnerPaths.EditedScene("PlayModeTest", "boundaryStiffness: 20000", "boundaryStiffness: 100000000");
+            string scene = RunnerPaths.Scene("PlayModeTest");
             string outDir = RunnerPaths.ScratchFolder("unhealthy");
             var stdout = new StringWriter();
             var stderr = new StringWriter();
             var run = new SimulateRun(SimulateOptions.Parse(new[] { scene, "--seconds", "0.5", "--frames-every", "1", "--out", outDir }), stdout, stderr)
             {
-                Device = GpuTestDevice.Shared, InteractiveProgress = false,
+                Device = new OversteppingDevice(GpuTestDevice.Shared, 8f), InteractiveProgress = false,
             };
 
             int code = run.Execute();

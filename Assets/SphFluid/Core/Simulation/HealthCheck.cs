@@ -47,14 +47,16 @@ namespace SphFluid.Simulation
         double _firstEnergy = double.NaN;
         float _firstCompression;
 
-        /// <summary>Bounds for <paramref name="scene"/> (validated), whose particles the simulation spawned.</summary>
-        public HealthCheck(FluidSceneDescription scene)
+        /// <summary>Bounds for <paramref name="scene"/> (validated), whose particles the simulation spawned:
+        /// <paramref name="spawnedCount"/> of them (FluidSimulation.ParticleCount: lattice points inside obstacles are not
+        /// spawned), or by default the lattice count of its boxes.</summary>
+        public HealthCheck(FluidSceneDescription scene, int spawnedCount = -1)
         {
             if (scene == null) throw new ArgumentNullException(nameof(scene));
             _phaseNames = scene.Phases();
             _phases = scene.BuildPhaseTable();
             _gravity = scene.Settings.Gravity;
-            _spawned = SpawnLayout.TotalCount(scene);
+            _spawned = spawnedCount >= 0 ? spawnedCount : SpawnLayout.TotalCount(scene);
             for (int k = 0; k < _phaseNames.Count; k++)
             {
                 long count = 0;

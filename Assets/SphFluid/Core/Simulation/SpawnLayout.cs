@@ -41,7 +41,9 @@ namespace SphFluid.Simulation
             return (int)Math.Min(total, int.MaxValue);
         }
 
-        /// <summary>All particles of the scene, box after box, ids 0..N-1 in that order.
+        /// <summary>All particles of the scene, box after box, ids 0..N-1 in that order. Lattice points that fall
+        /// inside a sphere obstacle (closer than half a spacing to its surface) are not spawned: the sphere
+        /// displaces that fluid, as it would if it were lowered into it, instead of overlapping its boundary particles.
         /// Throws <see cref="ArgumentException"/> with every validation message if the scene is invalid.</summary>
         public static Particle[] Generate(FluidSceneDescription scene)
         {
@@ -52,8 +54,9 @@ namespace SphFluid.Simulation
             foreach (var box in scene.SpawnBoxes)
             {
                 uint phase = (uint)IndexOf(phases, box.Phase.Name);
-                next = Fill(scene.Settings, box, phase, particles, next);
+                next = Fill(scene, box, phase, particles, next);
             }
+            if (next < particles.Length) Array.Resize(ref particles, next);
             HydrostaticSpawn.Apply(scene, particles);
             return particles;
         }
@@ -65,8 +68,9 @@ namespace SphFluid.Simulation
             return -1;
         }
 
-        static int Fill(FluidSettings settings, SpawnBoxDescription box, uint phase, Particle[] particles, int next)
+        static int Fill(FluidSceneDescription scene, SpawnBoxDescription box, uint phase, Particle[] particles, int next)
         {
+            var settings = scene.Settings;
             CountPerAxis(settings, box, out int nx, out int ny, out int nz);
             float s = settings.ParticleSpacing;
             var half = box.Size * 0.5f;
@@ -84,10 +88,19 @@ namespace SphFluid.Simulation
                     local = Vector3.Clamp(local, -half, half);
                 }
                 var position = box.Center + Vector3.Transform(local, rotation);
+                if (InsideObstacle(scene, position, 0.5f * s)) continue;
                 particles[next] = new Particle(position, box.InitialVelocity, phase, (uint)next);
                 next++;
             }
             return next;
+        }
+
+        static bool InsideObstacle(FluidSceneDescription scene, Vector3 position, float margin)
+        {
+            if (scene.Obstacles == null) return false;
+            foreach (var o in scene.Obstacles)
+                if (Vector3.Distance(position, o.Center) < o.Radius + margin) return true;
+            return false;
         }
 
         /// <summary>SplitMix64 (Steele et al. 2014): tiny, and identical on every runtime, unlike System.Random.</summary>

@@ -41,6 +41,7 @@ namespace SphFluid.Tests.Core.Simulation
             scene.SpawnBoxes[0].Jitter = 0.5f;
             scene.SpawnBoxes[1].Jitter = 0.5f;
             scene.SpawnBoxes[1].Center = new Vector3(0f, 0.1f, 0f); // clear of the tilted box: overlapping boxes are refused
+            scene.Settings.Gravity = Vector3.Zero; // the lattice itself, before HydrostaticSpawn lowers it along gravity
             var particles = SpawnLayout.Generate(scene);
             int index = 0;
             foreach (var box in scene.SpawnBoxes)
@@ -120,6 +121,54 @@ namespace SphFluid.Tests.Core.Simulation
             var scene = SimulationTestScenes.SingleWater();
             scene.SpawnBoxes[0].Phase.ParticleMass = 0.123f;
             Assert.That(scene.BuildPhaseTable()[0].ParticleMass, Is.EqualTo(0.123f));
+        }
+
+        [Test]
+        public void TheSpawnIsLoweredIntoHydrostaticEquilibrium()
+        {
+            // One box resting on the container floor: a particle at height y above the box bottom moves down by
+            // the compression of the fluid below it, integral_0^y (1 - (1 + rho0 g (H - y') / k)^(-1/gamma)) dy'.
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.SpawnBoxes.RemoveAt(1);
+            var box = scene.SpawnBoxes[0];
+            box.Jitter = 0f;
+            var flat = SimulationTestScenes.OilOnWater();
+            flat.SpawnBoxes.RemoveAt(1);
+            flat.SpawnBoxes[0].Jitter = 0f;
+            flat.Settings.Gravity = Vector3.Zero;
+            var lowered = SpawnLayout.Generate(scene);
+            var lattice = SpawnLayout.Generate(flat);
+            double g = 9.81, k = scene.Settings.Stiffness, gamma = scene.Settings.Gamma, rho0 = box.Phase.RestDensity;
+            double bottom = box.Center.Y - 0.5 * box.Size.Y, height = box.Size.Y;
+            double deepest = 0;
+            for (int i = 0; i < lattice.Length; i++)
+            {
+                double y = lattice[i].Position.Y - bottom, expected = 0;
+                const int n = 20000;
+                for (int step = 0; step < n; step++)
+                {
+                    double yy = (step + 0.5) * y / n;
+                    expected += (1 - Math.Pow(1 + rho0 * g * (height - yy) / k, -1 / gamma)) * y / n;
+                }
+                Assert.That(lattice[i].Position.Y - lowered[i].Position.Y, Is.EqualTo(expected).Within(1e-6), $"particle {i} at {y:F3} m");
+                Assert.That(lowered[i].Position.X, Is.EqualTo(lattice[i].Position.X), "only along gravity");
+                deepest = Math.Max(deepest, expected);
+            }
+            Assert.That(deepest, Is.GreaterThan(1e-5), "the test scene compresses measurably");
+        }
+
+        [Test]
+        public void NoParticleIsSpawnedInsideASphereObstacle()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            var without = SpawnLayout.Generate(scene).Length;
+            var sphere = new SphereObstacleDescription(scene.SpawnBoxes[0].Center, 0.05f, Vector3.Zero);
+            scene.Obstacles.Add(sphere);
+            var particles = SpawnLayout.Generate(scene);
+            Assert.That(particles.Length, Is.LessThan(without));
+            foreach (var p in particles)
+                Assert.That(Vector3.Distance(p.Position, sphere.Center), Is.GreaterThanOrEqualTo(sphere.Radius + 0.5f * scene.Settings.ParticleSpacing - 1e-3f));
+            for (int i = 0; i < particles.Length; i++) Assert.That(particles[i].Id, Is.EqualTo((uint)i), "ids stay 0..N-1");
         }
 
         [Test]
