@@ -68,7 +68,8 @@ Exit codes: 0 ok, 1 no Vulkan device or unexpected failure, 2 bad arguments, 3 s
         }
         catch (Exception e)
         {
-            stderr.WriteLine($"sphfluid: failed: {e.GetType().Name}: {e.Message}");
+            // A message for the reader, not a type name; the exit code says it was not their input's fault.
+            stderr.WriteLine($"sphfluid: unexpected failure: {e.Message}");
             return ExitCodes.Failure;
         }
     }

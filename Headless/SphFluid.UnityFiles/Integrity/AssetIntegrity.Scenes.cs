@@ -7,6 +7,15 @@ namespace SphFluid.UnityFiles.Integrity;
 
 public sealed partial class AssetIntegrity
 {
+    /// <summary>"GameObject 'A' &amp;1 is its own parent" or "GameObjects 'A' &amp;1 -> 'B' &amp;3 -> 'A' form a parent cycle".</summary>
+    public static string ParentCycleMessage(IReadOnlyList<UnityGameObject> cycle)
+    {
+        static string Name(UnityGameObject g) => $"'{g.Name}' &{g.FileId}";
+        return cycle.Count == 1
+            ? $"GameObject {Name(cycle[0])} is its own parent (its Transform's m_Father points back at it)"
+            : $"GameObjects {string.Join(" -> ", cycle.Append(cycle[0]).Select(Name))} form a parent cycle through Transform.m_Father";
+    }
+
     /// <summary>
     /// GameObject ↔ component back references, Transform parent ↔ children agreement, and (scenes) SceneRoots equal to the
     /// parentless Transforms (unity-kit §4.1, §4.5).
@@ -85,6 +94,9 @@ public sealed partial class AssetIntegrity
                     ReportAt(file, $"Transform &{t.FileId} lists child &{child.FileId}, whose m_Father is {child.Root.GetReference("m_Father")?.ToString() ?? "missing"}");
             }
         }
+
+        foreach (var cycle in new UnityScene(yaml).ParentCycles())
+            ReportAt(file, ParentCycleMessage(cycle), cycle[0].Transform?.Root["m_Father"]?.Line ?? cycle[0].Document.Line);
 
         var parentless = transformDocs.Where(t => t.Root.GetReference("m_Father") is not { IsNull: false }).Select(t => t.FileId).ToList();
         var rootsDoc = yaml.OfClass(UnityScene.SceneRootsClassId).ToList();

@@ -73,6 +73,36 @@ public sealed class UnityScene
         }
     }
 
+    /// <summary>
+    /// Every loop in the parent chains of the GameObjects (through their Transforms' <c>m_Father</c>): an object that is
+    /// its own parent, or two or more that are each other's ancestors. Each cycle lists its objects from child to
+    /// parent. Unity cannot load such a scene; every walk up the hierarchy would go round forever.
+    /// </summary>
+    public IReadOnlyList<IReadOnlyList<UnityGameObject>> ParentCycles()
+    {
+        // Each object has at most one parent, so following parents from every object once finds every loop in
+        // linear time: a walk that meets an object of its own walk has closed a loop.
+        var walkOf = new Dictionary<long, int>();
+        var cycles = new List<IReadOnlyList<UnityGameObject>>();
+        int walk = 0;
+        foreach (var start in _gameObjects.Values)
+        {
+            walk++;
+            var path = new List<UnityGameObject>();
+            var g = start;
+            while (g != null && !walkOf.ContainsKey(g.FileId))
+            {
+                walkOf[g.FileId] = walk;
+                path.Add(g);
+                g = g.Parent;
+            }
+            if (g == null || walkOf[g.FileId] != walk) continue;
+            int first = path.FindIndex(p => p.FileId == g.FileId);
+            if (first >= 0) cycles.Add(path.GetRange(first, path.Count - first));
+        }
+        return cycles;
+    }
+
     public static bool IsTransform(UnityDocument d) => d.ClassId == TransformClassId || d.ClassId == RectTransformClassId;
 
     /// <summary>World pose of a Transform document, composing <c>m_Father</c> up to the root.</summary>
