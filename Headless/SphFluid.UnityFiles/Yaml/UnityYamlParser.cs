@@ -115,7 +115,13 @@ public static partial class UnityYamlParser
         }
         catch (YamlException e)
         {
-            throw builder.Translate(e);
+            throw builder.Translate(e.Message, (int)Math.Min(int.MaxValue, e.Start.Line), scannerGaveUp: false);
+        }
+        catch (Exception e) when (e is InvalidOperationException || e.GetType() == typeof(Exception))
+        {
+            // YamlDotNet's ScanPlainScalar throws a bare exception instead of a YamlException on some malformed flow
+            // collections (e.g. "b: {x: 1,\nc: []"; its issue #541): still a located error, never a crash.
+            throw builder.Translate("the YAML scanner stopped on malformed text", builder.LastLine, scannerGaveUp: true);
         }
         return builder.Roots;
     }
@@ -141,8 +147,12 @@ public static partial class UnityYamlParser
 
         static int Line(ParsingEvent e) => (int)Math.Min(int.MaxValue, e.Start.Line);
 
+        /// <summary>Line where the last event ended: where the parser was when it gave up.</summary>
+        public int LastLine { get; private set; } = 1;
+
         public void Accept(ParsingEvent e)
         {
+            LastLine = (int)Math.Min(int.MaxValue, e.End.Line);
             switch (e)
             {
                 case StreamStart or StreamEnd or DocumentEnd:
@@ -223,15 +233,13 @@ public static partial class UnityYamlParser
         /// YamlDotNet's message, reworded where the cause is clearer from what is still open: an unclosed flow
         /// collection is reported where it opened, not where the text ran out.
         /// </summary>
-        public UnityYamlException Translate(YamlException e)
+        public UnityYamlException Translate(string message, int line, bool scannerGaveUp)
         {
-            int line = (int)Math.Min(int.MaxValue, e.Start.Line);
-            string message = e.Message;
             var flow = _open.Count > 0 && _open.Peek().Flow ? _open.Peek() : null;
-            if (flow != null && message.Contains("did not find expected", StringComparison.Ordinal))
+            if (flow != null && (scannerGaveUp || message.Contains("did not find expected", StringComparison.Ordinal)))
             {
                 char bracket = flow.Node.IsMapping ? '{' : '[';
-                return Error(flow.Node.Line, $"unclosed '{bracket}': no matching '{(bracket == '{' ? '}' : ']')}' before line {line} ({message.TrimEnd('.')})");
+                return Error(flow.Node.Line, $"unclosed '{bracket}': no matching '{(bracket == '{' ? '}' : ']')}' {(scannerGaveUp ? "after" : "before")} line {line} ({message.TrimEnd('.')})");
             }
             if (message.Contains("quoted scalar", StringComparison.Ordinal) &&
                 (message.Contains("end of stream", StringComparison.Ordinal) || message.Contains("document indicator", StringComparison.Ordinal) ||

@@ -73,6 +73,15 @@ namespace SphFluid.Tests.Integrity
             Assert.That(file.Find(1).Root.GetLong("k199999"), Is.EqualTo(199_999L));
         }
 
+        [Test]
+        public void A_flow_mapping_that_runs_into_the_next_key_is_a_located_error_not_a_library_crash()
+        {
+            // YamlDotNet throws a bare exception here instead of its YamlException (its issue #541).
+            var error = ParseError(Header + "  m_LocalScale: {x: 0.3,\n  m_Children: []\n", "Flow.unity", 30, out _);
+
+            Assert.That(error.Message, Does.StartWith("Flow.unity:6: unclosed '{': no matching '}'"));
+        }
+
         [TestCase("\"\\uD800\"", "Unicode")]
         [TestCase("\"\\U7FFFFFFF\"", "Unicode")]
         [TestCase("&anchor 1", "anchors, aliases and tags")]
