@@ -71,7 +71,7 @@ public sealed partial class AssetIntegrity
                 if (r.IsNull) continue;
                 if (r.IsLocal)
                 {
-                    if (yaml.Find(r.FileId) == null) ReportAt(file, $"{where} points at &{r.FileId}, which is not in this file");
+                    if (yaml.Find(r.FileId) == null) ReportAt(file, $"{where} points at &{r.FileId}, which is not in this file", doc.Root.At(path)?.Line ?? doc.Line);
                     continue;
                 }
                 if (!UnityMeta.IsValidGuid(r.Guid))
