@@ -87,7 +87,8 @@ public sealed partial class AssetIntegrity
         catch (Exception e) when (e is not OutOfMemoryException)
         {
             // Bad content must become a finding, never a crash: the other checks still run.
-            Report(path, $"check stopped: {e.GetType().Name}: {e.Message}");
+            // The runner prints these to people who edit scenes: the reason, never an exception type name.
+            Report(path, $"check stopped: {e.Message}");
         }
     }
 

@@ -10,7 +10,7 @@ using YamlDotNet.Core.Events;
 namespace SphFluid.UnityFiles.Yaml;
 
 /// <summary>
-/// Reads Unity's serialized YAML. YamlDotNet parses each document body; this layer adds what is Unity's own:
+/// Reads Unity's serialized YAML. YamlDotNet parses the text; this layer adds what is Unity's own:
 /// the <c>--- !u!&lt;classId&gt; &amp;&lt;fileId&gt;</c> headers (with the <c> stripped</c> suffix no YAML parser
 /// accepts), one root key per document, no duplicate keys, no anchors, aliases or tags inside a document, and a
 /// nesting-depth limit. Every refusal is a <see cref="UnityYamlException"/> naming the file and line.
@@ -63,7 +63,7 @@ public static partial class UnityYamlParser
         for (int i = 0; i < documents.Count; i++)
         {
             var (classId, fileId, stripped, line) = documents[i];
-            var body = roots[i] ?? UnityYamlNode.Mapping(line);
+            var body = (i < roots.Count ? roots[i] : null) ?? UnityYamlNode.Mapping(line);
             if (!body.IsMapping) throw new UnityYamlException(path, body.Line, "a document must be a mapping");
             if (body.Entries.Count != 1)
                 throw new UnityYamlException(path, line, $"document &{fileId} must have exactly one root key (the type name), found {body.Entries.Count}");
