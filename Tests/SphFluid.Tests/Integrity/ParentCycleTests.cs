@@ -1,3 +1,4 @@
+using System.IO;
 using System.Linq;
 using System.Text;
 using NUnit.Framework;
@@ -9,7 +10,7 @@ namespace SphFluid.Tests.Integrity
     /// <summary>Parent cycles are found once each, in linear time, and no walk up the hierarchy loops on them.</summary>
     public sealed class ParentCycleTests
     {
-        /// <summary>GameObject &amp;(10 i) with Transform &amp;(10 i + 1) whose m_Father is the Transform of object <c>fathers[i]</c> (-1: none).</summary>
+        /// <summary>GameObject &amp;(10 i) with Transform &amp;(10 i + 1) one metre above its parent, whose m_Father is the Transform of object <c>fathers[i]</c> (-1: none).</summary>
         static UnityScene Scene(params int[] fathers)
         {
             var text = new StringBuilder("%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n");
@@ -17,7 +18,7 @@ namespace SphFluid.Tests.Integrity
             {
                 long go = 10L * (i + 1), t = go + 1, father = fathers[i] < 0 ? 0 : 10L * (fathers[i] + 1) + 1;
                 text.Append($"--- !u!1 &{go}\nGameObject:\n  m_Component:\n  - component: {{fileID: {t}}}\n  m_Name: O{i}\n  m_IsActive: 1\n");
-                text.Append($"--- !u!4 &{t}\nTransform:\n  m_GameObject: {{fileID: {go}}}\n  m_Father: {{fileID: {father}}}\n");
+                text.Append($"--- !u!4 &{t}\nTransform:\n  m_GameObject: {{fileID: {go}}}\n  m_LocalPosition: {{x: 0, y: 1, z: 0}}\n  m_Father: {{fileID: {father}}}\n");
             }
             return UnityScene.Parse(text.ToString(), "Cycles.unity");
         }
@@ -60,6 +61,27 @@ namespace SphFluid.Tests.Integrity
 
             Assert.That(cycles.Count, Is.EqualTo(1));
             Assert.That(cycles[0].Count, Is.EqualTo(100_000));
+        }
+    
+        [Test]
+        public void A_hierarchy_a_hundred_thousand_deep_composes_its_world_pose_without_recursion()
+        {
+            var scene = Scene(Enumerable.Range(0, 100_000).Select(i => i - 1).ToArray());
+
+            var world = Deadline.Within(30, () => scene.FindGameObject("O99999").World, "WorldTransformOf 100 000 levels deep");
+
+            Assert.That(world.Position.Y, Is.EqualTo(100_000f), "one metre per level");
+        }
+
+        [Test]
+        public void The_world_pose_of_an_object_in_a_cycle_is_a_named_error()
+        {
+            var scene = Scene(1, 0);
+
+            var error = Deadline.Within(10, () => Deadline.Thrown(() => _ = scene.FindGameObject("O0").World), "WorldTransformOf on a 2-cycle");
+
+            Assert.That(error, Is.TypeOf<InvalidDataException>());
+            Assert.That(error.Message, Is.EqualTo("Cycles.unity: Transform &11 is its own ancestor (a parent cycle through m_Father)"));
         }
     }
 }
