@@ -49,7 +49,8 @@ public sealed class SimulateOptions
 Reads a Unity scene file (the FluidSimulator's settings, every SpawnBox with its world transform, the
 FluidContainer, SphereObstacles, ContainerSpinner/SphereDriver motion) and simulates it on the headless
 Vulkan backend. Writes diagnostics.csv, frame_NNNN.png snapshots, layering.png (multi-phase scenes) and
-summary.txt into the output folder.
+summary.txt into the output folder. The scene must be a regular file of at most 16 MiB that passes the
+project's integrity check (the same check the test suite runs on every shipped scene).
 
 Options:
   --seconds S              simulated seconds to run, in (0, 3600] (default 3)
