@@ -28,7 +28,9 @@ namespace SphFluid.Tests.Runner
 
             Assert.That(compiler.CompileCount, Is.EqualTo(1), "a fresh cache compiles");
             Assert.That(words.Length, Is.GreaterThan(5), "SPIR-V came back");
-            Assert.That(Directory.GetFileSystemEntries(temp, "sphfluid-spirv-*").Except(before), Is.Empty);
+            Assert.That(Directory.GetFileSystemEntries(temp, "sphfluid-spirv-*").Except(before), Is.Empty, "the compile output is deleted");
+            // The old per-process folder, once made by any compile of this test process, stayed until the machine was cleaned.
+            Assert.That(Directory.Exists(Path.Combine(temp, "sphfluid-spirv-" + Environment.ProcessId)), Is.False);
         }
     }
 }
