@@ -69,7 +69,8 @@ energetic than the scene allows (the message names the time, phase and figure)."
         }
         catch (Exception e)
         {
-            stderr.WriteLine($"sphfluid: failed: {e.GetType().Name}: {e.Message}");
+            // A message for the reader, not a type name; the exit code says it was not their input's fault.
+            stderr.WriteLine($"sphfluid: unexpected failure: {e.Message}");
             return ExitCodes.Failure;
         }
     }

@@ -29,7 +29,7 @@ public sealed class GlslangSourceTree : IDisposable
     /// <summary>Writes the prepared copies into a new folder under <paramref name="parent"/>.</summary>
     public static GlslangSourceTree Write(ComputeSource source, string parent)
     {
-        string root = Path.Combine(parent, "src-" + Guid.NewGuid().ToString("N"));
+        string root = Path.Combine(parent, "sphfluid-src-" + Guid.NewGuid().ToString("N"));
         // One folder per file keeps same-named includes from different folders apart.
         var copies = new Dictionary<string, (int Folder, string Path)>(StringComparer.Ordinal);
         for (int i = 0; i < source.Files.Count; i++)

@@ -101,10 +101,10 @@ public sealed class ShaderCompiler
         if (_glslang == null) throw new ComputeException("glslangValidator was not found on PATH (Debian package glslang-tools); it compiles the .compute kernels");
         if (_spirvVal == null) throw new ComputeException("spirv-val was not found on PATH (Debian package spirv-tools); it validates the compiled kernels");
         Interlocked.Increment(ref _compileCount);
-        string tmpDir = Path.Combine(Path.GetTempPath(), "sphfluid-spirv-" + Environment.ProcessId);
-        Directory.CreateDirectory(tmpDir);
-        string output = Path.Combine(tmpDir, $"{key}.{Guid.NewGuid():N}.spv");
-        using var tree = GlslangSourceTree.Write(source, tmpDir);
+        // One uniquely named output file and one source folder per compile, both deleted below: a per-process
+        // folder would be left behind empty by every run.
+        string output = Path.Combine(Path.GetTempPath(), $"sphfluid-spirv-{key}.{Guid.NewGuid():N}.spv");
+        using var tree = GlslangSourceTree.Write(source, Path.GetTempPath());
         try
         {
             var args = Arguments(kernel, defines).ToList();

@@ -63,13 +63,15 @@ public sealed class ArgumentReader
         return _args[_next++];
     }
 
-    /// <summary>Values up to the next option (at least one): <c>--particles 4000 16000</c> or <c>--particles 4000,16000</c>.</summary>
+    /// <summary>Values up to the next option (at least one): <c>--particles 4000 16000</c> or <c>--particles 4000,16000</c>.
+    /// Empty entries (<c>--particles ""</c>, <c>4000,,16000</c>) are kept, so the caller refuses them by name instead of
+    /// silently running with fewer values or none.</summary>
     public List<string> Values(string option)
     {
         var values = new List<string>();
-        foreach (string v in Value(option).Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)) values.Add(v);
+        foreach (string v in Value(option).Split(',', StringSplitOptions.TrimEntries)) values.Add(v);
         while (_next < _args.Length && !IsOption(_args[_next]))
-            foreach (string v in _args[_next++].Split(',', StringSplitOptions.RemoveEmptyEntries | StringSplitOptions.TrimEntries)) values.Add(v);
+            foreach (string v in _args[_next++].Split(',', StringSplitOptions.TrimEntries)) values.Add(v);
         return values;
     }
 

@@ -23,7 +23,8 @@ public sealed class BenchOptions
 @"sphfluid bench <scene.unity> [options]
 
 Times the SPH pipeline on the scene: milliseconds per sub-step in total (wall clock and GPU) and per
-pass (GPU timestamp ranges), as a Markdown table.
+pass (GPU timestamp ranges), as a Markdown table. The scene is checked as by simulate (a regular file
+of at most 16 MiB that passes the integrity check), and every --particles count before the device opens.
 
 Options:
   --particles N [N ...]    particle counts to measure, each in [64, 16777216] (also N,N,...);

@@ -11,7 +11,9 @@ public static class ExitCodes
     /// <summary>A command-line argument is unknown, missing or out of range.</summary>
     public const int BadArguments = 2;
 
-    /// <summary>The scene file cannot be read or describes an impossible fluid.</summary>
+    /// <summary>The scene file cannot be read (not a regular file of at most 16 MiB, not Unity's YAML), fails the
+    /// project's integrity check (a duplicated fileID, an unknown script guid, a parent cycle...), or describes an
+    /// impossible fluid.</summary>
     public const int BadScene = 3;
 
     /// <summary>The run became unhealthy (SphFluid.Simulation.HealthCheck): non-finite, particles lost, or faster,

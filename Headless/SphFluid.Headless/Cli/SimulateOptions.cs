@@ -8,6 +8,13 @@ public sealed class SimulateOptions
     public const double DefaultSeconds = 3.0;
     public const double DefaultFrameSeconds = 1.0 / 60.0;
 
+    /// <summary>
+    /// Shortest frame and shortest output interval, s. The solver steps at least 1 microsecond per frame, and rows and
+    /// snapshots come at frame ends: a shorter value would be misreported or would never advance the next output
+    /// time (1e-300 added to 0.25 is 0.25), so it is refused rather than run.
+    /// </summary>
+    public const double MinInterval = 1e-4;
+
     public string ScenePath { get; set; }
 
     /// <summary>Simulated seconds to run (ignored when <see cref="Frames"/> is set).</summary>
@@ -45,7 +52,8 @@ public sealed class SimulateOptions
 Reads a Unity scene file (the FluidSimulator's settings, every SpawnBox with its world transform, the
 FluidContainer, SphereObstacles, ContainerSpinner/SphereDriver motion) and simulates it on the headless
 Vulkan backend. Writes diagnostics.csv, frame_NNNN.png snapshots, layering.png (multi-phase scenes) and
-summary.txt into the output folder.
+summary.txt into the output folder. The scene must be a regular file of at most 16 MiB that passes the
+project's integrity check (the same check the test suite runs on every shipped scene).
 
 Measures (console, diagnostics.csv, summary.txt): kinetic and potential energy; per phase the
 compression max(0, rho/rho0 - 1) and expansion max(0, 1 - rho/rho0) (mean and max), the mean, bottom
@@ -58,14 +66,16 @@ the back wall, spray ignored.
 Options:
   --seconds S              simulated seconds to run, in (0, 3600] (default 3)
   --steps N                run N frames of --frame-seconds instead, N in [1, 1000000]
-  --frame-seconds S        real time per frame, in (0, 0.1] s (default 1/60, as a 60 Hz Unity frame)
+  --frame-seconds S        real time per frame, in [0.0001, 0.1] s (default 1/60, as a 60 Hz Unity frame)
   --out DIR                output folder (default Output/<scene name>). The run records what it writes in
                            DIR/.sphfluid-outputs and deletes only the files an earlier run recorded there;
                            a folder holding frame_NNNN.png, summary.txt ... that sphfluid did not write is
                            refused (exit 2) and left as it was
-  --frames-every S         simulated seconds between PNG snapshots, in (0, 3600] (default 0.25)
-  --diagnostics-every S    simulated seconds between diagnostics lines/CSV rows, in (0, 3600] (default 0.25)
-  --export-every S         simulated seconds between particle exports, in (0, 3600] (default: none). Each
+  --frames-every S         simulated seconds between PNG snapshots, in [0.0001, 3600] (default 0.25);
+                           snapshots come at frame ends, so at most one per frame
+  --diagnostics-every S    simulated seconds between diagnostics lines/CSV rows, in [0.0001, 3600] (default 0.25);
+                           at most one row per frame
+  --export-every S         simulated seconds between particle exports, in [0.0001, 3600] (default: none). Each
                            writes particles_NNNN.vtu (ParaView; inline base64 binary) and particles_NNNN.ply
                            (Blender, MeshLab; binary little-endian) with position, velocity, phase, density
                            and pressure, and particles.pvd indexes the .vtu files by time
@@ -93,11 +103,11 @@ energetic than the scene allows (the message names the time, phase and figure)."
                 case "--help": case "-h": options.Help = true; break;
                 case "--seconds": options.Seconds = reader.Double(token, 0, 3600, true, "s"); secondsGiven = true; break;
                 case "--steps": options.Frames = reader.Int(token, 1, 1_000_000); break;
-                case "--frame-seconds": options.FrameSeconds = reader.Double(token, 0, 0.1, true, "s"); break;
+                case "--frame-seconds": options.FrameSeconds = reader.Double(token, MinInterval, 0.1, false, "s"); break;
                 case "--out": options.OutputDirectory = reader.Value(token); break;
-                case "--frames-every": options.SnapshotEvery = reader.Double(token, 0, 3600, true, "s"); break;
-                case "--diagnostics-every": options.DiagnosticsEvery = reader.Double(token, 0, 3600, true, "s"); break;
-                case "--export-every": options.ExportEvery = reader.Double(token, 0, 3600, true, "s"); break;
+                case "--frames-every": options.SnapshotEvery = reader.Double(token, MinInterval, 3600, false, "s"); break;
+                case "--diagnostics-every": options.DiagnosticsEvery = reader.Double(token, MinInterval, 3600, false, "s"); break;
+                case "--export-every": options.ExportEvery = reader.Double(token, MinInterval, 3600, false, "s"); break;
                 case "--particles-scale": options.ParticlesScale = reader.Double(token, 0.01, 100, false, ""); break;
                 case "--device": options.DeviceName = reader.Value(token); break;
                 case "--top-view": options.TopView = true; break;

@@ -34,6 +34,10 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
     public int Execute()
     {
         var scene = SceneLoader.Load(options.ScenePath);
+        // Every requested count is turned into a scene before the device opens, so an impossible one is refused
+        // (exit 2, naming --particles) without measuring the others first.
+        var targets = options.Particles.Count > 0 ? options.Particles.Select(n => (int?)n).ToList() : new List<int?> { null };
+        var descriptions = targets.Select(target => Scaled(scene, target)).ToList();
         IComputeDevice device = Device;
         IDisposable owned = null;
         if (device == null)
@@ -44,12 +48,9 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         }
         try
         {
-            var targets = options.Particles.Count > 0 ? options.Particles.Select(n => (int?)n).ToList() : new List<int?> { null };
             stdout.WriteLine($"bench: {scene.Path} on {device.DeviceName}; {options.Warmup} warm-up + {options.Steps} timed sub-steps per row, one submit each");
-            foreach (int? target in targets)
+            foreach (var description in descriptions)
             {
-                var description = SceneLoader.Load(options.ScenePath).Description;
-                if (target.HasValue) ParticleScaling.ScaleTo(description, target.Value);
                 using var sim = new FluidSimulation(device, description);
                 var row = Measure(sim, device);
                 Rows.Add(row);
@@ -62,6 +63,16 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         {
             owned?.Dispose();
         }
+    }
+
+    /// <summary>The scene's description, rescaled to about <paramref name="target"/> particles when one is given.</summary>
+    FluidSceneDescription Scaled(LoadedScene scene, int? target)
+    {
+        var description = target.HasValue ? SceneLoader.Load(options.ScenePath).Description : scene.Description;
+        if (!target.HasValue) return description;
+        ParticleScaling.ScaleTo(description, target.Value);
+        SceneFit.RequireScaled(description, "bench", "--particles", target.Value.ToString(C));
+        return description;
     }
 
     Row Measure(FluidSimulation sim, IComputeDevice device)

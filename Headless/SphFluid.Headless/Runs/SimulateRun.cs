@@ -37,6 +37,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         var description = scene.Description;
         int sceneCount = SpawnLayout.TotalCount(description);
         ParticleScaling.ScaleBy(description, options.ParticlesScale);
+        SceneFit.RequireScaled(description, "simulate", "--particles-scale", options.ParticlesScale.ToString("G6", C));
 
         var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name), "--out", "simulate");
 

@@ -1,10 +1,12 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
 using System.IO;
 using System.Linq;
 using System.Numerics;
 using SphFluid.Simulation;
 using SphFluid.UnityFiles.Assets;
+using SphFluid.UnityFiles.Integrity;
 using SphFluid.UnityFiles.Scenes;
 using SphFluid.UnityFiles.Yaml;
 
@@ -22,6 +24,8 @@ public static class SceneLoader
     /// Unity project at or above the file (else the one holding this program).</summary>
     public static LoadedScene Load(string scenePath, UnityProject project = null)
     {
+        if (Directory.Exists(scenePath))
+            throw new SceneException($"{scenePath}: is a folder, not a scene file");
         if (!File.Exists(scenePath))
             throw new SceneException($"{scenePath}: no such scene file");
         project ??= FindProject(scenePath);
@@ -30,10 +34,20 @@ public static class SceneLoader
         {
             scene = UnityScene.Load(scenePath);
         }
-        catch (Exception e) when (e is FormatException or IOException)
+        catch (UnityYamlException e)
         {
-            throw new SceneException($"{scenePath}: not a readable Unity scene: {e.Message}", e);
+            throw new SceneException($"{e.Message} (not a readable Unity scene)", e);
         }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            throw new SceneException(e.Message.StartsWith(scenePath, StringComparison.Ordinal) ? e.Message : $"{scenePath}: {e.Message}", e);
+        }
+        // What Unity would refuse or silently break on (a duplicated fileID, a script guid no .meta has, a parent
+        // cycle) would otherwise be simulated as some other scene: refuse it before reading a single field.
+        var problems = AssetIntegrity.CheckScene(project.Root, scenePath, scene.File);
+        if (problems.Count > 0)
+            throw new SceneException($"{scenePath}: the integrity check refuses the scene ({problems.Count} problem(s)):\n  " +
+                string.Join("\n  ", problems.Select(p => $"{scenePath}{(p.Line > 0 ? ":" + p.Line.ToString(CultureInfo.InvariantCulture) : "")}: {p.Message}")));
         return new Reader(scenePath, scene, project).Read();
     }
 
@@ -63,6 +77,8 @@ public static class SceneLoader
                 throw new SceneException($"{path}: {simulators.Count} active {RuntimeScripts.FluidSimulator} components (GameObjects {string.Join(", ", simulators.Select(s => $"'{s.Go.Name}'"))}); the runner simulates one fluid per scene");
             (_simulatorGo, _simulator) = simulators[0];
             CheckShaders();
+            CheckTransforms();
+            CheckDrawingSettings();
 
             var description = new FluidSceneDescription
             {
@@ -80,7 +96,13 @@ public static class SceneLoader
                 description.Obstacles.Add(ReadObstacle(go, mb));
             }
 
+            // The grid's cell limit first: a container too large for its grid is also too large for its wall
+            // particles, and the grid's message names both the container and the support radius.
             var errors = description.Validate();
+            bool settingsOk = !errors.Any(e => e.Field.StartsWith("Settings", StringComparison.Ordinal));
+            if (settingsOk && SceneFit.GridProblem(description) is { } grid)
+                throw new SceneException($"{path}:{_containerGo.Transform?.Root["m_LocalScale"]?.Line ?? _containerGo.Document.Line}: the fluid scene is invalid:\n  GameObject '{_containerGo.Name}', Transform.m_LocalScale and " +
+                    $"{Where(_simulatorGo, RuntimeScripts.FluidSimulator, "smoothingRadius")}: {grid}");
             if (errors.Count > 0)
                 throw new SceneException($"{path}: the fluid scene is invalid:\n  " + string.Join("\n  ", errors.Select(Locate)));
 
@@ -117,12 +139,7 @@ public static class SceneLoader
             return list;
         }
 
-        static bool ActiveInHierarchy(UnityGameObject go)
-        {
-            for (var g = go; g != null; g = g.Parent)
-                if (!g.IsActive) return false;
-            return true;
-        }
+        static bool ActiveInHierarchy(UnityGameObject go) => go.SelfAndAncestors.All(g => g.IsActive);
 
         string Where(UnityGameObject go, string component, string field) =>
             $"GameObject '{go?.Name}', {component}.{field}";
@@ -157,6 +174,64 @@ public static class SceneLoader
             if (node == null) return fallback;
             try { return mb.Root.GetColor(field); }
             catch (FormatException) { throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be a colour {{r, g, b, a}} (was '{node}')"); }
+        }
+
+        static readonly (string Field, string[] Axes)[] TransformFields =
+        {
+            ("m_LocalPosition", new[] { "x", "y", "z" }),
+            ("m_LocalRotation", new[] { "x", "y", "z", "w" }),
+            ("m_LocalScale", new[] { "x", "y", "z" }),
+        };
+
+        /// <summary>Every Transform's pose is finite numbers: a world pose is composed from any of them, and a bad one
+        /// must be named where it is, not surface as a parse failure deep in the composition.</summary>
+        void CheckTransforms()
+        {
+            foreach (var t in scene.Transforms)
+                foreach (var (field, axes) in TransformFields)
+                {
+                    var node = t.Root[field];
+                    if (node == null) continue;
+                    foreach (string axis in axes)
+                    {
+                        var value = node.IsMapping ? node[axis] : null;
+                        if (value != null && value.IsScalar && UnityYamlNode.TryParseNumber(value.Value, out double v) && double.IsFinite(v)) continue;
+                        string was = value == null ? (node.IsMapping ? "missing" : $"'{node}'") : $"'{value}'";
+                        throw new SceneException($"{path}:{(value ?? node).Line}: GameObject '{scene.GameObjectOf(t)?.Name}', Transform.{field}.{axis} must be a finite number (was {was})");
+                    }
+                }
+        }
+
+        /// <summary>
+        /// The simulator's fields that only Unity uses (how the particles are drawn, the longest frame) are checked
+        /// against the inspector's ranges too, so a scene the headless run accepts also starts in the editor.
+        /// </summary>
+        void CheckDrawingSettings()
+        {
+            const string c = RuntimeScripts.FluidSimulator;
+            InRange(_simulatorGo, _simulator, c, "particleRadiusScale", 1.2f, 0.25f, 3f, "half spacings");
+            InRange(_simulatorGo, _simulator, c, "maxFrameTime", 1f / 30f, 0.001f, 0.1f, "s");
+        }
+
+        void InRange(UnityGameObject go, UnityDocument mb, string component, string field, float fallback, float min, float max, string unit)
+        {
+            float v = Float(go, mb, component, field, fallback);
+            if (!(v >= min && v <= max))
+                throw new SceneException(string.Format(CultureInfo.InvariantCulture, "{0}:{1}: {2} must be in [{3}, {4}] {5} (was {6})",
+                    path, mb.Root[field]?.Line ?? mb.Line, Where(go, component, field), min, max, unit, v));
+        }
+
+        /// <summary>Each channel of a SpawnBox colour is a fraction, as Unity's colour picker writes it.</summary>
+        Vector4 UnitColor(UnityGameObject go, UnityDocument mb, string component, string field, Vector4 fallback)
+        {
+            var c = Color(go, mb, component, field, fallback);
+            float[] channels = { c.X, c.Y, c.Z, c.W };
+            string[] names = { "r", "g", "b", "a" };
+            for (int i = 0; i < 4; i++)
+                if (!(channels[i] >= 0f && channels[i] <= 1f))
+                    throw new SceneException(string.Format(CultureInfo.InvariantCulture, "{0}:{1}: {2}.{3} must be in [0, 1] (was {4})",
+                        path, mb.Root[field]?.Line ?? mb.Line, Where(go, component, field), names[i], channels[i]));
+            return c;
         }
 
         string Text(UnityDocument mb, string field, string fallback) => mb.Root[field] is { IsScalar: true } n ? n.Value : fallback;
@@ -233,7 +308,7 @@ public static class SceneLoader
             {
                 ParticleMass = Float(go, mb, c, "particleMass", 0f),
                 SurfaceTension = Float(go, mb, c, "surfaceTension", 0f),
-                Color = ColorSpace.SrgbToLinear(Color(go, mb, c, "color", new Vector4(0.2f, 0.45f, 0.9f, 0.8f))),
+                Color = ColorSpace.SrgbToLinear(UnitColor(go, mb, c, "color", new Vector4(0.2f, 0.45f, 0.9f, 0.8f))),
                 FresnelF0 = Float(go, mb, c, "fresnelF0", d.FresnelF0),
                 Absorption = Float(go, mb, c, "absorption", d.Absorption),
             };
@@ -292,12 +367,8 @@ public static class SceneLoader
             return new SceneMotion { ContainerSpin = spin, SphereDrives = drives };
         }
 
-        static bool IsSelfOrAncestor(UnityGameObject candidate, UnityGameObject of)
-        {
-            for (var g = of; g != null; g = g.Parent)
-                if (g.FileId == candidate.FileId) return true;
-            return false;
-        }
+        static bool IsSelfOrAncestor(UnityGameObject candidate, UnityGameObject of) =>
+            of.SelfAndAncestors.Any(g => g.FileId == candidate.FileId);
 
         /// <summary>Prefixes a core validation message with the GameObject, component and serialized field it came from.</summary>
         string Locate(ValidationError error)

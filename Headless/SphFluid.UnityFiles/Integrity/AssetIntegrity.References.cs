@@ -20,24 +20,33 @@ public sealed partial class AssetIntegrity
                 ReportAt(file, $"Unity would refuse this YAML: {e.Message}");
                 continue;
             }
-            if (!yaml.HasUnityHeader) ReportAt(file, $"must start with '{UnityYamlFile.YamlHeader}' and '{UnityYamlFile.TagHeader}'");
-            foreach (var id in yaml.DuplicateFileIds.Distinct()) ReportAt(file, $"anchor &{id} is used by more than one document");
-            foreach (var d in yaml.Documents)
-                if (UnityKnownIds.TypeNames.TryGetValue(d.ClassId, out var type) && type != d.TypeName)
-                    ReportAt(file, $"document &{d.FileId} (line {d.Line}) is class {d.ClassId} ({type}) but its root key is '{d.TypeName}'");
-            if (_metaByAsset.TryGetValue(file, out var meta) && meta.MainObjectFileId is long main && yaml.Find(main) == null)
-                ReportAt(file, $"its .meta says mainObjectFileID {main} but no document is '&{main}'");
-            CheckReferences(file, yaml);
-            CheckScripts(file, yaml);
-            var ext = Extension(file);
-            if (ext == ".unity" || ext == ".prefab")
-            {
-                CheckSceneStructure(file, yaml, ext == ".unity");
-                CheckTagsAndLayers(file, yaml);
-            }
+            CheckSerializedFile(file, yaml);
         }
         foreach (var file in _assetFiles.Where(f => Extension(f) == ".inputactions")) CheckInputActions(file);
         CheckShadersFoundByName();
+    }
+
+    void CheckSerializedFile(string file, UnityYamlFile yaml)
+    {
+        if (!yaml.HasUnityHeader) ReportAt(file, $"must start with '{UnityYamlFile.YamlHeader}' and '{UnityYamlFile.TagHeader}'");
+        foreach (var id in yaml.DuplicateFileIds.Distinct())
+        {
+            var lines = yaml.Documents.Where(d => d.FileId == id).Select(d => d.Line).ToList();
+            ReportAt(file, $"anchor &{id} is used by more than one document (lines {string.Join(", ", lines)}); references to it reach only the first", lines[1]);
+        }
+        foreach (var d in yaml.Documents)
+            if (UnityKnownIds.TypeNames.TryGetValue(d.ClassId, out var type) && type != d.TypeName)
+                ReportAt(file, $"document &{d.FileId} (line {d.Line}) is class {d.ClassId} ({type}) but its root key is '{d.TypeName}'");
+        if (_metaByAsset.TryGetValue(file, out var meta) && meta.MainObjectFileId is long main && yaml.Find(main) == null)
+            ReportAt(file, $"its .meta says mainObjectFileID {main} but no document is '&{main}'");
+        CheckReferences(file, yaml);
+        CheckScripts(file, yaml);
+        var ext = Extension(file);
+        if (ext == ".unity" || ext == ".prefab")
+        {
+            CheckSceneStructure(file, yaml, ext == ".unity");
+            CheckTagsAndLayers(file, yaml);
+        }
     }
 
     static bool StartsWithYamlHeader(string file)
@@ -62,7 +71,7 @@ public sealed partial class AssetIntegrity
                 if (r.IsNull) continue;
                 if (r.IsLocal)
                 {
-                    if (yaml.Find(r.FileId) == null) ReportAt(file, $"{where} points at &{r.FileId}, which is not in this file");
+                    if (yaml.Find(r.FileId) == null) ReportAt(file, $"{where} points at &{r.FileId}, which is not in this file", doc.Root.At(path)?.Line ?? doc.Line);
                     continue;
                 }
                 if (!UnityMeta.IsValidGuid(r.Guid))
@@ -81,7 +90,7 @@ public sealed partial class AssetIntegrity
                 if (Extension(file) == ".mat" && path == "m_Shader") _materialShaders[file] = r.Guid;
                 if (!_assetByGuid.TryGetValue(r.Guid, out var target))
                 {
-                    ReportAt(file, $"{where} references guid {r.Guid}, which no .meta in the project has");
+                    ReportAt(file, $"{where} references guid {r.Guid}, which no .meta in the project has", doc.Root.At(path)?.Line ?? doc.Line);
                     continue;
                 }
                 CheckMainObject(file, where, r, target);

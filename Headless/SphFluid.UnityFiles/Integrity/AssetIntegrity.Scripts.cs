@@ -30,14 +30,14 @@ public sealed partial class AssetIntegrity
             var script = doc.Script;
             if (script == null || script.IsNull)
             {
-                ReportAt(file, $"{where} has no m_Script (Missing Script)");
+                ReportAt(file, $"{where} has no m_Script (Missing Script)", doc.Root["m_Script"]?.Line ?? doc.Line);
                 continue;
             }
             if (script.IsBuiltin || script.Guid == null) continue;
             if (UnityKnownIds.PackageObjectGuids.TryGetValue(script.Guid, out var packaged))
             {
                 if (packaged.Name == UnityKnownIds.StandaloneInputModule && _activeInputHandler == 1)
-                    ReportAt(file, $"{where} is uGUI's StandaloneInputModule, which reads the legacy Input Manager and throws with activeInputHandler 1; use InputSystemUIInputModule");
+                    ReportAt(file, $"{where} is uGUI's StandaloneInputModule, which reads the legacy Input Manager and throws with activeInputHandler 1; use InputSystemUIInputModule", doc.Root["m_Script"]?.Line ?? doc.Line);
                 continue;
             }
             if (!_assetByGuid.TryGetValue(script.Guid, out var target)) continue; // unresolved guid: reported by CheckReferences
@@ -45,14 +45,14 @@ public sealed partial class AssetIntegrity
             if (ext.Equals(".dll", StringComparison.OrdinalIgnoreCase)) continue;
             if (!ext.Equals(".cs", StringComparison.OrdinalIgnoreCase))
             {
-                ReportAt(file, $"{where} m_Script points at '{Rel(target)}', which is not a C# script");
+                ReportAt(file, $"{where} m_Script points at '{Rel(target)}', which is not a C# script", doc.Root["m_Script"]?.Line ?? doc.Line);
                 continue;
             }
             var verdict = ScriptVerdict(target);
-            if (verdict != null) ReportAt(file, $"{where} uses '{Rel(target)}': {verdict} (Unity shows Missing Script)");
+            if (verdict != null) ReportAt(file, $"{where} uses '{Rel(target)}': {verdict} (Unity shows Missing Script)", doc.Root["m_Script"]?.Line ?? doc.Line);
             else CheckSerializedFieldNames(file, where, doc, target);
             if (isScene && EditorOnly(target))
-                ReportAt(file, $"{where} uses '{Rel(target)}', which compiles into an Editor-only assembly (Missing Script in players)");
+                ReportAt(file, $"{where} uses '{Rel(target)}', which compiles into an Editor-only assembly (Missing Script in players)", doc.Root["m_Script"]?.Line ?? doc.Line);
         }
     }
 
@@ -78,7 +78,7 @@ public sealed partial class AssetIntegrity
         }
         foreach (var key in doc.Root.Keys.Where(k => !BehaviourKeys.Contains(k)))
             if (!sources.Any(src => Regex.IsMatch(src, @"\b" + Regex.Escape(key) + @"\b")))
-                ReportAt(file, $"{where} sets '{key}', which '{Rel(csFile)}' does not declare (Unity drops it and the field keeps its default)");
+                ReportAt(file, $"{where} sets '{key}', which '{Rel(csFile)}' does not declare (Unity drops it and the field keeps its default)", doc.Root[key]?.Line ?? doc.Line);
     }
 
     /// <summary>The legacy Input class throws at runtime when only the Input System is active (activeInputHandler 1).</summary>

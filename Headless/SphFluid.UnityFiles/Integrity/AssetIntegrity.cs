@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using SphFluid.UnityFiles.Assets;
+using SphFluid.UnityFiles.Yaml;
 
 namespace SphFluid.UnityFiles.Integrity;
 
@@ -29,6 +30,23 @@ public sealed partial class AssetIntegrity
     {
         var check = new AssetIntegrity(projectRoot);
         check.Run();
+        return check._problems;
+    }
+
+    /// <summary>
+    /// The checks one scene (or prefab) gets in <see cref="Check"/>, for a runner about to simulate it: its documents,
+    /// anchors, references and scripts against the project's .metas, its GameObject/Transform structure and parent
+    /// cycles. The file may lie outside the project (an edited copy); problems of other files are not reported.
+    /// </summary>
+    public static IReadOnlyList<IntegrityProblem> CheckScene(string projectRoot, string scenePath, UnityYamlFile yaml)
+    {
+        var check = new AssetIntegrity(projectRoot);
+        check.Guarded("Assets", check.ScanAssetRoots);
+        check.Guarded("Assets", check.CheckMetas);
+        check.Guarded("ProjectSettings", check.CheckProjectSettings);
+        check._problems.Clear();
+        string file = Path.GetFullPath(scenePath);
+        check.Guarded(check.Rel(file), () => check.CheckSerializedFile(file, yaml));
         return check._problems;
     }
 
@@ -69,13 +87,14 @@ public sealed partial class AssetIntegrity
         catch (Exception e) when (e is not OutOfMemoryException)
         {
             // Bad content must become a finding, never a crash: the other checks still run.
-            Report(path, $"check stopped: {e.GetType().Name}: {e.Message}");
+            // The runner prints these to people who edit scenes: the reason, never an exception type name.
+            Report(path, $"check stopped: {e.Message}");
         }
     }
 
-    void Report(string path, string message) => _problems.Add(new IntegrityProblem(path, message));
+    void Report(string path, string message, int line = 0) => _problems.Add(new IntegrityProblem(path, message, line));
 
-    void ReportAt(string absolutePath, string message) => Report(Rel(absolutePath), message);
+    void ReportAt(string absolutePath, string message, int line = 0) => Report(Rel(absolutePath), message, line);
 
     string Rel(string absolutePath) => Path.GetRelativePath(_root, absolutePath).Replace('\\', '/');
 

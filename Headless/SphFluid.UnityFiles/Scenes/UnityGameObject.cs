@@ -64,8 +64,21 @@ public sealed class UnityGameObject
     /// <summary>World pose composed through every parent.</summary>
     public WorldTransform World => Transform == null ? WorldTransform.Identity : _scene.WorldTransformOf(Transform);
 
+    /// <summary>
+    /// This object, its parent, its parent's parent... up to the root. Stops before an object comes round again, so a
+    /// parent cycle in a broken scene (see <see cref="UnityScene.ParentCycles"/>) ends the walk instead of looping.
+    /// </summary>
+    public IEnumerable<UnityGameObject> SelfAndAncestors
+    {
+        get
+        {
+            var seen = new HashSet<long>();
+            for (var g = this; g != null && seen.Add(g.FileId); g = g.Parent) yield return g;
+        }
+    }
+
     /// <summary>"Parent/Child" path from the scene root, for messages.</summary>
-    public string HierarchyPath => Parent == null ? Name : Parent.HierarchyPath + "/" + Name;
+    public string HierarchyPath => string.Join("/", SelfAndAncestors.Select(g => g.Name).Reverse());
 
     public override string ToString() => $"GameObject '{Name}' &{FileId}";
 }

@@ -73,24 +73,73 @@ public sealed class UnityScene
         }
     }
 
+    /// <summary>
+    /// Every loop in the parent chains of the GameObjects (through their Transforms' <c>m_Father</c>): an object that is
+    /// its own parent, or two or more that are each other's ancestors. Each cycle lists its objects from child to
+    /// parent. Unity cannot load such a scene; every walk up the hierarchy would go round forever.
+    /// </summary>
+    public IReadOnlyList<IReadOnlyList<UnityGameObject>> ParentCycles()
+    {
+        // Each object has at most one parent, so following parents from every object once finds every loop in
+        // linear time: a walk that meets an object of its own walk has closed a loop.
+        var walkOf = new Dictionary<long, int>();
+        var cycles = new List<IReadOnlyList<UnityGameObject>>();
+        int walk = 0;
+        foreach (var start in _gameObjects.Values)
+        {
+            walk++;
+            var path = new List<UnityGameObject>();
+            var g = start;
+            while (g != null && !walkOf.ContainsKey(g.FileId))
+            {
+                walkOf[g.FileId] = walk;
+                path.Add(g);
+                g = g.Parent;
+            }
+            if (g == null || walkOf[g.FileId] != walk) continue;
+            int first = path.FindIndex(p => p.FileId == g.FileId);
+            if (first >= 0) cycles.Add(path.GetRange(first, path.Count - first));
+        }
+        return cycles;
+    }
+
     public static bool IsTransform(UnityDocument d) => d.ClassId == TransformClassId || d.ClassId == RectTransformClassId;
 
     /// <summary>World pose of a Transform document, composing <c>m_Father</c> up to the root.</summary>
-    public WorldTransform WorldTransformOf(UnityDocument transform) => WorldTransformOf(transform, 0);
+    public WorldTransform WorldTransformOf(UnityDocument transform)
+    {
+        // Up the chain to a cached or parentless Transform, then composed back down: a loop, not recursion, so a
+        // deep hierarchy cannot exhaust the stack, and a parent cycle is named instead of followed.
+        var chain = new List<UnityDocument>();
+        var seen = new HashSet<long>();
+        var parent = WorldTransform.Identity;
+        for (var t = transform; t != null; t = Father(t))
+        {
+            if (_worldCache.TryGetValue(t.FileId, out var cached))
+            {
+                parent = cached;
+                break;
+            }
+            if (!seen.Add(t.FileId))
+                throw new InvalidDataException($"{Path}: Transform &{t.FileId} is its own ancestor (a parent cycle through m_Father)");
+            chain.Add(t);
+        }
+        for (int i = chain.Count - 1; i >= 0; i--)
+        {
+            var r = chain[i].Root;
+            var rotation = r["m_LocalRotation"] != null ? r.GetQuaternion("m_LocalRotation") : Quaternion.Identity;
+            parent = parent.Compose(r.GetVector3("m_LocalPosition", Vector3.Zero), rotation, r.GetVector3("m_LocalScale", Vector3.One));
+            _worldCache[chain[i].FileId] = parent;
+        }
+        return parent;
+    }
+
+    UnityDocument Father(UnityDocument transform)
+    {
+        var father = File.Find(transform.Root.GetReference("m_Father"));
+        return father != null && IsTransform(father) ? father : null;
+    }
 
     public WorldTransform WorldTransformOf(long transformFileId) =>
         WorldTransformOf(File.Find(transformFileId) ?? throw new ArgumentException($"{Path}: no document &{transformFileId}"));
-
-    WorldTransform WorldTransformOf(UnityDocument transform, int depth)
-    {
-        if (_worldCache.TryGetValue(transform.FileId, out var cached)) return cached;
-        if (depth > 1000) throw new InvalidDataException($"{Path}: Transform &{transform.FileId} has a parent cycle");
-        var r = transform.Root;
-        var father = File.Find(r.GetReference("m_Father"));
-        var parent = father != null && IsTransform(father) ? WorldTransformOf(father, depth + 1) : WorldTransform.Identity;
-        var rotation = r["m_LocalRotation"] != null ? r.GetQuaternion("m_LocalRotation") : Quaternion.Identity;
-        var world = parent.Compose(r.GetVector3("m_LocalPosition", Vector3.Zero), rotation, r.GetVector3("m_LocalScale", Vector3.One));
-        _worldCache[transform.FileId] = world;
-        return world;
-    }
 }

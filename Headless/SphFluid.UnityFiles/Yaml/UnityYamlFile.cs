@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.IO;
 using System.Linq;
 
 namespace SphFluid.UnityFiles.Yaml;
@@ -32,7 +31,8 @@ public sealed class UnityYamlFile
     /// <summary>True when the file starts with exactly the two header lines Unity writes.</summary>
     public bool HasUnityHeader => Headers.Count == 2 && Headers[0] == YamlHeader && Headers[1] == TagHeader;
 
-    public static UnityYamlFile Load(string path) => UnityYamlParser.ParseFile(File.ReadAllText(path), path);
+    /// <summary>Reads and parses a file; only a regular file of at most <see cref="UnityTextFile.MaxBytes"/> is read.</summary>
+    public static UnityYamlFile Load(string path) => UnityYamlParser.ParseFile(UnityTextFile.Read(path), path);
 
     public static UnityYamlFile Parse(string text, string path = null) => UnityYamlParser.ParseFile(text, path);
 

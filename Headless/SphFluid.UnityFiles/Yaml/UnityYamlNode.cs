@@ -18,6 +18,9 @@ public sealed class UnityYamlNode
     static readonly IReadOnlyList<UnityYamlNode> NoItems = Array.Empty<UnityYamlNode>();
 
     readonly List<KeyValuePair<string, UnityYamlNode>> _entries;
+    // Keys are looked up by name on every read and checked for duplicates on every add: a list scan would make
+    // a mapping of n keys cost n^2 to build.
+    readonly Dictionary<string, UnityYamlNode> _byKey;
     readonly List<UnityYamlNode> _items;
 
     UnityYamlNode(UnityYamlNodeKind kind, string value, bool quoted, int line)
@@ -26,7 +29,11 @@ public sealed class UnityYamlNode
         Value = value;
         IsQuoted = quoted;
         Line = line;
-        if (kind == UnityYamlNodeKind.Mapping) _entries = new();
+        if (kind == UnityYamlNodeKind.Mapping)
+        {
+            _entries = new();
+            _byKey = new(StringComparer.Ordinal);
+        }
         if (kind == UnityYamlNodeKind.Sequence) _items = new();
     }
 
@@ -53,7 +60,7 @@ public sealed class UnityYamlNode
 
     internal bool TryAdd(string key, UnityYamlNode value)
     {
-        if (_entries.Any(e => e.Key == key)) return false;
+        if (!_byKey.TryAdd(key, value)) return false;
         _entries.Add(new(key, value));
         return true;
     }
@@ -65,9 +72,8 @@ public sealed class UnityYamlNode
     {
         get
         {
-            if (_entries == null) return null;
-            foreach (var e in _entries) if (e.Key == key) return e.Value;
-            return null;
+            if (_byKey == null || key == null) return null;
+            return _byKey.TryGetValue(key, out var value) ? value : null;
         }
     }
 

@@ -1,488 +1,281 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
+using System.IO;
 using System.Text;
 using System.Text.RegularExpressions;
+using YamlDotNet.Core;
+using YamlDotNet.Core.Events;
 
 namespace SphFluid.UnityFiles.Yaml;
 
 /// <summary>
-/// Parses the YAML subset Unity writes: <c>--- !u!&lt;classId&gt; &amp;&lt;fileId&gt;</c> documents, block mappings,
-/// block sequences (also at the same indent as their key), flow maps/sequences, plain and quoted scalars, empty values.
-/// Anything outside that subset (tabs for indentation, bad nesting, duplicate keys) is an error with file and line,
-/// because Unity refuses such files too.
+/// Reads Unity's serialized YAML. YamlDotNet parses the text; this layer adds what is Unity's own:
+/// the <c>--- !u!&lt;classId&gt; &amp;&lt;fileId&gt;</c> headers (with the <c> stripped</c> suffix no YAML parser
+/// accepts), one root key per document, no duplicate keys, no anchors, aliases or tags inside a document, and a
+/// nesting-depth limit. Every refusal is a <see cref="UnityYamlException"/> naming the file and line.
+/// The work is linear in the size of the text: YamlDotNet's scanner and parser are iterative state machines and the
+/// tree is built from their events with an explicit stack, so no input can exhaust the call stack.
 /// </summary>
-public sealed partial class UnityYamlParser
+public static partial class UnityYamlParser
 {
+    /// <summary>Deepest nesting of mappings and sequences accepted. Unity writes at most about ten levels
+    /// (prefab modifications); far deeper text is hostile or broken.</summary>
+    public const int MaxDepth = 64;
+
     [GeneratedRegex(@"^--- !u!(?<class>\d+) &(?<file>-?\d+)(?<stripped> stripped)?\s*$")]
     private static partial Regex DocumentHeader();
-
-    readonly string _path;
-    readonly List<SourceLine> _lines;
-    int _pos;
-    int _end;
-
-    struct SourceLine
-    {
-        public int Number;
-        public int Indent;
-        public string Text;
-    }
-
-    UnityYamlParser(string path, List<SourceLine> lines)
-    {
-        _path = path;
-        _lines = lines;
-    }
 
     /// <summary>Parses a Unity serialized file (.unity, .prefab, .mat, .asset, ProjectSettings/*.asset).</summary>
     public static UnityYamlFile ParseFile(string text, string path = null)
     {
-        var raw = SplitLines(text);
+        // The whole file goes through one YamlDotNet parser as a plain multi-document stream: each Unity header
+        // becomes a bare '---' on the same line (so line numbers stay the file's) and is read here instead.
+        var lines = new LineCursor(text);
+        var yaml = new StringBuilder(text.Length);
         var headers = new List<string>();
-        var documents = new List<UnityDocument>();
-        int i = 0;
-        while (i < raw.Count && !raw[i].StartsWith("---", StringComparison.Ordinal))
+        var documents = new List<(int ClassId, long FileId, bool Stripped, int Line)>();
+        while (lines.Next())
         {
-            var t = raw[i].TrimEnd();
-            if (t.Length > 0 && !t.StartsWith('#'))
+            var line = lines.Current;
+            if (documents.Count == 0 && !line.StartsWith("---", StringComparison.Ordinal))
             {
-                if (!t.StartsWith('%')) throw new UnityYamlException(path, i + 1, $"content before the first '--- !u!' document: '{Shorten(t)}'");
-                headers.Add(t);
+                var t = line.TrimEnd().ToString();
+                if (t.Length > 0 && !t.StartsWith('#'))
+                {
+                    if (!t.StartsWith('%')) throw new UnityYamlException(path, lines.Number, $"content before the first '--- !u!' document: '{Shorten(t)}'");
+                    headers.Add(t);
+                }
+                yaml.Append('\n');
+                continue;
             }
-            i++;
+            if (line.StartsWith("---", StringComparison.Ordinal))
+            {
+                documents.Add(ReadHeader(line.TrimEnd().ToString(), lines.Number, path));
+                yaml.Append("---\n");
+                continue;
+            }
+            CheckIndentation(line, lines.Number, path);
+            yaml.Append(line).Append('\n');
         }
-        while (i < raw.Count)
+        var roots = Parse(yaml.ToString(), path, documents.Count);
+        var result = new List<UnityDocument>(documents.Count);
+        for (int i = 0; i < documents.Count; i++)
         {
-            var header = raw[i].TrimEnd();
-            var m = DocumentHeader().Match(header);
-            if (!m.Success) throw new UnityYamlException(path, i + 1, $"document header '{Shorten(header)}' is not '--- !u!<classId> &<fileId>'");
-            int headerLine = i + 1;
-            int start = ++i;
-            while (i < raw.Count && !raw[i].StartsWith("---", StringComparison.Ordinal)) i++;
-            var parser = new UnityYamlParser(path, Prepare(raw, start, i, path));
-            var body = parser.ParseDocumentBody(headerLine);
+            var (classId, fileId, stripped, line) = documents[i];
+            var body = (i < roots.Count ? roots[i] : null) ?? UnityYamlNode.Mapping(line);
+            if (!body.IsMapping) throw new UnityYamlException(path, body.Line, "a document must be a mapping");
             if (body.Entries.Count != 1)
-                throw new UnityYamlException(path, headerLine, $"document &{m.Groups["file"].Value} must have exactly one root key (the type name), found {body.Entries.Count}");
-            documents.Add(new UnityDocument(
-                int.Parse(m.Groups["class"].Value, CultureInfo.InvariantCulture),
-                long.Parse(m.Groups["file"].Value, CultureInfo.InvariantCulture),
-                body.Entries[0].Key,
-                body.Entries[0].Value,
-                m.Groups["stripped"].Success,
-                headerLine));
+                throw new UnityYamlException(path, line, $"document &{fileId} must have exactly one root key (the type name), found {body.Entries.Count}");
+            result.Add(new UnityDocument(classId, fileId, body.Entries[0].Key, body.Entries[0].Value, stripped, line));
         }
-        return new UnityYamlFile(path, headers, documents);
+        return new UnityYamlFile(path, headers, result);
     }
 
     /// <summary>Parses plain block YAML with no document markers (.meta files, ProjectVersion.txt).</summary>
     public static UnityYamlNode ParseBlock(string text, string path = null)
     {
-        var raw = SplitLines(text);
-        var parser = new UnityYamlParser(path, Prepare(raw, 0, raw.Count, path));
-        return parser.ParseDocumentBody(1);
+        var lines = new LineCursor(text);
+        while (lines.Next()) CheckIndentation(lines.Current, lines.Number, path);
+        var roots = Parse(text, path, 1);
+        var root = roots.Count > 0 && roots[0] != null ? roots[0] : UnityYamlNode.Mapping(1);
+        if (!root.IsMapping) throw new UnityYamlException(path, root.Line, "a document must be a mapping");
+        return root;
     }
 
-    static List<string> SplitLines(string text)
+    static (int ClassId, long FileId, bool Stripped, int Line) ReadHeader(string header, int line, string path)
     {
-        var lines = new List<string>(text.Split('\n'));
-        for (int i = 0; i < lines.Count; i++)
-            if (lines[i].EndsWith('\r')) lines[i] = lines[i][..^1];
-        if (lines.Count > 0 && lines[^1].Length == 0) lines.RemoveAt(lines.Count - 1);
-        return lines;
+        var m = DocumentHeader().Match(header);
+        if (!m.Success) throw new UnityYamlException(path, line, $"document header '{Shorten(header)}' is not '--- !u!<classId> &<fileId>'");
+        if (!long.TryParse(m.Groups["file"].Value, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out long fileId) ||
+            !int.TryParse(m.Groups["class"].Value, NumberStyles.None, CultureInfo.InvariantCulture, out int classId))
+            throw new UnityYamlException(path, line, $"document header '{Shorten(header)}': class id or fileID out of range");
+        return (classId, fileId, m.Groups["stripped"].Success, line);
     }
 
-    static List<SourceLine> Prepare(List<string> raw, int start, int end, string path)
+    /// <summary>YAML forbids tabs in indentation; YamlDotNet reports them at the enclosing node, so they are found here
+    /// to name the very line.</summary>
+    static void CheckIndentation(ReadOnlySpan<char> line, int number, string path)
     {
-        var lines = new List<SourceLine>(end - start);
-        for (int i = start; i < end; i++)
+        int i = 0;
+        while (i < line.Length && line[i] == ' ') i++;
+        if (i < line.Length && line[i] == '\t' && line.Trim().Length > 0)
+            throw new UnityYamlException(path, number, "tab in indentation (YAML allows spaces only)");
+    }
+
+    /// <summary>The root node of each YAML document in <paramref name="yaml"/> (null for an empty one); more than
+    /// <paramref name="expected"/> documents is an error.</summary>
+    static List<UnityYamlNode> Parse(string yaml, string path, int expected)
+    {
+        var builder = new TreeBuilder(path, expected);
+        var parser = new Parser(new StringReader(yaml));
+        try
         {
-            var text = raw[i];
-            int indent = 0;
-            while (indent < text.Length && text[indent] == ' ') indent++;
-            if (indent < text.Length && text[indent] == '\t')
-                throw new UnityYamlException(path, i + 1, "tab in indentation (YAML allows spaces only)");
-            var content = text[indent..].TrimEnd(' ', '\t');
-            if (content.Length == 0 || content[0] == '#') continue;
-            lines.Add(new SourceLine { Number = i + 1, Indent = indent, Text = content });
+            while (parser.MoveNext()) builder.Accept(parser.Current);
         }
-        return lines;
-    }
-
-    UnityYamlNode ParseDocumentBody(int headerLine)
-    {
-        _pos = 0;
-        _end = _lines.Count;
-        if (_end == 0) return UnityYamlNode.Mapping(headerLine);
-        if (_lines[0].Indent != 0) throw Error(_lines[0], "the root key must start at column 1");
-        var node = ParseNode(0);
-        if (_pos < _end) throw Error(_lines[_pos], $"unexpected indentation or content '{Shorten(_lines[_pos].Text)}'");
-        if (!node.IsMapping) throw Error(_lines[0], "a document must be a mapping");
-        return node;
-    }
-
-    UnityYamlNode ParseNode(int indent)
-    {
-        var line = _lines[_pos];
-        if (IsSequenceItem(line.Text)) return ParseSequence(line.Indent);
-        if (SplitKey(line.Text, out _, out _)) return ParseMapping(line.Indent);
-        _pos++;
-        return ParseInlineValue(line.Text, line, indent - 1);
-    }
-
-    UnityYamlNode ParseMapping(int indent)
-    {
-        var map = UnityYamlNode.Mapping(_lines[_pos].Number);
-        while (_pos < _end)
+        catch (YamlException e)
         {
-            var line = _lines[_pos];
-            if (line.Indent < indent) break;
-            if (line.Indent > indent) throw Error(line, $"unexpected indentation (expected column {indent + 1})");
-            if (IsSequenceItem(line.Text)) break;
-            if (!SplitKey(line.Text, out var key, out var rest))
-                throw Error(line, $"expected 'key: value', found '{Shorten(line.Text)}'");
-            _pos++;
-            UnityYamlNode value;
-            if (rest.Length == 0)
-            {
-                if (_pos < _end && _lines[_pos].Indent > indent) value = ParseNode(_lines[_pos].Indent);
-                else if (_pos < _end && _lines[_pos].Indent == indent && IsSequenceItem(_lines[_pos].Text)) value = ParseSequence(indent);
-                else value = UnityYamlNode.Scalar("", false, line.Number);
-            }
-            else
-            {
-                value = ParseInlineValue(rest, line, indent);
-            }
-            if (!map.TryAdd(key, value)) throw Error(line, $"duplicate key '{key}'");
+            throw builder.Translate(e.Message, (int)Math.Min(int.MaxValue, e.Start.Line), scannerGaveUp: false);
         }
-        return map;
-    }
-
-    UnityYamlNode ParseSequence(int indent)
-    {
-        var seq = UnityYamlNode.Sequence(_lines[_pos].Number);
-        while (_pos < _end)
+        catch (Exception e) when (e is InvalidOperationException || e.GetType() == typeof(Exception))
         {
-            var line = _lines[_pos];
-            if (line.Indent != indent || !IsSequenceItem(line.Text)) break;
-            var rest = line.Text.Length == 1 ? "" : line.Text[1..];
-            int spaces = 0;
-            while (spaces < rest.Length && rest[spaces] == ' ') spaces++;
-            rest = rest[spaces..];
-            if (rest.Length == 0)
-            {
-                _pos++;
-                if (_pos < _end && _lines[_pos].Indent > indent) seq.Add(ParseNode(_lines[_pos].Indent));
-                else seq.Add(UnityYamlNode.Scalar("", false, line.Number));
-                continue;
-            }
-            // "- key: v" opens a mapping whose keys sit at the column after "- ": re-read the rest of the line at that column.
-            int contentIndent = indent + 1 + spaces;
-            _lines[_pos] = new SourceLine { Number = line.Number, Indent = contentIndent, Text = rest };
-            seq.Add(ParseNode(contentIndent));
+            // YamlDotNet's ScanPlainScalar throws a bare exception instead of a YamlException on some malformed flow
+            // collections (e.g. "b: {x: 1,\nc: []"; its issue #541): still a located error, never a crash.
+            throw builder.Translate("the YAML scanner stopped on malformed text", builder.LastLine, scannerGaveUp: true);
         }
-        return seq;
+        return builder.Roots;
     }
-
-    /// <summary>A value that starts on the current line (already consumed); continuation lines must be deeper than <paramref name="ownerIndent"/>.</summary>
-    UnityYamlNode ParseInlineValue(string text, SourceLine line, int ownerIndent)
-    {
-        char c = text[0];
-        if (c == '{' || c == '[')
-        {
-            var sb = new StringBuilder(text);
-            while (!FlowBalanced(sb.ToString()))
-            {
-                if (_pos >= _end || _lines[_pos].Indent <= ownerIndent) throw Error(line, "unclosed flow collection");
-                sb.Append(' ').Append(_lines[_pos++].Text);
-            }
-            var flow = new FlowReader(sb.ToString(), this, line);
-            var node = flow.ReadValue();
-            flow.ExpectEnd();
-            return node;
-        }
-        if (c == '\'' || c == '"')
-        {
-            var sb = new StringBuilder(text);
-            while (!QuotedClosed(sb.ToString()))
-            {
-                if (_pos >= _end || _lines[_pos].Indent <= ownerIndent) throw Error(line, "unclosed quoted string");
-                sb.Append('\n').Append(_lines[_pos++].Text);
-            }
-            var all = sb.ToString();
-            int close = QuotedEnd(all);
-            if (all[(close + 1)..].Trim().Length > 0) throw Error(line, $"text after closing quote: '{Shorten(all)}'");
-            return UnityYamlNode.Scalar(Unquote(all[..(close + 1)], line), true, line.Number);
-        }
-        if (c == '|' || c == '>')
-        {
-            var parts = new List<string>();
-            while (_pos < _end && _lines[_pos].Indent > ownerIndent) parts.Add(_lines[_pos++].Text);
-            return UnityYamlNode.Scalar(string.Join(c == '|' ? "\n" : " ", parts), true, line.Number);
-        }
-        if (c == '&' || c == '*' || (c == '!' && text.Length > 1))
-            throw Error(line, $"anchors, aliases and tags inside a document are not part of Unity's YAML: '{Shorten(text)}'");
-        // In YAML " #" ends a plain scalar (the rest is a comment), so "Water #1" unquoted reads as "Water", as in Unity.
-        var plain = new StringBuilder(StripComment(text));
-        while (_pos < _end && _lines[_pos].Indent > ownerIndent && ownerIndent >= 0)
-            plain.Append(' ').Append(StripComment(_lines[_pos++].Text));
-        return UnityYamlNode.Scalar(plain.ToString().TrimEnd(), false, line.Number);
-    }
-
-    static string StripComment(string text)
-    {
-        int hash = text.IndexOf(" #", StringComparison.Ordinal);
-        return hash < 0 ? text : text[..hash];
-    }
-
-    static bool IsSequenceItem(string text) => text == "-" || text.StartsWith("- ", StringComparison.Ordinal);
-
-    /// <summary>Splits <c>key: rest</c> (key plain or quoted); false for scalars and flow collections.</summary>
-    static bool SplitKey(string text, out string key, out string rest)
-    {
-        key = null;
-        rest = null;
-        if (text.Length == 0 || text[0] == '{' || text[0] == '[' || text[0] == '-' && (text.Length == 1 || text[1] == ' ')) return false;
-        int colon;
-        if (text[0] == '\'' || text[0] == '"')
-        {
-            int close = QuotedEnd(text);
-            if (close < 0 || close + 1 >= text.Length || text[close + 1] != ':') return false;
-            colon = close + 1;
-            key = UnquoteSimple(text[..(close + 1)]);
-        }
-        else
-        {
-            colon = -1;
-            for (int i = 0; i < text.Length; i++)
-            {
-                if (text[i] == ':' && (i + 1 == text.Length || text[i + 1] == ' ')) { colon = i; break; }
-                if (text[i] == ' ' && i + 1 < text.Length && text[i + 1] == '#') return false;
-            }
-            if (colon <= 0) return false;
-            key = text[..colon].TrimEnd();
-        }
-        if (colon + 1 < text.Length && text[colon + 1] != ' ') return false;
-        rest = colon + 1 < text.Length ? text[(colon + 1)..].Trim() : "";
-        return true;
-    }
-
-    static bool FlowBalanced(string text)
-    {
-        int depth = 0;
-        char quote = '\0';
-        for (int i = 0; i < text.Length; i++)
-        {
-            char c = text[i];
-            if (quote != '\0')
-            {
-                if (quote == '"' && c == '\\') { i++; continue; }
-                if (c == quote)
-                {
-                    if (quote == '\'' && i + 1 < text.Length && text[i + 1] == '\'') { i++; continue; }
-                    quote = '\0';
-                }
-                continue;
-            }
-            if ((c == '\'' || c == '"') && (i == 0 || " ,[{:".IndexOf(text[i - 1]) >= 0)) quote = c;
-            else if (c == '{' || c == '[') depth++;
-            else if (c == '}' || c == ']') depth--;
-        }
-        return depth <= 0 && quote == '\0';
-    }
-
-    static bool QuotedClosed(string text) => QuotedEnd(text) > 0;
-
-    /// <summary>Index of the quote that closes the string opening at 0, or -1.</summary>
-    static int QuotedEnd(string text)
-    {
-        char q = text[0];
-        for (int i = 1; i < text.Length; i++)
-        {
-            if (q == '"' && text[i] == '\\') { i++; continue; }
-            if (text[i] == q)
-            {
-                if (q == '\'' && i + 1 < text.Length && text[i + 1] == '\'') { i++; continue; }
-                return i;
-            }
-        }
-        return -1;
-    }
-
-    static string UnquoteSimple(string quoted) =>
-        quoted[0] == '\'' ? quoted[1..^1].Replace("''", "'") : quoted[1..^1].Replace("\\\"", "\"").Replace("\\\\", "\\");
-
-    string Unquote(string quoted, SourceLine line)
-    {
-        var body = FoldLines(quoted[1..^1], quoted[0] == '"');
-        if (quoted[0] == '\'') return body.Replace("''", "'");
-        var sb = new StringBuilder(body.Length);
-        for (int i = 0; i < body.Length; i++)
-        {
-            char c = body[i];
-            if (c != '\\') { sb.Append(c); continue; }
-            if (++i >= body.Length) throw Error(line, "backslash at end of a double-quoted string");
-            char e = body[i];
-            switch (e)
-            {
-                case 'n': sb.Append('\n'); break;
-                case 't': sb.Append('\t'); break;
-                case 'r': sb.Append('\r'); break;
-                case '0': sb.Append('\0'); break;
-                case 'a': sb.Append('\a'); break;
-                case 'b': sb.Append('\b'); break;
-                case 'e': sb.Append('\u001b'); break;
-                case ' ': sb.Append(' '); break;
-                case '/': sb.Append('/'); break;
-                case '\\': sb.Append('\\'); break;
-                case '"': sb.Append('"'); break;
-                case '\u0001': break; // escaped line break marker from FoldLines: join without space
-                case 'x': sb.Append(Hex(body, ref i, 2, line)); break;
-                case 'u': sb.Append(Hex(body, ref i, 4, line)); break;
-                case 'U': sb.Append(Hex(body, ref i, 8, line)); break;
-                default: throw Error(line, $"unknown escape '\\{e}' in a double-quoted string");
-            }
-        }
-        return sb.ToString();
-    }
-
-    string Hex(string s, ref int i, int digits, SourceLine line)
-    {
-        if (i + digits > s.Length - 1) throw Error(line, "truncated escape in a double-quoted string");
-        var hex = s.Substring(i + 1, digits);
-        if (!int.TryParse(hex, NumberStyles.HexNumber, CultureInfo.InvariantCulture, out var code)) throw Error(line, $"bad escape '{hex}'");
-        i += digits;
-        return char.ConvertFromUtf32(code);
-    }
-
-    /// <summary>YAML line folding inside quoted scalars: one break is a space, an empty line is a newline.</summary>
-    static string FoldLines(string body, bool doubleQuoted)
-    {
-        if (body.IndexOf('\n') < 0) return body;
-        var parts = body.Split('\n');
-        var sb = new StringBuilder(parts[0].TrimEnd(' '));
-        for (int i = 1; i < parts.Length; i++)
-        {
-            var p = parts[i].Trim(' ');
-            if (doubleQuoted && sb.Length > 0 && sb[^1] == '\\' && (sb.Length < 2 || sb[^2] != '\\'))
-            {
-                sb.Append('\u0001');
-                sb.Append(p);
-            }
-            else sb.Append(' ').Append(p);
-        }
-        return sb.ToString();
-    }
-
-    UnityYamlException Error(SourceLine line, string message) => new(_path, line.Number, message);
 
     static string Shorten(string s) => s.Length <= 60 ? s : s[..57] + "...";
 
-    /// <summary>Reads one flow collection or scalar: <c>{fileID: 1, guid: abc, type: 3}</c>, <c>[1, 2]</c>.</summary>
-    sealed class FlowReader
+    /// <summary>Builds <see cref="UnityYamlNode"/>s from parser events with an explicit stack.</summary>
+    sealed class TreeBuilder(string path, int expectedDocuments)
     {
-        readonly string _text;
-        readonly UnityYamlParser _owner;
-        readonly SourceLine _line;
-        int _i;
+        readonly Stack<Open> _open = new();
+        bool _rootSet;
 
-        public FlowReader(string text, UnityYamlParser owner, SourceLine line)
+        /// <summary>A mapping or sequence still being filled, and for a mapping the key waiting for its value.</summary>
+        sealed class Open(UnityYamlNode node, bool flow)
         {
-            _text = text;
-            _owner = owner;
-            _line = line;
+            public UnityYamlNode Node { get; } = node;
+            public bool Flow { get; } = flow;
+            public string Key { get; set; }
+            public int KeyLine { get; set; }
         }
 
-        public void ExpectEnd()
-        {
-            SkipSpaces();
-            if (_i < _text.Length) throw _owner.Error(_line, $"unexpected '{Shorten(_text[_i..])}' after a flow collection");
-        }
+        public List<UnityYamlNode> Roots { get; } = new();
 
-        public UnityYamlNode ReadValue()
+        static int Line(ParsingEvent e) => (int)Math.Min(int.MaxValue, e.Start.Line);
+
+        /// <summary>Line where the last event ended: where the parser was when it gave up.</summary>
+        public int LastLine { get; private set; } = 1;
+
+        public void Accept(ParsingEvent e)
         {
-            SkipSpaces();
-            if (_i >= _text.Length) return UnityYamlNode.Scalar("", false, _line.Number);
-            char c = _text[_i];
-            if (c == '{') return ReadMapping();
-            if (c == '[') return ReadSequence();
-            if (c == '\'' || c == '"')
+            LastLine = (int)Math.Min(int.MaxValue, e.End.Line);
+            switch (e)
             {
-                int close = QuotedEnd(_text[_i..]);
-                if (close < 0) throw _owner.Error(_line, "unclosed quoted string in a flow collection");
-                var quoted = _text.Substring(_i, close + 1);
-                _i += close + 1;
-                return UnityYamlNode.Scalar(_owner.Unquote(quoted, _line), true, _line.Number);
+                case StreamStart or StreamEnd or DocumentEnd:
+                    return;
+                case DocumentStart:
+                    if (Roots.Count >= expectedDocuments)
+                        throw Error(Line(e), "a YAML document without a '--- !u!<classId> &<fileId>' header");
+                    Roots.Add(null);
+                    _rootSet = false;
+                    return;
+                case AnchorAlias:
+                    throw Error(Line(e), "anchors, aliases and tags inside a document are not part of Unity's YAML");
+                case Comment:
+                    return;
             }
-            int start = _i;
-            while (_i < _text.Length && _text[_i] != ',' && _text[_i] != '}' && _text[_i] != ']') _i++;
-            return UnityYamlNode.Scalar(_text[start.._i].Trim(), false, _line.Number);
-        }
-
-        UnityYamlNode ReadMapping()
-        {
-            var map = UnityYamlNode.Mapping(_line.Number);
-            _i++;
-            while (true)
+            if (e is NodeEvent node && (!node.Anchor.IsEmpty || (!node.Tag.IsEmpty && !IsImplicitTag(node))))
+                throw Error(Line(e), "anchors, aliases and tags inside a document are not part of Unity's YAML");
+            switch (e)
             {
-                SkipSpaces();
-                if (_i >= _text.Length) throw _owner.Error(_line, "unclosed '{'");
-                if (_text[_i] == '}') { _i++; return map; }
-                var key = ReadKey();
-                SkipSpaces();
-                UnityYamlNode value;
-                if (_i < _text.Length && _text[_i] == ':')
-                {
-                    _i++;
-                    value = ReadValue();
-                }
-                else value = UnityYamlNode.Scalar("", false, _line.Number);
-                if (!map.TryAdd(key, value)) throw _owner.Error(_line, $"duplicate key '{key}' in a flow mapping");
-                SkipSpaces();
-                if (_i < _text.Length && _text[_i] == ',') { _i++; continue; }
-                if (_i < _text.Length && _text[_i] == '}') { _i++; return map; }
-                throw _owner.Error(_line, $"expected ',' or '}}' in '{Shorten(_text)}'");
-            }
-        }
-
-        UnityYamlNode ReadSequence()
-        {
-            var seq = UnityYamlNode.Sequence(_line.Number);
-            _i++;
-            while (true)
-            {
-                SkipSpaces();
-                if (_i >= _text.Length) throw _owner.Error(_line, "unclosed '['");
-                if (_text[_i] == ']') { _i++; return seq; }
-                seq.Add(ReadValue());
-                SkipSpaces();
-                if (_i < _text.Length && _text[_i] == ',') { _i++; continue; }
-                if (_i < _text.Length && _text[_i] == ']') { _i++; return seq; }
-                throw _owner.Error(_line, $"expected ',' or ']' in '{Shorten(_text)}'");
+                case Scalar s:
+                    if (_open.Count > 0 && _open.Peek().Node.IsMapping && _open.Peek().Key == null)
+                    {
+                        _open.Peek().Key = s.Value;
+                        _open.Peek().KeyLine = Line(e);
+                        return;
+                    }
+                    bool quoted = s.Style is ScalarStyle.SingleQuoted or ScalarStyle.DoubleQuoted or ScalarStyle.Literal or ScalarStyle.Folded;
+                    Attach(UnityYamlNode.Scalar(s.Value, quoted, Line(e)), Line(e));
+                    return;
+                case MappingStart ms:
+                    Push(UnityYamlNode.Mapping(Line(e)), ms.Style == MappingStyle.Flow, Line(e));
+                    return;
+                case SequenceStart ss:
+                    Push(UnityYamlNode.Sequence(Line(e)), ss.Style == SequenceStyle.Flow, Line(e));
+                    return;
+                case MappingEnd or SequenceEnd:
+                    _open.Pop();
+                    return;
             }
         }
 
-        string ReadKey()
+        static bool IsImplicitTag(NodeEvent node) => node is Scalar { IsPlainImplicit: true } or Scalar { IsQuotedImplicit: true }
+            || node is MappingStart { IsImplicit: true } || node is SequenceStart { IsImplicit: true };
+
+        void Push(UnityYamlNode node, bool flow, int line)
         {
-            if (_text[_i] == '\'' || _text[_i] == '"')
-            {
-                int close = QuotedEnd(_text[_i..]);
-                if (close < 0) throw _owner.Error(_line, "unclosed quoted key");
-                var k = UnquoteSimple(_text.Substring(_i, close + 1));
-                _i += close + 1;
-                return k;
-            }
-            int start = _i;
-            while (_i < _text.Length && _text[_i] != ',' && _text[_i] != '}' &&
-                   !(_text[_i] == ':' && (_i + 1 == _text.Length || " ,}]".IndexOf(_text[_i + 1]) >= 0))) _i++;
-            var key = _text[start.._i].Trim();
-            if (key.Length == 0) throw _owner.Error(_line, $"empty key in '{Shorten(_text)}'");
-            return key;
+            if (_open.Count >= MaxDepth)
+                throw Error(line, $"nested deeper than {MaxDepth} levels of mappings and sequences (Unity writes about ten)");
+            Attach(node, line);
+            _open.Push(new Open(node, flow));
         }
 
-        void SkipSpaces()
+        void Attach(UnityYamlNode node, int line)
         {
-            while (_i < _text.Length && (_text[_i] == ' ' || _text[_i] == '\n')) _i++;
+            if (_open.Count == 0)
+            {
+                // An empty document reads as one empty scalar: keep it as "no root".
+                if (_rootSet || Roots.Count == 0) throw Error(line, "unexpected content after the document's root");
+                _rootSet = true;
+                if (!(node.IsScalar && node.IsEmpty)) Roots[^1] = node;
+                return;
+            }
+            var parent = _open.Peek();
+            if (parent.Node.IsSequence)
+            {
+                parent.Node.Add(node);
+                return;
+            }
+            if (parent.Key == null) throw Error(line, "a key must be plain text, not a mapping or a sequence");
+            if (!parent.Node.TryAdd(parent.Key, node))
+                throw Error(parent.KeyLine, $"duplicate key '{Shorten(parent.Key)}'");
+            parent.Key = null;
+        }
+
+        UnityYamlException Error(int line, string reason) => new(path, line, reason);
+
+        /// <summary>
+        /// YamlDotNet's message, reworded where the cause is clearer from what is still open: an unclosed flow
+        /// collection is reported where it opened, not where the text ran out.
+        /// </summary>
+        public UnityYamlException Translate(string message, int line, bool scannerGaveUp)
+        {
+            var flow = _open.Count > 0 && _open.Peek().Flow ? _open.Peek() : null;
+            if (flow != null && (scannerGaveUp || message.Contains("did not find expected", StringComparison.Ordinal)))
+            {
+                char bracket = flow.Node.IsMapping ? '{' : '[';
+                return Error(flow.Node.Line, $"unclosed '{bracket}': no matching '{(bracket == '{' ? '}' : ']')}' {(scannerGaveUp ? "after" : "before")} line {line} ({message.TrimEnd('.')})");
+            }
+            if (message.Contains("quoted scalar", StringComparison.Ordinal) &&
+                (message.Contains("end of stream", StringComparison.Ordinal) || message.Contains("document indicator", StringComparison.Ordinal) ||
+                 message.Contains("wrong indentation", StringComparison.Ordinal)))
+            {
+                var owner = _open.Count > 0 && _open.Peek().Key != null ? _open.Peek() : null;
+                string what = owner == null ? "a quoted value" : $"the value of '{Shorten(owner.Key)}' (line {owner.KeyLine})";
+                return Error(line, $"unclosed quoted string: {what} has no closing quote before this line ({message.TrimEnd('.')})");
+            }
+            if (message.Contains("found invalid mapping", StringComparison.Ordinal) || message.Contains("did not find expected key", StringComparison.Ordinal))
+                return Error(line, $"unexpected indentation or content: expected 'key: value' in line with its siblings ({message.TrimEnd('.')})");
+            return Error(line, message.TrimEnd('.'));
+        }
+    }
+
+    /// <summary>Walks the lines of a text without splitting it (a CR before LF belongs to the break).</summary>
+    sealed class LineCursor(string text)
+    {
+        int _start, _length, _next;
+
+        /// <summary>1-based number of the current line.</summary>
+        public int Number { get; private set; }
+
+        public ReadOnlySpan<char> Current => text.AsSpan(_start, _length);
+
+        public bool Next()
+        {
+            if (_next >= text.Length) return false;
+            _start = _next;
+            int end = text.IndexOf('\n', _next);
+            if (end < 0) end = text.Length;
+            _next = end + 1;
+            _length = end - _start;
+            if (_length > 0 && text[_start + _length - 1] == '\r') _length--;
+            Number++;
+            return true;
         }
     }
 }

@@ -126,6 +126,10 @@ namespace SphFluid.Tests.Integrity
                 scene, "does not list it in m_Children");
             yield return Case("scene root missing from SceneRoots", p => p.Replace(scene, "m_Father: {fileID: 101}", "m_Father: {fileID: 0}"),
                 scene, "missing from SceneRoots");
+            yield return Case("scene object is its own parent", p => p.Replace(scene, "  - {fileID: 201}\n  m_Father: {fileID: 0}", "  - {fileID: 201}\n  m_Father: {fileID: 101}"),
+                scene, "is its own parent");
+            yield return Case("scene objects are each other's parent", p => p.Replace(scene, "  - {fileID: 201}\n  m_Father: {fileID: 0}", "  - {fileID: 201}\n  m_Father: {fileID: 201}"),
+                scene, "form a parent cycle through Transform.m_Father");
             yield return Case("scene class id and type name disagree", p => p.Replace(scene, "--- !u!135 &202", "--- !u!65 &202"),
                 scene, "is class 65 (BoxCollider)");
             yield return Case("scene duplicate anchor", p => p.Replace(scene, "--- !u!135 &202", "--- !u!135 &201"),

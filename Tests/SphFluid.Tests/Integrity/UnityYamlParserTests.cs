@@ -88,7 +88,9 @@ namespace SphFluid.Tests.Integrity
 
         [TestCase("--- !u!1 &1\nGameObject:\n\tm_Name: x\n", "tab")]
         [TestCase("--- !u!1 &1\nGameObject:\n  m_Name: x\n  m_Name: y\n", "duplicate key 'm_Name'")]
-        [TestCase("--- !u!1 &1\nGameObject:\n  m_Name: x\n    m_Layer: 0\n  m_Tag: {fileID: 0\n", "unclosed")]
+        [TestCase("--- !u!1 &1\nGameObject:\n  m_Name: x\n    m_Layer: 0\n", "unexpected indentation")]
+        [TestCase("--- !u!1 &1\nGameObject:\n  m_Name: x\n  m_Tag: {fileID: 0\n", "unclosed '{'")]
+        [TestCase("--- !u!1 &1\nGameObject:\n  m_Name: \"x\n  m_Layer: 0\n", "unclosed quoted string")]
         [TestCase("--- !u!1 1\nGameObject:\n  m_Name: x\n", "document header")]
         [TestCase("--- !u!1 &1\nGameObject:\n  m_Name: x\nTransform:\n  m_Name: y\n", "exactly one root key")]
         [TestCase("--- !u!1 &1\nGameObject:\n  m_Name: x\n <<<<<<< HEAD\n", "unexpected")]

@@ -131,8 +131,8 @@ namespace SphFluid.Tests.Runner
             Assert.That(stdout.ToString(), Does.Contain("surge front"));
         }
 
-        [TestCase("0", "--export-every must be in (0, 3600] s (was 0)")]
-        [TestCase("soon", "--export-every must be a number in (0, 3600] s (was 'soon')")]
+        [TestCase("0", "--export-every must be in [0.0001, 3600] s (was 0)")]
+        [TestCase("soon", "--export-every must be a number in [0.0001, 3600] s (was 'soon')")]
         public void ABadExportIntervalIsRefusedWithItsRange(string value, string message)
         {
             var stdout = new StringWriter();

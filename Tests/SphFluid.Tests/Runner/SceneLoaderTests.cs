@@ -94,7 +94,7 @@ namespace SphFluid.Tests.Runner
             string spinnerGuid = RunnerPaths.Project.ScriptGuid("FluidReadout");
             string text = System.IO.File.ReadAllText(RunnerPaths.Scene("PlayModeTest"));
             // Turn the container component into another script and clear the simulator's reference to it.
-            text = text.Replace("guid: " + containerGuid, "guid: " + spinnerGuid);
+            text = text.Replace("guid: " + containerGuid, "guid: " + spinnerGuid).Replace("  friction: 1\n", "");
             text = System.Text.RegularExpressions.Regex.Replace(text, @"  container: \{fileID: \d+\}", "  container: {fileID: 0}");
             string path = System.IO.Path.Combine(RunnerPaths.ScratchFolder("scene"), "NoContainer.unity");
             System.IO.File.WriteAllText(path, text);

@@ -1,0 +1,304 @@
+using System;
+using System.IO;
+using System.Linq;
+using System.Runtime.InteropServices;
+using System.Text;
+using NUnit.Framework;
+using SphFluid.Headless;
+using SphFluid.Headless.Cli;
+
+namespace SphFluid.Tests.Runner
+{
+    /// <summary>
+    /// Every input the "Health" issue measured as a hang, a crash, a silently corrupt run or an exception name now ends
+    /// quickly in exit 2 (argument) or 3 (scene) with a message naming the field, the file and the line. Each case runs
+    /// the whole command line under a deadline; none of them reaches the device.
+    /// </summary>
+    public sealed class BadInputTests
+    {
+        const string Default = "OilAndWater";
+        const string WaterTransform = "--- !u!4 &1104342179";
+        const string OilTransform = "--- !u!4 &518734963";
+
+        sealed class Outcome
+        {
+            public int Code;
+            public string Stdout;
+            public string Stderr;
+        }
+
+        static Outcome Run(double seconds, params string[] args)
+        {
+            var outcome = Deadline.Within(seconds, () =>
+            {
+                var o = new StringWriter();
+                var e = new StringWriter();
+                int code = Program.Run(args, o, e);
+                return new Outcome { Code = code, Stdout = o.ToString(), Stderr = e.ToString() };
+            }, "sphfluid " + string.Join(" ", args.Select(a => a.Length > 60 ? a.Substring(0, 60) + "..." : a)));
+            TestContext.WriteLine($"exit {outcome.Code}: {outcome.Stderr}");
+            Assert.That(outcome.Stderr, Does.Not.Contain("Exception"), "a message for the reader, never an exception type name");
+            return outcome;
+        }
+
+        static Outcome Simulate(string scene, params string[] extra) =>
+            Run(60, new[] { "simulate", scene, "--seconds", "0.01", "--out", RunnerPaths.ScratchFolder("bad-input-out") }.Concat(extra).ToArray());
+
+        /// <summary>The default scene with <paramref name="find"/> replaced inside the one document that starts with
+        /// <paramref name="header"/>; <paramref name="line"/> is the 1-based line of the edit.</summary>
+        static string EditDocument(string header, string find, string replace, out int line, string text = null)
+        {
+            text = text ?? File.ReadAllText(RunnerPaths.Scene(Default));
+            int start = text.IndexOf(header, StringComparison.Ordinal);
+            int end = text.IndexOf("\n--- ", start + 1, StringComparison.Ordinal);
+            int at = text.IndexOf(find, start, end - start, StringComparison.Ordinal);
+            Assert.That(at, Is.GreaterThan(0), $"{Default}.unity has no '{find}' in '{header}'");
+            line = text.Take(at).Count(c => c == '\n') + 1;
+            return text.Substring(0, at) + replace + text.Substring(at + find.Length);
+        }
+
+        static string Write(string text, string name = Default + ".unity")
+        {
+            string path = Path.Combine(RunnerPaths.ScratchFolder("bad-input"), name);
+            File.WriteAllText(path, text);
+            return path;
+        }
+
+        // ---------------------------------------------------------------- hangs
+
+        [TestCase("simulate")]
+        [TestCase("bench")]
+        public void AnObjectThatIsItsOwnParentIsASceneError(string command)
+        {
+            string path = Write(EditDocument(WaterTransform, "m_Father: {fileID: 0}", "m_Father: {fileID: 1104342179}", out int line));
+
+            var run = Run(60, command, path, "--steps", "1");
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water' &1485336898 is its own parent"));
+        }
+
+        [Test]
+        public void TwoObjectsThatAreEachOthersParentAreASceneError()
+        {
+            string text = EditDocument(WaterTransform, "m_Father: {fileID: 0}", "m_Father: {fileID: 518734963}", out int line);
+            string path = Write(EditDocument(OilTransform, "m_Father: {fileID: 0}", "m_Father: {fileID: 1104342179}", out _, text));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObjects 'Water' &1485336898 -> 'Oil' &305626396 -> 'Water' &1485336898 form a parent cycle"));
+        }
+
+        [TestCase("--diagnostics-every")]
+        [TestCase("--frames-every")]
+        public void AnOutputIntervalBelowTheMinimumIsRefused(string option)
+        {
+            var run = Simulate(RunnerPaths.Scene(Default), option, "1e-300");
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(run.Stderr, Does.Contain($"{option} must be in [0.0001, 3600] s (was 1E-300)"));
+        }
+
+        [DllImport("libc", SetLastError = true)]
+        static extern int mkfifo(string path, uint mode);
+
+        [Test]
+        public void AFifoAsTheSceneIsRefusedWithoutOpeningIt()
+        {
+            string path = Path.Combine(RunnerPaths.ScratchFolder("fifo"), "Pipe.unity");
+            if (!RuntimeInformation.IsOSPlatform(OSPlatform.Linux) || mkfifo(path, Convert.ToUInt32("600", 8)) != 0)
+                Assert.Ignore("mkfifo is not available here");
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}: is empty or not a regular file (a device, a pipe or a /proc file); expected a text file of 1 byte to 16 MiB"));
+        }
+
+        [Test]
+        public void ATwoMegabyteSceneWithAnUnclosedBraceEndsInALocatedError()
+        {
+            string text = EditDocument(WaterTransform, "m_LocalScale: {x: 0.3, y: 0.2, z: 0.12}", "m_LocalScale: {x: 0.3,", out int line);
+            var big = new StringBuilder(text.Length + 2_100_000);
+            int insert = text.IndexOf('\n', text.IndexOf("m_LocalScale: {x: 0.3,", StringComparison.Ordinal)) + 1;
+            big.Append(text, 0, insert);
+            for (int i = 0; big.Length < 2_000_000; i++) big.Append("    pad").Append(i).Append(": 1,\n");
+            big.Append(text, insert, text.Length - insert);
+            string path = Write(big.ToString());
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: unclosed '{{'"));
+        }
+
+        [Test]
+        public void ATwoMegabyteSceneWithAnUnclosedQuoteEndsInALocatedError()
+        {
+            string text = File.ReadAllText(RunnerPaths.Scene(Default));
+            int at = text.IndexOf("phaseName: Oil\n", StringComparison.Ordinal);
+            int line = text.Take(at).Count(c => c == '\n') + 1;
+            var big = new StringBuilder(text.Length + 2_100_000).Append(text, 0, at).Append("phaseName: \"Oil\n");
+            for (int i = 0; big.Length < 2_000_000; i++) big.Append("    more words ").Append(i).Append('\n');
+            string path = Write(big.ToString());
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"unclosed quoted string: the value of 'phaseName' (line {line}) has no closing quote"));
+            Assert.That(run.Stderr, Does.Contain(path + ":"));
+        }
+
+        // ---------------------------------------------------------------- crashes
+
+        [Test]
+        public void FlowCollectionsNestedThirtyThousandDeepAreRefusedAtTheDepthLimit()
+        {
+            var deep = new StringBuilder("phaseName: ");
+            for (int i = 0; i < 30000; i++) deep.Append("{a: ");
+            deep.Append('1').Append('}', 30000);
+            string path = Write(EditDocument("--- !u!114 &287989891", "phaseName: Oil", deep.ToString(), out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: nested deeper than 64 levels"));
+            Assert.That(run.Stderr.Length, Is.LessThan(2000), "one message, not a stack trace");
+        }
+
+        [Test]
+        public void DevZeroAsTheSceneIsRefusedWithoutReadingIt()
+        {
+            if (!File.Exists("/dev/zero")) Assert.Ignore("no /dev/zero here");
+
+            var run = Simulate("/dev/zero");
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain("/dev/zero: is empty or not a regular file"));
+        }
+
+        // ---------------------------------------------------------------- corrupt scenes
+
+        [Test]
+        public void ADuplicatedGameObjectFileIdIsRefusedBeforeSimulating()
+        {
+            string text = File.ReadAllText(RunnerPaths.Scene(Default)).Replace("--- !u!1 &305626396", "--- !u!1 &1485336898");
+            int line = text.Split('\n').ToList().FindLastIndex(l => l == "--- !u!1 &1485336898") + 1;
+            string path = Write(text);
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: anchor &1485336898 is used by more than one document"));
+        }
+
+        [Test]
+        public void ASpawnBoxWithAnUnknownScriptGuidIsRefusedInsteadOfDropped()
+        {
+            string guid = RunnerPaths.Project.ScriptGuid("SpawnBox");
+            string path = Write(EditDocument("--- !u!114 &287989891", "guid: " + guid, "guid: 0123456789abcdef0123456789abcdef", out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: &287989891 MonoBehaviour.m_Script references guid 0123456789abcdef0123456789abcdef, which no .meta in the project has"));
+        }
+
+        // ---------------------------------------------------------------- exit 1 before
+
+        [Test]
+        public void AParticleScaleThatShrinksNoContainerBelowTwoSpacingsNamesTheOption()
+        {
+            var run = Simulate(RunnerPaths.Scene(Default), "--particles-scale", "0.01");
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(run.Stderr, Does.Contain("simulate: --particles-scale 0.01 is out of range for this scene: it needs a particle spacing of 0.06962 m"));
+            Assert.That(run.Stderr, Does.Contain("Container: each Size component must be in [0.139248, 1000] m"));
+        }
+
+        [Test]
+        public void BenchParticlesBeyondTheFinestSpacingNamesTheOption()
+        {
+            var run = Run(120, "bench", RunnerPaths.Scene(Default), "--particles", "16777216", "--steps", "1", "--warmup", "0");
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(run.Stderr, Does.Contain("bench: --particles 16777216 is out of range for this scene"));
+            Assert.That(run.Stderr, Does.Contain("ParticleSpacing must be in [0.001, 1] m"));
+            Assert.That(run.Stdout, Does.Not.Contain("| particles |"), "refused before measuring anything");
+        }
+
+        [Test]
+        public void AThousandMetreContainerNamesTheContainerAndTheSupportRadius()
+        {
+            const string scale = "m_LocalScale: {x: 0.6, y: 0.4, z: 0.12}";
+            string path = Write(EditDocument("--- !u!4 &280459232", scale, "m_LocalScale: {x: 1000, y: 1000, z: 1000}", out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: the fluid scene is invalid"));
+            Assert.That(run.Stderr, Does.Contain("GameObject 'Container', Transform.m_LocalScale and GameObject 'Fluid', FluidSimulator.smoothingRadius"));
+            Assert.That(run.Stderr, Does.Contain("33336 x 33336 x 33336 = 3.70E+013 cells"));
+        }
+
+        [Test]
+        public void ANonNumberInATransformNamesTheFileLineAndField()
+        {
+            string path = Write(EditDocument(WaterTransform, "m_LocalScale: {x: 0.3,", "m_LocalScale: {x: abc,", out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', Transform.m_LocalScale.x must be a finite number (was 'abc')"));
+        }
+
+        [TestCase("\"\\uD800\"", "invalid Unicode surrogates")]
+        [TestCase("\"\\U7FFFFFFF\"", "invalid Unicode character escape code")]
+        public void ABadEscapeNamesTheFileAndLine(string value, string reason)
+        {
+            string path = Write(EditDocument("--- !u!114 &287989891", "phaseName: Oil", "phaseName: " + value, out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: "));
+            Assert.That(run.Stderr, Does.Contain(reason));
+        }
+
+        // ---------------------------------------------------------------- smaller defects
+
+        [TestCase("--- !u!114 &1249553504", "particleRadiusScale: 1.2", "particleRadiusScale: 5", "FluidSimulator.particleRadiusScale must be in [0.25, 3] half spacings (was 5)")]
+        [TestCase("--- !u!114 &1249553504", "maxFrameTime: 0.0333333", "maxFrameTime: 0", "FluidSimulator.maxFrameTime must be in [0.001, 0.1] s (was 0)")]
+        [TestCase("--- !u!114 &287989891", "color: {r: 0.95,", "color: {r: 2,", "SpawnBox.color.r must be in [0, 1] (was 2)")]
+        public void InspectorRangesTheRunnerUsedToSkipAreChecked(string header, string find, string replace, string message)
+        {
+            string path = Write(EditDocument(header, find, replace, out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject '"));
+            Assert.That(run.Stderr, Does.Contain(message));
+        }
+
+        [Test]
+        public void AFrameTooShortToStepIsRefusedInsteadOfMisreported()
+        {
+            var run = Simulate(RunnerPaths.Scene(Default), "--frame-seconds", "1e-300");
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(run.Stderr, Does.Contain("--frame-seconds must be in [0.0001, 0.1] s (was 1E-300)"));
+        }
+
+        [TestCase("")]
+        [TestCase("4000,,8000")]
+        public void AnEmptyParticleCountIsRefused(string value)
+        {
+            var run = Run(60, "bench", RunnerPaths.Scene(Default), "--particles", value);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(run.Stderr, Does.Contain("--particles must be a whole number in [64, 16777216] (was '')"));
+        }
+    }
+}
