@@ -121,6 +121,7 @@ namespace SphFluid.Tests.Physics
         {
             Assert.That(_reports[perWidth].OutsideCount, Is.EqualTo(0));
             Assert.That(_reports[perWidth].NanCount, Is.EqualTo(0));
+            Assert.That(_reports[perWidth].ClampHits, Is.EqualTo(0), "the wall particles alone held the surge");
         }
     }
 }

@@ -62,6 +62,24 @@ namespace SphFluid.Tests.Physics
             Assert.That(_measured[scale].Volume, Is.EqualTo(_measured[1.0].Volume).Within(0.02 * _measured[1.0].Volume));
 
         [TestCase(0.5)]
+        [TestCase(2.0)]
+        [TestCase(8.0)]
+        public void AnExplicitMassScalesWithTheParticleVolumeSoTheBoxKeepsItsMass(double scale)
+        {
+            var scene = SceneLoader.Load(RunnerPaths.Scene("OilAndWater"), RunnerPaths.Project).Description;
+            var oil = scene.SpawnBoxes[1];
+            oil.Phase.ParticleMass = 1.1f * scene.BuildPhaseTable()[1].ParticleMass;
+            double before = SpawnLayout.Count(scene.Settings, oil) * (double)oil.Phase.ParticleMass;
+
+            ParticleScaling.ScaleBy(scene, scale);
+
+            Assert.That(scene.Validate(), Is.Empty);
+            double after = SpawnLayout.Count(scene.Settings, oil) * (double)scene.SpawnBoxes[1].Phase.ParticleMass;
+            Assert.That(after, Is.EqualTo(before).Within(1e-4 * before));
+            Assert.That(scene.BuildPhaseTable()[1].ParticleMass / DerivedParticleMass.Of(scene, oil.Phase), Is.EqualTo(1.1).Within(1e-5));
+        }
+
+        [TestCase(0.5)]
         [TestCase(1.0)]
         [TestCase(2.0)]
         public void EachScaleCarriesRestDensityTimesTheBoxVolumes(double scale) =>
