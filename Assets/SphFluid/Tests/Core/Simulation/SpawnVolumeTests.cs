@@ -105,6 +105,20 @@ namespace SphFluid.Tests.Core.Simulation
         }
 
         [Test]
+        public void AnExplicitMassIsJudgedAgainstTheMassDerivedFromTheCell()
+        {
+            // 0.2 x 0.1 x 0.05 m at s = 0.02 m: 10 x 5 x 3 points, cells of 6.67e-6 m^3 for s^3 = 8e-6, so the derived
+            // mass is 0.833 of rho0 / delta0. 0.7 rho0 / delta0 is 0.84 of it: inside the allowed 0.807 to 1.24.
+            var scene = OneBox(0.02f, new Vector3(0.2f, 0.1f, 0.05f));
+            double nominal = 1000.0 / scene.RestNumberDensity();
+            Assert.That(DerivedParticleMass.Of(scene, scene.SpawnBoxes[0].Phase) / nominal, Is.EqualTo(125.0 / 150.0).Within(1e-5));
+            scene.SpawnBoxes[0].Phase.ParticleMass = (float)(0.7 * nominal);
+            Assert.That(scene.Validate(), Is.Empty);
+            scene.SpawnBoxes[0].Phase.ParticleMass = (float)(1.1 * nominal);
+            Assert.That(scene.Validate().Select(e => e.Field).ToArray(), Is.EqualTo(new[] { "SpawnBoxes[0].Phase.ParticleMass" }), "1.32 times the derived mass");
+        }
+
+        [Test]
         public void APhaseOverSeveralBoxesWeighsRestDensityTimesTheirVolume()
         {
             var scene = OneBox(0.017f, new Vector3(0.113f, 0.071f, 0.049f));
