@@ -13,7 +13,7 @@ public sealed record DiagnosticsRow(double Time, int Frame, StepReport Step, Dia
 /// <summary>
 /// Writes diagnostics.csv, invariant culture, one row per line:
 /// time_s, frame, substeps, dt_s, particles, total_mass_kg, kinetic_energy_J, max_speed_mps, nan_count,
-/// outside_count (GPU reductions); then per phase &lt;name&gt;_count, _compression_avg, _compression_max,
+/// outside_count (GPU reductions); then per phase &lt;name&gt;_count (a distinct prefix per phase: <see cref="ColumnPrefixes"/>), _compression_avg, _compression_max,
 /// _expansion_avg, _expansion_max, _mean_height_m, _bottom_m, _top_m, _floor_share, _wall_share
 /// (<see cref="PhaseMeasures"/>); then layering_index, surge_front_m, back_wall_column_m, potential_energy_J
 /// (<see cref="FluidMeasures"/>); then clamp_hits (particles the last-resort wall clamp caught since spawn:
@@ -32,11 +32,8 @@ public sealed class DiagnosticsCsv : IDisposable
         _phaseCount = phases.Count;
         _writer = new StreamWriter(path, false, new UTF8Encoding(false)) { NewLine = "\n" };
         var header = new StringBuilder("time_s,frame,substeps,dt_s,particles,total_mass_kg,kinetic_energy_J,max_speed_mps,nan_count,outside_count");
-        foreach (var p in phases)
-        {
-            string n = Column(p.Name);
+        foreach (string n in ColumnPrefixes(phases))
             foreach (string column in PhaseColumns) header.Append(',').Append(n).Append('_').Append(column);
-        }
         header.Append(",layering_index,surge_front_m,back_wall_column_m,potential_energy_J,clamp_hits");
         _writer.WriteLine(header);
     }
@@ -61,6 +58,22 @@ public sealed class DiagnosticsCsv : IDisposable
             m?.LayeringIndex ?? double.NaN, m?.SurgeFront ?? double.NaN, m?.BackWallColumn ?? double.NaN, m?.PotentialEnergy ?? double.NaN, r.ClampHits));
         _writer.WriteLine(line);
         _writer.Flush();
+    }
+
+    /// <summary>One distinct column prefix per phase, in phase order. Validation refuses names that differ only by
+    /// letter case, but names that differ only by punctuation ("oil-1", "oil 1") still fold to one prefix here: the
+    /// second and later take _2, _3, ... so no two columns share a header.</summary>
+    public static IReadOnlyList<string> ColumnPrefixes(IReadOnlyList<PhaseDescription> phases)
+    {
+        var prefixes = new List<string>();
+        var used = new HashSet<string>(StringComparer.Ordinal);
+        foreach (var p in phases)
+        {
+            string baseName = Column(p.Name), n = baseName;
+            for (int k = 2; !used.Add(n); k++) n = baseName + "_" + k.ToString(CultureInfo.InvariantCulture);
+            prefixes.Add(n);
+        }
+        return prefixes;
     }
 
     /// <summary>A phase name as a column prefix: letters, digits and underscores.</summary>

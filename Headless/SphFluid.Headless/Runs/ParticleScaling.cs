@@ -32,16 +32,20 @@ public static class ParticleScaling
         return Count(scene);
     }
 
-    /// <summary>An explicit particle mass keeps its ratio to the derived one (which goes with s^3): the finer
-    /// lattice must still start at the density the scene meant.</summary>
-    static void ScaleExplicitMasses(FluidSceneDescription scene, float spacingRatio)
+    /// <summary>An explicit particle mass keeps its ratio to the derived one, which goes with the volume each
+    /// particle stands for (<see cref="DerivedParticleMass"/>): the finer lattice must still start at the density the
+    /// scene meant, and each box must still carry the same mass. Boxes of one phase share one mass, so the ratio is
+    /// the phase's, looked up by name.</summary>
+    static void ScaleExplicitMasses(FluidSceneDescription before, FluidSceneDescription after)
     {
-        float volumeRatio = spacingRatio * spacingRatio * spacingRatio;
-        foreach (var box in scene.SpawnBoxes)
+        var ratios = new System.Collections.Generic.Dictionary<string, double>();
+        foreach (var phase in before.Phases())
+            ratios[phase.Name] = DerivedParticleMass.Of(after, phase) / DerivedParticleMass.Of(before, phase);
+        foreach (var box in after.SpawnBoxes)
         {
             if (box.Phase == null || box.Phase.ParticleMass <= 0f) continue;
             box.Phase = box.Phase.Clone();
-            box.Phase.ParticleMass *= volumeRatio;
+            box.Phase.ParticleMass = (float)(box.Phase.ParticleMass * ratios[box.Phase.Name]);
         }
     }
 
@@ -52,14 +56,22 @@ public static class ParticleScaling
         return (int)Math.Min(total, int.MaxValue);
     }
 
+    /// <summary>Sets the spacing (and the support radius with it) and rescales explicit masses. The walls and
+    /// obstacles are sampled from the spacing and support radius at run time (BoundarySampling), so they follow
+    /// without a setting of their own.</summary>
     static void Apply(FluidSceneDescription scene, float spacing)
     {
+        var before = new FluidSceneDescription
+        {
+            Settings = scene.Settings, SpawnBoxes = new System.Collections.Generic.List<SpawnBoxDescription>(scene.SpawnBoxes),
+            Container = scene.Container, Obstacles = scene.Obstacles,
+        };
         var settings = scene.Settings.Clone();
         float ratio = settings.SmoothingRadius / settings.ParticleSpacing;
         settings.ParticleSpacing = spacing;
         settings.SmoothingRadius = spacing * ratio;
-        ScaleExplicitMasses(scene, spacing / scene.Settings.ParticleSpacing);
         scene.Settings = settings;
+        ScaleExplicitMasses(before, scene);
         long total = 0;
         foreach (var box in scene.SpawnBoxes) total += SpawnLayout.Count(settings, box);
         // The scene's MaxParticles guards a Unity session; asking for more particles here is the point.

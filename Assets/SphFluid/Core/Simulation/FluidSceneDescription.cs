@@ -48,11 +48,10 @@ namespace SphFluid.Simulation
         public double RestNumberDensity() =>
             SmoothingKernels.LatticeNumberDensity(Settings.ParticleSpacing, Settings.SmoothingRadius);
 
-        /// <summary>The GPU phase table: one row per distinct phase name, masses derived where 0.</summary>
+        /// <summary>The GPU phase table: one row per distinct phase name, masses derived where 0 (<see cref="DerivedParticleMass"/>).</summary>
         public PhaseProperties[] BuildPhaseTable()
         {
             var phases = Phases();
-            double delta0 = RestNumberDensity();
             var table = new PhaseProperties[phases.Count];
             for (int i = 0; i < phases.Count; i++)
             {
@@ -61,7 +60,7 @@ namespace SphFluid.Simulation
                 {
                     RestDensity = p.RestDensity,
                     Viscosity = p.Viscosity,
-                    ParticleMass = p.ParticleMass > 0f ? p.ParticleMass : (float)(p.RestDensity / delta0),
+                    ParticleMass = p.ParticleMass > 0f ? p.ParticleMass : (float)DerivedParticleMass.Of(this, p),
                     SurfaceTension = p.SurfaceTension,
                     Color = p.Color,
                     FresnelF0 = p.FresnelF0,
@@ -131,6 +130,9 @@ namespace SphFluid.Simulation
                 return;
             }
             var firstOfPhase = new Dictionary<string, SpawnBoxDescription>();
+            // Phase names become diagnostics columns and inspector rows, where "Water" and "water" would read as one
+            // phase twice; names must differ by more than letter case.
+            var firstOfFoldedName = new Dictionary<string, SpawnBoxDescription>(StringComparer.OrdinalIgnoreCase);
             long total = 0;
             for (int b = 0; b < SpawnBoxes.Count; b++)
             {
@@ -153,6 +155,13 @@ namespace SphFluid.Simulation
                                 $"{owner}: phase '{box.Phase.Name}' is defined differently in SpawnBox '{first.Name}' ({first.Phase}) and SpawnBox '{box.Name}' ({box.Phase}); boxes of one phase must agree"));
                     }
                     else firstOfPhase.Add(box.Phase.Name, box);
+                    if (firstOfFoldedName.TryGetValue(box.Phase.Name, out var folded))
+                    {
+                        if (folded.Phase.Name != box.Phase.Name)
+                            errors.Add(new ValidationError(path + "Phase.Name",
+                                $"{owner}: phase name '{box.Phase.Name}' differs from phase '{folded.Phase.Name}' of SpawnBox '{folded.Name}' only by letter case; phase names must differ by more than case (use the same name for the same liquid)"));
+                    }
+                    else firstOfFoldedName.Add(box.Phase.Name, box);
                 }
                 ValidationRules.Finite(errors, owner, path, nameof(SpawnBoxDescription.Center), box.Center, 1e6f, "m");
                 ValidationRules.Rotation(errors, owner, path, nameof(SpawnBoxDescription.Rotation), box.Rotation);

@@ -12,9 +12,9 @@ namespace SphFluid.Simulation
     /// </summary>
     internal static class ParticleMassRule
     {
-        /// <summary>m0 = rho0 / delta0, kg: the mass at which the spawn lattice sits at rest density.</summary>
+        /// <summary>m0, kg: the mass at which the spawn lattice sits at rest density (<see cref="DerivedParticleMass"/>).</summary>
         internal static double DerivedMass(FluidSceneDescription scene, PhaseDescription phase) =>
-            phase.RestDensity / scene.RestNumberDensity();
+            DerivedParticleMass.Of(scene, phase);
 
         /// <summary>Needs valid settings and a valid rest density.</summary>
         internal static void Validate(FluidSceneDescription scene, PhaseDescription phase, string owner, string path, List<ValidationError> errors)

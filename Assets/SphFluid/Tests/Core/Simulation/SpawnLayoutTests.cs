@@ -10,11 +10,12 @@ namespace SphFluid.Tests.Core.Simulation
         [Test]
         public void Count_IsLatticePointsPerAxis()
         {
+            // 0.05 / 0.02 = 2.5 points: 3 (150 cells of 8.3e-6 m^3 for 125 of 8e-6) is closer in volume than 2 (100).
             var settings = new FluidSettings { ParticleSpacing = 0.02f, SmoothingRadius = 0.04f };
             var box = new SpawnBoxDescription("B", SimulationTestScenes.Water(), Vector3.Zero, new Vector3(0.2f, 0.1f, 0.05f));
             SpawnLayout.CountPerAxis(settings, box, out int nx, out int ny, out int nz);
-            Assert.That(new[] { nx, ny, nz }, Is.EqualTo(new[] { 10, 5, 2 }));
-            Assert.That(SpawnLayout.Count(settings, box), Is.EqualTo(100L));
+            Assert.That(new[] { nx, ny, nz }, Is.EqualTo(new[] { 10, 5, 3 }));
+            Assert.That(SpawnLayout.Count(settings, box), Is.EqualTo(150L));
         }
 
         [Test]
