@@ -22,7 +22,8 @@ namespace SphFluid.Tests.Physics
     {
         const float A = 0.1f, Gravity = 9.81f;
 
-        /// <summary>Martin and Moyce's front for a = 2.25 in, n^2 = 2: (T, Z) read off their figure 3.</summary>
+        /// <summary>Martin and Moyce's front for a = 2.25 in, n^2 = 2: (T, Z) points digitised from their figure 3, as tabulated in the
+        /// PySPH project's dam-break validation data (measurements of the 1952 experiment, not code).</summary>
         static readonly (double T, double Z)[] Measured =
             { (0.832, 1.217), (1.219, 1.474), (1.997, 2.292), (2.547, 2.995), (3.345, 4.134) };
 
