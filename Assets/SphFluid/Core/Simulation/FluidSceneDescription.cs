@@ -92,7 +92,7 @@ namespace SphFluid.Simulation
             return errors;
         }
 
-        void ValidateContainer(List<ValidationError> errors)
+        internal void ValidateContainer(List<ValidationError> errors)
         {
             const string owner = "Container";
             if (Container == null)
