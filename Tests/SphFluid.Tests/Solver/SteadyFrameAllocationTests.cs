@@ -111,6 +111,28 @@ namespace SphFluid.Tests.Solver
             }
         }
 
+        [Test]
+        public void HealthyCheck_AndDriverObservation_AllocateNothing()
+        {
+            var scene = TankWithBall();
+            var check = new HealthCheck(scene, 100);
+            var phases = new[] { new PhaseDiagnostics("Water", 60, 0.01f, 0.05f), new PhaseDiagnostics("Oil", 40, 0.01f, 0.04f) };
+            var healthy = new DiagnosticsReport(1.0, 0.01, 0.2f, 0, 0, phases, 0.5);
+            var spheres = new List<SphereObstacleDescription>(scene.Obstacles);
+            Action frame = () =>
+            {
+                check.ObserveDrivers(scene.Container, spheres);
+                if (check.Check(healthy) != null) throw new InvalidOperationException("the healthy report was refused");
+            };
+            AllocatedBy(frame, Frames);
+            long bytes = AllocatedBy(frame, Frames);
+
+            Assert.That(check.Check(healthy), Is.Null, "a report within every bound is healthy");
+            Assert.That(bytes, Is.EqualTo(0L), $"bytes allocated by {Frames} healthy checks and driver observations");
+            var fast = new DiagnosticsReport(1.0, 0.01, 2f * check.SpeedBound, 0, 0, phases, 0.5);
+            Assert.That(check.Check(fast).Message, Does.Contain("speed of sound"), "a problem still says how the speed bound is made up");
+        }
+
         /// <summary>Managed bytes this thread allocates over <paramref name="frames"/> calls of <paramref name="frame"/>.</summary>
         static long AllocatedBy(Action frame, int frames)
         {

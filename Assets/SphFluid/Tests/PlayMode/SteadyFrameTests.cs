@@ -31,10 +31,6 @@ namespace SphFluid.Tests.PlayMode
         public void DestroyObjects() => _tank.Destroy();
 
         [UnityTest]
-        [Ignore("The engine-free core still allocates in FluidSimulation.Step (measured on a stand-in device, 216 particles, " +
-                "20 sub-steps, object stack allocation off: about 3.1 kB a frame: PipelinePlanner.Plan and a StepReport per frame, CellGrid.SetOn's " +
-                "params int[] and BindParticleBuffers' kernel arrays per sub-step) and in PollDiagnostics (192 B per read-back). " +
-                "Remove this attribute once those are gone.")]
         public IEnumerator SteadyFramesAllocateNoGarbage()
         {
             TestTank.RequireGpu();
