@@ -11,7 +11,7 @@ namespace SphFluid.Tests.Solver
     /// Unity calls <see cref="FluidSimulation.Step"/> and <see cref="FluidSimulation.RequestDiagnostics"/> every frame,
     /// and every byte of garbage they make brings Mono's collector closer to a visible hitch. Measured here on a
     /// <see cref="StandInDevice"/>, so that the bytes are the solver's own, for a tank at rest, a turning container
-    /// and a driven sphere.
+    /// and a driven sphere; and the health check Unity runs on each report.
     /// </summary>
     /// <remarks>
     /// .NET 10 places some objects that never leave a method on the stack, where Mono would allocate them; the test
@@ -108,6 +108,46 @@ namespace SphFluid.Tests.Solver
                 Assert.That(() => sim.UpdateContainer(container),
                     Throws.ArgumentException.With.Message.Contains("Container: Rotation"));
                 Assert.That(sim.Scene.Container.Rotation, Is.EqualTo(Quaternion.Identity), "a refused container changes nothing");
+            }
+        }
+
+        [Test]
+        public void DrivenSphere_StepsWithNoGarbage()
+        {
+            var device = new StandInDevice();
+            using (var sim = new FluidSimulation(device, TankWithBall()))
+            {
+                var spheres = new List<SphereObstacleDescription> { sim.Scene.Obstacles[0].Clone() }; // refilled each frame as Unity does
+                int frameIndex = 0;
+                Action frame = () =>
+                {
+                    frameIndex++;
+                    float x = 0.03f * (float)Math.Sin(0.05 * frameIndex);
+                    spheres[0].Center = BallCentre + new Vector3(x, 0f, 0f);
+                    spheres[0].Velocity = new Vector3(0.03f * 0.05f * (float)Math.Cos(0.05 * frameIndex) / Frame, 0f, 0f);
+                    sim.UpdateObstacles(spheres);
+                    sim.Step(Frame);
+                    sim.RequestDiagnostics();
+                };
+                AllocatedBy(frame, Frames);
+                long bytes = AllocatedBy(frame, Frames);
+
+                Assert.That(sim.Scene.Obstacles[0].Center, Is.EqualTo(spheres[0].Center), "the last centre was taken");
+                Assert.That(sim.Scene.Obstacles[0], Is.Not.SameAs(spheres[0]), "the simulation keeps its own description");
+                Assert.That(bytes, Is.EqualTo(0L), $"bytes allocated by {Frames} frames of a driven sphere");
+            }
+        }
+
+        [Test]
+        public void DrivenSphere_StillRefusesANonFiniteCentre()
+        {
+            using (var sim = new FluidSimulation(new StandInDevice(), TankWithBall()))
+            {
+                var spheres = new List<SphereObstacleDescription> { sim.Scene.Obstacles[0].Clone() };
+                spheres[0].Center = new Vector3(float.NaN, 0.04f, 0f);
+                Assert.That(() => sim.UpdateObstacles(spheres),
+                    Throws.ArgumentException.With.Message.Contains("Sphere 'Ball': Center"));
+                Assert.That(sim.Scene.Obstacles[0].Center, Is.EqualTo(BallCentre), "a refused sphere changes nothing");
             }
         }
 

@@ -61,6 +61,9 @@ namespace SphFluid.Simulation
         DiagnosticsReport _latestDiagnostics, _diagnosticsReport;
         readonly FluidSceneDescription _containerProbe = new FluidSceneDescription();
         readonly List<ValidationError> _containerErrors = new List<ValidationError>();
+        readonly List<ValidationError> _obstacleErrors = new List<ValidationError>();
+        string[,] _obstacleNames; // [sphere, 0] owner and [sphere, 1] path in messages, made for _obstacleNamesFor
+        List<SphereObstacleDescription> _obstacleNamesFor;
         PhaseDiagnostics[] _diagnosticsPhases;
         bool _disposed;
 
@@ -354,6 +357,7 @@ namespace SphFluid.Simulation
                        && now.Velocity == next.Velocity;
             }
             if (same) return;
+            if (MovedOnly(obstacles, count)) return;
 
             var list = new List<SphereObstacleDescription>(count);
             for (int i = 0; i < count; i++) list.Add(obstacles[i]?.Clone());
@@ -367,6 +371,41 @@ namespace SphFluid.Simulation
             _scene.Obstacles = list;
             UploadObstacles();
             if (reshaped) CreateBoundary();
+        }
+
+        /// <summary>The same spheres (count, names, radii) at new centres or speeds, as a driven sphere is every frame:
+        /// checked with the sphere rules under names made once, and copied into the simulation's own descriptions, so
+        /// that nothing is allocated. False when more than that changed (the caller then replaces the list).</summary>
+        bool MovedOnly(IReadOnlyList<SphereObstacleDescription> obstacles, int count)
+        {
+            var current = _scene.Obstacles;
+            if (current.Count != count) return false;
+            for (int i = 0; i < count; i++)
+            {
+                SphereObstacleDescription now = current[i], next = obstacles[i];
+                if (next == null || now.Name != next.Name || now.Radius != next.Radius) return false;
+            }
+            if (_obstacleNamesFor != current)
+            {
+                _obstacleNames = new string[count, 2];
+                for (int i = 0; i < count; i++)
+                {
+                    _obstacleNames[i, 0] = FluidSceneDescription.ObstacleOwner(current[i]);
+                    _obstacleNames[i, 1] = FluidSceneDescription.ObstaclePath(i);
+                }
+                _obstacleNamesFor = current;
+            }
+            _obstacleErrors.Clear();
+            for (int i = 0; i < count; i++)
+                FluidSceneDescription.ValidateObstacle(_obstacleErrors, obstacles[i], _obstacleNames[i, 0], _obstacleNames[i, 1]);
+            if (_obstacleErrors.Count > 0) throw new ArgumentException(Join(_obstacleErrors));
+            for (int i = 0; i < count; i++)
+            {
+                current[i].Center = obstacles[i].Center;
+                current[i].Velocity = obstacles[i].Velocity;
+            }
+            UploadObstacles();
+            return true;
         }
 
         /// <summary>Same count and radii: the boundary particles only move with the spheres.</summary>
