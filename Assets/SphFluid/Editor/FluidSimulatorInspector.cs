@@ -61,6 +61,8 @@ namespace SphFluid.Editor
                 EditorGUILayout.LabelField("Simulated time", simulator.SimulatedTime.ToString("F2", CultureInfo.InvariantCulture) + " s");
                 EditorGUILayout.LabelField("Sub-steps", string.Format(CultureInfo.InvariantCulture, "{0} x {1:F3} ms ({2}){3}",
                     step.Substeps, step.TimeStep * 1000f, step.Limit, step.Capped ? ", capped" : ""));
+                if (simulator.HealthProblem != null)
+                    EditorGUILayout.HelpBox("Paused by the health check: " + simulator.HealthProblem.Message, MessageType.Error);
             }
             using (new EditorGUILayout.HorizontalScope())
             {

@@ -81,6 +81,8 @@ namespace SphFluid.Runtime
             }
 
             _text.AppendFormat(c, "Particles {0}   t = {1:F2} s{2}\n", target.ParticleCount, target.SimulatedTime, target.IsPaused ? "   PAUSED" : "");
+            if (target.HealthProblem != null)
+                _text.Append("UNHEALTHY, paused (R resets): ").Append(target.HealthProblem.Message).Append('\n');
             StepReport step = target.LastStep;
             _text.AppendFormat(c, "Sub-steps {0} x dt {1:F3} ms (stable {2:F3} ms, limited by {3}){4}\n",
                 step.Substeps, step.TimeStep * 1000f, step.StableTimeStep * 1000f, step.Limit, step.Capped ? "  CAPPED: slower than real time" : "");

@@ -111,6 +111,9 @@ namespace SphFluid.Runtime
         Quaternion _containerRotation;
         bool _paused, _stepRequested;
         string _failure, _lastMotionError;
+        HealthCheck _health;
+        HealthProblem _healthProblem;
+        double _lastCheckedTime = double.NaN;
 
         // ------------------------------------------------------------------ read-only state
 
@@ -121,6 +124,9 @@ namespace SphFluid.Runtime
         public string FailureReason => _failure;
 
         public bool IsPaused => _paused;
+
+        /// <summary>The first problem the health check found since start or reset (the simulator paused on it), or null.</summary>
+        public HealthProblem HealthProblem => _healthProblem;
 
         public int ParticleCount => _simulation != null ? _simulation.ParticleCount : 0;
 
@@ -293,6 +299,7 @@ namespace SphFluid.Runtime
                 return;
             }
 
+            _health = new HealthCheck(scene, _simulation.ParticleCount);
             _properties = new MaterialPropertyBlock();
             _containerPosition = _container.transform.position;
             _containerRotation = _container.transform.rotation;
@@ -317,6 +324,10 @@ namespace SphFluid.Runtime
 
         void Shutdown()
         {
+            if (_healthProblem != null) _paused = false; // the pause was the health check's; a new start is healthy
+            _health = null;
+            _healthProblem = null;
+            _lastCheckedTime = double.NaN;
             _simulation?.Dispose();
             _simulation = null;
             _device?.Dispose(); // releases any buffer the simulation did not
@@ -359,10 +370,13 @@ namespace SphFluid.Runtime
                 _lastMotionError = e.Message;
             }
 
+            _health.ObserveDrivers(_simulation.Scene.Container, _simulation.Scene.Obstacles);
             try
             {
                 if (advance && frame > 0f) _simulation.Step(frame);
                 if (requestDiagnostics) _simulation.RequestDiagnostics();
+                DiagnosticsReport report = _simulation.LatestDiagnostics;
+                if (report != null && report.SimulatedTime != _lastCheckedTime) CheckHealth(report);
             }
             catch (Exception e)
             {
@@ -372,6 +386,19 @@ namespace SphFluid.Runtime
                 return;
             }
             Draw();
+        }
+
+        /// <summary>Checks one diagnostics report (each arriving one, from Update; tests pass a made-up one): the
+        /// first problem pauses the simulation and is logged once. Nothing is checked after it until a reset.</summary>
+        internal void CheckHealth(DiagnosticsReport report)
+        {
+            if (_health == null || _healthProblem != null || report == null) return;
+            _lastCheckedTime = report.SimulatedTime;
+            HealthProblem problem = _health.Check(report);
+            if (problem == null) return;
+            _healthProblem = problem;
+            _paused = true;
+            Debug.LogError($"FluidSimulator '{name}': {problem.Message}; paused (Reset respawns)", this);
         }
 
         void PushContainer(float seconds)

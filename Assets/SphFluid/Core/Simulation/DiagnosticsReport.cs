@@ -8,18 +8,26 @@ namespace SphFluid.Simulation
     public sealed class PhaseDiagnostics
     {
         public string Name { get; }
-        public int Count { get; }
+        public int Count { get; private set; }
 
         /// <summary>Mean compression max(0, rho / rho0 - 1) over the phase's particles (Ihmsen et al. 2014's measure:
         /// free-surface particles are under-dense by construction and would hide compression in a signed mean).</summary>
-        public float AverageDensityError { get; }
+        public float AverageDensityError { get; private set; }
 
         /// <summary>Largest compression max(0, rho / rho0 - 1) over the phase's particles.</summary>
-        public float MaxDensityError { get; }
+        public float MaxDensityError { get; private set; }
 
         public PhaseDiagnostics(string name, int count, float averageDensityError, float maxDensityError)
         {
             Name = name;
+            Count = count;
+            AverageDensityError = averageDensityError;
+            MaxDensityError = maxDensityError;
+        }
+
+        /// <summary>New figures for the same phase (FluidSimulation.LatestDiagnostics reuses its report).</summary>
+        internal void Refill(int count, float averageDensityError, float maxDensityError)
+        {
             Count = count;
             AverageDensityError = averageDensityError;
             MaxDensityError = maxDensityError;
@@ -33,34 +41,34 @@ namespace SphFluid.Simulation
     public sealed class DiagnosticsReport
     {
         /// <summary>Sum of particle masses, kg (from per-phase counts times the phase mass: exact).</summary>
-        public double TotalMass { get; }
+        public double TotalMass { get; private set; }
 
         /// <summary>Sum of m v^2 / 2, J.</summary>
-        public double KineticEnergy { get; }
+        public double KineticEnergy { get; private set; }
 
-        public float MaxSpeed { get; }
+        public float MaxSpeed { get; private set; }
 
         /// <summary>Particles with a NaN or infinite position or velocity component.</summary>
-        public int NanCount { get; }
+        public int NanCount { get; private set; }
 
         /// <summary>Particles outside the container box.</summary>
-        public int OutsideCount { get; }
+        public int OutsideCount { get; private set; }
 
         public IReadOnlyList<PhaseDiagnostics> Phases { get; }
 
         /// <summary>Particles the last-resort clamp behind the boundary particles has caught since spawn
         /// (each catch once per integration half-step); zero in a healthy run.</summary>
-        public int ClampHits { get; }
+        public int ClampHits { get; private set; }
 
         /// <summary>Simulated time of the state the figures describe, s.</summary>
-        public double SimulatedTime { get; }
+        public double SimulatedTime { get; private set; }
 
         public int ParticleCount
         {
             get
             {
                 int n = 0;
-                foreach (var p in Phases) n += p.Count;
+                for (int k = 0; k < Phases.Count; k++) n += Phases[k].Count; // not foreach: an interface's enumerator is garbage
                 return n;
             }
         }
@@ -76,6 +84,20 @@ namespace SphFluid.Simulation
             OutsideCount = outsideCount;
             Phases = phases;
             SimulatedTime = simulatedTime;
+        }
+
+        /// <summary>New whole-fluid figures in the same report, so that a running simulation's read-backs make no
+        /// garbage (FluidSimulation.LatestDiagnostics); the phases are refilled by their owner.</summary>
+        internal void Refill(double totalMass, double kineticEnergy, float maxSpeed, int nanCount, int outsideCount,
+            double simulatedTime, int clampHits)
+        {
+            TotalMass = totalMass;
+            KineticEnergy = kineticEnergy;
+            MaxSpeed = maxSpeed;
+            NanCount = nanCount;
+            OutsideCount = outsideCount;
+            SimulatedTime = simulatedTime;
+            ClampHits = clampHits;
         }
 
         public override string ToString()

@@ -91,7 +91,7 @@ namespace SphFluid.Simulation
             return errors;
         }
 
-        void ValidateContainer(List<ValidationError> errors)
+        internal void ValidateContainer(List<ValidationError> errors)
         {
             const string owner = "Container";
             if (Container == null)
@@ -220,18 +220,28 @@ namespace SphFluid.Simulation
             for (int i = 0; i < Obstacles.Count; i++)
             {
                 var o = Obstacles[i];
-                string path = $"Obstacles[{i}].";
+                string path = ObstaclePath(i);
                 if (o == null)
                 {
                     errors.Add(new ValidationError($"Obstacles[{i}]", $"FluidScene: Obstacles[{i}] must be set (was null)"));
                     continue;
                 }
-                string owner = $"Sphere '{o.Name}'";
-                ValidationRules.Finite(errors, owner, path, nameof(SphereObstacleDescription.Center), o.Center, 1e6f, "m");
-                ValidationRules.Positive(errors, owner, path, nameof(SphereObstacleDescription.Radius), o.Radius, 1000f, "m");
-                ValidationRules.Finite(errors, owner, path, nameof(SphereObstacleDescription.Velocity), o.Velocity, 1000f, "m/s");
+                ValidateObstacle(errors, o, ObstacleOwner(o), path);
             }
         }
+
+        /// <summary>The rules of one sphere; <paramref name="owner"/> and <paramref name="path"/> name it in the messages
+        /// (FluidSimulation keeps them, so that a sphere driven every frame is checked without making strings).</summary>
+        internal static void ValidateObstacle(List<ValidationError> errors, SphereObstacleDescription o, string owner, string path)
+        {
+            ValidationRules.Finite(errors, owner, path, nameof(SphereObstacleDescription.Center), o.Center, 1e6f, "m");
+            ValidationRules.Positive(errors, owner, path, nameof(SphereObstacleDescription.Radius), o.Radius, 1000f, "m");
+            ValidationRules.Finite(errors, owner, path, nameof(SphereObstacleDescription.Velocity), o.Velocity, 1000f, "m/s");
+        }
+
+        internal static string ObstacleOwner(SphereObstacleDescription o) => $"Sphere '{o.Name}'";
+
+        internal static string ObstaclePath(int index) => $"Obstacles[{index}].";
 
         bool BoxInsideContainer(SpawnBoxDescription box, out Vector3 outsideCorner)
         {

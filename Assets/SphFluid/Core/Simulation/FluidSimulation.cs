@@ -52,6 +52,19 @@ namespace SphFluid.Simulation
         IReadbackRequest _motionReadback, _diagnosticsReadback;
         double _diagnosticsRequestTime;
         readonly Vector4[] _motionRow = new Vector4[1];
+        // Kept for the simulation's lifetime so that a steady frame makes no garbage (Unity's GC stalls show as hitches).
+        readonly IComputeProgram[] _programs;
+        readonly int[] _diagnosticsKernels;
+        readonly SphereObstacleData[] _obstacleRows = new SphereObstacleData[FluidSceneDescription.MaxObstacles];
+        readonly Vector4[] _diagnosticsRows;
+        readonly SimulationPlan[] _plans = new SimulationPlan[2]; // [container unchanged, container moved]
+        DiagnosticsReport _latestDiagnostics, _diagnosticsReport;
+        readonly FluidSceneDescription _containerProbe = new FluidSceneDescription();
+        readonly List<ValidationError> _containerErrors = new List<ValidationError>();
+        readonly List<ValidationError> _obstacleErrors = new List<ValidationError>();
+        string[,] _obstacleNames; // [sphere, 0] owner and [sphere, 1] path in messages, made for _obstacleNamesFor
+        List<SphereObstacleDescription> _obstacleNamesFor;
+        PhaseDiagnostics[] _diagnosticsPhases;
         bool _disposed;
 
         /// <param name="device">The GPU (Unity's command buffer or the headless Vulkan device).</param>
@@ -84,6 +97,9 @@ namespace SphFluid.Simulation
             _motionFinal = _diagnostics.FindKernel("MotionFinal");
             _diagnosticsPartial = _diagnostics.FindKernel("DiagnosticsPartial");
             _diagnosticsFinal = _diagnostics.FindKernel("DiagnosticsFinal");
+            _programs = new[] { _solver, _diagnostics };
+            _diagnosticsKernels = new[] { _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal };
+            _diagnosticsRows = new Vector4[2 + _phases.Count];
 
             try
             {
@@ -195,7 +211,13 @@ namespace SphFluid.Simulation
 
         void BeginFrame()
         {
-            Plan = PipelinePlanner.Plan(_scene, _containerChanged);
+            // The plan depends on the container's motion and the obstacle count alone (phases and settings are
+            // fixed for the simulation's lifetime): planned again only when those change.
+            int moved = _containerChanged ? 1 : 0;
+            var plan = _plans[moved];
+            if (plan == null || plan.ObstacleCount != _scene.Obstacles.Count)
+                _plans[moved] = plan = PipelinePlanner.Plan(_scene, _containerChanged);
+            Plan = plan;
             foreach (string keyword in SolverKeywords.All)
                 _device.SetKeyword(_solver, keyword, Plan.IsKeywordEnabled(keyword));
             if (Plan.UploadContainerTransform)
@@ -290,10 +312,24 @@ namespace SphFluid.Simulation
             var old = _scene.Container;
             if (old.SamePlacement(container) && old.Velocity == container.Velocity && old.AngularVelocity == container.AngularVelocity)
                 return;
-            // The container's rules read only the settings (its least size), so the probe holds nothing else.
-            var probe = new FluidSceneDescription { Settings = _scene.Settings, Container = container };
-            var errors = ContainerErrors(probe);
-            if (errors.Count > 0) throw new ArgumentException(string.Join("\n", errors));
+            // The container's rules read only the settings (its least size), so the probe holds nothing else;
+            // probe and list are kept because a turning container changes every frame.
+            _containerProbe.Settings = _scene.Settings;
+            _containerProbe.Container = container;
+            _containerErrors.Clear();
+            _containerProbe.ValidateContainer(_containerErrors);
+            _containerProbe.Container = null;
+            if (_containerErrors.Count > 0) throw new ArgumentException(Join(_containerErrors));
+            if (old.Size == container.Size && old.Friction == container.Friction)
+            {
+                // Only placement and motion differ: copied into the simulation's own description, not cloned.
+                old.Position = container.Position;
+                old.Rotation = container.Rotation;
+                old.Velocity = container.Velocity;
+                old.AngularVelocity = container.AngularVelocity;
+                _containerChanged = true;
+                return;
+            }
             _scene.Container = container.Clone();
             _containerChanged = true;
             if (old.Size != container.Size)
@@ -321,6 +357,7 @@ namespace SphFluid.Simulation
                        && now.Velocity == next.Velocity;
             }
             if (same) return;
+            if (MovedOnly(obstacles, count)) return;
 
             var list = new List<SphereObstacleDescription>(count);
             for (int i = 0; i < count; i++) list.Add(obstacles[i]?.Clone());
@@ -334,6 +371,41 @@ namespace SphFluid.Simulation
             _scene.Obstacles = list;
             UploadObstacles();
             if (reshaped) CreateBoundary();
+        }
+
+        /// <summary>The same spheres (count, names, radii) at new centres or speeds, as a driven sphere is every frame:
+        /// checked with the sphere rules under names made once, and copied into the simulation's own descriptions, so
+        /// that nothing is allocated. False when more than that changed (the caller then replaces the list).</summary>
+        bool MovedOnly(IReadOnlyList<SphereObstacleDescription> obstacles, int count)
+        {
+            var current = _scene.Obstacles;
+            if (current.Count != count) return false;
+            for (int i = 0; i < count; i++)
+            {
+                SphereObstacleDescription now = current[i], next = obstacles[i];
+                if (next == null || now.Name != next.Name || now.Radius != next.Radius) return false;
+            }
+            if (_obstacleNamesFor != current)
+            {
+                _obstacleNames = new string[count, 2];
+                for (int i = 0; i < count; i++)
+                {
+                    _obstacleNames[i, 0] = FluidSceneDescription.ObstacleOwner(current[i]);
+                    _obstacleNames[i, 1] = FluidSceneDescription.ObstaclePath(i);
+                }
+                _obstacleNamesFor = current;
+            }
+            _obstacleErrors.Clear();
+            for (int i = 0; i < count; i++)
+                FluidSceneDescription.ValidateObstacle(_obstacleErrors, obstacles[i], _obstacleNames[i, 0], _obstacleNames[i, 1]);
+            if (_obstacleErrors.Count > 0) throw new ArgumentException(Join(_obstacleErrors));
+            for (int i = 0; i < count; i++)
+            {
+                current[i].Center = obstacles[i].Center;
+                current[i].Velocity = obstacles[i].Velocity;
+            }
+            UploadObstacles();
+            return true;
         }
 
         /// <summary>Same count and radii: the boundary particles only move with the spheres.</summary>
@@ -370,7 +442,9 @@ namespace SphFluid.Simulation
         // ---------------------------------------------------------------- diagnostics
 
         /// <summary>Latest diagnostics read back asynchronously (after <see cref="RequestDiagnostics"/>);
-        /// null until one arrives, possibly a frame stale (see <see cref="DiagnosticsReport.SimulatedTime"/>).</summary>
+        /// null until one arrives, possibly a frame stale (see <see cref="DiagnosticsReport.SimulatedTime"/>).
+        /// The simulation refills this one report in place when a newer read-back arrives (a report a frame would
+        /// be garbage a frame): read its figures now, or use <see cref="ReadDiagnostics"/> for a report to keep.</summary>
         public DiagnosticsReport LatestDiagnostics
         {
             get
@@ -380,8 +454,6 @@ namespace SphFluid.Simulation
             }
             private set => _latestDiagnostics = value;
         }
-
-        DiagnosticsReport _latestDiagnostics;
 
         /// <summary>Records the diagnostics reductions and starts their asynchronous read-back
         /// (ignored while the previous one is still in flight).</summary>
@@ -420,23 +492,45 @@ namespace SphFluid.Simulation
             var request = _diagnosticsReadback;
             _diagnosticsReadback = null;
             if (request.HasError) return;
-            var rows = new Vector4[2 + _phases.Count];
-            request.GetData(rows);
-            _latestDiagnostics = ToReport(rows, _diagnosticsRequestTime);
+            request.GetData(_diagnosticsRows);
+            if (_diagnosticsReport == null)
+            {
+                _diagnosticsPhases = NewPhaseRows();
+                _diagnosticsReport = new DiagnosticsReport(0, 0, 0f, 0, 0, _diagnosticsPhases, 0);
+            }
+            Refill(_diagnosticsReport, _diagnosticsPhases, _diagnosticsRows, _diagnosticsRequestTime);
+            _latestDiagnostics = _diagnosticsReport;
+        }
+
+        PhaseDiagnostics[] NewPhaseRows()
+        {
+            var phases = new PhaseDiagnostics[_phases.Count];
+            for (int k = 0; k < phases.Length; k++)
+                phases[k] = new PhaseDiagnostics(_phases[k].Name, 0, 0f, 0f);
+            return phases;
         }
 
         DiagnosticsReport ToReport(Vector4[] rows, double time)
         {
+            var phases = NewPhaseRows();
+            var report = new DiagnosticsReport(0, 0, 0f, 0, 0, phases, time);
+            Refill(report, phases, rows, time);
+            return report;
+        }
+
+        /// <summary>Rows of DiagnosticsFinal: [0] KE, vmax, NaN count, outside count; [1 + k] phase k's count,
+        /// mean and max compression; [1 + phases] clamp hits.</summary>
+        void Refill(DiagnosticsReport report, PhaseDiagnostics[] phases, Vector4[] rows, double time)
+        {
             double mass = 0;
-            var phases = new PhaseDiagnostics[_phases.Count];
             for (int k = 0; k < phases.Length; k++)
             {
                 Vector4 row = rows[1 + k];
                 int count = (int)Math.Round(row.X);
                 mass += (double)count * _phaseTable[k].ParticleMass;
-                phases[k] = new PhaseDiagnostics(_phases[k].Name, count, row.Y, row.Z);
+                phases[k].Refill(count, row.Y, row.Z);
             }
-            return new DiagnosticsReport(mass, rows[0].X, rows[0].Y, (int)Math.Round(rows[0].Z), (int)Math.Round(rows[0].W), phases, time,
+            report.Refill(mass, rows[0].X, rows[0].Y, (int)Math.Round(rows[0].Z), (int)Math.Round(rows[0].W), time,
                 (int)Math.Round(rows[1 + _phases.Count].X));
         }
 
@@ -592,7 +686,7 @@ namespace SphFluid.Simulation
         {
             foreach (int k in _solverKernels)
                 _device.SetBuffer(_solver, k, _ids.Particles, _particles);
-            foreach (int k in new[] { _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal })
+            foreach (int k in _diagnosticsKernels)
                 _device.SetBuffer(_diagnostics, k, _ids.Particles, _particles);
         }
 
@@ -634,7 +728,7 @@ namespace SphFluid.Simulation
             Matrix4x4 containerToWorld = Matrix4x4.Transpose(
                 Matrix4x4.CreateFromQuaternion(rotation) * Matrix4x4.CreateTranslation(c.Position));
             var clampExtent = c.Size * 0.5f - new Vector3(ClampInset * _scene.Settings.ParticleSpacing);
-            foreach (var program in new[] { _solver, _diagnostics })
+            foreach (var program in _programs)
             {
                 _device.SetMatrix(program, _ids.WorldToContainer, worldToContainer);
                 _device.SetMatrix(program, _ids.ContainerToWorld, containerToWorld);
@@ -651,12 +745,13 @@ namespace SphFluid.Simulation
 
         void UploadObstacles()
         {
-            var rows = new SphereObstacleData[FluidSceneDescription.MaxObstacles];
+            var rows = _obstacleRows;
             int count = _scene.Obstacles == null ? 0 : _scene.Obstacles.Count;
             for (int i = 0; i < count; i++)
                 rows[i] = new SphereObstacleData(_scene.Obstacles[i]);
+            if (count == 0) rows[0] = default;
             _obstacles.SetData(rows, 0, 0, Math.Max(count, 1));
-            foreach (var program in new[] { _solver, _diagnostics })
+            foreach (var program in _programs)
                 _device.SetInt(program, _ids.ObstacleCount, count);
             _boundaryMoved = true;
         }
@@ -675,12 +770,11 @@ namespace SphFluid.Simulation
             };
         }
 
-        static List<string> ContainerErrors(FluidSceneDescription scene)
+        static string Join(List<ValidationError> errors)
         {
-            var errors = new List<string>();
-            foreach (var e in scene.Validate())
-                if (e.Field.StartsWith("Container", StringComparison.Ordinal)) errors.Add(e.Message);
-            return errors;
+            var messages = new string[errors.Count];
+            for (int i = 0; i < messages.Length; i++) messages[i] = errors[i].Message;
+            return string.Join("\n", messages);
         }
 
         public void Dispose()

@@ -129,8 +129,9 @@ namespace SphFluid.Simulation
             }
             if (obstacles != null)
             {
-                foreach (var o in obstacles)
+                for (int i = 0; i < obstacles.Count; i++) // not foreach: Unity calls this every frame, and an interface's enumerator is garbage
                 {
+                    var o = obstacles[i];
                     if (o == null) continue;
                     float speed = o.Velocity.Length();
                     if (ValidationRules.IsFinite(speed)) ObstacleSpeed = Math.Max(ObstacleSpeed, speed);
@@ -158,8 +159,9 @@ namespace SphFluid.Simulation
             var speed = SpeedProblem(report, particles);
             if (speed != null) return speed;
 
-            foreach (var phase in report.Phases)
+            for (int k = 0; k < report.Phases.Count; k++)
             {
+                var phase = report.Phases[k];
                 if (!(phase.AverageDensityError <= MeanCompressionBound))
                     return new HealthProblem(t, phase.Name, "mean compression", phase.AverageDensityError, MeanCompressionBound, "", "no subsonic impact compresses a Tait liquid this much");
                 if (!(phase.MaxDensityError <= MaxCompressionBound))
@@ -185,13 +187,10 @@ namespace SphFluid.Simulation
         HealthProblem SpeedProblem(DiagnosticsReport report, IReadOnlyList<Particle> particles)
         {
             float bound = SpeedBound;
-            string why = string.Format(System.Globalization.CultureInfo.InvariantCulture,
-                "{0} x (free fall over the container {1:G3} + spawn {2:G3} + 2 x wall {3:G3} + 2 x obstacle {4:G3} m/s) + {5} x speed of sound {6:G3} m/s",
-                SpeedMargin, FreeFallSpeed, SpawnSpeed, WallSpeed, ObstacleSpeed, AcousticFraction, SpeedOfSound);
             if (particles == null)
             {
                 return report.MaxSpeed > bound
-                    ? new HealthProblem(report.SimulatedTime, "all phases", "speed", report.MaxSpeed, bound, "m/s", why)
+                    ? new HealthProblem(report.SimulatedTime, "all phases", "speed", report.MaxSpeed, bound, "m/s", SpeedReason())
                     : null;
             }
             float fastest = 0f;
@@ -205,9 +204,14 @@ namespace SphFluid.Simulation
             if (!(fastest <= bound))
             {
                 string name = phase >= 0 && phase < _phaseNames.Count ? _phaseNames[phase].Name : "all phases";
-                return new HealthProblem(report.SimulatedTime, name, "speed", fastest, bound, "m/s", why);
+                return new HealthProblem(report.SimulatedTime, name, "speed", fastest, bound, "m/s", SpeedReason());
             }
             return null;
         }
+
+        /// <summary>How the speed bound is made up; composed only for a problem, so that a healthy check makes no garbage.</summary>
+        string SpeedReason() => string.Format(System.Globalization.CultureInfo.InvariantCulture,
+            "{0} x (free fall over the container {1:G3} + spawn {2:G3} + 2 x wall {3:G3} + 2 x obstacle {4:G3} m/s) + {5} x speed of sound {6:G3} m/s",
+            SpeedMargin, FreeFallSpeed, SpawnSpeed, WallSpeed, ObstacleSpeed, AcousticFraction, SpeedOfSound);
     }
 }

@@ -3,7 +3,8 @@ using System.Globalization;
 namespace SphFluid.Simulation
 {
     /// <summary>How one frame was covered: sub-step count and length, and whether the cap made it slower than real time.</summary>
-    public sealed class StepReport
+    /// <remarks>A value, not an object: the solver plans one every frame, and a class would be garbage each time.</remarks>
+    public readonly struct StepReport
     {
         public static readonly StepReport None = new StepReport(0, 0f, 0f, false, 0f, "none");
 
@@ -23,7 +24,9 @@ namespace SphFluid.Simulation
         public float StableTimeStep { get; }
 
         /// <summary>Which condition set <see cref="StableTimeStep"/>: "cfl", "acceleration", "viscous", "capillary" or "max".</summary>
-        public string Limit { get; }
+        public string Limit => _limit ?? "none";
+
+        readonly string _limit; // null only in default(StepReport), which reads as None
 
         public StepReport(int substeps, float timeStep, float simulatedSeconds, bool capped, float stableTimeStep, string limit)
         {
@@ -32,7 +35,7 @@ namespace SphFluid.Simulation
             SimulatedSeconds = simulatedSeconds;
             Capped = capped;
             StableTimeStep = stableTimeStep;
-            Limit = limit;
+            _limit = limit;
         }
 
         public override string ToString() => string.Format(CultureInfo.InvariantCulture,

@@ -94,6 +94,8 @@ namespace SphFluid.Sorting
         private readonly Matrix4x4 worldToGridRows;
         private IComputeDevice idsDevice;
         private int worldToGridId, gridDimsId, gridCellCountId;
+        // SetInts takes params int[]: one array for the grid's lifetime, not one per sub-step.
+        private readonly int[] dims = new int[3];
 
         /// <summary>Grid coordinates (units of h, before flooring) of a world point.</summary>
         public Vector3 GridPositionOf(Vector3 world)
@@ -140,7 +142,10 @@ namespace SphFluid.Sorting
                 idsDevice = device;
             }
             device.SetMatrix(program, worldToGridId, WorldToGrid);
-            device.SetInts(program, gridDimsId, DimX, DimY, DimZ);
+            dims[0] = DimX;
+            dims[1] = DimY;
+            dims[2] = DimZ;
+            device.SetInts(program, gridDimsId, dims);
             device.SetInt(program, gridCellCountId, CellCount);
         }
 

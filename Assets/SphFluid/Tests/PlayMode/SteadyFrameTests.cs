@@ -31,14 +31,30 @@ namespace SphFluid.Tests.PlayMode
         public void DestroyObjects() => _tank.Destroy();
 
         [UnityTest]
-        [Ignore("The engine-free core still allocates in FluidSimulation.Step (measured on a stand-in device, 216 particles, " +
-                "20 sub-steps, object stack allocation off: about 3.1 kB a frame: PipelinePlanner.Plan and a StepReport per frame, CellGrid.SetOn's " +
-                "params int[] and BindParticleBuffers' kernel arrays per sub-step) and in PollDiagnostics (192 B per read-back). " +
-                "Remove this attribute once those are gone.")]
         public IEnumerator SteadyFramesAllocateNoGarbage()
         {
             TestTank.RequireGpu();
-            FluidSimulator simulator = _tank.CreateFluid(true);
+            return FramesAllocateNoGarbage(_tank.CreateFluid(true), null);
+        }
+
+        /// <summary>A turning container and a driven sphere change the scene every frame: still no garbage.</summary>
+        [UnityTest]
+        public IEnumerator DrivenFramesAllocateNoGarbage()
+        {
+            TestTank.RequireGpu();
+            FluidSimulator simulator = _tank.CreateDrivenFluid();
+            Vector3 ballStart = GameObject.Find("Ball").transform.position;
+            return FramesAllocateNoGarbage(simulator, running =>
+            {
+                Assert.That(running.Plan.UploadContainerTransform, Is.True, "the container was still turning");
+                Assert.That(running.Simulation.Scene.Obstacles[0].Center.X, Is.Not.EqualTo(ballStart.x), "the sphere was driven");
+                Assert.That(running.HealthProblem, Is.Null, running.HealthProblem?.Message);
+            });
+        }
+
+        /// <param name="whileRunning">Checks of the running fluid, after the measured frames (null: none).</param>
+        IEnumerator FramesAllocateNoGarbage(FluidSimulator simulator, System.Action<FluidSimulator> whileRunning)
+        {
             for (int i = 0; i < WarmUpFrames; i++) yield return null;
             Assert.That(simulator.IsRunning, Is.True, simulator.FailureReason);
 
@@ -53,6 +69,7 @@ namespace SphFluid.Tests.PlayMode
                     yield return null;
                     fluid[i] = allocated.LastValue; // the frame that just ended, its fluid step included
                 }
+                whileRunning?.Invoke(simulator);
 
                 // The same frames without the fluid: what the editor and the test runner allocate by themselves.
                 simulator.enabled = false;

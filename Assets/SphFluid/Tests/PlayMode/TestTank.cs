@@ -76,6 +76,28 @@ namespace SphFluid.Tests.PlayMode
             return simulator;
         }
 
+        /// <summary>The tank with its sphere, both set moving from the first frame: the container turns slowly about z
+        /// (<see cref="ContainerSpinner"/>) and the sphere swings 0.1 m along x (<see cref="SphereDriver"/>).</summary>
+        public FluidSimulator CreateDrivenFluid()
+        {
+            FluidSimulator simulator = CreateFluid(true);
+            ContainerSpinner spinner = Find("Tank").AddComponent<ContainerSpinner>();
+            Set(spinner, "angularSpeed", 20f);
+            Set(spinner, "startDelay", 0f);
+            SphereDriver driver = Find("Ball").AddComponent<SphereDriver>();
+            Set(driver, "travel", new Vector3(-0.1f, 0f, 0f));
+            Set(driver, "period", 2f);
+            Set(driver, "startDelay", 0f);
+            return simulator;
+        }
+
+        GameObject Find(string objectName)
+        {
+            GameObject found = _objects.Find(o => o != null && o.name == objectName);
+            Assert.That(found, Is.Not.Null, $"the tank has no object '{objectName}'");
+            return found;
+        }
+
         /// <summary>Destroys every object this tank created (call from [TearDown]).</summary>
         public void Destroy()
         {
