@@ -75,6 +75,18 @@ namespace SphFluid.Tests.Solver
         }
 
         [Test]
+        public void AFrictionChangeAloneIsTaken()
+        {
+            using (var sim = new FluidSimulation(GpuTestDevice.Shared, TankWithBall()))
+            {
+                var slip = sim.Scene.Container.Clone();
+                slip.Friction = WallFriction.Slip;
+                sim.UpdateContainer(slip);
+                Assert.That(sim.Scene.Container.Friction, Is.EqualTo(WallFriction.Slip));
+            }
+        }
+
+        [Test]
         public void MovedSphere_IsTaken_AndAnInvalidOneIsStillRefused()
         {
             using (var sim = new FluidSimulation(GpuTestDevice.Shared, TankWithBall()))

@@ -310,7 +310,8 @@ namespace SphFluid.Simulation
             ThrowIfDisposed();
             if (container == null) throw new ArgumentNullException(nameof(container));
             var old = _scene.Container;
-            if (old.SamePlacement(container) && old.Velocity == container.Velocity && old.AngularVelocity == container.AngularVelocity)
+            if (old.SamePlacement(container) && old.Velocity == container.Velocity && old.AngularVelocity == container.AngularVelocity
+                && old.Friction == container.Friction)
                 return;
             // The container's rules read only the settings (its least size), so the probe holds nothing else;
             // probe and list are kept because a turning container changes every frame.
