@@ -88,6 +88,26 @@ namespace SphFluid.Reference
             return placed;
         }
 
+        /// <summary>The wall's outward normal at a placed boundary particle: the container faces it lies beyond, or
+        /// towards the sphere's centre.</summary>
+        Double3 WallNormal(BoundaryParticle wall)
+        {
+            var x = new Double3(wall.Position);
+            if (wall.Owner == BoundaryParticle.ContainerOwner)
+            {
+                var q = ToLocal(x);
+                var half = new Double3(Container.Size * 0.5f);
+                var beyond = Double3.Zero;
+                for (int axis = 0; axis < 3; axis++)
+                    beyond[axis] = Math.Max(Math.Abs(q[axis]) - half[axis], 0.0) * Math.Sign(q[axis]);
+                double length = beyond.Length();
+                return length > 0 ? ToWorldDirection(beyond / length) : Double3.Zero;
+            }
+            var inward = new Double3(Obstacles[(int)wall.Owner].Center) - x;
+            double l = inward.Length();
+            return l > 0 ? inward / l : Double3.Zero;
+        }
+
         /// <summary>Density, pressure, normals, accelerations and XSPH corrections of a particle state
         /// (as FluidSimulation.ComputeForces leaves them). Normals are zero when no phase has surface tension.</summary>
         public ReferenceState Evaluate(Particle[] particles)
@@ -149,6 +169,7 @@ namespace SphFluid.Reference
             }
             double speedOfSound = Math.Sqrt(_settings.Stiffness * _settings.Gamma / MinRestDensity());
             double artificial = _settings.ArtificialViscosity * speedOfSound * 0.5 * _h;
+            double wallArtificial = FluidSimulation.WallContactDamping * speedOfSound * 0.5 * _h;
             double friction = Container.Friction == WallFriction.NoSlip ? 1.0 : 0.0;
             for (int i = 0; i < n; i++)
             {
@@ -197,6 +218,10 @@ namespace SphFluid.Reference
                     force += (v[i] - wallVelocity) * (2 * friction * phaseI.Viscosity * weight / (di * di) * Double3.Dot(rib, gradient) / (r2 + 0.01 * _h2));
                     double approach = Math.Min(0.0, Double3.Dot(v[i] - wallVelocity, rib)) / (r2 + 0.01 * _h2);
                     force += gradient * (artificial * s.Density[i] * weight / (di * di) * approach);
+                    var normal = WallNormal(walls[b]);
+                    var intoWall = normal * Math.Max(0.0, Double3.Dot(v[i] - wallVelocity, normal));
+                    double contact = Math.Min(0.0, Double3.Dot(intoWall, rib)) / (r2 + 0.01 * _h2);
+                    force += gradient * (wallArtificial * s.Density[i] * weight / (di * di) * contact);
                 }
                 s.InternalForce[i] = force;
                 s.Acceleration[i] = force / mi + gravity;

@@ -33,12 +33,20 @@ float3 ViscosityForcePair(float mixedViscosity, float3 velocityI, float3 velocit
 // (gradW_ij points from i towards j; with v_ij . r_ij < 0 the pair is pushed apart: antisymmetric and
 // momentum-conserving.) _ArtificialViscosity = alpha c h (m^2/s), precomputed.
 float _ArtificialViscosity;
+float _WallArtificialViscosity; // alpha_w c h for the contact damping against boundary particles (SphBoundary.hlsl)
 
 float3 ArtificialViscosityForcePair(float3 velocityI, float3 velocityJ, float3 rij, float r2, float3 gradient,
                                     float meanDensity, float volumeIJ)
 {
     float approach = min(0.0, dot(velocityI - velocityJ, rij)) / (r2 + 0.01 * _SmoothingRadius2);
     return (_ArtificialViscosity * meanDensity * volumeIJ * approach) * gradient;
+}
+
+// The same against a boundary particle, for a given relative velocity (the part into the wall) and coefficient.
+float3 WallArtificialViscosityForcePair(float3 relativeVelocity, float3 rib, float r2, float3 gradient, float density, float volumeIB)
+{
+    float approach = min(0.0, dot(relativeVelocity, rib)) / (r2 + 0.01 * _SmoothingRadius2);
+    return (_WallArtificialViscosity * density * volumeIB * approach) * gradient;
 }
 
 #endif
