@@ -86,23 +86,19 @@ namespace SphFluid.Tests.Solver
         }
 
         /// <summary>Forwards to a real device and counts the buffers created and not yet disposed.</summary>
-        sealed class CountingDevice : IComputeDevice
+        sealed class CountingDevice : ForwardingDevice
         {
-            readonly IComputeDevice _inner;
             readonly HashSet<CountingBuffer> _live = new HashSet<CountingBuffer>();
 
-            public CountingDevice(IComputeDevice inner) { _inner = inner; }
+            public CountingDevice(IComputeDevice inner) : base(inner) { }
 
             public int Live => _live.Count;
             public int Created { get; private set; }
             public IEnumerable<string> LiveNames() { foreach (var b in _live) yield return b.Name; }
 
-            public string DeviceName => _inner.DeviceName;
-            public IComputeProgram LoadProgram(string name) => _inner.LoadProgram(name);
-
-            public IComputeBuffer CreateBuffer(string name, int count, int stride)
+            public override IComputeBuffer CreateBuffer(string name, int count, int stride)
             {
-                var buffer = new CountingBuffer(this, _inner.CreateBuffer(name, count, stride));
+                var buffer = new CountingBuffer(this, Inner.CreateBuffer(name, count, stride));
                 _live.Add(buffer);
                 Created++;
                 return buffer;
@@ -110,23 +106,7 @@ namespace SphFluid.Tests.Solver
 
             internal void Released(CountingBuffer buffer) => _live.Remove(buffer);
 
-            static IComputeBuffer Unwrap(IComputeBuffer b) => b is CountingBuffer c ? c.Inner : b;
-
-            public int PropertyId(string name) => _inner.PropertyId(name);
-            public void SetBuffer(IComputeProgram program, int kernel, int propertyId, IComputeBuffer buffer) => _inner.SetBuffer(program, kernel, propertyId, Unwrap(buffer));
-            public void SetInt(IComputeProgram program, int propertyId, int value) => _inner.SetInt(program, propertyId, value);
-            public void SetFloat(IComputeProgram program, int propertyId, float value) => _inner.SetFloat(program, propertyId, value);
-            public void SetInts(IComputeProgram program, int propertyId, params int[] values) => _inner.SetInts(program, propertyId, values);
-            public void SetVector(IComputeProgram program, int propertyId, Vector4 value) => _inner.SetVector(program, propertyId, value);
-            public void SetMatrix(IComputeProgram program, int propertyId, Matrix4x4 value) => _inner.SetMatrix(program, propertyId, value);
-            public void SetKeyword(IComputeProgram program, string keyword, bool enabled) => _inner.SetKeyword(program, keyword, enabled);
-            public void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ) => _inner.Dispatch(program, kernel, groupsX, groupsY, groupsZ);
-            public void BeginSample(string name) => _inner.BeginSample(name);
-            public void EndSample(string name) => _inner.EndSample(name);
-            public void Submit() => _inner.Submit();
-            public bool TryGetSampleMilliseconds(string name, out double milliseconds) => _inner.TryGetSampleMilliseconds(name, out milliseconds);
-            public IReadbackRequest RequestReadback(IComputeBuffer buffer) => _inner.RequestReadback(Unwrap(buffer));
-            public void Dispose() { }
+            protected override IComputeBuffer Unwrap(IComputeBuffer b) => b is CountingBuffer c ? c.Inner : b;
         }
 
         sealed class CountingBuffer : IComputeBuffer
