@@ -19,7 +19,7 @@ namespace SphFluid.Tests.Health
             using (var sim = new FluidSimulation(GpuTestDevice.Shared, scene))
             {
                 sim.ReadMotion(out float speed, out float acceleration);
-                TestContext.WriteLine($"first force pass: max |a| = {acceleration:G4} m/s^2; planned dt {sim.TimeStep.StableTimeStep(out string limit) * 1000:G4} ms ({limit})");
+                TestContext.Out.WriteLine($"first force pass: max |a| = {acceleration:G4} m/s^2; planned dt {sim.TimeStep.StableTimeStep(out string limit) * 1000:G4} ms ({limit})");
                 Assert.That(acceleration, Is.GreaterThan(10f * 9.81f), "the compressed lattice pushes far harder than gravity");
                 Assert.That(sim.TimeStep.MaxAcceleration, Is.EqualTo(acceleration), "the controller plans with the read-back figure");
                 Assert.That(sim.TimeStep.StableTimeStep(), Is.EqualTo(Math.Min(

@@ -38,7 +38,7 @@ namespace SphFluid.Tests.Health
             run.Refusals = scene.Validate().Select(e => e.Message).ToArray();
             if (run.Refused)
             {
-                TestContext.WriteLine("refused: " + string.Join("\n  ", run.Refusals));
+                TestContext.Out.WriteLine("refused: " + string.Join("\n  ", run.Refusals));
                 return run;
             }
             var clock = Stopwatch.StartNew();
@@ -56,7 +56,7 @@ namespace SphFluid.Tests.Health
                     run.Substeps += step.Substeps;
                     run.Observe(sim, particles);
                 }
-                TestContext.WriteLine($"{run.Frames} frames, {run.Substeps} sub-steps, {sim.SimulatedTime:F3} s simulated in {clock.Elapsed.TotalSeconds:F1} s wall; "
+                TestContext.Out.WriteLine($"{run.Frames} frames, {run.Substeps} sub-steps, {sim.SimulatedTime:F3} s simulated in {clock.Elapsed.TotalSeconds:F1} s wall; "
                     + $"speed bound {run.Check.SpeedBound:G4} m/s, fastest {run.FastestSeen:G4} m/s, most compressed {run.MostCompressed:P2} (bounds {run.Check.MeanCompressionBound:P1} mean, {run.Check.MaxCompressionBound:P1} max), "
                     + $"largest energy growth {run.MostEnergyGained:G4} J (bound {run.Check.EnergyBound:G4} J{(run.Check.Driven ? ", not checked: driven" : "")}); last: {run.Last}"
                     + (run.Problem != null ? "\nPROBLEM: " + run.Problem.Message : ""));

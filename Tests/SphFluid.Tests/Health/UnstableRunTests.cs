@@ -35,7 +35,7 @@ namespace SphFluid.Tests.Health
                     sim.Particles.GetData(particles);
                     problem = check.Check(sim.ReadDiagnostics(), particles);
                 }
-                TestContext.WriteLine(problem?.Message);
+                TestContext.Out.WriteLine(problem?.Message);
                 Assert.That(problem, Is.Not.Null, "a step five times the CFL limit must not pass as healthy");
                 Assert.That(problem.Time, Is.LessThan(0.5));
                 Assert.That(problem.Message, Does.StartWith("unhealthy at t = "));
@@ -61,7 +61,7 @@ namespace SphFluid.Tests.Health
 
             int code = run.Execute();
 
-            TestContext.WriteLine(stderr.ToString());
+            TestContext.Out.WriteLine(stderr.ToString());
             Assert.That(code, Is.EqualTo(ExitCodes.SimulationFailed), stdout.ToString());
             Assert.That(stderr.ToString(), Does.Contain("simulate: unhealthy at t = ").And.Contains("phase '").And.Contains("exceeds the bound"));
             Assert.That(run.Summary.SimulatedSeconds, Is.LessThan(0.1),

@@ -19,7 +19,7 @@ namespace SphFluid.Tests.Integrity
             var clock = Stopwatch.StartNew();
             var error = Deadline.Within(seconds, () => Deadline.Thrown(() => UnityYamlFile.Parse(text, path)), "parsing " + path);
             elapsed = clock.Elapsed.TotalSeconds;
-            TestContext.WriteLine($"{path}: {text.Length} chars refused in {elapsed:F2} s: {error?.Message}");
+            TestContext.Out.WriteLine($"{path}: {text.Length} chars refused in {elapsed:F2} s: {error?.Message}");
             Assert.That(error, Is.TypeOf<UnityYamlException>(), error?.ToString());
             return (UnityYamlException)error;
         }

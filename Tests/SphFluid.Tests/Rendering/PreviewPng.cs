@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using System.IO.Compression;
+using System.IO.Hashing;
 using System.Numerics;
 using System.Text;
 
@@ -60,21 +61,12 @@ namespace SphFluid.Tests.Rendering
             byte[] typeBytes = Encoding.ASCII.GetBytes(type);
             stream.Write(typeBytes, 0, 4);
             stream.Write(data, 0, data.Length);
-            uint crc = Crc32(typeBytes, 0xFFFFFFFFu);
-            crc = Crc32(data, crc) ^ 0xFFFFFFFFu;
+            var crc = new Crc32();
+            crc.Append(typeBytes);
+            crc.Append(data);
             var crcBytes = new byte[4];
-            WriteBigEndian(crcBytes, 0, crc);
+            WriteBigEndian(crcBytes, 0, crc.GetCurrentHashAsUInt32());
             stream.Write(crcBytes, 0, 4);
-        }
-
-        static uint Crc32(byte[] data, uint crc)
-        {
-            foreach (byte b in data)
-            {
-                crc ^= b;
-                for (int k = 0; k < 8; k++) crc = (crc & 1u) != 0 ? 0xEDB88320u ^ (crc >> 1) : crc >> 1;
-            }
-            return crc;
         }
 
         static void WriteBigEndian(byte[] target, int offset, uint value)

@@ -36,7 +36,7 @@ namespace SphFluid.Tests.Runner
                 int code = Program.Run(args, o, e);
                 return new Outcome { Code = code, Stdout = o.ToString(), Stderr = e.ToString() };
             }, "sphfluid " + string.Join(" ", args.Select(a => a.Length > 60 ? a.Substring(0, 60) + "..." : a)));
-            TestContext.WriteLine($"exit {outcome.Code}: {outcome.Stderr}");
+            TestContext.Out.WriteLine($"exit {outcome.Code}: {outcome.Stderr}");
             Assert.That(outcome.Stderr, Does.Not.Contain("Exception"), "a message for the reader, never an exception type name");
             return outcome;
         }

@@ -33,7 +33,7 @@ namespace SphFluid.Tests.Runner
             Assert.That(File.Exists(Path.Combine(outDir, "frame_0000.png")), Is.True);
             Assert.That(File.Exists(Path.Combine(outDir, "frame_0001.png")), Is.True);
             byte[] png = File.ReadAllBytes(Path.Combine(outDir, "frame_0000.png"));
-            var chunks = PngDecoder.Chunks(png);
+            var chunks = PngChunks.Read(png);
             foreach (var c in chunks) Assert.That(c.StoredCrc, Is.EqualTo(c.ComputedCrc), c.Type + " CRC");
             Assert.That(File.ReadAllText(Path.Combine(outDir, "summary.txt")), Does.Contain("result: ok"));
             Assert.That(stdout.ToString(), Does.Contain("plan: 1 phase, 0 obstacles"));

@@ -15,7 +15,7 @@ namespace SphFluid.Tests.Solver
     {
         const float Frame = 1f / 60f;
 
-        static void Log(string line) => TestContext.WriteLine(line);
+        static void Log(string line) => TestContext.Out.WriteLine(line);
 
         /// <summary>Runs frames of 1/60 s until <paramref name="seconds"/> of simulated time, logging diagnostics now and then.</summary>
         static DiagnosticsReport Run(FluidSimulation sim, double seconds, Action<FluidSimulation, int> perFrame = null)

@@ -144,7 +144,7 @@ namespace SphFluid.Tests.Solver
                 double e = Math.Abs(actual(i) - expected(i)) / scale;
                 if (e > worst) { worst = e; worstAt = i; }
             }
-            TestContext.WriteLine($"{what}: scale {scale:G4}, worst relative error {worst:E2}");
+            TestContext.Out.WriteLine($"{what}: scale {scale:G4}, worst relative error {worst:E2}");
             Assert.That(worst, Is.LessThanOrEqualTo(Tolerance),
                 $"{what}: particle id {worstAt} expected {(worstAt >= 0 ? expected(worstAt) : 0):G8} got {(worstAt >= 0 ? actual(worstAt) : 0):G8} (scale {scale:G4})");
         }
@@ -161,7 +161,7 @@ namespace SphFluid.Tests.Solver
                 double e = Math.Max(Math.Abs(d.X), Math.Max(Math.Abs(d.Y), Math.Abs(d.Z))) / scale;
                 if (e > worst) { worst = e; worstAt = i; }
             }
-            TestContext.WriteLine($"{what}: scale {scale:G4}, worst relative component error {worst:E2}");
+            TestContext.Out.WriteLine($"{what}: scale {scale:G4}, worst relative component error {worst:E2}");
             Assert.That(worst, Is.LessThanOrEqualTo(Tolerance),
                 $"{what}: particle id {worstAt} expected {(worstAt >= 0 ? expected(worstAt).ToString() : "")} got {(worstAt >= 0 ? actual(worstAt).ToString() : "")} (scale {scale:G4})");
         }
