@@ -219,7 +219,8 @@ namespace SphFluid.Reference
                     double approach = Math.Min(0.0, Double3.Dot(v[i] - wallVelocity, rib)) / (r2 + 0.01 * _h2);
                     force += gradient * (artificial * s.Density[i] * weight / (di * di) * approach);
                     var normal = WallNormal(walls[b]);
-                    var intoWall = normal * Math.Max(0.0, Double3.Dot(v[i] - wallVelocity, normal));
+                    bool underDense = s.Density[i] < 0.97 * phaseI.RestDensity;
+                    var intoWall = underDense ? normal * Math.Max(0.0, Double3.Dot(v[i] - wallVelocity, normal)) : Double3.Zero;
                     double contact = Math.Min(0.0, Double3.Dot(intoWall, rib)) / (r2 + 0.01 * _h2);
                     force += gradient * (wallArtificial * s.Density[i] * weight / (di * di) * contact);
                 }

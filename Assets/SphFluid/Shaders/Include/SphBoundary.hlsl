@@ -28,9 +28,10 @@
 // nothing above stops it from drifting into a wall and the clamp caught it (18 times in a quarter turn of a
 // half-full container). Besides the fluid's own artificial viscosity, Monaghan's artificial viscosity
 // (SphViscosity.hlsl) is applied against each boundary particle a second time with the velocity's component
-// into the wall only, alpha_w = 0.5: it brakes motion into the wall and leaves sliding along it alone (a
-// 25 times stronger isotropic alpha also stopped the clamp hits, but slowed a dam-break front 6-7 % below
-// Martin & Moyce's measurement).
+// into the wall only, alpha_w = 0.5, and only for under-dense particles (UnderDense): it brakes their motion
+// into the wall, where the wall pressure cannot, and leaves sliding along it and the bulk alone. (A 25 times stronger isotropic alpha also stopped the clamp hits, but slowed a
+// dam-break front 6-7 % below Martin & Moyce's measurement; braking the bulk too slowed oil rising through
+// water in a narrow tank by half.)
 // A clamp (after every position update) remains as the last resort: a particle centre beyond the wall
 // (or inside a sphere) is put back on it and loses its outward velocity. Every catch is counted in
 // _ClampHits[0], which the diagnostics report; it stays at zero in normal runs.
@@ -110,6 +111,13 @@ float3 WallNormal(BoundaryParticle wall)
     float3 inward = _Obstacles[min(wall.owner, max(_ObstacleCount, 1u) - 1u)].center - wall.position;
     float length2 = dot(inward, inward);
     return length2 > 0.0 ? inward * rsqrt(length2) : float3(0.0, 0.0, 0.0);
+}
+
+// A particle the summation density sees clearly short of neighbours (a free surface, a splash): more than 3 %
+// below its rest density, where the equation of state gives it no pressure to meet the wall's with.
+bool UnderDense(float density, float restDensity)
+{
+    return density < 0.97 * restDensity;
 }
 
 // The part of a fluid particle's velocity relative to the wall that points into it (0 when moving away).
