@@ -289,7 +289,8 @@ namespace SphFluid.Runtime
             _device = new UnityComputeDevice(new[] { solverShader, diagnosticsShader, sortShader, prefixSumShader });
             try
             {
-                _simulation = new FluidSimulation(_device, scene);
+                // A player frame must never wait on the GPU: plan from asynchronous read-backs.
+                _simulation = new FluidSimulation(_device, scene) { ReproducibleStepPlanning = false };
             }
             catch (Exception e)
             {

@@ -185,17 +185,36 @@ namespace SphFluid.Simulation
         public StepReport Step(float frameSeconds)
         {
             ThrowIfDisposed();
-            PollMotion();                                           // vmax, amax of an earlier frame
+            if (ReproducibleStepPlanning)
+                ReadMotionIntoTimeStep();                           // vmax, amax of the last frame's end, waited for
+            else
+                PollMotion();                                       // vmax, amax of an earlier frame
             StepReport report = _timeStep.PlanFrame(frameSeconds);  // n sub-steps of dt
             BeginFrame();                                           // plan, keywords, container upload
             for (int s = 0; s < report.Substeps; s++)
                 Substep(report.TimeStep);
-            if (report.Substeps > 0)
+            if (report.Substeps > 0 && !ReproducibleStepPlanning)
                 RequestMotion();                                    // GPU max-reduction, read back async
             _device.Submit();
             SimulatedTime += report.SimulatedSeconds;
             LastStep = report;
             return report;
+        }
+
+        /// <summary>
+        /// Plan every frame from the motion at the end of the frame before, waiting for its read-back (true, the
+        /// default), or from whichever asynchronous read-back has arrived (false). The asynchronous way never stalls a
+        /// frame on the GPU, which a real-time player needs (the Unity component turns this off), but when a read-back
+        /// arrives depends on timing, so two runs of one scene can take different sub-steps and drift apart. Waiting
+        /// makes a run reproducible bit for bit on one device, which the headless runner and the tests rely on.
+        /// </summary>
+        public bool ReproducibleStepPlanning { get; set; } = true;
+
+        void ReadMotionIntoTimeStep()
+        {
+            if (LastStep.Substeps == 0) return; // nothing moved since Reset, which read the first force pass already
+            ReadMotion(out float maxSpeed, out float maxAcceleration);
+            _timeStep.ReportMotion(maxSpeed, maxAcceleration);
         }
 
         /// <summary>Runs <paramref name="substeps"/> sub-steps of exactly <paramref name="timeStep"/> seconds,
