@@ -23,15 +23,22 @@ namespace SphFluid.Tests.Runner
             return new FluidSimulation(GpuTestDevice.Shared, scene.Description);
         }
 
-        [Test]
-        public void AVtuReadBackEqualsTheGpuBuffers()
+        /// <summary>Steps three frames and reads the particle and density buffers back.</summary>
+        static (Particle[] Particles, Vector4[] Densities) AfterThreeFrames(FluidSimulation sim)
         {
-            using var sim = OilAndWater();
             for (int frame = 0; frame < 3; frame++) sim.Step(1f / 60f);
             var particles = new Particle[sim.ParticleCount];
             var densities = new Vector4[sim.ParticleCount];
             sim.Particles.GetData(particles);
             sim.Densities.GetData(densities);
+            return (particles, densities);
+        }
+
+        [Test]
+        public void AVtuReadBackEqualsTheGpuBuffers()
+        {
+            using var sim = OilAndWater();
+            var (particles, densities) = AfterThreeFrames(sim);
             string path = Path.Combine(RunnerPaths.ScratchFolder("gpu-vtu"), "particles_0000.vtu");
 
             VtuParticles.Write(path, sim.SimulatedTime, particles, densities);
@@ -67,11 +74,7 @@ namespace SphFluid.Tests.Runner
         public void CpuCompressionMatchesTheGpuReduction()
         {
             using var sim = OilAndWater();
-            for (int frame = 0; frame < 3; frame++) sim.Step(1f / 60f);
-            var particles = new Particle[sim.ParticleCount];
-            var densities = new Vector4[sim.ParticleCount];
-            sim.Particles.GetData(particles);
-            sim.Densities.GetData(densities);
+            var (particles, densities) = AfterThreeFrames(sim);
             var settings = sim.Scene.Settings;
 
             var measures = FluidMeasures.Measure(sim.SimulatedTime, particles, densities, sim.PhaseRows, sim.Scene.Container, settings.Gravity, settings.ParticleSpacing, settings.SmoothingRadius);
