@@ -20,6 +20,18 @@ namespace SphFluid.Simulation
         /// (SmoothingKernels.LatticeGradientReproduction).</summary>
         public float SmoothingRadius { get; set; } = 0.04f;
 
+        /// <summary>How pressure is computed: Tait equation of state (WCSPH) or iterative incompressible solves (DFSPH).</summary>
+        public PressureSolver PressureSolver { get; set; } = PressureSolver.Wcsph;
+
+        /// <summary>DFSPH: largest average density error the constant-density solve accepts, %, in [0.001, 10].</summary>
+        public float DensityTolerance { get; set; } = 0.1f;
+
+        /// <summary>DFSPH: largest average rate of density change the divergence-free solve accepts, %/s, in [0.01, 1000].</summary>
+        public float DivergenceTolerance { get; set; } = 10f;
+
+        /// <summary>DFSPH: most iterations of each solve per sub-step, in [1, 1000].</summary>
+        public int MaxSolverIterations { get; set; } = 100;
+
         /// <summary>Tait stiffness k, Pa, in [1, 1e9]; speed of sound c = sqrt(k gamma / rho0). The scene narrows it:
         /// c must exceed the scene's fastest speed and stay within 100 times it (<see cref="SpeedOfSoundRule"/>).</summary>
         public float Stiffness { get; set; } = 50000f;
@@ -74,6 +86,9 @@ namespace SphFluid.Simulation
                     MinSupportRatio * ParticleSpacing, MaxSupportRatio * ParticleSpacing, "m (2 to 4 particle spacings)");
             }
             ValidationRules.InRange(errors, owner, path, nameof(Stiffness), Stiffness, 1f, 1e9f, "Pa");
+            ValidationRules.InRange(errors, owner, path, nameof(DensityTolerance), DensityTolerance, 0.001f, 10f, "%");
+            ValidationRules.InRange(errors, owner, path, nameof(DivergenceTolerance), DivergenceTolerance, 0.01f, 1000f, "%/s");
+            ValidationRules.InRange(errors, owner, path, nameof(MaxSolverIterations), MaxSolverIterations, 1, 1000, "");
             ValidationRules.InRange(errors, owner, path, nameof(Gamma), Gamma, 1f, 10f, "");
             ValidationRules.Finite(errors, owner, path, nameof(Gravity), Gravity, 1000f, "m/s^2");
             ValidationRules.InRange(errors, owner, path, nameof(XsphEpsilon), XsphEpsilon, 0f, 1f, "");
