@@ -60,6 +60,18 @@ namespace SphFluid.Simulation
         /// (each catch once per integration half-step); zero in a healthy run.</summary>
         public int ClampHits { get; private set; }
 
+        /// <summary>DFSPH: mean iterations of the constant-density solve per sub-step since the previous report;
+        /// 0 with WCSPH.</summary>
+        public float DensitySolveIterations { get; internal set; }
+
+        /// <summary>DFSPH: mean iterations of the divergence-free solve per sub-step since the previous report;
+        /// 0 with WCSPH.</summary>
+        public float DivergenceSolveIterations { get; internal set; }
+
+        /// <summary>Average |D rho / Dt| / rho0 over the fluid, %/s: how far the velocity field is from
+        /// divergence-free (the divergence error of the accuracy study).</summary>
+        public float DivergenceError { get; internal set; }
+
         /// <summary>Simulated time of the state the figures describe, s.</summary>
         public double SimulatedTime { get; private set; }
 
