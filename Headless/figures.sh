@@ -4,7 +4,7 @@
 # run summaries, into Headless/figures/. About 6 minutes on 2 CPU cores.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-scenes="$root/Assets/SphFluid/Scenes"
+scenes="$root/Assets/FluidDemo/Scenes"
 out="$root/Output"
 figures="$root/Headless/figures"
 mkdir -p "$figures"

@@ -2,7 +2,7 @@
 # Simulates a Unity scene file headlessly (the README's first command). Without arguments: the default
 # oil-and-water scene for its default duration, frames and diagnostics into Output/OilAndWater/.
 # With arguments: they go to `sphfluid simulate` as they are (see --help), e.g.
-#   Headless/simulate.sh Assets/SphFluid/Scenes/DamBreak.unity --seconds 2 --out Output/DamBreak
+#   Headless/simulate.sh Assets/FluidDemo/Scenes/DamBreak.unity --seconds 2 --out Output/DamBreak
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 
@@ -10,6 +10,6 @@ dotnet build "$root/Headless/SphFluid.Headless/SphFluid.Headless.csproj" -c Rele
 cli="$root/Headless/SphFluid.Headless/bin/Release/net10.0/sphfluid.dll"
 
 if [ $# -eq 0 ]; then
-    set -- "$root/Assets/SphFluid/Scenes/OilAndWater.unity" --out "$root/Output/OilAndWater"
+    set -- "$root/Assets/FluidDemo/Scenes/OilAndWater.unity" --out "$root/Output/OilAndWater"
 fi
 exec dotnet "$cli" simulate "$@"

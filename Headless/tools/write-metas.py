@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the .meta file Unity would write for every file and folder under Assets/ that lacks one.
+"""Writes the .meta file Unity would write for every file and folder under Assets/ and under each embedded
+package (Packages/<name>/ with a package.json; the package folder itself has none) that lacks one.
 
 Each new .meta gets a fresh random GUID (uuid4, as Unity does); existing .meta files are never
 touched, so GUIDs stay stable. Run it after adding assets:  python3 Headless/tools/write-metas.py
@@ -60,8 +61,21 @@ def write_meta(path, body):
     return True
 
 
+def asset_roots(root):
+    yield os.path.join(root, "Assets")
+    packages = os.path.join(root, "Packages")
+    for name in sorted(os.listdir(packages)):
+        folder = os.path.join(packages, name)
+        if not hidden(name) and os.path.isfile(os.path.join(folder, "package.json")):
+            yield folder
+
+
 def main(root):
-    assets = os.path.join(root, "Assets")
+    for folder in asset_roots(root):
+        write_metas(folder)
+
+
+def write_metas(assets):
     for dirpath, dirnames, filenames in os.walk(assets):
         dirnames[:] = [d for d in dirnames if not hidden(d) and d not in ("bin", "obj")]
         for d in dirnames:

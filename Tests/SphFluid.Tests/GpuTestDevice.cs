@@ -13,7 +13,7 @@ namespace SphFluid.Tests
 {
     /// <summary>
     /// The one Vulkan device every GPU test shares (creating a device and JIT-compiling kernels is the
-    /// slow part, so it happens once per test run). Shaders are found in Assets/SphFluid/Shaders and in
+    /// slow part, so it happens once per test run). Shaders are found in Packages/com.sphfluid.fluid/Shaders and in
     /// every Tests/SphFluid.Tests/**/Shaders folder. Validation is on whenever the Khronos layer is
     /// installed; <see cref="AssertNoValidationMessages"/> checks it stayed silent.
     /// </summary>
@@ -26,7 +26,7 @@ namespace SphFluid.Tests
         /// <summary>The repository root: the first folder above the test assembly holding both Assets and Headless.</summary>
         public static string RepoRoot { get; } = FindRepoRoot();
 
-        /// <summary>Assets/SphFluid/Shaders, then every Shaders folder under Tests/SphFluid.Tests.</summary>
+        /// <summary>Packages/com.sphfluid.fluid/Shaders, then every Shaders folder under Tests/SphFluid.Tests.</summary>
         public static IReadOnlyList<string> ShaderDirectories { get; } = FindShaderDirectories();
 
         /// <summary>The shared device; the test is ignored (with the reason) where no Vulkan driver exists.</summary>
@@ -99,7 +99,7 @@ namespace SphFluid.Tests
 
         static IReadOnlyList<string> FindShaderDirectories()
         {
-            var dirs = new List<string> { Path.Combine(RepoRoot, "Assets", "SphFluid", "Shaders") };
+            var dirs = new List<string> { Path.Combine(RepoRoot, "Packages", "com.sphfluid.fluid", "Shaders") };
             string tests = Path.Combine(RepoRoot, "Tests", "SphFluid.Tests");
             if (Directory.Exists(tests))
             {

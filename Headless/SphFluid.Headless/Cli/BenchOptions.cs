@@ -64,7 +64,7 @@ Exit codes: 0 ok, 1 no Vulkan device or unexpected failure, 2 bad arguments, 3 s
         }
         reader.Finish();
         if (!options.Help && string.IsNullOrWhiteSpace(options.ScenePath))
-            throw new UsageException($"{command}: the scene file argument is missing (e.g. sphfluid bench Assets/SphFluid/Scenes/DamBreak.unity)");
+            throw new UsageException($"{command}: the scene file argument is missing (e.g. sphfluid bench Assets/FluidDemo/Scenes/DamBreak.unity)");
         return options;
     }
 }

@@ -123,7 +123,7 @@ energetic than the scene allows (the message names the time, phase and figure)."
         reader.Finish();
         if (options.Help) return options;
         if (string.IsNullOrWhiteSpace(options.ScenePath))
-            throw new UsageException($"{command}: the scene file argument is missing (e.g. sphfluid simulate Assets/SphFluid/Scenes/OilAndWater.unity)");
+            throw new UsageException($"{command}: the scene file argument is missing (e.g. sphfluid simulate Assets/FluidDemo/Scenes/OilAndWater.unity)");
         if (secondsGiven && options.Frames > 0)
             throw new UsageException($"{command}: give either --seconds or --steps, not both");
         return options;

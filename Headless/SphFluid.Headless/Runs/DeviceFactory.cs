@@ -4,7 +4,7 @@ using SphFluid.Vulkan;
 
 namespace SphFluid.Headless.Runs;
 
-/// <summary>Opens the headless Vulkan device on the project's shaders (Assets/SphFluid/Shaders).</summary>
+/// <summary>Opens the headless Vulkan device on the project's shaders (Packages/com.sphfluid.fluid/Shaders).</summary>
 public static class DeviceFactory
 {
     /// <exception cref="VulkanUnavailableException">No Vulkan driver.</exception>
@@ -13,7 +13,7 @@ public static class DeviceFactory
     {
         var options = new VulkanComputeOptions
         {
-            ShaderDirectories = new[] { Path.Combine(projectRoot, "Assets", "SphFluid", "Shaders") },
+            ShaderDirectories = new[] { Path.Combine(projectRoot, "Packages", "com.sphfluid.fluid", "Shaders") },
         };
         if (!string.IsNullOrEmpty(deviceName)) options.DeviceName = deviceName;
         try

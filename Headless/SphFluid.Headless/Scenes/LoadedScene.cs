@@ -9,7 +9,7 @@ public sealed class LoadedScene
     /// <summary>The scene file as given.</summary>
     public string Path { get; init; }
 
-    /// <summary>Root of the Unity project the scene belongs to (its shaders are under Assets/SphFluid/Shaders).</summary>
+    /// <summary>Root of the Unity project the scene belongs to (its shaders are under Packages/com.sphfluid.fluid/Shaders).</summary>
     public string ProjectRoot { get; init; }
 
     /// <summary>File name without extension ("OilAndWater").</summary>

@@ -16,7 +16,7 @@ namespace SphFluid.Headless.Scenes;
 /// Reads a <c>.unity</c> file the way the FluidSimulator component sees its scene at Play: its serialized
 /// settings, every active SpawnBox (world transform = box), the FluidContainer (the assigned one, else the
 /// scene's), every active SphereObstacle, and the ContainerSpinner / SphereDriver motions. Field names are
-/// the C# field names of Assets/SphFluid/Runtime; scripts are matched by the guid of their .cs.meta.
+/// the C# field names of Packages/com.sphfluid.fluid/Runtime; scripts are matched by the guid of their .cs.meta.
 /// </summary>
 public static class SceneLoader
 {

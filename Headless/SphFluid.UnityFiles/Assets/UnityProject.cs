@@ -10,7 +10,8 @@ namespace SphFluid.UnityFiles.Assets;
 /// <summary>
 /// A Unity project on disk seen through its GUIDs: turns a reference's guid into the asset path (e.g. which .compute a
 /// scene component points at), a script class name into its guid, and lists scenes and the build's scene list.
-/// Index built once on construction from every .meta under Assets/.
+/// Index built once on construction from every .meta under Assets/ and under each embedded package
+/// (Packages/&lt;name&gt;/ with a package.json), where the fluid's own components and shaders live.
 /// </summary>
 public sealed class UnityProject
 {
@@ -22,7 +23,7 @@ public sealed class UnityProject
         Root = Path.GetFullPath(root);
         var assets = Path.Combine(Root, "Assets");
         if (!Directory.Exists(assets)) throw new DirectoryNotFoundException($"'{Root}' has no Assets/ folder");
-        foreach (var meta in Directory.EnumerateFiles(assets, "*.meta", SearchOption.AllDirectories))
+        foreach (var meta in AssetRoots(assets).SelectMany(r => Directory.EnumerateFiles(r, "*.meta", SearchOption.AllDirectories)))
         {
             string guid;
             try { guid = UnityMeta.Load(meta).Guid; }
@@ -32,6 +33,16 @@ public sealed class UnityProject
             _pathByGuid.TryAdd(guid, asset);
             _guidByPath[asset] = guid;
         }
+    }
+
+    IEnumerable<string> AssetRoots(string assets)
+    {
+        yield return assets;
+        var packages = Path.Combine(Root, "Packages");
+        if (!Directory.Exists(packages)) yield break;
+        foreach (var dir in Directory.GetDirectories(packages).OrderBy(d => d, StringComparer.Ordinal))
+            if (!Integrity.AssetIntegrity.IsHiddenFromUnity(Path.GetFileName(dir)) && File.Exists(Path.Combine(dir, "package.json")))
+                yield return dir;
     }
 
     /// <summary>Absolute path of the folder holding Assets/.</summary>
@@ -55,7 +66,7 @@ public sealed class UnityProject
         var matches = _guidByPath.Where(kv => Path.GetFileName(kv.Key) == className + ".cs").ToList();
         if (matches.Count == 1) return matches[0].Value;
         throw new InvalidOperationException(matches.Count == 0
-            ? $"no {className}.cs under Assets/"
+            ? $"no {className}.cs under Assets/ or an embedded package"
             : $"{className}.cs exists {matches.Count} times: {string.Join(", ", matches.Select(m => m.Key))}");
     }
 

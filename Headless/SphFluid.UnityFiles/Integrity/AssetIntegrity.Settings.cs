@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using System.Text.Json;
@@ -31,13 +32,50 @@ public sealed partial class AssetIntegrity
         }
         foreach (var package in RequiredPackages.Where(p => !_manifest.Has(p)))
             Report(path, $"does not name {package}");
-        foreach (var t in _manifest.Testables.Where(t => !_manifest.Has(t)))
-            Report(path, $"testable '{t}' is not a dependency");
+        var embedded = CheckEmbeddedPackages();
+        foreach (var t in _manifest.Testables.Where(t => !_manifest.Has(t) && !embedded.Contains(t)))
+            Report(path, $"testable '{t}' is neither a dependency nor an embedded package");
         foreach (var (name, version) in _manifest.Dependencies)
             if (string.IsNullOrWhiteSpace(version)) Report(path, $"'{name}' has no version");
         var stream = TryProjectVersion()?.Stream;
         if (stream == "2022.3" && _manifest.Has("com.unity.modules.accessibility"))
             Report(path, "com.unity.modules.accessibility does not exist for 2022.3 (package resolution would fail)");
+    }
+
+    /// <summary>
+    /// Each <c>Packages/&lt;name&gt;/package.json</c>: the fields the Package Manager needs, a Unity release the
+    /// project's editor satisfies, and dependencies the manifest resolves at the same version (so a project that adds
+    /// the package by git URL gets what this one tests with). Returns the embedded packages' names.
+    /// </summary>
+    HashSet<string> CheckEmbeddedPackages()
+    {
+        var names = new HashSet<string>(StringComparer.Ordinal);
+        var packages = Abs("Packages");
+        foreach (var dir in Directory.GetDirectories(packages).OrderBy(d => d, StringComparer.Ordinal))
+        {
+            var file = Path.Combine(dir, "package.json");
+            if (IsHiddenFromUnity(Path.GetFileName(dir)) || !File.Exists(file)) continue;
+            string rel = Rel(file);
+            EmbeddedPackage package;
+            try { package = EmbeddedPackage.Load(file); }
+            catch (Exception e) when (e is JsonException or FormatException)
+            {
+                Report(rel, $"does not parse: {e.Message}");
+                continue;
+            }
+            foreach (var problem in package.Problems(Path.GetFileName(dir))) Report(rel, problem);
+            if (package.Name != null) names.Add(package.Name);
+            var stream = TryProjectVersion()?.Stream;
+            if (Version.TryParse(stream, out var editor) && Version.TryParse(package.Unity, out var wanted) && wanted > editor)
+                Report(rel, $"\"unity\" {package.Unity} is newer than the project's editor {stream}");
+            foreach (var (dependency, version) in package.Dependencies)
+            {
+                var resolved = _manifest.VersionOf(dependency);
+                if (resolved == null) Report(rel, $"dependency '{dependency}' is not in Packages/manifest.json");
+                else if (resolved != version) Report(rel, $"dependency '{dependency}' {version} differs from Packages/manifest.json's {resolved}");
+            }
+        }
+        return names;
     }
 
     ProjectVersion TryProjectVersion()

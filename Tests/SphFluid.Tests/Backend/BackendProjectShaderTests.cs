@@ -21,7 +21,7 @@ namespace SphFluid.Tests.Backend
         public void EveryProjectKernelVariantCompilesWithStridesThatMatchItsCSharpStruct()
         {
             var device = GpuTestDevice.Shared;
-            string shaders = Path.Combine(GpuTestDevice.RepoRoot, "Assets", "SphFluid", "Shaders");
+            string shaders = Path.Combine(GpuTestDevice.RepoRoot, "Packages", "com.sphfluid.fluid", "Shaders");
             var files = Directory.GetFiles(shaders, "*.compute").OrderBy(f => f, StringComparer.Ordinal).ToList();
             Assume.That(files, Is.Not.Empty, "no project .compute files yet");
             var csharpStructs = typeof(ComputeException).Assembly.GetTypes()
@@ -58,7 +58,7 @@ namespace SphFluid.Tests.Backend
         public void EveryProjectKernelVariantNeedsNoScalarBlockLayout()
         {
             var device = GpuTestDevice.Shared;
-            string shaders = Path.Combine(GpuTestDevice.RepoRoot, "Assets", "SphFluid", "Shaders");
+            string shaders = Path.Combine(GpuTestDevice.RepoRoot, "Packages", "com.sphfluid.fluid", "Shaders");
             var dirs = new[] { shaders };
             var notStd430 = new List<string>();
             int variants = 0;

@@ -32,6 +32,14 @@ namespace SphFluid.Tests.Integrity
             }
         }
 
+        /// <summary>An embedded package as Unity would see it: a folder under Packages/ with package.json and its .meta.</summary>
+        static void AddPackage(SyntheticProject project, string folder, string name, string version, string dependencies)
+        {
+            string json = "{\n  \"name\": \"" + name + "\",\n  \"version\": \"" + version + "\",\n  \"unity\": \"2022.3\",\n  \"dependencies\": {" + dependencies + "}\n}\n";
+            project.Write($"Packages/{folder}/package.json", json);
+            project.Write($"Packages/{folder}/package.json.meta", "fileFormatVersion: 2\nguid: " + Guid.NewGuid().ToString("N") + "\nTextScriptImporter:\n  externalObjects: {}\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n");
+        }
+
         const string ShaderImporter = "ShaderImporter:\n  externalObjects: {}\n  defaultTextures: []\n  nonModifiableTextures: []\n  preprocessorOverride: 0\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n";
 
         const string InputActionsImporter = "ScriptedImporter:\n  internalIDToNameTable: []\n  externalObjects: {}\n  serializedVersion: 2\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n" +
@@ -140,6 +148,16 @@ namespace SphFluid.Tests.Integrity
                 "Packages/manifest.json", "does not name com.unity.ugui");
             yield return Case("manifest does not parse", p => p.Replace("Packages/manifest.json", "\"dependencies\": {", "\"dependencies\" {"),
                 "Packages/manifest.json", "does not parse");
+            yield return Case("embedded package named unlike its folder", p => AddPackage(p, "com.game.water", "com.game.Water", "1.0.0", ""),
+                "Packages/com.game.water/package.json", "\"name\" must be a lower-case reverse-domain name");
+            yield return Case("embedded package without a semantic version", p => AddPackage(p, "com.game.water", "com.game.water", "1.0", ""),
+                "Packages/com.game.water/package.json", "\"version\" must be a semantic version");
+            yield return Case("embedded package dependency the manifest lacks", p => AddPackage(p, "com.game.water", "com.game.water", "1.0.0", "\"com.unity.splines\": \"2.4.0\""),
+                "Packages/com.game.water/package.json", "dependency 'com.unity.splines' is not in Packages/manifest.json");
+            yield return Case("embedded package dependency at another version", p => AddPackage(p, "com.game.water", "com.game.water", "1.0.0", "\"com.unity.ugui\": \"2.0.0\""),
+                "Packages/com.game.water/package.json", "differs from Packages/manifest.json's 1.0.0");
+            yield return Case("testable that is neither dependency nor embedded", p => p.Replace("Packages/manifest.json", "\"1.0.0\"\n  }\n}", "\"1.0.0\"\n  },\n  \"testables\": [\"com.game.water\"]\n}"),
+                "Packages/manifest.json", "testable 'com.game.water' is neither a dependency nor an embedded package");
             yield return Case("build settings scene guid mismatch", p => p.Replace("ProjectSettings/EditorBuildSettings.asset", p.GuidOf(scene), Guid.NewGuid().ToString("N")),
                 "ProjectSettings/EditorBuildSettings.asset", "but its .meta has");
             yield return Case("build settings scene missing", p => p.Replace("ProjectSettings/EditorBuildSettings.asset", "Main.unity", "Gone.unity"),

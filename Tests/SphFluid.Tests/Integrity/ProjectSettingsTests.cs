@@ -56,12 +56,12 @@ namespace SphFluid.Tests.Integrity
         [Test]
         public void Every_scene_of_the_project_is_in_the_build()
         {
-            var scenesFolder = Path.Combine(RepoRoot, "Assets/SphFluid/Scenes");
+            var scenesFolder = Path.Combine(RepoRoot, "Assets/FluidDemo/Scenes");
             var scenes = Directory.Exists(scenesFolder)
                 ? Directory.GetFiles(scenesFolder, "*.unity", SearchOption.AllDirectories)
                     .Select(f => Path.GetRelativePath(RepoRoot, f).Replace('\\', '/')).OrderBy(f => f).ToList()
                 : new System.Collections.Generic.List<string>();
-            if (scenes.Count == 0) Assert.Ignore("no scenes under Assets/SphFluid/Scenes yet");
+            if (scenes.Count == 0) Assert.Ignore("no scenes under Assets/FluidDemo/Scenes yet");
             var build = Settings("EditorBuildSettings.asset").Root["m_Scenes"].Items
                 .Where(s => s.GetBool("enabled")).Select(s => s.GetString("path")).ToList();
             Assert.That(build, Is.SupersetOf(scenes), "scenes missing from ProjectSettings/EditorBuildSettings.asset");

@@ -37,9 +37,43 @@ namespace SphFluid.Tests.Integrity
         }
 
         [Test]
+        public void The_fluid_is_an_embedded_package_a_project_can_add_by_git_url()
+        {
+            var package = EmbeddedPackage.Load(At("Packages/com.sphfluid.fluid/package.json"));
+            Assert.That(package.Problems("com.sphfluid.fluid"), Is.Empty);
+            Assert.That(package.Name, Is.EqualTo("com.sphfluid.fluid"));
+            Assert.That(package.Unity, Is.EqualTo("2022.3"));
+            var manifest = PackageManifest.Load(At("Packages/manifest.json"));
+            foreach (var (name, version) in package.Dependencies)
+                Assert.That(manifest.VersionOf(name), Is.EqualTo(version), $"package.json dependency {name}");
+            Assert.That(manifest.Testables, Does.Contain("com.sphfluid.fluid"), "the package's tests run in the Test Runner");
+            foreach (var file in new[] { "LICENSE", "CHANGELOG.md", "Documentation~/index.md" })
+                Assert.That(File.Exists(At("Packages/com.sphfluid.fluid/" + file)), Is.True, file);
+            Assert.That(File.ReadAllText(At("Packages/com.sphfluid.fluid/LICENSE")), Does.StartWith("MIT License"));
+            Assert.That(File.ReadAllText(At("Packages/com.sphfluid.fluid/CHANGELOG.md")), Does.Contain("## [" + package.Version + "]"),
+                "the changelog describes the package's version");
+        }
+
+        [Test]
+        public void The_package_holds_the_library_assemblies_and_the_demo_stays_in_assets()
+        {
+            string Name(string path) => AssemblyDefinition.Load(At(path)).Name;
+            var inPackage = Directory.GetFiles(At("Packages/com.sphfluid.fluid"), "*.asmdef", SearchOption.AllDirectories)
+                .Select(f => AssemblyDefinition.Load(f).Name).OrderBy(n => n, StringComparer.Ordinal);
+            Assert.That(inPackage, Is.EqualTo(new[] { "SphFluid.Core", "SphFluid.Editor", "SphFluid.Runtime", "SphFluid.Tests.Core", "SphFluid.Tests.EditMode", "SphFluid.Tests.PlayMode" }));
+            var packageAssemblies = inPackage.ToHashSet();
+            foreach (var file in Directory.GetFiles(At("Packages/com.sphfluid.fluid"), "*.asmdef", SearchOption.AllDirectories))
+                foreach (var reference in AssemblyDefinition.Load(file).References.Where(r => r.StartsWith("SphFluid.", StringComparison.Ordinal)))
+                    Assert.That(packageAssemblies, Does.Contain(reference),
+                        $"{Path.GetFileName(file)} references {reference}, which a project that adds only the package lacks");
+            Assert.That(Name("Assets/FluidDemo/Scripts/SphFluid.Demo.asmdef"), Is.EqualTo("SphFluid.Demo"));
+            Assert.That(Directory.GetFiles(At("Assets/FluidDemo/Scenes"), "*.unity"), Is.Not.Empty);
+        }
+
+        [Test]
         public void Core_assembly_is_engine_free_in_unity()
         {
-            var core = AssemblyDefinition.Load(At("Assets/SphFluid/Core/SphFluid.Core.asmdef"));
+            var core = AssemblyDefinition.Load(At("Packages/com.sphfluid.fluid/Runtime/Core/SphFluid.Core.asmdef"));
             Assert.That(core.Name, Is.EqualTo("SphFluid.Core"));
             Assert.That(core.NoEngineReferences, Is.True);
             Assert.That(core.References, Is.Empty);
@@ -48,7 +82,7 @@ namespace SphFluid.Tests.Integrity
         [Test]
         public void Core_test_assembly_is_an_engine_free_edit_mode_test_assembly()
         {
-            var tests = AssemblyDefinition.Load(At("Assets/SphFluid/Tests/Core/SphFluid.Tests.Core.asmdef"));
+            var tests = AssemblyDefinition.Load(At("Packages/com.sphfluid.fluid/Tests/Core/SphFluid.Tests.Core.asmdef"));
             Assert.That(tests.Name, Is.EqualTo("SphFluid.Tests.Core"));
             Assert.That(tests.References, Is.EquivalentTo(new[] { "SphFluid.Core", "UnityEngine.TestRunner", "UnityEditor.TestRunner" }));
             Assert.That(tests.IncludePlatforms, Is.EqualTo(new[] { "Editor" }));
@@ -59,8 +93,8 @@ namespace SphFluid.Tests.Integrity
             Assert.That(tests.NoEngineReferences, Is.True);
         }
 
-        [TestCase("Assets/SphFluid/Core")]
-        [TestCase("Assets/SphFluid/Tests/Core")]
+        [TestCase("Packages/com.sphfluid.fluid/Runtime/Core")]
+        [TestCase("Packages/com.sphfluid.fluid/Tests/Core")]
         public void Engine_free_code_never_mentions_the_engine(string folder)
         {
             // The test asmdef's TestRunner references are assemblies of the test framework, not engine code.
@@ -79,13 +113,13 @@ namespace SphFluid.Tests.Integrity
         [Test]
         public void Engine_free_folders_hold_no_nested_assembly()
         {
-            var nested = Directory.GetFiles(At("Assets/SphFluid/Core"), "*.asm*", SearchOption.AllDirectories)
-                .Concat(Directory.GetFiles(At("Assets/SphFluid/Tests/Core"), "*.asm*", SearchOption.AllDirectories))
+            var nested = Directory.GetFiles(At("Packages/com.sphfluid.fluid/Runtime/Core"), "*.asm*", SearchOption.AllDirectories)
+                .Concat(Directory.GetFiles(At("Packages/com.sphfluid.fluid/Tests/Core"), "*.asm*", SearchOption.AllDirectories))
                 .Where(f => !f.EndsWith(".meta", StringComparison.Ordinal))
                 .Select(f => Path.GetRelativePath(RepoRoot, f).Replace('\\', '/'))
                 .OrderBy(f => f, StringComparer.Ordinal)
                 .ToList();
-            Assert.That(nested, Is.EqualTo(new[] { "Assets/SphFluid/Core/SphFluid.Core.asmdef", "Assets/SphFluid/Tests/Core/SphFluid.Tests.Core.asmdef" }));
+            Assert.That(nested, Is.EqualTo(new[] { "Packages/com.sphfluid.fluid/Runtime/Core/SphFluid.Core.asmdef", "Packages/com.sphfluid.fluid/Tests/Core/SphFluid.Tests.Core.asmdef" }));
         }
 
         [Test]
@@ -97,7 +131,7 @@ namespace SphFluid.Tests.Integrity
             Assert.That(properties["TargetFramework"], Is.EqualTo("netstandard2.1"));
             Assert.That(properties["LangVersion"], Is.EqualTo("9.0"));
             var compiled = project.Descendants("Compile").Select(e => (string)e.Attribute("Include")).ToList();
-            Assert.That(compiled, Is.EqualTo(new[] { "$(RepoRoot)/Assets/SphFluid/Core/**/*.cs" }));
+            Assert.That(compiled, Is.EqualTo(new[] { "$(RepoRoot)/Packages/com.sphfluid.fluid/Runtime/Core/**/*.cs" }));
             Assert.That(project.Descendants("Reference").Concat(project.Descendants("PackageReference")).Concat(project.Descendants("ProjectReference")), Is.Empty);
         }
 
@@ -105,8 +139,8 @@ namespace SphFluid.Tests.Integrity
         public void Headless_test_project_compiles_exactly_the_unity_core_tests()
         {
             var project = XDocument.Load(At("Tests/SphFluid.Tests/SphFluid.Tests.csproj"));
-            var shared = project.Descendants("Compile").Select(e => (string)e.Attribute("Include")).Where(i => i != null && i.Contains("Assets/")).ToList();
-            Assert.That(shared, Is.EqualTo(new[] { "$(RepoRoot)/Assets/SphFluid/Tests/Core/**/*.cs" }));
+            var shared = project.Descendants("Compile").Select(e => (string)e.Attribute("Include")).Where(i => i != null && i.Contains("Packages/")).ToList();
+            Assert.That(shared, Is.EqualTo(new[] { "$(RepoRoot)/Packages/com.sphfluid.fluid/Tests/Core/**/*.cs" }));
             Assert.That(project.Descendants("LangVersion").Single().Value, Is.EqualTo("9.0"));
         }
 

@@ -14,8 +14,8 @@ namespace SphFluid.Tests.Rendering
     /// </summary>
     public sealed class FluidParticlesMaterialTests
     {
-        const string MaterialRelativePath = "Assets/SphFluid/Materials/FluidParticles.mat";
-        const string ShaderRelativePath = "Assets/SphFluid/Shaders/FluidParticles.shader";
+        const string MaterialRelativePath = "Packages/com.sphfluid.fluid/Materials/FluidParticles.mat";
+        const string ShaderRelativePath = "Packages/com.sphfluid.fluid/Shaders/FluidParticles.shader";
 
         static string At(string relative) => Path.Combine(GpuTestDevice.RepoRoot, relative);
 

@@ -42,7 +42,7 @@ namespace SphFluid.Tests.Rendering
         public void Water_and_oil_render_as_different_liquids()
         {
             var device = GpuTestDevice.Shared;
-            var shader = ShaderLabSource.Load(Path.Combine(GpuTestDevice.RepoRoot, "Assets/SphFluid/Shaders/FluidParticles.shader"));
+            var shader = ShaderLabSource.Load(Path.Combine(GpuTestDevice.RepoRoot, "Packages/com.sphfluid.fluid/Shaders/FluidParticles.shader"));
             float Default(string name) => float.Parse(shader.Properties.Single(p => p.Name == name).Default, CultureInfo.InvariantCulture);
 
             var particles = TwoBlocks(0.02f);

@@ -17,7 +17,7 @@ namespace SphFluid.Tests.Rendering
     /// </summary>
     public sealed class FluidParticlesShaderTests
     {
-        const string ShaderRelativePath = "Assets/SphFluid/Shaders/FluidParticles.shader";
+        const string ShaderRelativePath = "Packages/com.sphfluid.fluid/Shaders/FluidParticles.shader";
 
         /// <summary>Stand-in platforms: D3D11/Vulkan/Metal-like (reversed Z) and OpenGL Core-like.</summary>
         static readonly string[][] Platforms = { new string[0], new[] { "SPHFLUID_STANDIN_OPENGL=1" } };

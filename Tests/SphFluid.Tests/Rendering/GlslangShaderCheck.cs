@@ -27,7 +27,7 @@ namespace SphFluid.Tests.Rendering
 
         public static string StandInIncludeDir => Path.Combine(GpuTestDevice.RepoRoot, "Tests", "SphFluid.Tests", "Rendering", "UnityStandIn");
 
-        public static string ShaderDir => Path.Combine(GpuTestDevice.RepoRoot, "Assets", "SphFluid", "Shaders");
+        public static string ShaderDir => Path.Combine(GpuTestDevice.RepoRoot, "Packages", "com.sphfluid.fluid", "Shaders");
 
         /// <summary>Ignores the test (with the reason) where a tool is not installed; Headless/test.sh installs them in CI.</summary>
         public static void RequireTool(string tool)

@@ -9,7 +9,7 @@ namespace SphFluid.Tests.Runner
     {
         public static readonly string[] ShippedScenes = { "OilAndWater", "DamBreak", "Splash", "RotatingContainer", "SphereWake", "PlayModeTest" };
 
-        public static string Scene(string name) => Path.Combine(GpuTestDevice.RepoRoot, "Assets", "SphFluid", "Scenes", name + ".unity");
+        public static string Scene(string name) => Path.Combine(GpuTestDevice.RepoRoot, "Assets", "FluidDemo", "Scenes", name + ".unity");
 
         static UnityProject _project;
 

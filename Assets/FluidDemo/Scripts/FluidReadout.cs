@@ -1,10 +1,11 @@
 using System.Collections.Generic;
 using System.Globalization;
 using System.Text;
+using SphFluid.Runtime;
 using SphFluid.Simulation;
 using UnityEngine;
 
-namespace SphFluid.Runtime
+namespace SphFluid.Demo
 {
     /// <summary>On-screen figures of the running simulation (IMGUI): FPS, particles, sub-steps and dt, GPU time,
     /// density error per phase, the effects the planner switched on.</summary>

@@ -26,7 +26,7 @@ namespace SphFluid.Runtime
         /// <summary>Fastest wall or sphere motion passed on, m/s and rad/s.</summary>
         const float MaxWallSpeed = 50f, MaxWallSpin = 50f;
 
-        [Header("Compute shaders (Assets/SphFluid/Shaders)")]
+        [Header("Compute shaders (Packages/com.sphfluid.fluid/Shaders)")]
         [SerializeField, Tooltip("FluidSolver.compute: density, forces, integration, boundaries.")]
         ComputeShader solverShader = null;
 
@@ -266,7 +266,7 @@ namespace SphFluid.Runtime
             string missing = MissingShaderField();
             if (missing != null)
             {
-                Fail($"field '{missing}' has no compute shader assigned (Assets/SphFluid/Shaders)");
+                Fail($"field '{missing}' has no compute shader assigned (Packages/com.sphfluid.fluid/Shaders)");
                 return;
             }
             _container = FindContainer();

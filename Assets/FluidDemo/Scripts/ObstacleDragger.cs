@@ -1,7 +1,8 @@
+using SphFluid.Runtime;
 using UnityEngine;
 using UnityEngine.InputSystem;
 
-namespace SphFluid.Runtime
+namespace SphFluid.Demo
 {
     /// <summary>
     /// Drags a <see cref="SphereObstacle"/> with the left mouse button: press on a sphere, move it on the plane

@@ -1,8 +1,9 @@
+using SphFluid.Runtime;
 using UnityEngine;
 using UnityEngine.InputSystem;
 using UnityEngine.SceneManagement;
 
-namespace SphFluid.Runtime
+namespace SphFluid.Demo
 {
     /// <summary>Keyboard controls of the simulation: Space pause, period or N single step, R reset (respawn), Tab next scene.</summary>
     public sealed class FluidControls : MonoBehaviour

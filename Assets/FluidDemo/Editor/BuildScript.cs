@@ -4,7 +4,7 @@ using UnityEditor;
 using UnityEditor.Build.Reporting;
 using UnityEngine;
 
-namespace SphFluid.Editor
+namespace SphFluid.Demo.Editor
 {
     /// <summary>
     /// Builds the Windows 64-bit player of the scenes enabled in the build settings.

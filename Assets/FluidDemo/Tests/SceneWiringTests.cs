@@ -7,7 +7,7 @@ using UnityEditor.SceneManagement;
 using UnityEngine;
 using UnityEngine.SceneManagement;
 
-namespace SphFluid.Tests.EditMode
+namespace SphFluid.Demo.Tests
 {
     /// <summary>Every scene of the build opens with exactly one fully wired FluidSimulator and a valid fluid scene.</summary>
     public sealed class SceneWiringTests
@@ -32,7 +32,7 @@ namespace SphFluid.Tests.EditMode
         [Test]
         public void TheBuildListsScenes()
         {
-            Assert.That(SphFluid.Editor.BuildScript.EnabledScenes(), Is.Not.Empty, "File > Build Settings has no enabled scene");
+            Assert.That(SphFluid.Demo.Editor.BuildScript.EnabledScenes(), Is.Not.Empty, "File > Build Settings has no enabled scene");
         }
 
         [TestCaseSource(nameof(BuildScenes))]

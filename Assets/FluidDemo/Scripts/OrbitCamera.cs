@@ -1,7 +1,7 @@
 using UnityEngine;
 using UnityEngine.InputSystem;
 
-namespace SphFluid.Runtime
+namespace SphFluid.Demo
 {
     /// <summary>Orbits its Transform (the camera) around a pivot: drag with the right mouse button, zoom with the wheel.</summary>
     public sealed class OrbitCamera : MonoBehaviour

@@ -21,7 +21,7 @@ namespace SphFluid.Compute
         string DeviceName { get; }
 
         /// <summary>Loads a compute shader by its asset name, the file name without extension
-        /// (e.g. "ParticleSort" for Assets/SphFluid/Shaders/ParticleSort.compute). Unity resolves it to
+        /// (e.g. "ParticleSort" for Packages/com.sphfluid.fluid/Shaders/ParticleSort.compute). Unity resolves it to
         /// a ComputeShader asset the component references; the headless backend compiles the file.
         /// Throws <see cref="ComputeException"/> naming the program when there is none.</summary>
         IComputeProgram LoadProgram(string name);

@@ -50,7 +50,7 @@ namespace SphFluid.Runtime
             if (!_shaders.TryGetValue(name, out ComputeShader shader))
             {
                 string known = _shaders.Count == 0 ? "none" : string.Join(", ", _shaders.Keys);
-                throw new ComputeException($"Compute shader '{name}' was not assigned (assigned: {known}); assign Assets/SphFluid/Shaders/{name}.compute");
+                throw new ComputeException($"Compute shader '{name}' was not assigned (assigned: {known}); assign Packages/com.sphfluid.fluid/Shaders/{name}.compute");
             }
             program = new UnityComputeProgram(shader);
             _programs.Add(name, program);

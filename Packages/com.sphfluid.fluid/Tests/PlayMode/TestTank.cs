@@ -31,8 +31,8 @@ namespace SphFluid.Tests.PlayMode
         static ComputeShader LoadShader(string name)
         {
 #if UNITY_EDITOR
-            var shader = UnityEditor.AssetDatabase.LoadAssetAtPath<ComputeShader>($"Assets/SphFluid/Shaders/{name}.compute");
-            Assert.That(shader, Is.Not.Null, $"Assets/SphFluid/Shaders/{name}.compute");
+            var shader = UnityEditor.AssetDatabase.LoadAssetAtPath<ComputeShader>($"Packages/com.sphfluid.fluid/Shaders/{name}.compute");
+            Assert.That(shader, Is.Not.Null, $"Packages/com.sphfluid.fluid/Shaders/{name}.compute");
             return shader;
 #else
             return null;

@@ -1,6 +1,7 @@
+using SphFluid.Runtime;
 using UnityEngine;
 
-namespace SphFluid.Runtime
+namespace SphFluid.Demo
 {
     /// <summary>
     /// The simulator a control or readout acts on: the one assigned in its inspector, else the scene's.
