@@ -13,6 +13,9 @@ public static class RuntimeScripts
     public const string ContainerSpinner = "ContainerSpinner";
     public const string SphereDriver = "SphereDriver";
 
+    /// <summary>FluidSimulator's serialized FluidSettings field, which holds every declared setting by its field name.</summary>
+    public const string Settings = "settings";
+
     /// <summary>FluidSimulator's compute-shader fields and the program each must be (the pipeline loads them by name).</summary>
     public static readonly IReadOnlyList<(string Field, string Program)> ShaderFields = new[]
     {

@@ -102,7 +102,7 @@ public static class SceneLoader
             bool settingsOk = !errors.Any(e => e.Field.StartsWith("Settings", StringComparison.Ordinal));
             if (settingsOk && SceneFit.GridProblem(description) is { } grid)
                 throw new SceneException($"{path}:{_containerGo.Transform?.Root["m_LocalScale"]?.Line ?? _containerGo.Document.Line}: the fluid scene is invalid:\n  GameObject '{_containerGo.Name}', Transform.m_LocalScale and " +
-                    $"{Where(_simulatorGo, RuntimeScripts.FluidSimulator, "smoothingRadius")}: {grid}");
+                    $"{Where(_simulatorGo, RuntimeScripts.FluidSimulator, RuntimeScripts.Settings + "." + nameof(FluidSettings.SmoothingRadius))}: {grid}");
             if (errors.Count > 0)
                 throw new SceneException($"{path}: the fluid scene is invalid:\n  " + string.Join("\n  ", errors.Select(Locate)));
 
@@ -146,7 +146,7 @@ public static class SceneLoader
 
         float Float(UnityGameObject go, UnityDocument mb, string component, string field, float fallback)
         {
-            var node = mb.Root[field];
+            var node = mb.Root.At(field);
             if (node == null) return fallback;
             if (node.IsScalar && UnityYamlNode.TryParseNumber(node.Value, out double v)) return (float)v;
             throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be a number (was '{node}')");
@@ -154,7 +154,7 @@ public static class SceneLoader
 
         int Int(UnityGameObject go, UnityDocument mb, string component, string field, int fallback)
         {
-            var node = mb.Root[field];
+            var node = mb.Root.At(field);
             if (node == null) return fallback;
             if (node.IsScalar && long.TryParse(node.Value, out long v) && v >= int.MinValue && v <= int.MaxValue) return (int)v;
             throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be a whole number (was '{node}')");
@@ -162,7 +162,7 @@ public static class SceneLoader
 
         Vector3 Vector(UnityGameObject go, UnityDocument mb, string component, string field, Vector3 fallback)
         {
-            var node = mb.Root[field];
+            var node = mb.Root.At(field);
             if (node == null) return fallback;
             try { return mb.Root.GetVector3(field); }
             catch (FormatException) { throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be a vector {{x, y, z}} (was '{node}')"); }
@@ -251,27 +251,26 @@ public static class SceneLoader
             }
         }
 
+        /// <summary>The simulator's <c>settings</c>, field by declared field (<see cref="SettingRules"/>): the names, types
+        /// and defaults are FluidSettings' own, so a new setting needs no line here. A missing field keeps its default,
+        /// as in Unity.</summary>
         FluidSettings ReadSettings()
         {
-            var d = new FluidSettings();
+            var settings = new FluidSettings();
             const string c = RuntimeScripts.FluidSimulator;
-            var go = _simulatorGo;
-            var mb = _simulator;
-            return new FluidSettings
+            foreach (var declared in SettingRules.Declared(typeof(FluidSettings)))
             {
-                ParticleSpacing = Float(go, mb, c, "particleSpacing", d.ParticleSpacing),
-                SmoothingRadius = Float(go, mb, c, "smoothingRadius", d.SmoothingRadius),
-                MaxParticles = Int(go, mb, c, "maxParticles", d.MaxParticles),
-                Stiffness = Float(go, mb, c, "stiffness", d.Stiffness),
-                Gamma = Float(go, mb, c, "gamma", d.Gamma),
-                Gravity = Vector(go, mb, c, "gravity", d.Gravity),
-                XsphEpsilon = Float(go, mb, c, "xsphEpsilon", d.XsphEpsilon),
-                VelocityDamping = Float(go, mb, c, "velocityDamping", d.VelocityDamping),
-                ArtificialViscosity = Float(go, mb, c, "artificialViscosity", d.ArtificialViscosity),
-                CflNumber = Float(go, mb, c, "cflNumber", d.CflNumber),
-                MaxSubsteps = Int(go, mb, c, "maxSubsteps", d.MaxSubsteps),
-                MaxTimeStep = Float(go, mb, c, "maxTimeStep", d.MaxTimeStep),
-            };
+                var field = declared.Field;
+                string key = RuntimeScripts.Settings + "." + field.Name;
+                object value = field.GetValue(settings);
+                if (field.FieldType == typeof(float)) value = Float(_simulatorGo, _simulator, c, key, (float)value);
+                else if (field.FieldType == typeof(int)) value = Int(_simulatorGo, _simulator, c, key, (int)value);
+                else if (field.FieldType == typeof(SettingVector)) value = (SettingVector)Vector(_simulatorGo, _simulator, c, key, (SettingVector)value);
+                else if (field.FieldType.IsEnum) value = Enum.ToObject(field.FieldType, Int(_simulatorGo, _simulator, c, key, Convert.ToInt32(value)));
+                else throw new NotSupportedException($"FluidSettings.{field.Name}: no scene reading for {field.FieldType.Name}");
+                field.SetValue(settings, value);
+            }
+            return settings;
         }
 
         ContainerDescription ReadContainer()
@@ -377,7 +376,11 @@ public static class SceneLoader
             string head = parts[0];
             string member = parts[^1];
             if (head == "Settings")
-                return $"{Where(_simulatorGo, RuntimeScripts.FluidSimulator, CamelCase(member))}: {error.Message}";
+            {
+                string key = RuntimeScripts.Settings + "." + member;
+                int line = _simulator.Root.At(key)?.Line ?? _simulator.Line;
+                return $"line {line}: {Where(_simulatorGo, RuntimeScripts.FluidSimulator, key)}: {error.Message}";
+            }
             if (head == "Container")
                 return $"GameObject '{_containerGo.Name}', {TransformField(member) ?? RuntimeScripts.FluidContainer}: {error.Message}";
             if (TryIndex(head, "SpawnBoxes", out int b) && b < _boxes.Count)

@@ -20,9 +20,6 @@ namespace SphFluid.Runtime
         /// <summary>One press of single-step advances this much simulated time, s.</summary>
         public const float SingleStepSeconds = 1f / 60f;
 
-        /// <summary>The core's defaults are the inspector's defaults (one source of truth).</summary>
-        static readonly FluidSettings CoreDefaults = new FluidSettings();
-
         /// <summary>Fastest wall or sphere motion passed on, m/s and rad/s.</summary>
         const float MaxWallSpeed = 50f, MaxWallSpin = 50f;
 
@@ -50,46 +47,10 @@ namespace SphFluid.Runtime
         [SerializeField, Tooltip("The box the fluid lives in; empty = the scene's FluidContainer.")]
         FluidContainer container = null;
 
-        [Header("Particles")]
-        [SerializeField, Min(0.001f), Tooltip("Lattice spacing s of spawned particles, m, in [0.001, 1].")]
-        float particleSpacing = CoreDefaults.ParticleSpacing;
-
-        [SerializeField, Min(0.0015f), Tooltip("Kernel support radius h (= grid cell size), m; 1.5 to 3 particle spacings.")]
-        float smoothingRadius = CoreDefaults.SmoothingRadius;
-
-        [SerializeField, Min(1), Tooltip("Most particles the spawn boxes may hold together, in [1, 16777216].")]
-        int maxParticles = CoreDefaults.MaxParticles;
-
-        [Header("Pressure")]
-        [SerializeField, Min(1f), Tooltip("Tait stiffness k, Pa, in [1, 1e9]; speed of sound c = sqrt(k gamma / rho0).")]
-        float stiffness = CoreDefaults.Stiffness;
-
-        [SerializeField, Range(1f, 10f), Tooltip("Tait exponent gamma, in [1, 10].")]
-        float gamma = CoreDefaults.Gamma;
-
-        [Header("Forces")]
-        [SerializeField, Tooltip("Gravitational acceleration, m/s^2 (magnitude up to 1000).")]
-        Vector3 gravity = CoreDefaults.Gravity.ToUnity();
-
-        [SerializeField, Range(0f, 1f), Tooltip("XSPH velocity smoothing epsilon, in [0, 1]; 0 turns the pass off.")]
-        float xsphEpsilon = CoreDefaults.XsphEpsilon;
-
-        [SerializeField, Min(0f), Tooltip("Global velocity damping, 1/s, in [0, 1000]; 0 = none.")]
-        float velocityDamping = CoreDefaults.VelocityDamping;
-
-        [SerializeField, Range(0f, 1f), Tooltip("Monaghan artificial viscosity alpha, in [0, 1]: damps the acoustic noise of the weakly compressible fluid; 0 turns it off.")]
-        float artificialViscosity = CoreDefaults.ArtificialViscosity;
+        [SerializeField, Tooltip("The solver's settings; each field's range, unit and meaning are declared once, in FluidSettings.")]
+        FluidSettings settings = new FluidSettings();
 
         [Header("Time stepping")]
-        [SerializeField, Range(0.01f, 1f), Tooltip("Courant number of the CFL condition, in (0, 1].")]
-        float cflNumber = CoreDefaults.CflNumber;
-
-        [SerializeField, Range(1, 1000), Tooltip("Most sub-steps per frame, in [1, 1000]; beyond it the simulation runs slower than real time.")]
-        int maxSubsteps = CoreDefaults.MaxSubsteps;
-
-        [SerializeField, Min(0.00001f), Tooltip("Largest sub-step, s, in (0, 0.1].")]
-        float maxTimeStep = CoreDefaults.MaxTimeStep;
-
         [SerializeField, Range(0.001f, 0.1f), Tooltip("Longest frame simulated, s: a slower frame (a hitch, the editor) is simulated as this long.")]
         float maxFrameTime = 1f / 30f;
 
@@ -142,7 +103,7 @@ namespace SphFluid.Runtime
         public IReadOnlyList<PhaseDescription> Phases => _simulation?.Phases;
 
         /// <summary>Drawn particle radius, m.</summary>
-        public float ParticleRadius => 0.5f * particleSpacing * particleRadiusScale;
+        public float ParticleRadius => 0.5f * settings.ParticleSpacing * particleRadiusScale;
 
         /// <summary>The running simulation (tests and tools); null when not running.</summary>
         public FluidSimulation Simulation => _simulation;
@@ -194,24 +155,11 @@ namespace SphFluid.Runtime
 
         // ------------------------------------------------------------------ description
 
-        public FluidSettings DescribeSettings()
-        {
-            return new FluidSettings
-            {
-                ParticleSpacing = particleSpacing,
-                SmoothingRadius = smoothingRadius,
-                Stiffness = stiffness,
-                Gamma = gamma,
-                Gravity = gravity.ToNumerics(),
-                XsphEpsilon = xsphEpsilon,
-                ArtificialViscosity = artificialViscosity,
-                VelocityDamping = velocityDamping,
-                CflNumber = cflNumber,
-                MaxSubsteps = maxSubsteps,
-                MaxTimeStep = maxTimeStep,
-                MaxParticles = maxParticles,
-            };
-        }
+        /// <summary>The inspector's settings, for scripts; a change takes effect at the next <see cref="ResetSimulation"/>.</summary>
+        public FluidSettings Settings => settings;
+
+        /// <summary>A copy of the inspector's settings: the running simulation keeps its own.</summary>
+        public FluidSettings DescribeSettings() => settings.Clone();
 
         /// <summary>The container this simulator uses: the assigned one, else the scene's.</summary>
         public FluidContainer FindContainer() => container != null ? container : FindFirstObjectByType<FluidContainer>();

@@ -80,11 +80,11 @@ namespace SphFluid.Tests.Runner
         [Test]
         public void ASettingOutOfRangeNamesTheSimulatorField()
         {
-            string path = RunnerPaths.EditedScene("PlayModeTest", "smoothingRadius: 0.04", "smoothingRadius: 0.5");
+            string path = RunnerPaths.EditedScene("PlayModeTest", "    SmoothingRadius: 0.04", "    SmoothingRadius: 0.5");
 
             var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
 
-            Assert.That(error.Message, Does.Contain("GameObject 'Fluid', FluidSimulator.smoothingRadius"));
+            Assert.That(error.Message, Does.Match(@"line \d+: GameObject 'Fluid', FluidSimulator\.settings\.SmoothingRadius"));
         }
 
         [Test]
@@ -108,11 +108,11 @@ namespace SphFluid.Tests.Runner
         [Test]
         public void ANonNumberNamesTheFieldAndLine()
         {
-            string path = RunnerPaths.EditedScene("PlayModeTest", "stiffness: 50000", "stiffness: lots");
+            string path = RunnerPaths.EditedScene("PlayModeTest", "    Stiffness: 50000", "    Stiffness: lots");
 
             var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
 
-            Assert.That(error.Message, Does.Contain("FluidSimulator.stiffness must be a number (was 'lots')"));
+            Assert.That(error.Message, Does.Match(@"PlayModeTest\.unity:\d+: GameObject 'Fluid', FluidSimulator\.settings\.Stiffness must be a number \(was 'lots'\)"));
         }
 
         [Test]

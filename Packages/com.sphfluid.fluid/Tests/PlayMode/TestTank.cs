@@ -71,7 +71,7 @@ namespace SphFluid.Tests.PlayMode
             Set(simulator, "sortShader", LoadShader("ParticleSort"));
             Set(simulator, "prefixSumShader", LoadShader("PrefixSum"));
             Set(simulator, "container", container);
-            Set(simulator, "particleSpacing", Spacing);
+            simulator.Settings.ParticleSpacing = Spacing;
             fluid.SetActive(true);
             return simulator;
         }

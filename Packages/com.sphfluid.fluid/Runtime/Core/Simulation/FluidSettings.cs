@@ -1,71 +1,79 @@
+using System;
 using System.Collections.Generic;
 using System.Numerics;
 
 namespace SphFluid.Simulation
 {
     /// <summary>
-    /// Solver settings of one fluid (the SPH component's inspector). Defaults suit a tank of about
-    /// 0.5 m: spacing 2 cm, support 2 spacings, a speed of sound of about 20 m/s (ten times the speed
-    /// of a 0.2 m dam break). Walls are boundary particles (BoundarySampling), so they need no settings here.
+    /// Solver settings of one fluid, each declared once: the field's initializer is its default and its
+    /// <see cref="SettingAttribute"/> its range, unit, group and tooltip. Unity serializes the class inside the
+    /// simulator component (the fields are public for that reason), the editor drawer shows the declarations as
+    /// tooltips and ranges, the headless scene reader reads the same field names, and <see cref="Validate()"/> checks
+    /// the declared ranges. Defaults suit a tank of about 0.5 m: spacing 2 cm, support 2 spacings, a speed of sound of
+    /// about 20 m/s (ten times the speed of a 0.2 m dam break). Walls are boundary particles (BoundarySampling), so
+    /// they need no settings here.
     /// </summary>
+    [Serializable]
     public sealed class FluidSettings
     {
         public const float MinSupportRatio = 2f, MaxSupportRatio = 4f;
 
-        /// <summary>Lattice spacing s of spawned particles, m, in [0.001, 1].</summary>
-        public float ParticleSpacing { get; set; } = 0.02f;
+        const string Particles = "Particles", Pressure = "Pressure", Forces = "Forces", Stepping = "Time stepping";
 
-        /// <summary>Kernel support radius H (= grid cell size), m; H / s must be in [2, 4]. 2 spacings by default:
-        /// the cubic spline then recovers a linear pressure gradient to 2 % on the lattice at the lowest cost
-        /// (SmoothingKernels.LatticeGradientReproduction).</summary>
-        public float SmoothingRadius { get; set; } = 0.04f;
+        [Setting(Particles, 0.001, 1, "m", "Lattice spacing s of spawned particles: the resolution. Halving it gives 8 times the particles.")]
+        public float ParticleSpacing = 0.02f;
 
-        /// <summary>How pressure is computed: Tait equation of state (WCSPH) or iterative incompressible solves (DFSPH).</summary>
-        public PressureSolver PressureSolver { get; set; } = PressureSolver.Wcsph;
+        // 2 spacings by default: the cubic spline then recovers a linear pressure gradient to 2 % on the lattice at the
+        // lowest cost (SmoothingKernels.LatticeGradientReproduction).
+        [Setting(Particles, 0.002, 4, "m", "Kernel support radius H (= grid cell size), 2 to 4 particle spacings: wider is smoother and slower.")]
+        public float SmoothingRadius = 0.04f;
 
-        /// <summary>DFSPH: largest average density error the constant-density solve accepts, %, in [0.001, 10].</summary>
-        public float DensityTolerance { get; set; } = 0.1f;
+        [Setting(Particles, 1, 16777216, "", "Most particles the spawn boxes may hold together.")]
+        public int MaxParticles = 262144;
 
-        /// <summary>DFSPH: largest average rate of density change the divergence-free solve accepts, %/s, in [0.01, 1000].</summary>
-        public float DivergenceTolerance { get; set; } = 10f;
+        [Setting(Pressure, 0, 1, "", "How pressure is computed: 0 = WCSPH (Tait equation of state, one pass, step bounded by the speed of sound), 1 = DFSPH (iterative incompressible solves to a tolerance, step bounded by the flow speed).")]
+        public PressureSolver PressureSolver = PressureSolver.Wcsph;
 
-        /// <summary>DFSPH: most iterations of each solve per sub-step, in [1, 1000].</summary>
-        public int MaxSolverIterations { get; set; } = 100;
+        [Setting(Pressure, 0.001, 10, "%", "DFSPH: largest average density error the constant-density solve accepts.")]
+        public float DensityTolerance = 0.1f;
 
-        /// <summary>Tait stiffness k, Pa, in [1, 1e9]; speed of sound c = sqrt(k gamma / rho0). The scene narrows it:
-        /// c must exceed the scene's fastest speed and stay within 100 times it (<see cref="SpeedOfSoundRule"/>).</summary>
-        public float Stiffness { get; set; } = 50000f;
+        [Setting(Pressure, 0.01, 1000, "%/s", "DFSPH: largest average rate of density change the divergence-free solve accepts.")]
+        public float DivergenceTolerance = 10f;
 
-        /// <summary>Tait exponent gamma, in [1, 10].</summary>
-        public float Gamma { get; set; } = 7f;
+        [Setting(Pressure, 1, 1000, "", "DFSPH: most iterations of each solve per sub-step.")]
+        public int MaxSolverIterations = 100;
 
-        /// <summary>Gravitational acceleration, m/s^2 (|g| up to 1000, and a fall along the container's diagonal
-        /// must stay below the speed of sound: <see cref="SpeedOfSoundRule"/>).</summary>
-        public Vector3 Gravity { get; set; } = new Vector3(0f, -9.81f, 0f);
+        // The scene narrows the stiffness: c must exceed the scene's fastest speed and stay within 100 times it
+        // (SpeedOfSoundRule).
+        [Setting(Pressure, 1, 1e9, "Pa", "WCSPH: Tait stiffness k; speed of sound c = sqrt(k gamma / rho0). Stiffer compresses less but takes shorter steps.")]
+        public float Stiffness = 50000f;
 
-        /// <summary>XSPH velocity smoothing epsilon, in [0, 1]; 0 turns the pass off. Applied to the velocity every
-        /// sub-step, it pulls each particle towards its neighbours' mean velocity by epsilon per sub-step: keep it
-        /// small (0.02) or it damps buoyancy-driven flow (oil rising through water) along with the noise.</summary>
-        public float XsphEpsilon { get; set; } = 0.02f;
+        [Setting(Pressure, 1, 10, "", "WCSPH: Tait exponent gamma (7 for water).")]
+        public float Gamma = 7f;
 
-        /// <summary>Monaghan's artificial viscosity alpha, in [0, 1]: damps the acoustic noise of the weakly
-        /// compressible fluid on approaching particle pairs (SphViscosity.hlsl). 0 turns it off.</summary>
-        public float ArtificialViscosity { get; set; } = 0.02f;
+        // A fall along the container's diagonal must also stay below the speed of sound (SpeedOfSoundRule).
+        [Setting(Forces, 0, 1000, "m/s^2", "Gravitational acceleration, in world space.")]
+        public SettingVector Gravity = new Vector3(0f, -9.81f, 0f);
 
-        /// <summary>Global velocity damping, 1/s, in [0, 1000]; 0 = none.</summary>
-        public float VelocityDamping { get; set; }
+        // Applied every sub-step, it pulls each particle towards its neighbours' mean velocity by epsilon per
+        // sub-step: kept small (0.02) or it damps buoyancy-driven flow (oil rising through water) with the noise.
+        [Setting(Forces, 0, 1, "", "XSPH velocity smoothing epsilon; 0 turns the pass off.")]
+        public float XsphEpsilon = 0.02f;
 
-        /// <summary>Courant number of the CFL condition, in (0, 1].</summary>
-        public float CflNumber { get; set; } = 0.3f;
+        [Setting(Forces, 0, 1, "", "Monaghan's artificial viscosity alpha: damps the acoustic noise of approaching particle pairs; 0 turns it off.")]
+        public float ArtificialViscosity = 0.02f;
 
-        /// <summary>Most sub-steps per frame, in [1, 1000]; beyond it the simulation runs slower than real time.</summary>
-        public int MaxSubsteps { get; set; } = 32;
+        [Setting(Forces, 0, 1000, "1/s", "Global velocity damping; 0 = none.")]
+        public float VelocityDamping;
 
-        /// <summary>Largest sub-step, s, in (0, 0.1].</summary>
-        public float MaxTimeStep { get; set; } = 0.005f;
+        [Setting(Stepping, 0, 1, "", "Courant number of the CFL condition: the fraction of a support radius a particle may travel per sub-step.", MinExclusive = true)]
+        public float CflNumber = 0.3f;
 
-        /// <summary>Most particles the scene may spawn, in [1, 16777216].</summary>
-        public int MaxParticles { get; set; } = 262144;
+        [Setting(Stepping, 1, 1000, "", "Most sub-steps per frame; beyond it the simulation runs slower than real time.")]
+        public int MaxSubsteps = 32;
+
+        [Setting(Stepping, 0, 0.1, "s", "Largest sub-step.", MinExclusive = true)]
+        public float MaxTimeStep = 0.005f;
 
         public FluidSettings Clone() => (FluidSettings)MemberwiseClone();
 
@@ -79,25 +87,14 @@ namespace SphFluid.Simulation
         internal void Validate(List<ValidationError> errors, string path)
         {
             const string owner = "FluidSettings";
-            bool spacingOk = ValidationRules.InRange(errors, owner, path, nameof(ParticleSpacing), ParticleSpacing, 0.001f, 1f, "m");
-            if (spacingOk)
+            bool spacingOk = SettingRules.Validate(this, errors, owner, path, nameof(ParticleSpacing));
+            foreach (var field in SettingRules.Declared(typeof(FluidSettings)))
+                if (field.Field.Name != nameof(ParticleSpacing)) SettingRules.Validate(this, errors, owner, path, field.Field.Name);
+            if (spacingOk && !errors.Exists(e => e.Field == path + nameof(SmoothingRadius)))
             {
                 ValidationRules.InRange(errors, owner, path, nameof(SmoothingRadius), SmoothingRadius,
                     MinSupportRatio * ParticleSpacing, MaxSupportRatio * ParticleSpacing, "m (2 to 4 particle spacings)");
             }
-            ValidationRules.InRange(errors, owner, path, nameof(Stiffness), Stiffness, 1f, 1e9f, "Pa");
-            ValidationRules.InRange(errors, owner, path, nameof(DensityTolerance), DensityTolerance, 0.001f, 10f, "%");
-            ValidationRules.InRange(errors, owner, path, nameof(DivergenceTolerance), DivergenceTolerance, 0.01f, 1000f, "%/s");
-            ValidationRules.InRange(errors, owner, path, nameof(MaxSolverIterations), MaxSolverIterations, 1, 1000, "");
-            ValidationRules.InRange(errors, owner, path, nameof(Gamma), Gamma, 1f, 10f, "");
-            ValidationRules.Finite(errors, owner, path, nameof(Gravity), Gravity, 1000f, "m/s^2");
-            ValidationRules.InRange(errors, owner, path, nameof(XsphEpsilon), XsphEpsilon, 0f, 1f, "");
-            ValidationRules.InRange(errors, owner, path, nameof(ArtificialViscosity), ArtificialViscosity, 0f, 1f, "");
-            ValidationRules.InRange(errors, owner, path, nameof(VelocityDamping), VelocityDamping, 0f, 1000f, "1/s");
-            ValidationRules.Positive(errors, owner, path, nameof(CflNumber), CflNumber, 1f, "");
-            ValidationRules.InRange(errors, owner, path, nameof(MaxSubsteps), MaxSubsteps, 1, 1000, "");
-            ValidationRules.Positive(errors, owner, path, nameof(MaxTimeStep), MaxTimeStep, 0.1f, "s");
-            ValidationRules.InRange(errors, owner, path, nameof(MaxParticles), MaxParticles, 1, 16777216, "");
         }
     }
 }

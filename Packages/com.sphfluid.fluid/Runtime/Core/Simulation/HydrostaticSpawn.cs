@@ -31,7 +31,7 @@ namespace SphFluid.Simulation
             var settings = scene.Settings;
             float g = settings.Gravity.Length();
             if (!(g > 0f) || particles.Length == 0) return;
-            var up = -settings.Gravity / g;
+            var up = -(Vector3)settings.Gravity / g;
             var boxes = scene.SpawnBoxes;
             for (int i = 0; i < particles.Length; i++)
             {

@@ -42,7 +42,7 @@ namespace SphFluid.Tests.Core.Simulation
         public void SettingsOutOfRange_NameTheField(string field, string message)
         {
             var settings = new FluidSettings();
-            typeof(FluidSettings).GetProperty(field).SetValue(settings, -1f);
+            typeof(FluidSettings).GetField(field).SetValue(settings, -1f);
             Assert.That(settings.Validate().Select(e => e.Message).ToArray(), Has.Member("FluidSettings: " + message));
         }
 
