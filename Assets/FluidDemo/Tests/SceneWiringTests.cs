@@ -54,6 +54,9 @@ namespace SphFluid.Demo.Tests
             }
             Object material = serialized.FindProperty("particleMaterial").objectReferenceValue;
             Assert.That(material, Is.Not.Null, $"{path}: FluidSimulator.particleMaterial is not assigned");
+            Object universal = serialized.FindProperty("universalParticleShader").objectReferenceValue;
+            Assert.That(universal, Is.Not.Null, $"{path}: FluidSimulator.universalParticleShader is not assigned (the particles would not draw in URP)");
+            Assert.That(universal.name, Is.EqualTo("SphFluid/ParticlesUniversal"), $"{path}: FluidSimulator.universalParticleShader");
 
             var messages = new List<string>();
             foreach (ValidationError e in simulator.DescribeScene().Validate()) messages.Add(e.Message);

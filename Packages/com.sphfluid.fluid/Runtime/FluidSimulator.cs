@@ -37,8 +37,11 @@ namespace SphFluid.Runtime
         ComputeShader prefixSumShader = null;
 
         [Header("Rendering")]
-        [SerializeField, Tooltip("Material of the particle point shader (reads _Particles, _Phases, _ParticleRadius).")]
+        [SerializeField, Tooltip("Material of the particle shader FluidParticles.shader (Built-in pipeline); its values also drive the URP shader.")]
         Material particleMaterial = null;
+
+        [SerializeField, Tooltip("FluidParticlesUniversal.shader: drawn with the material's values when URP is the active pipeline (enable Opaque Texture in the URP asset).")]
+        Shader universalParticleShader = null;
 
         [SerializeField, Range(0.25f, 3f), Tooltip("Drawn particle radius in half particle spacings (1 = spheres just touching).")]
         float particleRadiusScale = 1.2f;
@@ -61,6 +64,8 @@ namespace SphFluid.Runtime
         UnityComputeDevice _device;
         FluidSimulation _simulation;
         MaterialPropertyBlock _properties;
+        Material _universalMaterial; // particleMaterial's values on universalParticleShader, made on the first URP frame
+        bool _pipelineWarned;
         FluidContainer _container;
         readonly List<SphereObstacle> _obstacles = new List<SphereObstacle>();
         readonly List<Vector3> _obstaclePositions = new List<Vector3>();
@@ -281,6 +286,9 @@ namespace SphFluid.Runtime
             _simulation = null;
             _device?.Dispose(); // releases any buffer the simulation did not
             _device = null;
+            if (_universalMaterial != null) Destroy(_universalMaterial);
+            _universalMaterial = null;
+            _pipelineWarned = false;
             _obstacles.Clear();
             _obstaclePositions.Clear();
             _obstacleRows.Clear();
@@ -398,7 +406,8 @@ namespace SphFluid.Runtime
 
         void Draw()
         {
-            if (particleMaterial == null || _container == null) return;
+            Material material = MaterialForPipeline();
+            if (material == null || _container == null) return;
             var particles = (UnityComputeBuffer)_simulation.Particles; // alternates every sort: fetch each frame
             var phases = (UnityComputeBuffer)_simulation.PhaseTable;
             _properties.SetBuffer(ShaderIds.Particles, particles.Buffer);
@@ -407,7 +416,7 @@ namespace SphFluid.Runtime
 
             Transform box = _container.transform;
             float reach = box.lossyScale.magnitude + 4f * ParticleRadius; // any rotation of the box fits
-            var parameters = new RenderParams(particleMaterial)
+            var parameters = new RenderParams(material)
             {
                 worldBounds = new Bounds(box.position, new Vector3(reach, reach, reach)),
                 matProps = _properties,
@@ -417,6 +426,39 @@ namespace SphFluid.Runtime
             };
             Graphics.RenderPrimitives(parameters, MeshTopology.Triangles, 6, _simulation.ParticleCount);
         }
+
+        /// <summary>
+        /// The material for the active render pipeline: particleMaterial itself in the Built-in pipeline (no
+        /// pipeline asset), a copy of its values on universalParticleShader in URP, null (not drawn, one warning)
+        /// for any other pipeline. Asked every frame: the pipeline asset may change with the quality level.
+        /// </summary>
+        Material MaterialForPipeline()
+        {
+            if (particleMaterial == null) return null;
+            RenderPipelineAsset pipeline = GraphicsSettings.currentRenderPipeline;
+            if (pipeline == null) return particleMaterial;
+            if (pipeline.renderPipelineShaderTag != UniversalPipelineTag || universalParticleShader == null)
+            {
+                if (!_pipelineWarned)
+                    Debug.LogWarning(universalParticleShader == null && pipeline.renderPipelineShaderTag == UniversalPipelineTag
+                        ? $"FluidSimulator '{name}': URP is the active pipeline but field 'universalParticleShader' is empty; assign Packages/com.sphfluid.fluid/Shaders/FluidParticlesUniversal.shader. The fluid is simulated but not drawn"
+                        : $"FluidSimulator '{name}': render pipeline '{pipeline.name}' (shader tag '{pipeline.renderPipelineShaderTag}') is neither Built-in nor URP ('{UniversalPipelineTag}'); the fluid is simulated but not drawn", this);
+                _pipelineWarned = true;
+                return null;
+            }
+            if (_universalMaterial == null)
+            {
+                _universalMaterial = new Material(universalParticleShader) { name = particleMaterial.name + " (URP)", hideFlags = HideFlags.DontSave };
+                // Read by name: the project must compile without the URP package.
+                if (pipeline.GetType().GetProperty("supportsCameraOpaqueTexture")?.GetValue(pipeline) is bool opaque && !opaque)
+                    Debug.LogWarning($"FluidSimulator '{name}': URP asset '{pipeline.name}' has Opaque Texture off; the liquid shows no scene behind it unless the camera turns it on (Rendering > Opaque Texture)", this);
+            }
+            _universalMaterial.CopyPropertiesFromMaterial(particleMaterial); // inspector edits of the material carry over
+            return _universalMaterial;
+        }
+
+        /// <summary>The "RenderPipeline" SubShader tag URP's asset reports; FluidParticlesUniversal.shader carries it.</summary>
+        const string UniversalPipelineTag = "UniversalPipeline";
 
         /// <summary>Material property ids, looked up once (on first use, on the main thread).</summary>
         static class ShaderIds

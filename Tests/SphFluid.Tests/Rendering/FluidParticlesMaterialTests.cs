@@ -54,6 +54,28 @@ namespace SphFluid.Tests.Rendering
         }
 
         [Test]
+        public void Every_scene_gives_its_simulator_the_material_and_the_URP_shader()
+        {
+            const string universalShader = "Packages/com.sphfluid.fluid/Shaders/FluidParticlesUniversal.shader";
+            string materialGuid = UnityMeta.GuidOf(At(MaterialRelativePath));
+            string universalGuid = UnityMeta.GuidOf(At(universalShader));
+            var scenes = Directory.GetFiles(At("Assets/FluidDemo/Scenes"), "*.unity");
+            Assert.That(scenes, Is.Not.Empty);
+            var problems = new List<string>();
+            foreach (string scene in scenes)
+            {
+                var simulators = UnityYamlFile.Load(scene).Documents.Where(d => d.Root.GetReference("particleMaterial") != null).ToList();
+                if (simulators.Count != 1) { problems.Add(Path.GetFileName(scene) + ": " + simulators.Count + " FluidSimulators"); continue; }
+                var material = simulators[0].Root.GetReference("particleMaterial");
+                var universal = simulators[0].Root.GetReference("universalParticleShader");
+                if (material.Guid != materialGuid) problems.Add(Path.GetFileName(scene) + ": particleMaterial is not " + MaterialRelativePath);
+                if (universal == null || universal.Guid != universalGuid || universal.FileId != 4800000L || universal.Type != 3)
+                    problems.Add(Path.GetFileName(scene) + ": universalParticleShader is not " + universalShader + " (the particles would not draw in URP)");
+            }
+            Assert.That(problems, Is.Empty, string.Join("\n", problems));
+        }
+
+        [Test]
         public void Every_numeric_property_has_a_material_value_inside_its_range()
         {
             var material = Material();

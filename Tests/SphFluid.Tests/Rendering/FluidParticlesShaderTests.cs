@@ -11,28 +11,40 @@ using SphFluid.Vulkan;
 namespace SphFluid.Tests.Rendering
 {
     /// <summary>
-    /// The particle shader's HLSL compiles (vertex and fragment stage, both depth conventions) with glslang
-    /// against the smallest stand-in for Unity's built-ins, so a syntax or type error is caught in CI instead
-    /// of in the editor; and the shader keeps the contract the Unity side draws it with.
+    /// Both particle shaders' HLSL (Built-in and URP) compiles (vertex and fragment stage, both depth
+    /// conventions) with glslang against the smallest stand-in for Unity's built-ins, so a syntax or type error
+    /// is caught in CI instead of in the editor; and each keeps the contract the Unity side draws it with.
     /// </summary>
     public sealed class FluidParticlesShaderTests
     {
-        const string ShaderRelativePath = "Packages/com.sphfluid.fluid/Shaders/FluidParticles.shader";
+        const string BuiltInShader = "Packages/com.sphfluid.fluid/Shaders/FluidParticles.shader";
+        const string UniversalShader = "Packages/com.sphfluid.fluid/Shaders/FluidParticlesUniversal.shader";
+        /// <summary>The shader the single-shader tests (the deliberately broken program) take.</summary>
+        const string ShaderRelativePath = BuiltInShader;
+
+        /// <summary>Every pipeline's particle shader: the tests that take one run for each.</summary>
+        static readonly string[] ParticleShaders = { BuiltInShader, UniversalShader };
 
         /// <summary>Stand-in platforms: D3D11/Vulkan/Metal-like (reversed Z) and OpenGL Core-like.</summary>
         static readonly string[][] Platforms = { new string[0], new[] { "SPHFLUID_STANDIN_OPENGL=1" } };
 
+        /// <summary>Uniforms the render pipeline sets each frame, never a material: they need no Properties entry.</summary>
+        static readonly string[] PipelineUniforms = { "_FluidBackground", "_CameraOpaqueTexture", "_MainLightPosition", "_MainLightColor" };
+
         static string ShaderPath => Path.Combine(GpuTestDevice.RepoRoot, ShaderRelativePath);
 
-        static ShaderLabSource Shader() => ShaderLabSource.Load(ShaderPath);
+        static ShaderLabSource Shader(string relativePath) => ShaderLabSource.Load(Path.Combine(GpuTestDevice.RepoRoot, relativePath));
 
-        [Test]
-        public void Every_program_compiles_for_vertex_and_fragment_stage_on_both_depth_conventions()
+        /// <summary>The program as the compiler reads it, the project's includes inlined (not Unity's).</summary>
+        static string Expanded(ShaderLabProgram program) => program.WithLocalIncludes(GlslangShaderCheck.ShaderDir);
+
+        [TestCaseSource(nameof(ParticleShaders))]
+        public void Every_program_compiles_for_vertex_and_fragment_stage_on_both_depth_conventions(string relativePath)
         {
             GlslangShaderCheck.RequireTool("glslangValidator");
             GlslangShaderCheck.RequireTool("spirv-val");
-            var shader = Shader();
-            Assert.That(shader.Programs, Is.Not.Empty, ShaderRelativePath + " has no HLSLPROGRAM block");
+            var shader = Shader(relativePath);
+            Assert.That(shader.Programs, Is.Not.Empty, relativePath + " has no HLSLPROGRAM block");
 
             string work = GlslangShaderCheck.NewWorkDir();
             try
@@ -42,15 +54,15 @@ namespace SphFluid.Tests.Rendering
                 for (int p = 0; p < shader.Programs.Count; p++)
                 {
                     var program = shader.Programs[p];
-                    string hlsl = Path.Combine(work, "FluidParticles.program" + p + ".hlsl");
-                    File.WriteAllText(hlsl, program.WithLineDirective(ShaderRelativePath));
+                    string hlsl = Path.Combine(work, Path.GetFileNameWithoutExtension(relativePath) + ".program" + p + ".hlsl");
+                    File.WriteAllText(hlsl, program.WithLineDirective(relativePath));
                     foreach (var defines in Platforms)
                     {
                         foreach (var (stage, entry) in new[] { ("vert", program.VertexEntry), ("frag", program.FragmentEntry) })
                         {
                             if (entry == null)
                             {
-                                failures.Add(ShaderRelativePath + ":" + program.FirstLine + ": program has no #pragma " + (stage == "vert" ? "vertex" : "fragment"));
+                                failures.Add(relativePath + ":" + program.FirstLine + ": program has no #pragma " + (stage == "vert" ? "vertex" : "fragment"));
                                 continue;
                             }
                             var result = GlslangShaderCheck.CompileStage(hlsl, stage, entry, defines, work);
@@ -76,9 +88,10 @@ namespace SphFluid.Tests.Rendering
             string text = File.ReadAllText(ShaderPath);
             var original = ShaderLabSource.Parse(text, ShaderPath).Programs[0];
             string[] programLines = original.Source.Split('\n');
-            int fragLine = Array.FindIndex(programLines, l => Regex.IsMatch(l, "\\bfrag\\s*\\("));
-            Assume.That(fragLine, Is.GreaterThanOrEqualTo(0), "no frag( line to break");
-            int braceLine = Array.FindIndex(programLines, fragLine, l => l.Trim() == "{");
+            // The fragment stage calls the shader's own BackgroundBehind: break that, a line of the .shader itself.
+            int functionLine = Array.FindIndex(programLines, l => Regex.IsMatch(l, "\\bBackgroundBehind\\s*\\("));
+            Assume.That(functionLine, Is.GreaterThanOrEqualTo(0), "no BackgroundBehind( line to break");
+            int braceLine = Array.FindIndex(programLines, functionLine, l => l.Trim() == "{");
             programLines[braceLine + 1] = "float brokenOnPurpose = notDeclaredAnywhere;" + programLines[braceLine + 1];
             var broken = new ShaderLabProgram
             {
@@ -105,16 +118,16 @@ namespace SphFluid.Tests.Rendering
             }
         }
 
-        [Test]
-        public void No_implicit_vector_truncation_that_FXC_would_warn_about()
+        [TestCaseSource(nameof(ParticleShaders))]
+        public void No_implicit_vector_truncation_that_FXC_would_warn_about(string relativePath)
         {
             GlslangShaderCheck.RequireTool("glslangValidator");
-            var program = Shader().Programs[0];
+            var program = Shader(relativePath).Programs[0];
             string work = GlslangShaderCheck.NewWorkDir();
             try
             {
                 string hlsl = Path.Combine(work, "FluidParticles.hlsl");
-                File.WriteAllText(hlsl, program.WithLineDirective(ShaderRelativePath));
+                File.WriteAllText(hlsl, program.WithLineDirective(relativePath));
                 var problems = new List<string>();
                 foreach (var defines in Platforms)
                 {
@@ -124,7 +137,7 @@ namespace SphFluid.Tests.Rendering
                         problems.AddRange(ImplicitTruncationLint.Find(tree).Select(p => stage + " " + p));
                     }
                 }
-                Assert.That(problems.Distinct().ToList(), Is.Empty, "lines of " + ShaderRelativePath + " or its includes");
+                Assert.That(problems.Distinct().ToList(), Is.Empty, "lines of " + relativePath + " or its includes");
             }
             finally
             {
@@ -152,17 +165,17 @@ namespace SphFluid.Tests.Rendering
             }
         }
 
-        [Test]
-        public void Vertex_stage_reads_the_particle_and_phase_buffers_with_the_CSharp_strides()
+        [TestCaseSource(nameof(ParticleShaders))]
+        public void Vertex_stage_reads_the_particle_and_phase_buffers_with_the_CSharp_strides(string relativePath)
         {
             GlslangShaderCheck.RequireTool("glslangValidator");
             GlslangShaderCheck.RequireTool("spirv-val");
-            var program = Shader().Programs[0];
+            var program = Shader(relativePath).Programs[0];
             string work = GlslangShaderCheck.NewWorkDir();
             try
             {
                 string hlsl = Path.Combine(work, "FluidParticles.hlsl");
-                File.WriteAllText(hlsl, program.WithLineDirective(ShaderRelativePath));
+                File.WriteAllText(hlsl, program.WithLineDirective(relativePath));
                 var result = GlslangShaderCheck.CompileStage(hlsl, "vert", program.VertexEntry, new string[0], work);
                 Assert.That(result.Succeeded, Is.True, result.Messages);
 
@@ -180,29 +193,67 @@ namespace SphFluid.Tests.Rendering
             }
         }
 
-        [Test]
-        public void Shader_keeps_the_contract_the_Unity_side_draws_it_with()
+        [TestCaseSource(nameof(ParticleShaders))]
+        public void Shader_keeps_the_contract_the_Unity_side_draws_it_with(string relativePath)
         {
-            var shader = Shader();
-            Assert.That(shader.Name, Is.EqualTo("SphFluid/Particles"));
+            var shader = Shader(relativePath);
             Assert.That(shader.Programs.Count, Is.EqualTo(1));
             var program = shader.Programs[0];
+            string source = Expanded(program);
             Assert.That(program.VertexEntry, Is.EqualTo("vert"));
             Assert.That(program.FragmentEntry, Is.EqualTo("frag"));
             Assert.That(program.Target, Is.EqualTo("4.5"), "StructuredBuffer in the vertex stage needs #pragma target 4.5");
             Assert.That(program.Source, Does.Contain("#include \"UnityCG.cginc\""));
-            Assert.That(program.Source, Does.Match("StructuredBuffer<Particle>\\s+_Particles\\s*;"));
-            Assert.That(program.Source, Does.Match("StructuredBuffer<PhaseProperties>\\s+_Phases\\s*;"));
-            Assert.That(program.Source, Does.Match("vert\\s*\\(\\s*uint\\s+\\w+\\s*:\\s*SV_VertexID\\s*,\\s*uint\\s+\\w+\\s*:\\s*SV_InstanceID\\s*\\)"));
-            Assert.That(program.Source, Does.Contain("SV_Depth"));
-            Assert.That(shader.Text, Does.Match("GrabPass\\s*\\{\\s*\"_FluidBackground\"\\s*\\}"));
+            Assert.That(program.Source, Does.Contain("#include \"Include/FluidParticlesPass.hlsl\""), "the pass is shared by every pipeline's shader");
+            Assert.That(source, Does.Match("StructuredBuffer<Particle>\\s+_Particles\\s*;"));
+            Assert.That(source, Does.Match("StructuredBuffer<PhaseProperties>\\s+_Phases\\s*;"));
+            Assert.That(source, Does.Match("vert\\s*\\(\\s*uint\\s+\\w+\\s*:\\s*SV_VertexID\\s*,\\s*uint\\s+\\w+\\s*:\\s*SV_InstanceID\\s*\\)"));
+            Assert.That(source, Does.Contain("SV_Depth"));
             Assert.That(shader.Text, Does.Match("\"Queue\"\\s*=\\s*\"Transparent\""));
         }
 
         [Test]
-        public void Every_material_parameter_the_HLSL_reads_is_a_declared_property_and_back()
+        public void Built_in_shader_refracts_its_GrabPass_and_serves_only_the_Built_in_pipeline()
         {
-            var shader = Shader();
+            var shader = Shader(BuiltInShader);
+            Assert.That(shader.Name, Is.EqualTo("SphFluid/Particles"));
+            Assert.That(shader.Text, Does.Match("GrabPass\\s*\\{\\s*\"_FluidBackground\"\\s*\\}"));
+            Assert.That(shader.Programs[0].Source, Does.Match("Texture2D\\s+_FluidBackground\\s*;"));
+            Assert.That(shader.Text, Does.Match("\"LightMode\"\\s*=\\s*\"ForwardBase\""));
+            // A RenderPipeline tag would hide the SubShader from the Built-in pipeline.
+            Assert.That(shader.Text, Does.Not.Contain("\"RenderPipeline\""));
+        }
+
+        [Test]
+        public void Universal_shader_refracts_the_opaque_texture_and_needs_no_URP_package()
+        {
+            var shader = Shader(UniversalShader);
+            string text = shader.Text;
+            Assert.That(shader.Name, Is.EqualTo("SphFluid/ParticlesUniversal"));
+            Assert.That(text, Does.Match("\"RenderPipeline\"\\s*=\\s*\"UniversalPipeline\""));
+            Assert.That(text, Does.Match("\"LightMode\"\\s*=\\s*\"UniversalForward\""), "a pass URP's forward renderer draws");
+            Assert.That(text, Does.Not.Match("GrabPass\\s*\\{"), "URP ignores GrabPass");
+            Assert.That(shader.Programs[0].Source, Does.Match("Texture2D\\s+_CameraOpaqueTexture\\s*;"));
+            Assert.That(shader.Programs[0].Source, Does.Match("SamplerState\\s+sampler_CameraOpaqueTexture\\s*;"));
+            Assert.That(Expanded(shader.Programs[0]), Does.Not.Contain("Packages/"),
+                "an include from a package would break the shader's import in a Built-in project without URP");
+            Assert.That(text, Does.Contain("Opaque Texture"), "the shader says what the URP asset must enable");
+        }
+
+        [Test]
+        public void Both_shaders_declare_the_same_properties_so_one_material_serves_either()
+        {
+            string Describe(ShaderLabProperty p) => p.Name + " " + p.Type + " [" + p.RangeMin + ", " + p.RangeMax + "] = " + p.Default;
+            var builtIn = Shader(BuiltInShader).Properties.Select(Describe).ToList();
+            var universal = Shader(UniversalShader).Properties.Select(Describe).ToList();
+            Assert.That(builtIn, Is.Not.Empty);
+            Assert.That(universal, Is.EqualTo(builtIn));
+        }
+
+        [TestCaseSource(nameof(ParticleShaders))]
+        public void Every_material_parameter_the_HLSL_reads_is_a_declared_property_and_back(string relativePath)
+        {
+            var shader = Shader(relativePath);
             var declared = shader.Properties.Select(p => p.Name).ToList();
             Assert.That(declared, Is.Unique);
 
@@ -211,34 +262,33 @@ namespace SphFluid.Tests.Rendering
             var uniforms = new List<string>();
             foreach (var program in shader.Programs)
             {
-                foreach (Match m in Regex.Matches(program.Source, "^[ \\t]*(?:float|float2|float3|float4|int|uint|half|half4|Texture2D)\\s+(_[A-Z]\\w*)\\s*;", RegexOptions.Multiline))
+                foreach (Match m in Regex.Matches(Expanded(program), "^[ \\t]*(?:float|float2|float3|float4|int|uint|half|half4|Texture2D)\\s+(_[A-Z]\\w*)\\s*;", RegexOptions.Multiline))
                     uniforms.Add(m.Groups[1].Value);
             }
-            var grabbed = new[] { "_FluidBackground" };
-            Assert.That(uniforms.Except(grabbed).Except(declared).ToList(), Is.Empty, "uniforms without a Properties entry");
+            Assert.That(uniforms.Except(PipelineUniforms).Except(declared).ToList(), Is.Empty, "uniforms without a Properties entry");
             Assert.That(declared.Except(uniforms).ToList(), Is.Empty, "Properties the HLSL never declares (they would do nothing)");
         }
 
-        [Test]
-        public void Every_property_default_lies_in_its_range()
+        [TestCaseSource(nameof(ParticleShaders))]
+        public void Every_property_default_lies_in_its_range(string relativePath)
         {
-            foreach (var property in Shader().Properties.Where(p => p.Type == "Range"))
+            foreach (var property in Shader(relativePath).Properties.Where(p => p.Type == "Range"))
             {
                 float value = float.Parse(property.Default, System.Globalization.CultureInfo.InvariantCulture);
                 Assert.That(value, Is.InRange(property.RangeMin.Value, property.RangeMax.Value), property.Name + " (line " + property.Line + ")");
             }
         }
 
-        [Test]
-        public void Optional_DXC_compiles_both_stages_when_installed()
+        [TestCaseSource(nameof(ParticleShaders))]
+        public void Optional_DXC_compiles_both_stages_when_installed(string relativePath)
         {
             if (GlslangShaderCheck.FindOnPath("dxc") == null) Assert.Ignore("dxc (DirectX Shader Compiler) is not installed: optional second compiler");
-            var program = Shader().Programs[0];
+            var program = Shader(relativePath).Programs[0];
             string work = GlslangShaderCheck.NewWorkDir();
             try
             {
                 string hlsl = Path.Combine(work, "FluidParticles.hlsl");
-                File.WriteAllText(hlsl, program.WithLineDirective(ShaderRelativePath));
+                File.WriteAllText(hlsl, program.WithLineDirective(relativePath));
                 foreach (var (profile, entry) in new[] { ("vs_6_0", program.VertexEntry), ("ps_6_0", program.FragmentEntry) })
                 {
                     var (exit, output) = GlslangShaderCheck.Run("dxc", new[] { "-T", profile, "-E", entry,

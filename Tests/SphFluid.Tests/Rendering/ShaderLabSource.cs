@@ -34,6 +34,28 @@ namespace SphFluid.Tests.Rendering
         /// <summary>The program as a standalone HLSL file whose compiler messages name the .shader file and its lines.</summary>
         public string WithLineDirective(string shaderPathForMessages) =>
             "#line " + FirstLine.ToString(CultureInfo.InvariantCulture) + " \"" + shaderPathForMessages.Replace('\\', '/') + "\"\n" + Source;
+
+        /// <summary>
+        /// The program with every quoted #include that resolves to a file (beside the including file) inlined,
+        /// each file once: the text the compiler sees, short of the pipeline's own includes (UnityCG.cginc...),
+        /// which stay as #include lines. For reading the program's declarations, not for compiling.
+        /// </summary>
+        public string WithLocalIncludes(string shaderDirectory)
+        {
+            var seen = new HashSet<string>(StringComparer.Ordinal);
+            return Inline(Source, shaderDirectory, seen);
+        }
+
+        static readonly Regex IncludeLine = new Regex("^[ \\t]*#include\\s+\"([^\"]+)\"[^\\n]*$", RegexOptions.Multiline);
+
+        static string Inline(string text, string directory, HashSet<string> seen) =>
+            IncludeLine.Replace(text, m =>
+            {
+                string file = System.IO.Path.GetFullPath(System.IO.Path.Combine(directory, m.Groups[1].Value));
+                if (!File.Exists(file)) return m.Value;
+                if (!seen.Add(file)) return "";
+                return Inline(File.ReadAllText(file).Replace("\r\n", "\n"), System.IO.Path.GetDirectoryName(file), seen);
+            });
     }
 
     /// <summary>

@@ -1,7 +1,8 @@
 #ifndef SPHFLUID_STANDIN_UNITYCG_INCLUDED
 #define SPHFLUID_STANDIN_UNITYCG_INCLUDED
 
-// Test-only stand-in for the few Built-in render pipeline declarations FluidParticles.shader uses
+// Test-only stand-in for the few Built-in render pipeline declarations FluidParticles.shader and
+// FluidParticlesUniversal.shader use
 // (Unity's UnityCG.cginc -> UnityShaderVariables.cginc -> HLSLSupport.cginc), so that glslang can
 // compile the shader's HLSL in CI. Written from Unity's documented names and meanings, declaring ONLY
 // what the shader needs: a new Unity built-in used by the shader must be added here, and the compile
@@ -69,6 +70,16 @@ float4 ComputeGrabScreenPos(float4 positionCS)
 #endif
     float4 o = positionCS * 0.5;
     o.xy = float2(o.x, o.y * scale) + o.w;
+    o.zw = positionCS.zw;
+    return o;
+}
+
+// Clip-space position -> projective render-target coordinates (divide xy by w): follows the projection's
+// flip (_ProjectionParams.x = -1 when the camera renders upside down into a texture).
+float4 ComputeScreenPos(float4 positionCS)
+{
+    float4 o = positionCS * 0.5;
+    o.xy = float2(o.x, o.y * _ProjectionParams.x) + o.w;
     o.zw = positionCS.zw;
     return o;
 }
