@@ -66,7 +66,7 @@ namespace SphFluid.Tests.Solver
 
         /// <summary>
         /// Oil and water mixed at start (a 3-D checkerboard, particle by particle) drift apart, oil upwards.
-        /// KNOWN WEAKNESS (see the solver report): at this coarse resolution (8 particles across) the weakly
+        /// Known weakness: at this coarse resolution (8 particles across) the weakly
         /// compressible fluid partly jams like a soft solid and the separation creeps: after 3 s the oil's mean
         /// height is about 4 cm above the water's (two clean layers would give about 8 cm). The test asserts
         /// mean height of oil minus water > 15 % of the fluid depth (about 25 % measured on lavapipe).

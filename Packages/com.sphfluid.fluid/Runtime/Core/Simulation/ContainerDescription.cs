@@ -2,7 +2,7 @@ using System.Numerics;
 
 namespace SphFluid.Simulation
 {
-    /// <summary>The boundary box the fluid lives in (the dissertation's boundary cube), possibly moving.</summary>
+    /// <summary>The boundary box the fluid lives in, possibly moving and turning.</summary>
     public sealed class ContainerDescription
     {
         /// <summary>World-space centre, m.</summary>
