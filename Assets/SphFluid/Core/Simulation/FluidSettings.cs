@@ -85,6 +85,11 @@ namespace SphFluid.Simulation
                 ValidationRules.InRange(errors, owner, path, nameof(SmoothingRadius), SmoothingRadius,
                     MinSupportRatio * ParticleSpacing, MaxSupportRatio * ParticleSpacing, "m (2 to 4 particle spacings)");
             }
+            if (PressureSolver != PressureSolver.Wcsph && PressureSolver != PressureSolver.Dfsph)
+            {
+                errors.Add(new ValidationError(path + nameof(PressureSolver),
+                    $"{owner}: {nameof(PressureSolver)} must be {(int)PressureSolver.Wcsph} (Wcsph) or {(int)PressureSolver.Dfsph} (Dfsph) (was {(int)PressureSolver})"));
+            }
             ValidationRules.InRange(errors, owner, path, nameof(Stiffness), Stiffness, 1f, 1e9f, "Pa");
             ValidationRules.InRange(errors, owner, path, nameof(DensityTolerance), DensityTolerance, 0.001f, 10f, "%");
             ValidationRules.InRange(errors, owner, path, nameof(DivergenceTolerance), DivergenceTolerance, 0.01f, 1000f, "%/s");
