@@ -61,6 +61,18 @@ namespace SphFluid.Runtime
         int maxParticles = CoreDefaults.MaxParticles;
 
         [Header("Pressure")]
+        [SerializeField, Tooltip("How pressure is computed: Wcsph = Tait equation of state, one pass per sub-step but a step bounded by the speed of sound; Dfsph = divergence-free SPH, iterative solves to the tolerances below with a step bounded by the flow speed only.")]
+        PressureSolver pressureSolver = CoreDefaults.PressureSolver;
+
+        [SerializeField, Range(0.001f, 10f), Tooltip("DFSPH: largest average density error the constant-density solve accepts, %, in [0.001, 10].")]
+        float densityTolerance = CoreDefaults.DensityTolerance;
+
+        [SerializeField, Range(0.01f, 1000f), Tooltip("DFSPH: largest average rate of density change the divergence-free solve accepts, %/s, in [0.01, 1000].")]
+        float divergenceTolerance = CoreDefaults.DivergenceTolerance;
+
+        [SerializeField, Range(1, 1000), Tooltip("DFSPH: most iterations of each solve per sub-step, in [1, 1000]; every one is recorded, and those after convergence dispatch no work.")]
+        int maxSolverIterations = CoreDefaults.MaxSolverIterations;
+
         [SerializeField, Min(1f), Tooltip("Tait stiffness k, Pa, in [1, 1e9]; speed of sound c = sqrt(k gamma / rho0).")]
         float stiffness = CoreDefaults.Stiffness;
 
@@ -200,6 +212,10 @@ namespace SphFluid.Runtime
             {
                 ParticleSpacing = particleSpacing,
                 SmoothingRadius = smoothingRadius,
+                PressureSolver = pressureSolver,
+                DensityTolerance = densityTolerance,
+                DivergenceTolerance = divergenceTolerance,
+                MaxSolverIterations = maxSolverIterations,
                 Stiffness = stiffness,
                 Gamma = gamma,
                 Gravity = gravity.ToNumerics(),

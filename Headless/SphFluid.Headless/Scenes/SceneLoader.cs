@@ -262,6 +262,11 @@ public static class SceneLoader
                 ParticleSpacing = Float(go, mb, c, "particleSpacing", d.ParticleSpacing),
                 SmoothingRadius = Float(go, mb, c, "smoothingRadius", d.SmoothingRadius),
                 MaxParticles = Int(go, mb, c, "maxParticles", d.MaxParticles),
+                // Unity serialises an enum as its int value.
+                PressureSolver = (PressureSolver)Int(go, mb, c, "pressureSolver", (int)d.PressureSolver),
+                DensityTolerance = Float(go, mb, c, "densityTolerance", d.DensityTolerance),
+                DivergenceTolerance = Float(go, mb, c, "divergenceTolerance", d.DivergenceTolerance),
+                MaxSolverIterations = Int(go, mb, c, "maxSolverIterations", d.MaxSolverIterations),
                 Stiffness = Float(go, mb, c, "stiffness", d.Stiffness),
                 Gamma = Float(go, mb, c, "gamma", d.Gamma),
                 Gravity = Vector(go, mb, c, "gravity", d.Gravity),

@@ -163,6 +163,10 @@ namespace SphFluid.Simulation
         /// <summary>Per particle: XSPH velocity correction (xyz) when XSPH is on, m/s.</summary>
         public IComputeBuffer XsphCorrections => _xsph;
 
+        /// <summary>DFSPH, by particle id (not sorted): float2 of the q the last constant-density (x) and divergence-free (y)
+        /// solves applied in total, the next sub-step's warm start (DivergenceFreeSolver.hlsl).</summary>
+        public IComputeBuffer WarmStart => _warmStart;
+
         /// <summary>The boundary particles (<see cref="BoundaryParticle"/>) in world space, sorted by grid cell.</summary>
         public IComputeBuffer BoundaryParticles => _boundarySorted;
 
