@@ -356,7 +356,22 @@ public sealed unsafe partial class VulkanComputeDevice
 
     // ---------------------------------------------------------------- recording
 
-    public void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ)
+    public void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ) =>
+        Record(program, kernel, groupsX, groupsY, groupsZ, null, 0);
+
+    public void DispatchIndirect(IComputeProgram program, int kernel, IComputeBuffer arguments, int byteOffset)
+    {
+        ThrowIfDisposed();
+        var p = AsProgram(program, "DispatchIndirect");
+        p.CheckKernel(kernel);
+        var args = AsBuffer(arguments, $"DispatchIndirect of kernel '{p.KernelName(kernel)}'");
+        long bytes = (long)args.Count * args.Stride;
+        if (byteOffset < 0 || byteOffset % 4 != 0 || byteOffset + 12L > bytes)
+            throw new ComputeException($"DispatchIndirect of kernel '{p.KernelName(kernel)}': the arguments offset must be a multiple of 4 in [0, {bytes - 12}] bytes of '{args.Name}' (was {byteOffset})");
+        Record(program, kernel, 1, 1, 1, args, (ulong)byteOffset);
+    }
+
+    void Record(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ, VulkanBuffer indirect, ulong indirectOffset)
     {
         ThrowIfDisposed();
         var p = AsProgram(program, "Dispatch");
@@ -469,19 +484,29 @@ public sealed unsafe partial class VulkanComputeDevice
             q = AllocateQuery(frame, 2);
             WriteTimestamp(frame, q);
         }
-        _vk.CmdDispatch(cmd, (uint)groupsX, (uint)groupsY, (uint)groupsZ);
+        if (indirect != null)
+        {
+            indirect.LastUsedSerial = frame.Serial;
+            _vk.CmdDispatchIndirect(cmd, indirect.Handle, indirectOffset);
+        }
+        else
+        {
+            _vk.CmdDispatch(cmd, (uint)groupsX, (uint)groupsY, (uint)groupsZ);
+        }
         if (timed)
         {
             WriteTimestamp(frame, q + 1);
             frame.DispatchQueries.Add((v.Kernel, q));
         }
+        // A later dispatch may read what this one wrote as its indirect arguments.
         var barrier = new MemoryBarrier
         {
             SType = StructureType.MemoryBarrier,
             SrcAccessMask = AccessFlags.ShaderWriteBit,
-            DstAccessMask = AccessFlags.ShaderReadBit | AccessFlags.ShaderWriteBit,
+            DstAccessMask = AccessFlags.ShaderReadBit | AccessFlags.ShaderWriteBit | AccessFlags.IndirectCommandReadBit,
         };
-        _vk.CmdPipelineBarrier(cmd, PipelineStageFlags.ComputeShaderBit, PipelineStageFlags.ComputeShaderBit, 0, 1, &barrier, 0, null, 0, null);
+        _vk.CmdPipelineBarrier(cmd, PipelineStageFlags.ComputeShaderBit, PipelineStageFlags.ComputeShaderBit | PipelineStageFlags.DrawIndirectBit,
+            0, 1, &barrier, 0, null, 0, null);
         DispatchCount++;
     }
 

@@ -428,13 +428,21 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
         {
             SType = StructureType.MemoryBarrier,
             SrcAccessMask = AccessFlags.ShaderWriteBit | AccessFlags.TransferWriteBit | AccessFlags.ShaderReadBit | AccessFlags.TransferReadBit,
-            DstAccessMask = AccessFlags.ShaderReadBit | AccessFlags.ShaderWriteBit | AccessFlags.TransferReadBit | AccessFlags.TransferWriteBit | AccessFlags.HostReadBit | AccessFlags.UniformReadBit,
+            DstAccessMask = AccessFlags.ShaderReadBit | AccessFlags.ShaderWriteBit | AccessFlags.TransferReadBit | AccessFlags.TransferWriteBit | AccessFlags.HostReadBit | AccessFlags.UniformReadBit
+                | AccessFlags.IndirectCommandReadBit,
         };
         _vk.CmdPipelineBarrier(cmd, PipelineStageFlags.ComputeShaderBit | PipelineStageFlags.TransferBit,
-            PipelineStageFlags.ComputeShaderBit | PipelineStageFlags.TransferBit | PipelineStageFlags.HostBit, 0, 1, &barrier, 0, null, 0, null);
+            PipelineStageFlags.ComputeShaderBit | PipelineStageFlags.TransferBit | PipelineStageFlags.HostBit | PipelineStageFlags.DrawIndirectBit,
+            0, 1, &barrier, 0, null, 0, null);
     }
 
     // ---------------------------------------------------------------- buffers
+
+    public IComputeBuffer CreateArgumentsBuffer(string name, int count)
+    {
+        if (count < 3) throw new ArgumentOutOfRangeException(nameof(count), count, $"Arguments buffer '{name}': count must be >= 3 (x, y, z groups)");
+        return CreateBuffer(name, count, 4);
+    }
 
     public IComputeBuffer CreateBuffer(string name, int count, int stride)
     {
@@ -447,7 +455,9 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
         if (size > _limits.MaxStorageBufferRange)
             throw new ComputeException($"Compute buffer '{name}' ({count} x {stride} = {size} bytes) exceeds this device's storage buffer range of {_limits.MaxStorageBufferRange} bytes");
         var buffer = new VulkanBuffer(this, name, count, stride);
-        var (b, m, flags) = CreateRawBuffer(size, BufferUsageFlags.StorageBufferBit | BufferUsageFlags.TransferSrcBit | BufferUsageFlags.TransferDstBit,
+        // Every buffer may hold indirect dispatch arguments (CreateArgumentsBuffer is a uint buffer like any other).
+        var (b, m, flags) = CreateRawBuffer(size, BufferUsageFlags.StorageBufferBit | BufferUsageFlags.TransferSrcBit | BufferUsageFlags.TransferDstBit
+                | BufferUsageFlags.IndirectBufferBit,
             MemoryPropertyFlags.DeviceLocalBit, MemoryPropertyFlags.DeviceLocalBit, MemoryPropertyFlags.HostVisibleBit, $"buffer '{name}'");
         buffer.Handle = b;
         buffer.Memory = m;

@@ -28,6 +28,9 @@ namespace SphFluid.Tests
         public void SetMatrix(IComputeProgram program, int propertyId, Matrix4x4 value) => Inner.SetMatrix(program, propertyId, value);
         public void SetKeyword(IComputeProgram program, string keyword, bool enabled) => Inner.SetKeyword(program, keyword, enabled);
         public void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ) => Inner.Dispatch(program, kernel, groupsX, groupsY, groupsZ);
+        public virtual IComputeBuffer CreateArgumentsBuffer(string name, int count) => Inner.CreateArgumentsBuffer(name, count);
+        public void DispatchIndirect(IComputeProgram program, int kernel, IComputeBuffer arguments, int byteOffset) =>
+            Inner.DispatchIndirect(program, kernel, Unwrap(arguments), byteOffset);
         public void BeginSample(string name) => Inner.BeginSample(name);
         public void EndSample(string name) => Inner.EndSample(name);
         public void Submit() => Inner.Submit();

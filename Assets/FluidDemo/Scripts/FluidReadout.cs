@@ -85,8 +85,9 @@ namespace SphFluid.Demo
             if (target.HealthProblem != null)
                 _text.Append("UNHEALTHY, paused (R resets): ").Append(target.HealthProblem.Message).Append('\n');
             StepReport step = target.LastStep;
-            _text.AppendFormat(c, "Sub-steps {0} x dt {1:F3} ms (stable {2:F3} ms, limited by {3}){4}\n",
-                step.Substeps, step.TimeStep * 1000f, step.StableTimeStep * 1000f, step.Limit, step.Capped ? "  CAPPED: slower than real time" : "");
+            _text.AppendFormat(c, "{5}: sub-steps {0} x dt {1:F3} ms (stable {2:F3} ms, limited by {3}){4}\n",
+                step.Substeps, step.TimeStep * 1000f, step.StableTimeStep * 1000f, step.Limit, step.Capped ? "  CAPPED: slower than real time" : "",
+                step.PressureSolver == PressureSolver.Dfsph ? "DFSPH" : "WCSPH");
             if (target.TryGetGpuMilliseconds(out double gpu))
                 _text.AppendFormat(c, "GPU {0:F2} ms per frame, {1:F3} ms per sub-step\n", gpu, step.Substeps > 0 ? gpu / step.Substeps : 0.0);
             else
@@ -100,6 +101,11 @@ namespace SphFluid.Demo
                         phase.Name, phase.Count, phase.AverageDensityError, phase.MaxDensityError);
                 _text.AppendFormat(c, "vmax {0:F2} m/s   KE {1:G3} J   NaN {2}   outside {3}\n",
                     diagnostics.MaxSpeed, diagnostics.KineticEnergy, diagnostics.NanCount, diagnostics.OutsideCount);
+                if (diagnostics.PressureSolver == PressureSolver.Dfsph)
+                    _text.AppendFormat(c, "DFSPH iterations per sub-step: density {0:F1}, divergence {1:F1}   divergence error {2:F2} %/s\n",
+                        diagnostics.DensitySolveIterations, diagnostics.DivergenceSolveIterations, diagnostics.DivergenceError);
+                else
+                    _text.AppendFormat(c, "Divergence error {0:F2} %/s\n", diagnostics.DivergenceError);
             }
 
             SimulationPlan plan = target.Plan;

@@ -39,6 +39,8 @@ namespace SphFluid.Tests.Solver
         public void SetMatrix(IComputeProgram program, int propertyId, Matrix4x4 value) { }
         public void SetKeyword(IComputeProgram program, string keyword, bool enabled) { }
         public void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ) => Dispatches++;
+        public IComputeBuffer CreateArgumentsBuffer(string name, int count) => new Buffer(name, count, 4);
+        public void DispatchIndirect(IComputeProgram program, int kernel, IComputeBuffer arguments, int byteOffset) => Dispatches++;
         public void BeginSample(string name) { }
         public void EndSample(string name) { }
         public void Submit() { }

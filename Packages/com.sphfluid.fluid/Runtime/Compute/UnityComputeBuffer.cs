@@ -12,13 +12,13 @@ namespace SphFluid.Runtime
         ComputeBuffer _buffer;
         UnityReadbackRequest _readback;
 
-        internal UnityComputeBuffer(UnityComputeDevice device, string name, int count, int stride)
+        internal UnityComputeBuffer(UnityComputeDevice device, string name, int count, int stride, ComputeBufferType type)
         {
             _device = device;
             Name = name;
             Count = count;
             Stride = stride;
-            _buffer = new ComputeBuffer(count, stride, ComputeBufferType.Structured);
+            _buffer = new ComputeBuffer(count, stride, type);
         }
 
         public string Name { get; }

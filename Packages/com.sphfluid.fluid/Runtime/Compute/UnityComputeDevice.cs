@@ -64,7 +64,18 @@ namespace SphFluid.Runtime
                 throw new ArgumentOutOfRangeException(nameof(count), count, $"Compute buffer '{name}': count must be > 0");
             if (stride <= 0 || stride % 4 != 0 || stride > 2048)
                 throw new ArgumentOutOfRangeException(nameof(stride), stride, $"Compute buffer '{name}': stride must be a multiple of 4 in [4, 2048] bytes");
-            var buffer = new UnityComputeBuffer(this, name, count, stride);
+            var buffer = new UnityComputeBuffer(this, name, count, stride, ComputeBufferType.Structured);
+            _buffers.Add(buffer);
+            LiveBufferTotal++;
+            return buffer;
+        }
+
+        public IComputeBuffer CreateArgumentsBuffer(string name, int count)
+        {
+            ThrowIfDisposed();
+            if (count < 3)
+                throw new ArgumentOutOfRangeException(nameof(count), count, $"Arguments buffer '{name}': count must be >= 3 (x, y, z groups)");
+            var buffer = new UnityComputeBuffer(this, name, count, 4, ComputeBufferType.IndirectArguments);
             _buffers.Add(buffer);
             LiveBufferTotal++;
             return buffer;
@@ -140,6 +151,16 @@ namespace SphFluid.Runtime
             if (groupsX < 1 || groupsY < 1 || groupsZ < 1 || groupsX > 65535 || groupsY > 65535 || groupsZ > 65535)
                 throw new ComputeException($"Compute shader '{program?.Name}': dispatch of ({groupsX}, {groupsY}, {groupsZ}) groups; each must be in [1, 65535]");
             _commands.DispatchCompute(ShaderOf(program), kernel, groupsX, groupsY, groupsZ);
+        }
+
+        public void DispatchIndirect(IComputeProgram program, int kernel, IComputeBuffer arguments, int byteOffset)
+        {
+            Record();
+            if (!(arguments is UnityComputeBuffer unityBuffer) || unityBuffer.IsReleased)
+                throw new ComputeException($"Compute shader '{program?.Name}': indirect arguments '{arguments?.Name}' are not a live buffer of this device");
+            if (byteOffset < 0 || byteOffset % 4 != 0 || byteOffset + 12 > unityBuffer.Count * unityBuffer.Stride)
+                throw new ComputeException($"Compute shader '{program?.Name}': indirect arguments offset must be a multiple of 4 in [0, {unityBuffer.Count * unityBuffer.Stride - 12}] bytes (was {byteOffset})");
+            _commands.DispatchCompute(ShaderOf(program), kernel, unityBuffer.Buffer, (uint)byteOffset);
         }
 
         public void BeginSample(string name)

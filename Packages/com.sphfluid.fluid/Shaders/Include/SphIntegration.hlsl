@@ -23,4 +23,18 @@ float3 FullStepVelocity(float3 v, float3 a, float3 xsphCorrection)
     return v * max(0.0, 1.0 - _VelocityDamping * _TimeStep);
 }
 
+// Divergence-free SPH integrates with symplectic Euler (Bender & Koschier 2017, Algorithm 1): the non-pressure
+// accelerations give v* = v + a dt (+ dv_xsph, then damping), the constant-density solve corrects v*, and the
+// particles drift with it: x += v* dt.
+float3 PredictedVelocity(float3 v, float3 a, float3 xsphCorrection)
+{
+    v += a * _TimeStep + xsphCorrection;
+    return v * max(0.0, 1.0 - _VelocityDamping * _TimeStep);
+}
+
+float3 DriftedPosition(float3 x, float3 v)
+{
+    return x + v * _TimeStep;
+}
+
 #endif

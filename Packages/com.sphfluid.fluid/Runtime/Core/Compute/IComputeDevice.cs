@@ -55,6 +55,16 @@ namespace SphFluid.Compute
         /// thread groups. Refused (with the resource's name) if the kernel reads a buffer that was never bound.</summary>
         void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ);
 
+        /// <summary>A buffer of <paramref name="count"/> uints that kernels write as <c>RWStructuredBuffer&lt;uint&gt;</c> and
+        /// <see cref="DispatchIndirect"/> reads its group counts from (Unity: <c>ComputeBufferType.IndirectArguments</c>).</summary>
+        IComputeBuffer CreateArgumentsBuffer(string name, int count);
+
+        /// <summary>Records a dispatch whose group counts (three uints: x, y, z) the GPU reads from
+        /// <paramref name="arguments"/> at <paramref name="byteOffset"/> when it runs, so that earlier kernels decide how much
+        /// work it does (0 groups: none) without a read-back (Unity: <c>CommandBuffer.DispatchCompute</c> with an
+        /// indirect buffer). The buffer must come from <see cref="CreateArgumentsBuffer"/>.</summary>
+        void DispatchIndirect(IComputeProgram program, int kernel, IComputeBuffer arguments, int byteOffset);
+
         /// <summary>Opens a named GPU timing range (Unity: <c>CommandBuffer.BeginSample</c>).</summary>
         void BeginSample(string name);
 

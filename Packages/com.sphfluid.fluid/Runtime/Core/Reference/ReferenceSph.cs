@@ -110,8 +110,13 @@ namespace SphFluid.Reference
 
         /// <summary>Density, pressure, normals, accelerations and XSPH corrections of a particle state
         /// (as FluidSimulation.ComputeForces leaves them). Normals are zero when no phase has surface tension.</summary>
-        public ReferenceState Evaluate(Particle[] particles)
+        public ReferenceState Evaluate(Particle[] particles) => Evaluate(particles, true);
+
+        /// <summary>As <see cref="Evaluate(Particle[])"/>; without <paramref name="withPressure"/> the accelerations leave out
+        /// the pressure and the artificial viscosities (DFSPH's non-pressure forces, FluidSolver's NonPressureForces).</summary>
+        public ReferenceState Evaluate(Particle[] particles, bool withPressure)
         {
+            double pressureOn = withPressure ? 1.0 : 0.0;
             int n = particles.Length;
             var s = new ReferenceState(n);
             var x = new Double3[n];
@@ -191,10 +196,10 @@ namespace SphFluid.Reference
                     double mu = muI + muJ > 0 ? 2 * muI * muJ / (muI + muJ) : 0;
                     var gradient = PairGradient(rij, r, particles[i].Id, particles[j].Id);
                     double termJ = s.Pressure[j] / (s.NumberDensity[j] * s.NumberDensity[j]);
-                    force += gradient * -(termI + termJ);
+                    force += gradient * (-(termI + termJ) * pressureOn);
                     force += (v[i] - v[j]) * (2 * mu / (di * s.NumberDensity[j]) * Double3.Dot(rij, gradient) / (r2 + 0.01 * _h2));
                     double approach = Math.Min(0.0, Double3.Dot(v[i] - v[j], rij)) / (r2 + 0.01 * _h2);
-                    force += gradient * (artificial * 0.5 * (s.Density[i] + s.Density[j]) / (di * s.NumberDensity[j]) * approach);
+                    force += gradient * (pressureOn * artificial * 0.5 * (s.Density[i] + s.Density[j]) / (di * s.NumberDensity[j]) * approach);
                     if (r > 0 && tension && particles[j].Phase == particles[i].Phase && phaseI.SurfaceTension > 0)
                     {
                         double gamma = phaseI.SurfaceTension;
@@ -214,15 +219,15 @@ namespace SphFluid.Reference
                     var gradient = PairGradient(rib, r, 1, 0);
                     double weight = walls[b].Weight;
                     var wallVelocity = new Double3(walls[b].Velocity);
-                    force += gradient * -(weight * (s.Pressure[i] + wallPressure[b]) / (di * di));
+                    force += gradient * (-(weight * (s.Pressure[i] + wallPressure[b]) / (di * di)) * pressureOn);
                     force += (v[i] - wallVelocity) * (2 * friction * phaseI.Viscosity * weight / (di * di) * Double3.Dot(rib, gradient) / (r2 + 0.01 * _h2));
                     double approach = Math.Min(0.0, Double3.Dot(v[i] - wallVelocity, rib)) / (r2 + 0.01 * _h2);
-                    force += gradient * (artificial * s.Density[i] * weight / (di * di) * approach);
+                    force += gradient * (pressureOn * artificial * s.Density[i] * weight / (di * di) * approach);
                     var normal = WallNormal(walls[b]);
                     bool underDense = s.Density[i] < 0.97 * phaseI.RestDensity;
                     var intoWall = underDense ? normal * Math.Max(0.0, Double3.Dot(v[i] - wallVelocity, normal)) : Double3.Zero;
                     double contact = Math.Min(0.0, Double3.Dot(intoWall, rib)) / (r2 + 0.01 * _h2);
-                    force += gradient * (wallArtificial * s.Density[i] * weight / (di * di) * contact);
+                    force += gradient * (pressureOn * wallArtificial * s.Density[i] * weight / (di * di) * contact);
                 }
                 s.InternalForce[i] = force;
                 s.Acceleration[i] = force / mi + gravity;
@@ -317,6 +322,163 @@ namespace SphFluid.Reference
                 Clamp(ref xi, ref vi);
                 moved[i] = new Particle(xi.ToVector3(), vi.ToVector3(), particles[i].Phase, particles[i].Id);
             }
+            return moved;
+        }
+
+        // ------------------------------------------------------------------ divergence-free SPH
+
+        /// <summary>The DFSPH factor alpha_i = 1 / (|G_i|^2 / m_i + sum_j |gradW_ij|^2 / m_j) (DivergenceFreeSolver.hlsl).</summary>
+        public double[] DivergenceFreeFactors(Particle[] particles)
+        {
+            int n = particles.Length;
+            var walls = PlacedBoundary();
+            var factors = new double[n];
+            for (int i = 0; i < n; i++)
+            {
+                var xi = new Double3(particles[i].Position);
+                var sum = Double3.Zero;
+                double squares = 0;
+                for (int j = 0; j < n; j++)
+                {
+                    if (j == i) continue;
+                    var rij = xi - new Double3(particles[j].Position);
+                    double r = rij.Length();
+                    if (r >= _h) continue;
+                    var g = PairGradient(rij, r, particles[i].Id, particles[j].Id);
+                    sum += g;
+                    squares += g.LengthSquared() / _phases[particles[j].Phase].ParticleMass;
+                }
+                foreach (var wall in walls)
+                {
+                    var rib = xi - new Double3(wall.Position);
+                    double r = rib.Length();
+                    if (r >= _h) continue;
+                    sum += PairGradient(rib, r, 1, 0) * wall.Weight;
+                }
+                double denominator = sum.LengthSquared() / _phases[particles[i].Phase].ParticleMass + squares;
+                factors[i] = denominator > 1e-20 ? 1.0 / denominator : 0.0;
+            }
+            return factors;
+        }
+
+        /// <summary>D delta_i / Dt of every particle for the velocities <paramref name="v"/> (walls at their own).</summary>
+        public double[] NumberDensityRates(Particle[] particles, Double3[] v)
+        {
+            int n = particles.Length;
+            var walls = PlacedBoundary();
+            var rates = new double[n];
+            for (int i = 0; i < n; i++)
+            {
+                var xi = new Double3(particles[i].Position);
+                double rate = 0;
+                for (int j = 0; j < n; j++)
+                {
+                    if (j == i) continue;
+                    var rij = xi - new Double3(particles[j].Position);
+                    double r = rij.Length();
+                    if (r >= _h) continue;
+                    rate += Double3.Dot(v[i] - v[j], PairGradient(rij, r, particles[i].Id, particles[j].Id));
+                }
+                foreach (var wall in walls)
+                {
+                    var rib = xi - new Double3(wall.Position);
+                    double r = rib.Length();
+                    if (r >= _h) continue;
+                    rate += wall.Weight * Double3.Dot(v[i] - new Double3(wall.Velocity), PairGradient(rib, r, 1, 0));
+                }
+                rates[i] = rate;
+            }
+            return rates;
+        }
+
+        /// <summary>Applies the pressure terms q to the velocities: v_i -= (dt / m_i) (sum_j (q_i + q_j) gradW_ij + sum_b omega_b q_i gradW_ib).</summary>
+        public void ApplyStiffness(Particle[] particles, Double3[] v, double[] q, double dt)
+        {
+            int n = particles.Length;
+            var walls = PlacedBoundary();
+            var dv = new Double3[n];
+            for (int i = 0; i < n; i++)
+            {
+                var xi = new Double3(particles[i].Position);
+                var sum = Double3.Zero;
+                for (int j = 0; j < n; j++)
+                {
+                    if (j == i) continue;
+                    var rij = xi - new Double3(particles[j].Position);
+                    double r = rij.Length();
+                    if (r >= _h) continue;
+                    sum += PairGradient(rij, r, particles[i].Id, particles[j].Id) * (q[i] + q[j]);
+                }
+                foreach (var wall in walls)
+                {
+                    var rib = xi - new Double3(wall.Position);
+                    double r = rib.Length();
+                    if (r >= _h) continue;
+                    sum += PairGradient(rib, r, 1, 0) * (wall.Weight * q[i]);
+                }
+                dv[i] = sum * (-dt / _phases[particles[i].Phase].ParticleMass);
+            }
+            for (int i = 0; i < n; i++) v[i] += dv[i];
+        }
+
+        double RestNumberDensity(Particle p) => _phases[p.Phase].RestDensity / (double)_phases[p.Phase].ParticleMass;
+
+        /// <summary>
+        /// One DFSPH sub-step as FluidSimulation runs it from a state without warm start, with exactly
+        /// <paramref name="iterations"/> corrections per solve (MaxSolverIterations = 1 stops each solve after one): non-pressure
+        /// forces, predicted velocity (XSPH, damping), constant-density solve, drift and clamp, factors at the new positions,
+        /// divergence-free solve. Returns the new particles and the q each solve summed per particle.
+        /// </summary>
+        public Particle[] DivergenceFreeSubstep(Particle[] particles, double dt, bool xsph, int iterations,
+            out double[] densityStiffness, out double[] divergenceStiffness)
+        {
+            int n = particles.Length;
+            var state = Evaluate(particles, false);
+            var factors = DivergenceFreeFactors(particles);
+            double damping = Math.Max(0, 1 - _settings.VelocityDamping * dt);
+            var v = new Double3[n];
+            for (int i = 0; i < n; i++)
+            {
+                var vi = new Double3(particles[i].Velocity) + state.Acceleration[i] * dt;
+                if (xsph) vi += state.Xsph[i];
+                v[i] = vi * damping;
+            }
+            densityStiffness = new double[n];
+            var q = new double[n];
+            for (int l = 0; l < iterations; l++)
+            {
+                var rates = NumberDensityRates(particles, v);
+                for (int i = 0; i < n; i++)
+                {
+                    double excess = Math.Max(state.NumberDensity[i] + dt * rates[i] - RestNumberDensity(particles[i]), 0.0);
+                    q[i] = excess * factors[i] / (dt * dt);
+                    densityStiffness[i] += q[i];
+                }
+                ApplyStiffness(particles, v, q, dt);
+            }
+            var moved = new Particle[n];
+            for (int i = 0; i < n; i++)
+            {
+                var x = new Double3(particles[i].Position) + v[i] * dt;
+                var vi = v[i];
+                Clamp(ref x, ref vi);
+                v[i] = vi;
+                moved[i] = new Particle(x.ToVector3(), vi.ToVector3(), particles[i].Phase, particles[i].Id);
+            }
+            factors = DivergenceFreeFactors(moved);
+            divergenceStiffness = new double[n];
+            for (int l = 0; l < iterations; l++)
+            {
+                var rates = NumberDensityRates(moved, v);
+                for (int i = 0; i < n; i++)
+                {
+                    q[i] = Math.Max(rates[i], 0.0) * factors[i] / dt;
+                    divergenceStiffness[i] += q[i];
+                }
+                ApplyStiffness(moved, v, q, dt);
+            }
+            for (int i = 0; i < n; i++)
+                moved[i] = new Particle(moved[i].Position, v[i].ToVector3(), moved[i].Phase, moved[i].Id);
             return moved;
         }
     }

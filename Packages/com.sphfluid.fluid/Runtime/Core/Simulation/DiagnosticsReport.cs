@@ -72,6 +72,9 @@ namespace SphFluid.Simulation
         /// divergence-free (the divergence error of the accuracy study).</summary>
         public float DivergenceError { get; internal set; }
 
+        /// <summary>The pressure solver of the simulation the figures come from.</summary>
+        public PressureSolver PressureSolver { get; internal set; }
+
         /// <summary>Simulated time of the state the figures describe, s.</summary>
         public double SimulatedTime { get; private set; }
 
@@ -117,6 +120,10 @@ namespace SphFluid.Simulation
             var b = new StringBuilder();
             b.AppendFormat(CultureInfo.InvariantCulture, "t={0:F3} s mass={1:G6} kg KE={2:G4} J vmax={3:G4} m/s nan={4} outside={5} clamped={6}",
                 SimulatedTime, TotalMass, KineticEnergy, MaxSpeed, NanCount, OutsideCount, ClampHits);
+            b.AppendFormat(CultureInfo.InvariantCulture, " div={0:G3} %/s", DivergenceError);
+            if (PressureSolver == PressureSolver.Dfsph)
+                b.AppendFormat(CultureInfo.InvariantCulture, " DFSPH iterations density {0:F1} divergence {1:F1}",
+                    DensitySolveIterations, DivergenceSolveIterations);
             foreach (var p in Phases) b.Append(" | ").Append(p);
             return b.ToString();
         }

@@ -87,7 +87,9 @@ namespace SphFluid.Simulation
             ValidateObstacles(errors);
             if (errors.Count > 0) return errors;
             SpawnOverlapRule.Validate(this, errors);
-            SpeedOfSoundRule.Validate(this, errors);
+            // The Tait speed of sound only bounds the weakly compressible solver; DFSPH keeps the density by its solves.
+            if (Settings.PressureSolver == PressureSolver.Wcsph)
+                SpeedOfSoundRule.Validate(this, errors);
             return errors;
         }
 

@@ -23,6 +23,7 @@ namespace SphFluid.Simulation
         public const string SolverProgramName = "FluidSolver";
         public const string DiagnosticsProgramName = "FluidDiagnostics";
         const int ReductionThreads = 256; // REDUCTION_THREADS in Include/SphTimeStep.hlsl
+        const uint ParticleThreads = 128; // PARTICLE_THREADS in FluidSolver.compute
 
         /// <summary>alpha_w of the contact damping against boundary particles (SphBoundary.hlsl): Monaghan's artificial
         /// viscosity on the velocity into the wall only. 0.5 brought the clamp hits of a turning container and a driven
@@ -40,6 +41,9 @@ namespace SphFluid.Simulation
         readonly TimeStepController _timeStep;
         readonly IComputeProgram _solver, _diagnostics;
         readonly int _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep;
+        readonly int _densityFactor, _nonPressureForces, _predictVelocity, _beginSolve, _densitySolveError, _divergenceSolveError,
+            _solveFinal, _applyStiffness, _drift, _divergenceRate;
+        readonly bool _divergenceFree;
         readonly int[] _solverKernels;
         readonly int _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal;
         readonly int _reductionGroups;
@@ -49,6 +53,7 @@ namespace SphFluid.Simulation
         IComputeBuffer _phaseBuffer, _densities, _normalsBuffer, _accelerations, _xsph, _obstacles;
         IComputeBuffer _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits;
         IComputeBuffer _boundaryRest, _boundaryPlaced, _boundarySorted, _boundaryPressures;
+        IComputeBuffer _factors, _solverStiffness, _warmStart, _solverPartials, _solverState, _solverArguments, _divergenceRates;
         ParticleSorter _sorter, _boundarySorter;
         CellGrid _grid;
         bool _containerChanged = true;
@@ -97,14 +102,29 @@ namespace SphFluid.Simulation
             _normals = _solver.FindKernel("Normals");
             _forces = _solver.FindKernel("Forces");
             _fullStep = _solver.FindKernel("FullStep");
-            _solverKernels = new[] { _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep };
+            _densityFactor = _solver.FindKernel("DensityFactor");
+            _nonPressureForces = _solver.FindKernel("NonPressureForces");
+            _predictVelocity = _solver.FindKernel("PredictVelocity");
+            _beginSolve = _solver.FindKernel("BeginSolve");
+            _densitySolveError = _solver.FindKernel("DensitySolveError");
+            _divergenceSolveError = _solver.FindKernel("DivergenceSolveError");
+            _solveFinal = _solver.FindKernel("SolveFinal");
+            _applyStiffness = _solver.FindKernel("ApplyStiffness");
+            _drift = _solver.FindKernel("Drift");
+            _divergenceRate = _solver.FindKernel("DivergenceRate");
+            _divergenceFree = _scene.Settings.PressureSolver == PressureSolver.Dfsph;
+            _solverKernels = new[]
+            {
+                _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep, _densityFactor, _nonPressureForces,
+                _predictVelocity, _beginSolve, _densitySolveError, _divergenceSolveError, _solveFinal, _applyStiffness, _drift, _divergenceRate,
+            };
             _motionPartial = _diagnostics.FindKernel("MotionPartial");
             _motionFinal = _diagnostics.FindKernel("MotionFinal");
             _diagnosticsPartial = _diagnostics.FindKernel("DiagnosticsPartial");
             _diagnosticsFinal = _diagnostics.FindKernel("DiagnosticsFinal");
             _programs = new[] { _solver, _diagnostics };
             _diagnosticsKernels = new[] { _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal };
-            _diagnosticsRows = new Vector4[2 + _phases.Count];
+            _diagnosticsRows = new Vector4[3 + _phases.Count];
 
             try
             {
@@ -143,6 +163,10 @@ namespace SphFluid.Simulation
         /// <summary>Per particle: XSPH velocity correction (xyz) when XSPH is on, m/s.</summary>
         public IComputeBuffer XsphCorrections => _xsph;
 
+        /// <summary>DFSPH, by particle id (not sorted): float2 of the q the last constant-density (x) and divergence-free (y)
+        /// solves applied in total, the next sub-step's warm start (DivergenceFreeSolver.hlsl).</summary>
+        public IComputeBuffer WarmStart => _warmStart;
+
         /// <summary>The boundary particles (<see cref="BoundaryParticle"/>) in world space, sorted by grid cell.</summary>
         public IComputeBuffer BoundaryParticles => _boundarySorted;
 
@@ -177,7 +201,8 @@ namespace SphFluid.Simulation
         public static IReadOnlyList<string> SampleNames { get; } = new[]
         {
             PassNames.UploadContainer, PassNames.PlaceBoundary, PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals,
-            PassNames.Forces, PassNames.FullStep, PassNames.MotionReduction, PassNames.Diagnostics,
+            PassNames.Forces, PassNames.FullStep, PassNames.NonPressureForces, PassNames.PredictVelocity, PassNames.DensitySolve, PassNames.Drift,
+            PassNames.DensityFactor, PassNames.DivergenceSolve, PassNames.MotionReduction, PassNames.Diagnostics,
         };
 
         /// <summary>Advances the simulation by one frame of <paramref name="frameSeconds"/> real time, in as
@@ -230,7 +255,8 @@ namespace SphFluid.Simulation
                 Substep(timeStep);
             _device.Submit();
             SimulatedTime += (double)substeps * timeStep;
-            LastStep = new StepReport(substeps, timeStep, substeps * timeStep, false, _timeStep.StableTimeStep(out string limit), limit);
+            LastStep = new StepReport(substeps, timeStep, substeps * timeStep, false, _timeStep.StableTimeStep(out string limit), limit,
+                _scene.Settings.PressureSolver);
         }
 
         void BeginFrame()
@@ -260,11 +286,19 @@ namespace SphFluid.Simulation
             }
         }
 
-        /// <summary>One Velocity Verlet sub-step: kick-drift, re-sort, forces, kick.</summary>
+        /// <summary>One sub-step of the chosen pressure solver.</summary>
         void Substep(float dt)
         {
             _device.SetFloat(_solver, _ids.TimeStep, dt);
+            if (_divergenceFree)
+                DivergenceFreeSubstep();
+            else
+                VerletSubstep();
+        }
 
+        /// <summary>One WCSPH Velocity Verlet sub-step: kick-drift, re-sort, forces, kick.</summary>
+        void VerletSubstep()
+        {
             _device.BeginSample(PassNames.HalfStep);
             _device.DispatchThreads(_solver, _halfStep, ParticleCount);
             _device.EndSample(PassNames.HalfStep);
@@ -276,14 +310,83 @@ namespace SphFluid.Simulation
             _device.EndSample(PassNames.FullStep);
         }
 
+        /// <summary>One DFSPH sub-step (Bender &amp; Koschier 2017, Algorithm 1): non-pressure forces, predicted velocity,
+        /// constant-density solve, drift, re-sort, density and factor, divergence-free solve.</summary>
+        void DivergenceFreeSubstep()
+        {
+            var s = _scene.Settings;
+            if (Plan.SurfaceTension)
+            {
+                _device.BeginSample(PassNames.Normals);
+                _device.DispatchThreads(_solver, _normals, ParticleCount);
+                _device.EndSample(PassNames.Normals);
+            }
+            _device.BeginSample(PassNames.NonPressureForces);
+            _device.DispatchThreads(_solver, _nonPressureForces, ParticleCount);
+            _device.EndSample(PassNames.NonPressureForces);
+
+            _device.BeginSample(PassNames.PredictVelocity);
+            _device.DispatchThreads(_solver, _predictVelocity, ParticleCount);
+            _device.EndSample(PassNames.PredictVelocity);
+
+            _device.BeginSample(PassNames.DensitySolve);
+            Solve(DensitySolveSlot, _densitySolveError, 0.01f * s.DensityTolerance);
+            _device.EndSample(PassNames.DensitySolve);
+
+            _device.BeginSample(PassNames.Drift);
+            _device.DispatchThreads(_solver, _drift, ParticleCount);
+            _device.EndSample(PassNames.Drift);
+
+            SortAndComputeForces(false);
+
+            _device.BeginSample(PassNames.DivergenceSolve);
+            Solve(DivergenceSolveSlot, _divergenceSolveError, 0.01f * s.DivergenceTolerance);
+            _device.EndSample(PassNames.DivergenceSolve);
+        }
+
+        const int DensitySolveSlot = 0, DivergenceSolveSlot = 1;
+
+        /// <summary>
+        /// Records one DFSPH solve without reading anything back: the warm start's correction, then MaxSolverIterations
+        /// rounds of error pass, SolveFinal and correction. The error pass and the correction are indirect dispatches whose
+        /// group count SolveFinal sets to zero once the solve has converged (FluidSolver.compute), so the rounds recorded
+        /// beyond convergence cost the GPU an empty dispatch each and the host nothing but their recording.
+        /// </summary>
+        void Solve(int slot, int errorKernel, float tolerance)
+        {
+            _device.SetInt(_solver, _ids.SolveSlot, slot);
+            _device.SetFloat(_solver, _ids.SolveTolerance, tolerance);
+            _device.Dispatch(_solver, _beginSolve, 1, 1, 1);
+            _device.DispatchThreads(_solver, _applyStiffness, ParticleCount);
+            int iterations = _scene.Settings.MaxSolverIterations;
+            for (int l = 0; l < iterations; l++)
+            {
+                _device.DispatchIndirect(_solver, errorKernel, _solverArguments, 0);
+                _device.Dispatch(_solver, _solveFinal, 1, 1, 1);
+                _device.DispatchIndirect(_solver, _applyStiffness, _solverArguments, 0);
+            }
+        }
+
         /// <summary>Sort by cell, then density and pressure, normals, forces: a valid acceleration for the
-        /// current positions. Runs once before the first step and inside every sub-step.</summary>
-        void SortAndComputeForces()
+        /// current positions. Runs once before the first step and inside every sub-step (DFSPH: density and factor,
+        /// and with <paramref name="withForces"/> the non-pressure forces the motion read-back needs).</summary>
+        void SortAndComputeForces(bool withForces = true)
         {
             _device.BeginSample(PassNames.Sort);
             _sorter.Sort(_grid, _particles, _particlesOther, ParticleCount);
             SwapParticleBuffers();
             _device.EndSample(PassNames.Sort);
+
+            if (_divergenceFree)
+            {
+                _device.BeginSample(PassNames.DensityFactor);
+                _device.DispatchThreads(_solver, _densityFactor, ParticleCount);
+                _device.EndSample(PassNames.DensityFactor);
+                if (!withForces) return;
+                if (Plan.SurfaceTension) _device.DispatchThreads(_solver, _normals, ParticleCount);
+                _device.DispatchThreads(_solver, _nonPressureForces, ParticleCount);
+                return;
+            }
 
             _device.BeginSample(PassNames.DensityPressure);
             _device.DispatchThreads(_solver, _densityPressure, ParticleCount);
@@ -458,6 +561,8 @@ namespace SphFluid.Simulation
             LatestDiagnostics = null;
             _particles.SetData(_spawn);
             _clampHits.SetData(new uint[1]);
+            _warmStart.SetData(new Vector2[ParticleCount]);
+            _solverState.SetData(new uint[16]);
             ComputeForces();
             // The first frame plans with the acceleration the first force pass computed, not gravity alone.
             ReadMotion(out float firstSpeed, out float firstAcceleration);
@@ -498,7 +603,7 @@ namespace SphFluid.Simulation
         {
             ThrowIfDisposed();
             DispatchDiagnostics();
-            var rows = new Vector4[2 + _phases.Count];
+            var rows = new Vector4[3 + _phases.Count];
             _diagnosticsTotals.GetData(rows);
             return ToReport(rows, SimulatedTime);
         }
@@ -506,6 +611,7 @@ namespace SphFluid.Simulation
         void DispatchDiagnostics()
         {
             _device.BeginSample(PassNames.Diagnostics);
+            _device.DispatchThreads(_solver, _divergenceRate, ParticleCount);
             _device.Dispatch(_diagnostics, _diagnosticsPartial, _reductionGroups, 1, 1);
             _device.Dispatch(_diagnostics, _diagnosticsFinal, 1, 1, 1);
             _device.EndSample(PassNames.Diagnostics);
@@ -544,7 +650,8 @@ namespace SphFluid.Simulation
         }
 
         /// <summary>Rows of DiagnosticsFinal: [0] KE, vmax, NaN count, outside count; [1 + k] phase k's count,
-        /// mean and max compression; [1 + phases] clamp hits.</summary>
+        /// mean and max compression; [1 + phases] clamp hits; [2 + phases] mean |D delta / Dt| / delta0 (1/s) and the
+        /// DFSPH solves' mean corrections per solve.</summary>
         void Refill(DiagnosticsReport report, PhaseDiagnostics[] phases, Vector4[] rows, double time)
         {
             double mass = 0;
@@ -557,6 +664,11 @@ namespace SphFluid.Simulation
             }
             report.Refill(mass, rows[0].X, rows[0].Y, (int)Math.Round(rows[0].Z), (int)Math.Round(rows[0].W), time,
                 (int)Math.Round(rows[1 + _phases.Count].X));
+            Vector4 solves = rows[2 + _phases.Count];
+            report.DivergenceError = 100f * solves.X;
+            report.DensitySolveIterations = solves.Y;
+            report.DivergenceSolveIterations = solves.Z;
+            report.PressureSolver = _scene.Settings.PressureSolver;
         }
 
         void RequestMotion()
@@ -606,8 +718,23 @@ namespace SphFluid.Simulation
             _obstacles = _device.CreateBuffer("FluidSimulation.Obstacles", FluidSceneDescription.MaxObstacles, SphereObstacleData.Stride);
             _motionPartials = _device.CreateBuffer("FluidSimulation.MotionPartials", _reductionGroups, 16);
             _motionTotals = _device.CreateBuffer("FluidSimulation.MotionTotals", 1, 16);
-            _diagnosticsPartials = _device.CreateBuffer("FluidSimulation.DiagnosticsPartials", _reductionGroups * (1 + _phases.Count), 16);
-            _diagnosticsTotals = _device.CreateBuffer("FluidSimulation.DiagnosticsTotals", 2 + _phases.Count, 16);
+            _diagnosticsPartials = _device.CreateBuffer("FluidSimulation.DiagnosticsPartials", _reductionGroups * (2 + _phases.Count), 16);
+            _diagnosticsTotals = _device.CreateBuffer("FluidSimulation.DiagnosticsTotals", 3 + _phases.Count, 16);
+            int particleGroups = ComputeDispatch.GroupsFor(n, ParticleThreads);
+            _factors = _device.CreateBuffer("FluidSimulation.DivergenceFreeFactors", n, 4);
+            _solverStiffness = _device.CreateBuffer("FluidSimulation.SolverStiffness", n, 4);
+            _warmStart = _device.CreateBuffer("FluidSimulation.WarmStart", n, 8);
+            _solverPartials = _device.CreateBuffer("FluidSimulation.SolverPartials", particleGroups, 4);
+            _solverState = _device.CreateBuffer("FluidSimulation.SolverState", 16, 4);
+            _solverArguments = _device.CreateArgumentsBuffer("FluidSimulation.SolverArguments", 3);
+            _divergenceRates = _device.CreateBuffer("FluidSimulation.DivergenceRates", n, 4);
+            _factors.SetData(new float[n]);
+            _solverStiffness.SetData(new float[n]);
+            _warmStart.SetData(new Vector2[n]);
+            _solverPartials.SetData(new float[particleGroups]);
+            _solverState.SetData(new uint[16]);
+            _solverArguments.SetData(new uint[] { (uint)particleGroups, 1u, 1u });
+            _divergenceRates.SetData(new float[n]);
             _clampHits = _device.CreateBuffer("FluidSimulation.ClampHits", 1, 4);
             _clampHits.SetData(new uint[1]);
 
@@ -629,6 +756,13 @@ namespace SphFluid.Simulation
                 _device.SetBuffer(_solver, k, _ids.Accelerations, _accelerations);
                 _device.SetBuffer(_solver, k, _ids.XsphCorrections, _xsph);
                 _device.SetBuffer(_solver, k, _ids.Obstacles, _obstacles);
+                _device.SetBuffer(_solver, k, _ids.DivergenceFreeFactors, _factors);
+                _device.SetBuffer(_solver, k, _ids.SolverStiffness, _solverStiffness);
+                _device.SetBuffer(_solver, k, _ids.WarmStart, _warmStart);
+                _device.SetBuffer(_solver, k, _ids.SolverPartials, _solverPartials);
+                _device.SetBuffer(_solver, k, _ids.SolverState, _solverState);
+                _device.SetBuffer(_solver, k, _ids.SolverArguments, _solverArguments);
+                _device.SetBuffer(_solver, k, _ids.DivergenceRates, _divergenceRates);
             }
             foreach (int k in new[] { _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal })
             {
@@ -641,6 +775,8 @@ namespace SphFluid.Simulation
                 _device.SetBuffer(_diagnostics, k, _ids.DiagnosticsTotals, _diagnosticsTotals);
                 _device.SetBuffer(_diagnostics, k, _ids.Obstacles, _obstacles);
                 _device.SetBuffer(_diagnostics, k, _ids.ClampHits, _clampHits);
+                _device.SetBuffer(_diagnostics, k, _ids.DivergenceRates, _divergenceRates);
+                _device.SetBuffer(_diagnostics, k, _ids.SolverState, _solverState);
             }
         }
 
@@ -810,8 +946,10 @@ namespace SphFluid.Simulation
             _motionReadback = null;
             _diagnosticsReadback = null;
             foreach (var buffer in new[] { _particles, _particlesOther, _phaseBuffer, _densities, _normalsBuffer, _accelerations,
-                         _xsph, _obstacles, _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits })
+                         _xsph, _obstacles, _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits,
+                         _factors, _solverStiffness, _warmStart, _solverPartials, _solverState, _solverArguments, _divergenceRates })
                 buffer?.Dispose();
+            _factors = _solverStiffness = _warmStart = _solverPartials = _solverState = _solverArguments = _divergenceRates = null;
             _particles = _particlesOther = _phaseBuffer = _densities = _normalsBuffer = _accelerations = null;
             _xsph = _obstacles = _motionPartials = _motionTotals = _diagnosticsPartials = _diagnosticsTotals = _clampHits = null;
             ReleaseBoundary();
@@ -834,6 +972,8 @@ namespace SphFluid.Simulation
             public readonly int Stiffness, Gamma, Gravity, XsphEpsilon, VelocityDamping, ParticleSpacing, WallFriction, ArtificialViscosity, WallArtificialViscosity;
             public readonly int WorldToContainer, ContainerToWorld, ContainerCenter, ContainerClampExtent, ContainerHalfSize, ContainerVelocity, ContainerAngularVelocity;
             public readonly int BoundaryRest, BoundaryPlaced, BoundaryParticles, BoundaryPressures, BoundaryCellStart, BoundaryCellCount, BoundaryCount, ClampHits;
+            public readonly int DivergenceFreeFactors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
+            public readonly int SolveSlot, SolveTolerance;
 
             public ShaderIds(IComputeDevice d)
             {
@@ -870,6 +1010,15 @@ namespace SphFluid.Simulation
                 BoundaryCellCount = d.PropertyId("_BoundaryCellCount");
                 BoundaryCount = d.PropertyId("_BoundaryCount");
                 ClampHits = d.PropertyId("_ClampHits");
+                DivergenceFreeFactors = d.PropertyId("_DivergenceFreeFactors");
+                SolverStiffness = d.PropertyId("_SolverStiffness");
+                WarmStart = d.PropertyId("_WarmStart");
+                SolverPartials = d.PropertyId("_SolverPartials");
+                SolverState = d.PropertyId("_SolverState");
+                SolverArguments = d.PropertyId("_SolverArguments");
+                DivergenceRates = d.PropertyId("_DivergenceRates");
+                SolveSlot = d.PropertyId("_SolveSlot");
+                SolveTolerance = d.PropertyId("_SolveTolerance");
                 CohesionCoefficient = d.PropertyId("_CohesionCoefficient");
                 Stiffness = d.PropertyId("_Stiffness");
                 Gamma = d.PropertyId("_Gamma");

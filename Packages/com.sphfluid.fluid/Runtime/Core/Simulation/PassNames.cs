@@ -12,6 +12,12 @@ namespace SphFluid.Simulation
         public const string Normals = "Normals";
         public const string Forces = "Forces";
         public const string FullStep = "FullStep";
+        public const string NonPressureForces = "NonPressureForces";
+        public const string PredictVelocity = "PredictVelocity";
+        public const string DensitySolve = "DensitySolve";
+        public const string Drift = "Drift";
+        public const string DensityFactor = "DensityFactor";
+        public const string DivergenceSolve = "DivergenceSolve";
         public const string MotionReduction = "MotionReduction";
         public const string Diagnostics = "Diagnostics";
     }

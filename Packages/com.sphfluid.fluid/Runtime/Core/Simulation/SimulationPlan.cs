@@ -25,6 +25,9 @@ namespace SphFluid.Simulation
         /// and the sphere clamp runs (OBSTACLES).</summary>
         public bool Obstacles { get; }
 
+        /// <summary>The pressure solver whose passes run: WCSPH's equation of state or DFSPH's two iterative solves.</summary>
+        public PressureSolver PressureSolver { get; }
+
         /// <summary>VelocityDamping &gt; 0.</summary>
         public bool Damping { get; }
 
@@ -40,8 +43,10 @@ namespace SphFluid.Simulation
         /// <summary>The passes run once per frame, in order (before and after the sub-steps).</summary>
         public IReadOnlyList<string> FramePasses { get; }
 
-        public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform)
+        public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform,
+            PressureSolver pressureSolver = PressureSolver.Wcsph)
         {
+            PressureSolver = pressureSolver;
             PhaseCount = phaseCount;
             ObstacleCount = obstacleCount;
             Multiphase = phaseCount > 1;
@@ -58,10 +63,29 @@ namespace SphFluid.Simulation
             if (Obstacles) keywords.Add(SolverKeywords.Obstacles);
             Keywords = keywords;
 
-            var passes = new List<string> { PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure };
-            if (SurfaceTension) passes.Add(PassNames.Normals);
-            passes.Add(PassNames.Forces);
-            passes.Add(PassNames.FullStep);
+            var passes = new List<string>();
+            if (pressureSolver == PressureSolver.Dfsph)
+            {
+                // Symplectic Euler around the two solves (FluidSolver.compute): forces at the sub-step's start.
+                if (SurfaceTension) passes.Add(PassNames.Normals);
+                passes.Add(PassNames.NonPressureForces);
+                passes.Add(PassNames.PredictVelocity);
+                passes.Add(PassNames.DensitySolve);
+                passes.Add(PassNames.Drift);
+                passes.Add(PassNames.Sort);
+                passes.Add(PassNames.DensityFactor);
+                passes.Add(PassNames.DivergenceSolve);
+            }
+            else
+            {
+                passes.Add(PassNames.HalfStep);
+                passes.Add(PassNames.Sort);
+                passes.Add(PassNames.DensityPressure);
+                passes.Add(PassNames.WallPressure);
+                if (SurfaceTension) passes.Add(PassNames.Normals);
+                passes.Add(PassNames.Forces);
+                passes.Add(PassNames.FullStep);
+            }
             SubstepPasses = passes;
 
             var frame = new List<string>();
@@ -80,6 +104,7 @@ namespace SphFluid.Simulation
             var b = new StringBuilder();
             b.Append("plan: ").Append(PhaseCount).Append(PhaseCount == 1 ? " phase, " : " phases, ")
              .Append(ObstacleCount).Append(ObstacleCount == 1 ? " obstacle" : " obstacles");
+            b.Append(" | solver: ").Append(PressureSolver == PressureSolver.Dfsph ? "DFSPH" : "WCSPH");
             b.Append(" | variants: ").Append(Keywords.Count == 0 ? "(none)" : string.Join(" ", Keywords));
             b.Append(" | sub-step: ").Append(string.Join(" > ", SubstepPasses));
             b.Append(" | damping: ").Append(Damping ? "on" : "off");

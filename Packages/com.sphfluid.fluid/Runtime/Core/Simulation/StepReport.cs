@@ -26,10 +26,15 @@ namespace SphFluid.Simulation
         /// <summary>Which condition set <see cref="StableTimeStep"/>: "cfl", "acceleration", "viscous", "capillary" or "max".</summary>
         public string Limit => _limit ?? "none";
 
+        /// <summary>The pressure solver the sub-steps ran.</summary>
+        public PressureSolver PressureSolver { get; }
+
         readonly string _limit; // null only in default(StepReport), which reads as None
 
-        public StepReport(int substeps, float timeStep, float simulatedSeconds, bool capped, float stableTimeStep, string limit)
+        public StepReport(int substeps, float timeStep, float simulatedSeconds, bool capped, float stableTimeStep, string limit,
+            PressureSolver pressureSolver = PressureSolver.Wcsph)
         {
+            PressureSolver = pressureSolver;
             Substeps = substeps;
             TimeStep = timeStep;
             SimulatedSeconds = simulatedSeconds;
@@ -39,8 +44,8 @@ namespace SphFluid.Simulation
         }
 
         public override string ToString() => string.Format(CultureInfo.InvariantCulture,
-            "{0} sub-steps x {1:G4} ms = {2:G4} ms simulated (stable dt {3:G4} ms, limited by {4}){5}",
+            "{0} sub-steps x {1:G4} ms = {2:G4} ms simulated (stable dt {3:G4} ms, limited by {4}){5}{6}",
             Substeps, TimeStep * 1000f, SimulatedSeconds * 1000f, StableTimeStep * 1000f, Limit,
-            Capped ? ", capped: slower than real time" : "");
+            Capped ? ", capped: slower than real time" : "", PressureSolver == PressureSolver.Dfsph ? ", DFSPH" : "");
     }
 }

@@ -12,7 +12,10 @@ namespace SphFluid.Simulation
     /// every pair of phases, 2 min(mu_i, mu_j) / rho0_i bounding the shader's harmonic mixing, because a light
     /// phase next to a viscous one feels more than its own nu. vmax and amax come from the GPU's max-reduction,
     /// read back asynchronously and possibly a frame stale, so the controller uses the larger of the last two
-    /// reports. A frame of length T is covered by n = ceil(T / dt) sub-steps of T / n, capped at MaxSubsteps
+    /// reports. With DFSPH (<see cref="PressureSolver.Dfsph"/>) the solves keep the density, so no speed of sound enters:
+    /// dt = min(cfl h / vmax, 0.125 h^2 / nu_max, dt_capillary, MaxTimeStep) (the velocity CFL of Bender &amp; Koschier
+    /// 2017, sec. 6; the viscous and capillary limits stay because the non-pressure forces are still explicit, the
+    /// acceleration limit goes because the pressure acceleration is no longer explicit). A frame of length T is covered by n = ceil(T / dt) sub-steps of T / n, capped at MaxSubsteps
     /// (then each sub-step is dt and the simulation runs slower than real time).
     /// </summary>
     public sealed class TimeStepController
@@ -96,9 +99,12 @@ namespace SphFluid.Simulation
             double h = _settings.SmoothingRadius;
             double dt = _settings.MaxTimeStep;
             limit = "max";
-            double cfl = _settings.CflNumber * h / (SpeedOfSound + MaxSpeed);
+            bool divergenceFree = _settings.PressureSolver == PressureSolver.Dfsph;
+            double cfl = divergenceFree
+                ? (MaxSpeed > 0f ? _settings.CflNumber * h / MaxSpeed : double.PositiveInfinity)
+                : _settings.CflNumber * h / (SpeedOfSound + MaxSpeed);
             if (cfl < dt) { dt = cfl; limit = "cfl"; }
-            if (MaxAcceleration > 0f)
+            if (MaxAcceleration > 0f && !divergenceFree)
             {
                 double acc = 0.25 * Math.Sqrt(h / MaxAcceleration);
                 if (acc < dt) { dt = acc; limit = "acceleration"; }
@@ -118,16 +124,17 @@ namespace SphFluid.Simulation
         public StepReport PlanFrame(float frameSeconds)
         {
             float dt = StableTimeStep(out string limit);
-            if (!(frameSeconds > 0f) || float.IsInfinity(frameSeconds)) return new StepReport(0, 0f, 0f, false, dt, limit);
+            var solver = _settings.PressureSolver;
+            if (!(frameSeconds > 0f) || float.IsInfinity(frameSeconds)) return new StepReport(0, 0f, 0f, false, dt, limit, solver);
             double needed = Math.Ceiling(frameSeconds / (double)dt - 1e-6);
             int n = (int)Math.Max(1.0, Math.Min(needed, int.MaxValue));
             if (n > _settings.MaxSubsteps)
             {
                 n = _settings.MaxSubsteps;
-                return new StepReport(n, dt, n * dt, true, dt, limit);
+                return new StepReport(n, dt, n * dt, true, dt, limit, solver);
             }
             float step = frameSeconds / n;
-            return new StepReport(n, step, frameSeconds, false, dt, limit);
+            return new StepReport(n, step, frameSeconds, false, dt, limit, solver);
         }
     }
 }

@@ -1,0 +1,63 @@
+#ifndef SPHFLUID_DIVERGENCE_FREE_SOLVER_INCLUDED
+#define SPHFLUID_DIVERGENCE_FREE_SOLVER_INCLUDED
+
+// Divergence-free SPH (Bender & Koschier 2015, "Divergence-Free Smoothed Particle Hydrodynamics", SCA 2015; and
+// 2017, "Divergence-Free SPH for Incompressible and Viscous Fluids", IEEE TVCG 23), written in the number density
+// of the density-contrast formulation (SphDensityPressure.hlsl) so that phases of different particle mass meet
+// without a spurious force: the constraint is delta_i = delta0_i = rho0_i / m_i, and the pressure force is the same
+// antisymmetric pair force as WCSPH's, F_i = -sum_j (q_i + q_j) gradW_ij - sum_b omega_b q_i gradW_ib with
+// q = p / delta^2 (the boundary term mirrors the fluid particle's own q onto the wall particle, Akinci et al. 2012).
+//
+// Rate of change of the number density (continuity equation, walls at their own velocity):
+//   D delta_i / Dt = sum_j (v_i - v_j) . gradW_ij + sum_b omega_b (v_i - v_b) . gradW_ib
+// A q_i alone changes v_i by -(dt / m_i) q_i G_i, G_i = sum_j gradW_ij + sum_b omega_b gradW_ib, and each fluid
+// neighbour's by +(dt / m_j) q_i gradW_ij, so D delta_i / Dt changes by -dt q_i / alpha_i with the DFSPH factor
+//   alpha_i = 1 / ( |G_i|^2 / m_i + sum_j |gradW_ij|^2 / m_j )        (walls in G_i only: they do not move)
+// (the papers' alpha_i in number-density form; 0 where the sum vanishes: an isolated particle has nothing to push).
+// Each solve is a Jacobi iteration on q, every particle taking its neighbours' q as fixed:
+//   constant density   q_i = max(delta*_i - delta0_i, 0) alpha_i / dt^2,  delta*_i = delta_i + dt D delta_i / Dt (v*)
+//   divergence-free    q_i = max(D delta_i / Dt, 0) alpha_i / dt
+// (only compression is corrected: a free surface is under-dense by construction). The error each iteration
+// reports, per particle, is max(delta*_i / delta0_i - 1, 0) (compression) and max(D delta_i / Dt, 0) / delta0_i
+// (1/s); a solve stops once their average over all particles is within its tolerance, after at least two iterations.
+// Warm start: each solve begins with WARM_START_FRACTION of the q the same solve summed up in the previous sub-step
+// (q, not the papers' kappa, is kept: it is a pressure term that does not scale with dt, so a changed dt needs no
+// rescaling). Half, not all: a whole previous pressure applied up front overshoots where the flow has changed.
+
+#define WARM_START_FRACTION 0.5
+
+// 1 / ( |G|^2 / m_i + sum |gradW_ij|^2 / m_j ), 0 where nothing can be pushed.
+float DivergenceFreeFactor(float3 gradientSum, float squaredGradientsOverMass, float particleMass)
+{
+    float denominator = dot(gradientSum, gradientSum) / particleMass + squaredGradientsOverMass;
+    return denominator > 1e-20 ? 1.0 / denominator : 0.0;
+}
+
+// q of the constant-density solve and the particle's relative compression (its error).
+float2 DensityStiffness(float numberDensity, float densityRate, float restNumberDensity, float factor, float dt)
+{
+    float predicted = numberDensity + dt * densityRate;
+    float excess = max(predicted - restNumberDensity, 0.0);
+    return float2(excess * factor / (dt * dt), excess / restNumberDensity);
+}
+
+// q of the divergence-free solve and the particle's relative rate of compression, 1/s (its error).
+float2 DivergenceStiffness(float densityRate, float restNumberDensity, float factor, float dt)
+{
+    float rate = max(densityRate, 0.0);
+    return float2(rate * factor / dt, rate / restNumberDensity);
+}
+
+// Velocity change of fluid particle i from the pair (i, j): -(dt / m_i) (q_i + q_j) gradW_ij.
+float3 StiffnessVelocityPair(float stiffnessI, float stiffnessJ, float3 gradient, float dtOverMass)
+{
+    return -dtOverMass * (stiffnessI + stiffnessJ) * gradient;
+}
+
+// Velocity change of fluid particle i from wall particle b: -(dt / m_i) omega_b q_i gradW_ib.
+float3 StiffnessVelocityWall(float stiffnessI, float weight, float3 gradient, float dtOverMass)
+{
+    return -dtOverMass * weight * stiffnessI * gradient;
+}
+
+#endif

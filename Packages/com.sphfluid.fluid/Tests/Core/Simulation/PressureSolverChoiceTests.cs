@@ -1,0 +1,69 @@
+using System.Linq;
+using NUnit.Framework;
+using SphFluid.Simulation;
+
+namespace SphFluid.Tests.Core.Simulation
+{
+    /// <summary>What choosing DFSPH changes outside the GPU: validation, the time step and the plan (issue #8).</summary>
+    public sealed class PressureSolverChoiceTests
+    {
+        [Test]
+        public void AnUndefinedSolverIsRefusedNamingTheFieldAndItsValues()
+        {
+            var settings = new FluidSettings { PressureSolver = (PressureSolver)7 };
+            var errors = settings.Validate();
+            Assert.That(errors.Select(e => e.Field), Has.Member("Settings.PressureSolver"));
+            Assert.That(errors.Single(e => e.Field == "Settings.PressureSolver").Message,
+                Is.EqualTo("FluidSettings: PressureSolver must be one of 0 (Wcsph), 1 (Dfsph) (was 7)"));
+        }
+
+        [Test]
+        public void TheSpeedOfSoundRuleDoesNotConstrainADivergenceFreeScene()
+        {
+            var scene = SimulationTestScenes.SingleWater();
+            scene.Settings.Stiffness = 10f; // c = 0.26 m/s: far below a fall through the tank
+            Assert.That(scene.Validate().Select(e => e.Field), Has.Member("Settings.Gravity"));
+            scene.Settings.PressureSolver = PressureSolver.Dfsph;
+            Assert.That(scene.Validate(), Is.Empty);
+        }
+
+        static FluidSettings Settings(PressureSolver solver) => new FluidSettings
+        {
+            SmoothingRadius = 0.04f, ParticleSpacing = 0.02f, Stiffness = 70000f, Gamma = 7f,
+            CflNumber = 0.4f, MaxSubsteps = 10, MaxTimeStep = 0.005f, PressureSolver = solver,
+        };
+
+        [Test]
+        public void DivergenceFreeStep_IsTheVelocityCflWithoutTheSpeedOfSound()
+        {
+            var c = new TimeStepController(Settings(PressureSolver.Dfsph), 1000f, 1e-6f);
+            c.ReportMotion(0f, 1000f);
+            c.ReportMotion(0f, 1000f);
+            Assert.That(c.StableTimeStep(out string limit), Is.EqualTo(0.005f), "at rest: MaxTimeStep, whatever the acceleration");
+            Assert.That(limit, Is.EqualTo("max"));
+            c.ReportMotion(8f, 1000f);
+            Assert.That(c.StableTimeStep(out limit), Is.EqualTo(0.4f * 0.04f / 8f).Within(1e-7f));
+            Assert.That(limit, Is.EqualTo("cfl"));
+            var report = c.PlanFrame(1f / 60f);
+            Assert.That(report.PressureSolver, Is.EqualTo(PressureSolver.Dfsph));
+            Assert.That(report.ToString(), Does.EndWith(", DFSPH"));
+        }
+
+        [Test]
+        public void ThePlanDispatchesOnlyTheChosenSolversPasses()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            var wcsph = PipelinePlanner.Plan(scene, false);
+            Assert.That(wcsph.SubstepPasses, Does.Contain(PassNames.Forces).And.Contain(PassNames.DensityPressure).And.Not.Contain(PassNames.DensitySolve));
+            scene.Settings.PressureSolver = PressureSolver.Dfsph;
+            var dfsph = PipelinePlanner.Plan(scene, false);
+            Assert.That(dfsph.PressureSolver, Is.EqualTo(PressureSolver.Dfsph));
+            Assert.That(dfsph.SubstepPasses, Is.EqualTo(new[]
+            {
+                PassNames.NonPressureForces, PassNames.PredictVelocity, PassNames.DensitySolve, PassNames.Drift,
+                PassNames.Sort, PassNames.DensityFactor, PassNames.DivergenceSolve,
+            }));
+            Assert.That(dfsph.ToString(), Does.Contain("solver: DFSPH"));
+        }
+    }
+}

@@ -1,0 +1,91 @@
+using System;
+using System.Globalization;
+using System.Numerics;
+using NUnit.Framework;
+using SphFluid.Headless.Output;
+using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
+using SphFluid.Tests.Runner;
+
+namespace SphFluid.Tests.Physics
+{
+    /// <summary>
+    /// The shipped dam break and oil-and-water scenes under DFSPH (issue #8), each loaded from a copy of the scene file with
+    /// <c>settings.PressureSolver: 1</c> (the int Unity serialises the enum as), so the scene key is read as Unity writes it. The dam
+    /// break must stay finite and lose nothing; the oil and water must layer as <see cref="SeparationTests"/> asks of WCSPH.
+    /// </summary>
+    public sealed class DivergenceFreeSceneTests
+    {
+        const float Frame = 1f / 60f;
+
+        static FluidSceneDescription DivergenceFree(string name)
+        {
+            string path = RunnerPaths.EditedScene(name, "    PressureSolver: 0", "    PressureSolver: 1");
+            var scene = SceneLoader.Load(path, RunnerPaths.Project).Description;
+            Assert.That(scene.Settings.PressureSolver, Is.EqualTo(PressureSolver.Dfsph), "the scene key settings.PressureSolver: 1");
+            return scene;
+        }
+
+        [Test, Ignore("Not measured yet: on the shared 2-core machine the run did not finish within 7 minutes (the test host ended without a " +
+                      "result); up to 32 sub-steps x 600 recorded solve dispatches per frame. Needs a per-frame iteration budget or fewer recorded iterations.")]
+        public void DamBreak_StaysFiniteAndLosesNothingForTwoSeconds()
+        {
+            var scene = DivergenceFree("DamBreak");
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            int spawned = sim.ParticleCount;
+            double steps = 0;
+            int frames = 0;
+            while (sim.SimulatedTime < 2.0 - 1e-6)
+            {
+                sim.Step(Frame);
+                steps += sim.LastStep.Substeps;
+                frames++;
+            }
+            var report = sim.ReadDiagnostics();
+            TestContext.Progress.WriteLine($"DFSPH dam break, N={spawned}: {steps / frames:F2} sub-steps per frame; {report}");
+            Assert.That(report.NanCount, Is.EqualTo(0));
+            Assert.That(report.OutsideCount, Is.EqualTo(0));
+            Assert.That(report.ParticleCount, Is.EqualTo(spawned));
+            Assert.That(report.TotalMass, Is.GreaterThan(0.0));
+        }
+
+        [Test, Ignore("Not measured yet: ran together with the dam break, which did not finish within 7 minutes on the shared 2-core machine.")]
+        public void DefaultOilAndWater_LayersFullyWithin6Seconds_AndNoOilStaysOnTheFloor()
+        {
+            var scene = DivergenceFree("OilAndWater");
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            double reached = double.NaN, next = 0.5;
+            FluidMeasures last = null;
+            int water = Phase(sim, "Water"), oil = Phase(sim, "Oil");
+            var particles = new Particle[sim.ParticleCount];
+            var densities = new Vector4[sim.ParticleCount];
+            var s = scene.Settings;
+            while (sim.SimulatedTime < 6.0 - 1e-6)
+            {
+                sim.Step(Frame);
+                if (sim.SimulatedTime < next - 1e-6) continue;
+                next += 0.5;
+                sim.Particles.GetData(particles);
+                sim.Densities.GetData(densities);
+                last = FluidMeasures.Measure(sim.SimulatedTime, particles, densities, sim.PhaseRows, scene.Container, s.Gravity, s.ParticleSpacing, s.SmoothingRadius);
+                TestContext.Progress.WriteLine(string.Format(CultureInfo.InvariantCulture, "t={0:F2} s layering {1:F3} oil floor {2:F1} %, {3}",
+                    sim.SimulatedTime, last.LayeringIndex, 100 * last.Phases[oil].FloorShare, sim.LastStep));
+                if (double.IsNaN(reached) && last.LayeringIndex >= 0.95) reached = sim.SimulatedTime;
+            }
+            var report = sim.ReadDiagnostics();
+            TestContext.Progress.WriteLine($"DFSPH OilAndWater: layering 0.95 reached at {reached:F2} s; at 6 s {last.LayeringIndex:F3}, " +
+                $"oil floor share {100 * last.Phases[oil].FloorShare:F2} %; {report}");
+            Assert.That(reached, Is.LessThanOrEqualTo(6.0 + 1e-5), "layering index >= 0.95 within 6 simulated seconds");
+            Assert.That(last.Phases[oil].FloorShare, Is.LessThan(0.02), "less than 2 % of the floor layer is oil");
+            Assert.That(last.Phases[oil].MeanHeight, Is.GreaterThan(last.Phases[water].MeanHeight));
+            Assert.That(report.OutsideCount, Is.EqualTo(0));
+            Assert.That(report.NanCount, Is.EqualTo(0));
+        }
+
+        static int Phase(FluidSimulation sim, string name)
+        {
+            for (int k = 0; k < sim.Phases.Count; k++) if (sim.Phases[k].Name == name) return k;
+            throw new ArgumentException(name);
+        }
+    }
+}
