@@ -19,6 +19,9 @@ public sealed class BenchOptions
 
     public string DeviceName { get; set; }
 
+    /// <summary>The pressure solver and tolerance given on the command line (default: the scene's).</summary>
+    public SolverChoice Solver { get; set; } = new();
+
     /// <summary>Parses the arguments after <c>bench</c>; a mistake is a <see cref="UsageException"/>.</summary>
     public static BenchOptions Parse(string[] args) => SphfluidCommandLine.ParseOnly<BenchOptions>("bench", args);
 }
@@ -44,6 +47,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
     readonly Option<int> _steps = OptionKinds.Whole(Verb, "--steps", 1, 100_000, "N", "timed sub-steps per count, in [1, 100000]", 20);
     readonly Option<int> _warmup = OptionKinds.Whole(Verb, "--warmup", 0, 100_000, "N", "untimed sub-steps before timing, in [0, 100000]", 5);
     readonly Option<string> _device = OptionKinds.Text(Verb, "--device", "NAME", SphfluidCommandLine.DeviceHelp);
+    readonly SolverOptions _solver = new(Verb);
 
     public BenchCommand() : base(Verb, "time the pipeline per sub-step, pass and kernel, and what each planner decision saves")
     {
@@ -52,6 +56,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
         Add(_steps);
         Add(_warmup);
         Add(_device);
+        _solver.AddTo(this);
     }
 
     public BenchOptions Read(ParseResult r)
@@ -62,6 +67,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
             Steps = r.GetValue(_steps),
             Warmup = r.GetValue(_warmup),
             DeviceName = r.GetValue(_device),
+            Solver = _solver.Read(r),
         };
         if (r.GetValue(_particles) is { } particles) options.Particles.AddRange(particles);
         if (string.IsNullOrWhiteSpace(options.ScenePath))

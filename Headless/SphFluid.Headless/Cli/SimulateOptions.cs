@@ -46,6 +46,9 @@ public sealed class SimulateOptions
     public int ImageWidth { get; set; } = 640;
     public bool Quiet { get; set; }
 
+    /// <summary>The pressure solver and tolerance given on the command line (default: the scene's).</summary>
+    public SolverChoice Solver { get; set; } = new();
+
     /// <summary>Parses the arguments after <c>simulate</c>; a mistake is a <see cref="UsageException"/>.</summary>
     public static SimulateOptions Parse(string[] args) => SphfluidCommandLine.ParseOnly<SimulateOptions>("simulate", args);
 
@@ -98,6 +101,7 @@ the back wall, spray ignored.
     readonly Option<bool> _topView = OptionKinds.Flag("--top-view", "also write top_NNNN.png (looking down)");
     readonly Option<int> _width = OptionKinds.Whole(Verb, "--width", 64, 4096, "PX", "snapshot width in pixels, in [64, 4096]", 640);
     readonly Option<bool> _quiet = OptionKinds.Flag("--quiet", "no progress output");
+    readonly SolverOptions _solver = new(Verb);
 
     public SimulateCommand() : base(Verb, "simulate the scene\'s fluid: diagnostics, snapshots, charts, summary")
     {
@@ -105,6 +109,7 @@ the back wall, spray ignored.
         foreach (var option in new Option[] { _seconds, _steps, _frameSeconds, _out, _framesEvery, _diagnosticsEvery, _exportEvery,
                      _particlesScale, _device, _topView, _width, _quiet })
             Add(option);
+        _solver.AddTo(this);
     }
 
     /// <summary>The options of a parse without errors; the checks that span options are made here.</summary>
@@ -124,6 +129,7 @@ the back wall, spray ignored.
             TopView = r.GetValue(_topView),
             ImageWidth = r.GetValue(_width),
             Quiet = r.GetValue(_quiet),
+            Solver = _solver.Read(r),
         };
         if (r.GetResult(_frameSeconds) != null) options.FrameSeconds = r.GetValue(_frameSeconds);
         if (string.IsNullOrWhiteSpace(options.ScenePath))

@@ -31,6 +31,9 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
 
     public List<Row> Rows { get; } = new();
 
+    /// <summary>The solver the rows ran (the scene's, or --solver's).</summary>
+    string SolverName { get; set; } = "WCSPH";
+
     public int Execute()
     {
         var scene = SceneLoader.Load(options.ScenePath);
@@ -49,6 +52,8 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         try
         {
             stdout.WriteLine($"bench: {scene.Path} on {device.DeviceName}; {options.Warmup} warm-up + {options.Steps} timed sub-steps per row, one submit each");
+            stdout.WriteLine(SolverChoice.Describe(descriptions[0].Settings));
+            SolverName = SolverChoice.ShortName(descriptions[0].Settings.PressureSolver);
             foreach (var description in descriptions)
             {
                 using var sim = new FluidSimulation(device, description);
@@ -69,6 +74,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
     FluidSceneDescription Scaled(LoadedScene scene, int? target)
     {
         var description = target.HasValue ? SceneLoader.Load(options.ScenePath).Description : scene.Description;
+        options.Solver.ApplyTo(description, "bench");
         if (!target.HasValue) return description;
         ParticleScaling.ScaleTo(description, target.Value);
         SceneFit.RequireScaled(description, "bench", "--particles", target.Value.ToString(C));
@@ -121,7 +127,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         var b = new StringBuilder();
         var passes = Passes.Where(p => Rows.Any(r => r.PassMs.ContainsKey(p))).ToList();
         b.AppendLine();
-        b.AppendLine($"Scene {sceneName}, device {deviceName}: milliseconds per sub-step (mean of {options.Steps}; GPU = sum of the pass ranges)");
+        b.AppendLine($"Scene {sceneName}, device {deviceName}, {SolverName}: milliseconds per sub-step (mean of {options.Steps}; GPU = sum of the pass ranges)");
         b.AppendLine();
         b.AppendLine("| particles | dt (ms) | wall ms | GPU ms | " + string.Join(" | ", passes) + " |");
         b.AppendLine("|---:|---:|---:|---:|" + string.Concat(passes.Select(_ => "---:|")));
