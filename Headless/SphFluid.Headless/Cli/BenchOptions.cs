@@ -19,6 +19,9 @@ public sealed class BenchOptions
 
     public string DeviceName { get; set; }
 
+    /// <summary>Folder for the scaling chart; default Output/&lt;scene name&gt;-bench.</summary>
+    public string OutputDirectory { get; set; }
+
     /// <summary>The pressure solver and tolerance given on the command line (default: the scene's).</summary>
     public SolverChoice Solver { get; set; } = new();
 
@@ -47,6 +50,9 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
     readonly Option<int> _steps = OptionKinds.Whole(Verb, "--steps", 1, 100_000, "N", "timed sub-steps per count, in [1, 100000]", 20);
     readonly Option<int> _warmup = OptionKinds.Whole(Verb, "--warmup", 0, 100_000, "N", "untimed sub-steps before timing, in [0, 100000]", 5);
     readonly Option<string> _device = OptionKinds.Text(Verb, "--device", "NAME", SphfluidCommandLine.DeviceHelp);
+    readonly Option<string> _out = OptionKinds.Text(Verb, "--out", "DIR",
+        "folder for bench-scaling.png/.svg, milliseconds per sub-step against particles (default Output/<scene name>-bench; "
+        + "the same rules as simulate --out: only files sphfluid wrote there are replaced)");
     readonly SolverOptions _solver = new(Verb);
 
     public BenchCommand() : base(Verb, "time the pipeline per sub-step, pass and kernel, and what each planner decision saves")
@@ -56,6 +62,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
         Add(_steps);
         Add(_warmup);
         Add(_device);
+        Add(_out);
         _solver.AddTo(this);
     }
 
@@ -67,6 +74,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
             Steps = r.GetValue(_steps),
             Warmup = r.GetValue(_warmup),
             DeviceName = r.GetValue(_device),
+            OutputDirectory = r.GetValue(_out),
             Solver = _solver.Read(r),
         };
         if (r.GetValue(_particles) is { } particles) options.Particles.AddRange(particles);

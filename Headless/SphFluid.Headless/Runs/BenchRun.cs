@@ -7,6 +7,7 @@ using System.Linq;
 using System.Text;
 using SphFluid.Compute;
 using SphFluid.Headless.Cli;
+using SphFluid.Headless.Output;
 using SphFluid.Headless.Scenes;
 using SphFluid.Simulation;
 using SphFluid.Vulkan;
@@ -41,6 +42,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         // (exit 2, naming --particles) without measuring the others first.
         var targets = options.Particles.Count > 0 ? options.Particles.Select(n => (int?)n).ToList() : new List<int?> { null };
         var descriptions = targets.Select(target => Scaled(scene, target)).ToList();
+        var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name + "-bench"), "--out", "bench");
         IComputeDevice device = Device;
         IDisposable owned = null;
         if (device == null)
@@ -62,6 +64,10 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
                 stderr.WriteLine(string.Format(C, "bench: {0} particles: {1:F3} ms/sub-step wall, {2:F3} ms GPU", row.Particles, row.WallMs, row.GpuMs));
             }
             stdout.Write(Table(scene.Name, device.DeviceName));
+            BenchScalingChart.Build(scene.Name, device.DeviceName, SolverName, Rows.Select(r => (r.Particles, r.WallMs, r.GpuMs)).ToList())
+                .Save(output, BenchScalingChart.Stem);
+            stdout.WriteLine();
+            stdout.WriteLine($"chart: {Path.GetFullPath(output.PathOf(BenchScalingChart.Stem + ".png"))} (and .svg)");
             return Rows.All(r => r.Finite) ? ExitCodes.Ok : ExitCodes.SimulationFailed;
         }
         finally

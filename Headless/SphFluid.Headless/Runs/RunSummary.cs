@@ -46,7 +46,7 @@ public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, s
         if (First != null) b.AppendLine($"first diagnostics: {First}");
         if (Last != null) b.AppendLine($"last diagnostics:  {Last}");
         if (Measures != null) AppendMeasures(b);
-        b.Append($"files: diagnostics.csv, frame_0000.png .. frame_{Snapshots - 1:D4}.png{(Simulation.Phases.Count > 1 ? ", layering.png" : "")}");
+        b.Append($"files: diagnostics.csv, frame_0000.png .. frame_{Snapshots - 1:D4}.png{(Simulation.Phases.Count > 1 ? ", layering.png, layering.svg" : "")}");
         if (Exports > 0) b.Append($", particles_0000.vtu/.ply .. particles_{Exports - 1:D4}.vtu/.ply, {ParticleExport.IndexName}");
         b.AppendLine(", summary.txt");
         return b.ToString();

@@ -173,7 +173,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         double wall = clock.Elapsed.TotalSeconds;
 
         if (sim.Phases.Count > 1)
-            PngEncoder.Write(output.PathOf("layering.png"), LayeringFigure.Render(layering, particles, phases, container, settings.Gravity));
+            LayeringChart.Build(scene.Name, layering, sim.Phases).Save(output, LayeringChart.Stem);
 
         Summary = new RunSummary(scene, sim, device.DeviceName, sim.SimulatedTime, frame, substeps, cappedFrames, wall, snapshots,
             first, last, layering.Count > 0 ? layering[^1] : null, failure, Path.GetFullPath(output.Path)) { Exports = export?.Count ?? 0, Settings = settings };
