@@ -19,6 +19,9 @@ public sealed class BenchOptions
 
     public string DeviceName { get; set; }
 
+    /// <summary>Leave out the planner-savings runs (one per effect the scene's plan leaves out).</summary>
+    public bool SkipSavings { get; set; }
+
     /// <summary>Folder for the scaling chart; default Output/&lt;scene name&gt;-bench.</summary>
     public string OutputDirectory { get; set; }
 
@@ -53,6 +56,10 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
     readonly Option<string> _out = OptionKinds.Text(Verb, "--out", "DIR",
         "folder for bench-scaling.png/.svg, milliseconds per sub-step against particles (default Output/<scene name>-bench; "
         + "the same rules as simulate --out: only files sphfluid wrote there are replaced)");
+    readonly Option<bool> _skipSavings = OptionKinds.Flag("--skip-savings",
+        "leave out the planner savings: by default each effect the scene's plan leaves out (MULTIPHASE for one phase, surface "
+        + "tension, XSPH, obstacles, a moving container) is forced on at the last particle count, and the ms per sub-step it "
+        + "costs is printed as what the planner saves");
     readonly SolverOptions _solver = new(Verb);
 
     public BenchCommand() : base(Verb, "time the pipeline per sub-step, pass and kernel, and what each planner decision saves")
@@ -63,6 +70,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
         Add(_warmup);
         Add(_device);
         Add(_out);
+        Add(_skipSavings);
         _solver.AddTo(this);
     }
 
@@ -75,6 +83,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
             Warmup = r.GetValue(_warmup),
             DeviceName = r.GetValue(_device),
             OutputDirectory = r.GetValue(_out),
+            SkipSavings = r.GetValue(_skipSavings),
             Solver = _solver.Read(r),
         };
         if (r.GetValue(_particles) is { } particles) options.Particles.AddRange(particles);

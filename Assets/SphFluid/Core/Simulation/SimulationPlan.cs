@@ -40,14 +40,17 @@ namespace SphFluid.Simulation
         /// <summary>The passes run once per frame, in order (before and after the sub-steps).</summary>
         public IReadOnlyList<string> FramePasses { get; }
 
-        public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform)
+        /// <param name="forceMultiphase">Run the MULTIPHASE variant for one phase (<see cref="PlanOverrides"/>).</param>
+        /// <param name="forceObstacles">Run the OBSTACLES variant without spheres (<see cref="PlanOverrides"/>).</param>
+        public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform,
+            bool forceMultiphase = false, bool forceObstacles = false)
         {
             PhaseCount = phaseCount;
             ObstacleCount = obstacleCount;
-            Multiphase = phaseCount > 1;
+            Multiphase = phaseCount > 1 || forceMultiphase;
             SurfaceTension = surfaceTension;
             Xsph = xsph;
-            Obstacles = obstacleCount > 0;
+            Obstacles = obstacleCount > 0 || forceObstacles;
             Damping = damping;
             UploadContainerTransform = uploadContainerTransform;
 
