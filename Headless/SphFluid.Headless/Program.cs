@@ -32,7 +32,8 @@ public static class Program
             {
                 case SimulateOptions simulate: return new SimulateRun(simulate, stdout, stderr).Execute();
                 case BenchOptions bench: return new BenchRun(bench, stdout, stderr).Execute();
-                default: throw new UsageException("a command is missing (commands: simulate, bench; see sphfluid --help)");
+                case StudyOptions study: return new StudyRun(study, stdout, stderr).Execute();
+                default: throw new UsageException("a command is missing (commands: simulate, bench, study; see sphfluid --help)");
             }
         }
         catch (UsageException e)

@@ -86,7 +86,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
             SkipSavings = r.GetValue(_skipSavings),
             Solver = _solver.Read(r),
         };
-        if (r.GetValue(_particles) is { } particles) options.Particles.AddRange(particles);
+        if (r.GetResult(_particles) != null) options.Particles.AddRange(r.GetValue(_particles));
         if (string.IsNullOrWhiteSpace(options.ScenePath))
             throw new UsageException($"{Verb}: the scene file argument is missing (e.g. sphfluid bench Assets/SphFluid/Scenes/DamBreak.unity)");
         return options;

@@ -27,6 +27,7 @@ energetic than the scene allows (the message names the time, phase and figure)."
 
   sphfluid simulate <scene.unity> [--seconds S | --steps N] [--out DIR] [--frames-every S] ...
   sphfluid bench <scene.unity> [--particles N ...] [--steps N] ...
+  sphfluid study <scene.unity> [--quick] [--out DIR] ...
   sphfluid <command> --help
 
 " + ExitCodesText;
@@ -37,10 +38,11 @@ energetic than the scene allows (the message names the time, phase and figure)."
     public RootCommand Root { get; }
     public SimulateCommand Simulate { get; } = new();
     public BenchCommand Bench { get; } = new();
+    public StudyCommand Study { get; } = new();
 
     public SphfluidCommandLine()
     {
-        Root = new RootCommand(About) { Simulate, Bench };
+        Root = new RootCommand(About) { Simulate, Bench, Study };
         foreach (var help in Root.Options.OfType<HelpOption>())
             if (help.Action is HelpAction action)
             {
@@ -56,6 +58,7 @@ energetic than the scene allows (the message names the time, phase and figure)."
     {
         [Simulate] = SimulateCommand.Details,
         [Bench] = BenchCommand.Details,
+        [Study] = StudyCommand.Details,
     };
 
     /// <summary>The library's help, then the command's details (what it reads, measures and writes; exit codes).</summary>
@@ -100,6 +103,7 @@ energetic than the scene allows (the message names the time, phase and figure)."
         var command = result.CommandResult.Command;
         if (command == Simulate) return Simulate.Read(result);
         if (command == Bench) return Bench.Read(result);
+        if (command == Study) return Study.Read(result);
         return null;
     }
 
