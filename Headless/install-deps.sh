@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what the headless side needs on a fresh Debian/Ubuntu machine, only when missing:
-# Vulkan (Mesa's lavapipe), glslang's HLSL compiler, SPIRV-Tools and the validation layers.
+# Vulkan (Mesa's lavapipe), glslang's HLSL compiler, SPIRV-Tools, the validation layers and the charts' font.
 # The .NET SDK (10 or newer) must already be on PATH; NuGet packages come with `dotnet restore`.
 set -euo pipefail
 
@@ -10,6 +10,8 @@ command -v spirv-val >/dev/null 2>&1 || need+=(spirv-tools)
 ldconfig -p 2>/dev/null | grep -q 'libvulkan.so.1 ' || need+=(libvulkan1)
 ls /usr/share/vulkan/icd.d/lvp_icd.*.json >/dev/null 2>&1 || need+=(mesa-vulkan-drivers)
 ls /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json >/dev/null 2>&1 || need+=(vulkan-validationlayers)
+# The charts (ScottPlot on SkiaSharp without native dependencies) load this font file by path: no fontconfig lookup.
+[ -f /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf ] || need+=(fonts-dejavu-core)
 
 if [ ${#need[@]} -gt 0 ]; then
     echo "install-deps: installing ${need[*]}" >&2

@@ -1,4 +1,5 @@
 using System;
+using System.CommandLine;
 using System.IO;
 using SphFluid.Headless.Cli;
 using SphFluid.Headless.Runs;
@@ -10,17 +11,6 @@ namespace SphFluid.Headless;
 /// <summary>The <c>sphfluid</c> command line: simulate a Unity scene file headlessly, or benchmark it.</summary>
 public static class Program
 {
-    public const string HelpText =
-@"sphfluid: the SPH fluid of a Unity scene, run headless on Vulkan (lavapipe or a GPU)
-
-  sphfluid simulate <scene.unity> [--seconds S | --steps N] [--out DIR] [--frames-every S] ...
-  sphfluid bench <scene.unity> [--particles N ...] [--steps N] ...
-  sphfluid <command> --help
-
-Exit codes: 0 ok, 1 no Vulkan device or unexpected failure, 2 bad arguments, 3 scene errors,
-4 the run became unhealthy: non-finite, particles lost, or faster, more compressed or more
-energetic than the scene allows (the message names the time, phase and figure).";
-
     public static int Main(string[] args) => Run(args, Console.Out, Console.Error);
 
     /// <summary>Runs one command; every failure becomes a message on <paramref name="stderr"/> and an exit code.</summary>
@@ -28,28 +18,22 @@ energetic than the scene allows (the message names the time, phase and figure)."
     {
         try
         {
-            if (args.Length == 0 || args[0] is "--help" or "-h" or "help")
+            var cli = new SphfluidCommandLine();
+            if (args.Length == 0)
             {
-                (args.Length == 0 ? stderr : stdout).WriteLine(HelpText);
-                return args.Length == 0 ? ExitCodes.BadArguments : ExitCodes.Ok;
+                cli.WriteHelp(stderr);
+                return ExitCodes.BadArguments;
             }
-            string[] rest = args[1..];
-            switch (args[0])
+            var result = cli.Parse(args);
+            // Help and --version: the library's own actions.
+            if (result.Action != null)
+                return result.Invoke(new InvocationConfiguration { Output = stdout, Error = stderr, EnableDefaultExceptionHandler = false });
+            switch (cli.Read(result))
             {
-                case "simulate":
-                {
-                    var options = SimulateOptions.Parse(rest);
-                    if (options.Help) { stdout.WriteLine(SimulateOptions.HelpText); return ExitCodes.Ok; }
-                    return new SimulateRun(options, stdout, stderr).Execute();
-                }
-                case "bench":
-                {
-                    var options = BenchOptions.Parse(rest);
-                    if (options.Help) { stdout.WriteLine(BenchOptions.HelpText); return ExitCodes.Ok; }
-                    return new BenchRun(options, stdout, stderr).Execute();
-                }
-                default:
-                    throw new UsageException($"unknown command '{args[0]}' (commands: simulate, bench; see sphfluid --help)");
+                case SimulateOptions simulate: return new SimulateRun(simulate, stdout, stderr).Execute();
+                case BenchOptions bench: return new BenchRun(bench, stdout, stderr).Execute();
+                case StudyOptions study: return new StudyRun(study, stdout, stderr).Execute();
+                default: throw new UsageException("a command is missing (commands: simulate, bench, study; see sphfluid --help)");
             }
         }
         catch (UsageException e)

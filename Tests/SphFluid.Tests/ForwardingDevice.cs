@@ -17,7 +17,7 @@ namespace SphFluid.Tests
         protected virtual IComputeBuffer Unwrap(IComputeBuffer buffer) => buffer;
 
         public string DeviceName => Inner.DeviceName;
-        public IComputeProgram LoadProgram(string name) => Inner.LoadProgram(name);
+        public virtual IComputeProgram LoadProgram(string name) => Inner.LoadProgram(name);
         public virtual IComputeBuffer CreateBuffer(string name, int count, int stride) => Inner.CreateBuffer(name, count, stride);
         public int PropertyId(string name) => Inner.PropertyId(name);
         public void SetBuffer(IComputeProgram program, int kernel, int propertyId, IComputeBuffer buffer) => Inner.SetBuffer(program, kernel, propertyId, Unwrap(buffer));
@@ -26,10 +26,10 @@ namespace SphFluid.Tests
         public void SetInts(IComputeProgram program, int propertyId, params int[] values) => Inner.SetInts(program, propertyId, values);
         public void SetVector(IComputeProgram program, int propertyId, Vector4 value) => Inner.SetVector(program, propertyId, value);
         public void SetMatrix(IComputeProgram program, int propertyId, Matrix4x4 value) => Inner.SetMatrix(program, propertyId, value);
-        public void SetKeyword(IComputeProgram program, string keyword, bool enabled) => Inner.SetKeyword(program, keyword, enabled);
-        public void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ) => Inner.Dispatch(program, kernel, groupsX, groupsY, groupsZ);
+        public virtual void SetKeyword(IComputeProgram program, string keyword, bool enabled) => Inner.SetKeyword(program, keyword, enabled);
+        public virtual void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ) => Inner.Dispatch(program, kernel, groupsX, groupsY, groupsZ);
         public virtual IComputeBuffer CreateArgumentsBuffer(string name, int count) => Inner.CreateArgumentsBuffer(name, count);
-        public void DispatchIndirect(IComputeProgram program, int kernel, IComputeBuffer arguments, int byteOffset) =>
+        public virtual void DispatchIndirect(IComputeProgram program, int kernel, IComputeBuffer arguments, int byteOffset) =>
             Inner.DispatchIndirect(program, kernel, Unwrap(arguments), byteOffset);
         public void BeginSample(string name) => Inner.BeginSample(name);
         public void EndSample(string name) => Inner.EndSample(name);

@@ -1,4 +1,5 @@
 using System.Collections.Generic;
+using System.CommandLine;
 
 namespace SphFluid.Headless.Cli;
 
@@ -17,54 +18,77 @@ public sealed class BenchOptions
     public int Warmup { get; set; } = 5;
 
     public string DeviceName { get; set; }
-    public bool Help { get; set; }
 
-    public const string HelpText =
-@"sphfluid bench <scene.unity> [options]
+    /// <summary>Leave out the planner-savings runs (one per effect the scene's plan leaves out).</summary>
+    public bool SkipSavings { get; set; }
 
+    /// <summary>Folder for the scaling chart; default Output/&lt;scene name&gt;-bench.</summary>
+    public string OutputDirectory { get; set; }
+
+    /// <summary>The pressure solver and tolerance given on the command line (default: the scene's).</summary>
+    public SolverChoice Solver { get; set; } = new();
+
+    /// <summary>Parses the arguments after <c>bench</c>; a mistake is a <see cref="UsageException"/>.</summary>
+    public static BenchOptions Parse(string[] args) => SphfluidCommandLine.ParseOnly<BenchOptions>("bench", args);
+}
+
+/// <summary>The <c>bench</c> command's syntax and generated help.</summary>
+public sealed class BenchCommand : Command
+{
+    const string Verb = "bench";
+
+    public const string Details =
+@"Details:
 Times the SPH pipeline on the scene: milliseconds per sub-step in total (wall clock and GPU) and per
 pass (GPU timestamp ranges), as a Markdown table. The scene is checked as by simulate (a regular file
 of at most 16 MiB that passes the integrity check), and every --particles count before the device opens.
 
-Options:
-  --particles N [N ...]    particle counts to measure, each in [64, 16777216] (also N,N,...);
-                           the scene's spawn spacing and support radius are scaled to reach them
-                           (default: the scene as it is)
-  --steps N                timed sub-steps per count, in [1, 100000] (default 20)
-  --warmup N               untimed sub-steps before timing, in [0, 100000] (default 5)
-  --device NAME            Vulkan adapter whose name contains NAME (default: SPHFLUID_VULKAN_DEVICE, else the best)
-  --help                   this text
+" + SphfluidCommandLine.ExitCodesText;
 
-Exit codes: 0 ok, 1 no Vulkan device or unexpected failure, 2 bad arguments, 3 scene errors,
-4 the simulation went non-finite.";
+    readonly Argument<string> _scene = OptionKinds.Scene(Verb);
+    readonly Option<List<int>> _particles = OptionKinds.List(Verb, "--particles", "N",
+        "particle counts to measure, each in [64, 16777216] (also N,N,...); the scene's spawn spacing and support radius are scaled "
+        + "to reach them (default: the scene as it is)",
+        text => Ranges.ParseInt(Verb, "--particles", text, 64, 16_777_216));
+    readonly Option<int> _steps = OptionKinds.Whole(Verb, "--steps", 1, 100_000, "N", "timed sub-steps per count, in [1, 100000]", 20);
+    readonly Option<int> _warmup = OptionKinds.Whole(Verb, "--warmup", 0, 100_000, "N", "untimed sub-steps before timing, in [0, 100000]", 5);
+    readonly Option<string> _device = OptionKinds.Text(Verb, "--device", "NAME", SphfluidCommandLine.DeviceHelp);
+    readonly Option<string> _out = OptionKinds.Text(Verb, "--out", "DIR",
+        "folder for bench-scaling.png/.svg, milliseconds per sub-step against particles (default Output/<scene name>-bench; "
+        + "the same rules as simulate --out: only files sphfluid wrote there are replaced)");
+    readonly Option<bool> _skipSavings = OptionKinds.Flag("--skip-savings",
+        "leave out the planner savings: by default each effect the scene's plan leaves out (MULTIPHASE for one phase, surface "
+        + "tension, XSPH, obstacles, a moving container) is forced on at the last particle count, and the ms per sub-step it "
+        + "costs is printed as what the planner saves");
+    readonly SolverOptions _solver = new(Verb);
 
-    public static BenchOptions Parse(string[] args)
+    public BenchCommand() : base(Verb, "time the pipeline per sub-step, pass and kernel, and what each planner decision saves")
     {
-        const string command = "bench";
-        var options = new BenchOptions();
-        var reader = new ArgumentReader(command, args);
-        while (reader.MoveNext(out string token))
+        Add(_scene);
+        Add(_particles);
+        Add(_steps);
+        Add(_warmup);
+        Add(_device);
+        Add(_out);
+        Add(_skipSavings);
+        _solver.AddTo(this);
+    }
+
+    public BenchOptions Read(ParseResult r)
+    {
+        var options = new BenchOptions
         {
-            switch (token)
-            {
-                case "--help": case "-h": options.Help = true; break;
-                case "--particles":
-                    foreach (string v in reader.Values(token))
-                        options.Particles.Add(ArgumentReader.ParseInt(command, token, v, 64, 16_777_216));
-                    break;
-                case "--steps": options.Steps = reader.Int(token, 1, 100_000); break;
-                case "--warmup": options.Warmup = reader.Int(token, 0, 100_000); break;
-                case "--device": options.DeviceName = reader.Value(token); break;
-                default:
-                    if (ArgumentReader.IsOption(token)) throw reader.Unknown(token);
-                    if (options.ScenePath != null) throw reader.Unknown(token);
-                    options.ScenePath = token;
-                    break;
-            }
-        }
-        reader.Finish();
-        if (!options.Help && string.IsNullOrWhiteSpace(options.ScenePath))
-            throw new UsageException($"{command}: the scene file argument is missing (e.g. sphfluid bench Assets/FluidDemo/Scenes/DamBreak.unity)");
+            ScenePath = r.GetValue(_scene),
+            Steps = r.GetValue(_steps),
+            Warmup = r.GetValue(_warmup),
+            DeviceName = r.GetValue(_device),
+            OutputDirectory = r.GetValue(_out),
+            SkipSavings = r.GetValue(_skipSavings),
+            Solver = _solver.Read(r),
+        };
+        if (r.GetResult(_particles) != null) options.Particles.AddRange(r.GetValue(_particles));
+        if (string.IsNullOrWhiteSpace(options.ScenePath))
+            throw new UsageException($"{Verb}: the scene file argument is missing (e.g. sphfluid bench Assets/FluidDemo/Scenes/DamBreak.unity)");
         return options;
     }
 }

@@ -1,4 +1,5 @@
 using System;
+using System.CommandLine;
 
 namespace SphFluid.Headless.Cli;
 
@@ -44,15 +45,28 @@ public sealed class SimulateOptions
     public bool TopView { get; set; }
     public int ImageWidth { get; set; } = 640;
     public bool Quiet { get; set; }
-    public bool Help { get; set; }
 
-    public const string HelpText =
-@"sphfluid simulate <scene.unity> [options]
+    /// <summary>The pressure solver and tolerance given on the command line (default: the scene's).</summary>
+    public SolverChoice Solver { get; set; } = new();
 
+    /// <summary>Parses the arguments after <c>simulate</c>; a mistake is a <see cref="UsageException"/>.</summary>
+    public static SimulateOptions Parse(string[] args) => SphfluidCommandLine.ParseOnly<SimulateOptions>("simulate", args);
+
+    /// <summary>Frames the run takes.</summary>
+    public int FrameCount => Frames > 0 ? Frames : Math.Max(1, (int)Math.Ceiling(Seconds / FrameSeconds - 1e-9));
+}
+
+/// <summary>The <c>simulate</c> command's syntax and generated help.</summary>
+public sealed class SimulateCommand : Command
+{
+    const string Verb = "simulate";
+
+    public const string Details =
+@"Details:
 Reads a Unity scene file (the FluidSimulator's settings, every SpawnBox with its world transform, the
 FluidContainer, SphereObstacles, ContainerSpinner/SphereDriver motion) and simulates it on the headless
-Vulkan backend. Writes diagnostics.csv, frame_NNNN.png snapshots, layering.png (multi-phase scenes) and
-summary.txt into the output folder. The scene must be a regular file of at most 16 MiB that passes the
+Vulkan backend. Writes diagnostics.csv, frame_NNNN.png snapshots, layering.png/.svg (multi-phase scenes)
+and summary.txt into the output folder. The scene must be a regular file of at most 16 MiB that passes the
 project's integrity check (the same check the test suite runs on every shipped scene).
 
 Measures (console, diagnostics.csv, summary.txt): kinetic and potential energy; per phase the
@@ -63,72 +77,65 @@ layers (particles within one spacing of the face); the layering index over pairs
 (container-local x from the back wall reached within 2 spacings of the floor) and the column height at
 the back wall, spray ignored.
 
-Options:
-  --seconds S              simulated seconds to run, in (0, 3600] (default 3)
-  --steps N                run N frames of --frame-seconds instead, N in [1, 1000000]
-  --frame-seconds S        real time per frame, in [0.0001, 0.1] s (default 1/60, as a 60 Hz Unity frame)
-  --out DIR                output folder (default Output/<scene name>). The run records what it writes in
-                           DIR/.sphfluid-outputs and deletes only the files an earlier run recorded there;
-                           a folder holding frame_NNNN.png, summary.txt ... that sphfluid did not write is
-                           refused (exit 2) and left as it was
-  --frames-every S         simulated seconds between PNG snapshots, in [0.0001, 3600] (default 0.25);
-                           snapshots come at frame ends, so at most one per frame
-  --diagnostics-every S    simulated seconds between diagnostics lines/CSV rows, in [0.0001, 3600] (default 0.25);
-                           at most one row per frame
-  --export-every S         simulated seconds between particle exports, in [0.0001, 3600] (default: none). Each
-                           writes particles_NNNN.vtu (ParaView; inline base64 binary) and particles_NNNN.ply
-                           (Blender, MeshLab; binary little-endian) with position, velocity, phase, density
-                           and pressure, and particles.pvd indexes the .vtu files by time
-  --particles-scale F      multiply the particle count by F, in [0.01, 100] (spacing and support shrink by F^(1/3))
-  --device NAME            Vulkan adapter whose name contains NAME (default: SPHFLUID_VULKAN_DEVICE, else the best)
-  --top-view               also write top_NNNN.png (looking down)
-  --width PX               snapshot width in pixels, in [64, 4096] (default 640)
-  --quiet                  no progress output
-  --help                   this text
+" + SphfluidCommandLine.ExitCodesText;
 
-Exit codes: 0 ok, 1 no Vulkan device or unexpected failure, 2 bad arguments, 3 scene errors,
-4 the run became unhealthy: non-finite, particles lost, or faster, more compressed or more
-energetic than the scene allows (the message names the time, phase and figure).";
+    readonly Argument<string> _scene = OptionKinds.Scene(Verb);
+    readonly Option<double> _seconds = OptionKinds.Number(Verb, "--seconds", 0, 3600, true, "s", "S", "simulated seconds to run, in (0, 3600]", SimulateOptions.DefaultSeconds);
+    readonly Option<int> _steps = OptionKinds.Whole(Verb, "--steps", 1, 1_000_000, "N", "run N frames of --frame-seconds instead, N in [1, 1000000]");
+    readonly Option<double> _frameSeconds = OptionKinds.Number(Verb, "--frame-seconds", SimulateOptions.MinInterval, 0.1, false, "s", "S",
+        "real time per frame, in [0.0001, 0.1] s (default 1/60, as a 60 Hz Unity frame)");
+    readonly Option<string> _out = OptionKinds.Text(Verb, "--out", "DIR",
+        "output folder (default Output/<scene name>). The run records what it writes in DIR/.sphfluid-outputs and deletes only the files "
+        + "an earlier run recorded there; a folder holding frame_NNNN.png, summary.txt ... that sphfluid did not write is refused (exit 2) and left as it was");
+    readonly Option<double> _framesEvery = OptionKinds.Number(Verb, "--frames-every", SimulateOptions.MinInterval, 3600, false, "s", "S",
+        "simulated seconds between PNG snapshots, in [0.0001, 3600]; snapshots come at frame ends, so at most one per frame", 0.25);
+    readonly Option<double> _diagnosticsEvery = OptionKinds.Number(Verb, "--diagnostics-every", SimulateOptions.MinInterval, 3600, false, "s", "S",
+        "simulated seconds between diagnostics lines/CSV rows, in [0.0001, 3600]; at most one row per frame", 0.25);
+    readonly Option<double> _exportEvery = OptionKinds.Number(Verb, "--export-every", SimulateOptions.MinInterval, 3600, false, "s", "S",
+        "simulated seconds between particle exports, in [0.0001, 3600] (default: none). Each writes particles_NNNN.vtu (ParaView; inline "
+        + "base64 binary) and particles_NNNN.ply (Blender, MeshLab; binary little-endian) with position, velocity, phase, density and "
+        + "pressure, and particles.pvd indexes the .vtu files by time");
+    readonly Option<double> _particlesScale = OptionKinds.Number(Verb, "--particles-scale", 0.01, 100, false, "", "F",
+        "multiply the particle count by F, in [0.01, 100] (spacing and support shrink by F^(1/3))", 1.0);
+    readonly Option<string> _device = OptionKinds.Text(Verb, "--device", "NAME", SphfluidCommandLine.DeviceHelp);
+    readonly Option<bool> _topView = OptionKinds.Flag("--top-view", "also write top_NNNN.png (looking down)");
+    readonly Option<int> _width = OptionKinds.Whole(Verb, "--width", 64, 4096, "PX", "snapshot width in pixels, in [64, 4096]", 640);
+    readonly Option<bool> _quiet = OptionKinds.Flag("--quiet", "no progress output");
+    readonly SolverOptions _solver = new(Verb);
 
-    public static SimulateOptions Parse(string[] args)
+    public SimulateCommand() : base(Verb, "simulate the scene\'s fluid: diagnostics, snapshots, charts, summary")
     {
-        const string command = "simulate";
-        var options = new SimulateOptions();
-        var reader = new ArgumentReader(command, args);
-        bool secondsGiven = false;
-        while (reader.MoveNext(out string token))
-        {
-            switch (token)
-            {
-                case "--help": case "-h": options.Help = true; break;
-                case "--seconds": options.Seconds = reader.Double(token, 0, 3600, true, "s"); secondsGiven = true; break;
-                case "--steps": options.Frames = reader.Int(token, 1, 1_000_000); break;
-                case "--frame-seconds": options.FrameSeconds = reader.Double(token, MinInterval, 0.1, false, "s"); break;
-                case "--out": options.OutputDirectory = reader.Value(token); break;
-                case "--frames-every": options.SnapshotEvery = reader.Double(token, MinInterval, 3600, false, "s"); break;
-                case "--diagnostics-every": options.DiagnosticsEvery = reader.Double(token, MinInterval, 3600, false, "s"); break;
-                case "--export-every": options.ExportEvery = reader.Double(token, MinInterval, 3600, false, "s"); break;
-                case "--particles-scale": options.ParticlesScale = reader.Double(token, 0.01, 100, false, ""); break;
-                case "--device": options.DeviceName = reader.Value(token); break;
-                case "--top-view": options.TopView = true; break;
-                case "--width": options.ImageWidth = reader.Int(token, 64, 4096); break;
-                case "--quiet": options.Quiet = true; break;
-                default:
-                    if (ArgumentReader.IsOption(token)) throw reader.Unknown(token);
-                    if (options.ScenePath != null) throw reader.Unknown(token);
-                    options.ScenePath = token;
-                    break;
-            }
-        }
-        reader.Finish();
-        if (options.Help) return options;
-        if (string.IsNullOrWhiteSpace(options.ScenePath))
-            throw new UsageException($"{command}: the scene file argument is missing (e.g. sphfluid simulate Assets/FluidDemo/Scenes/OilAndWater.unity)");
-        if (secondsGiven && options.Frames > 0)
-            throw new UsageException($"{command}: give either --seconds or --steps, not both");
-        return options;
+        Add(_scene);
+        foreach (var option in new Option[] { _seconds, _steps, _frameSeconds, _out, _framesEvery, _diagnosticsEvery, _exportEvery,
+                     _particlesScale, _device, _topView, _width, _quiet })
+            Add(option);
+        _solver.AddTo(this);
     }
 
-    /// <summary>Frames the run takes.</summary>
-    public int FrameCount => Frames > 0 ? Frames : Math.Max(1, (int)Math.Ceiling(Seconds / FrameSeconds - 1e-9));
+    /// <summary>The options of a parse without errors; the checks that span options are made here.</summary>
+    public SimulateOptions Read(ParseResult r)
+    {
+        var options = new SimulateOptions
+        {
+            ScenePath = r.GetValue(_scene),
+            Seconds = r.GetValue(_seconds),
+            Frames = r.GetValue(_steps),
+            OutputDirectory = r.GetValue(_out),
+            SnapshotEvery = r.GetValue(_framesEvery),
+            DiagnosticsEvery = r.GetValue(_diagnosticsEvery),
+            ExportEvery = r.GetValue(_exportEvery),
+            ParticlesScale = r.GetValue(_particlesScale),
+            DeviceName = r.GetValue(_device),
+            TopView = r.GetValue(_topView),
+            ImageWidth = r.GetValue(_width),
+            Quiet = r.GetValue(_quiet),
+            Solver = _solver.Read(r),
+        };
+        if (r.GetResult(_frameSeconds) != null) options.FrameSeconds = r.GetValue(_frameSeconds);
+        if (string.IsNullOrWhiteSpace(options.ScenePath))
+            throw new UsageException($"{Verb}: the scene file argument is missing (e.g. sphfluid simulate Assets/FluidDemo/Scenes/OilAndWater.unity)");
+        if (r.GetResult(_seconds) is { Implicit: false } && options.Frames > 0)
+            throw new UsageException($"{Verb}: give either --seconds or --steps, not both");
+        return options;
+    }
 }

@@ -21,7 +21,7 @@ public sealed class OutputFolder
     public const string ManifestName = ".sphfluid-outputs";
 
     // Every name the runner may write. Anything else in the folder is never looked at.
-    static readonly Regex OwnName = new(@"^(frame_\d{4,}\.png|top_\d{4,}\.png|layering\.png|diagnostics\.csv|summary\.txt|particles_\d{4,}\.(vtu|ply)|particles\.pvd)$", RegexOptions.CultureInvariant);
+    static readonly Regex OwnName = new(@"^(frame_\d{4,}\.png|top_\d{4,}\.png|layering\.(png|svg)|bench-scaling\.(png|svg)|study\.(csv|md)|study-pareto\.(png|svg)|diagnostics\.csv|summary\.txt|particles_\d{4,}\.(vtu|ply)|particles\.pvd)$", RegexOptions.CultureInvariant);
 
     readonly HashSet<string> _written = new(StringComparer.Ordinal);
 

@@ -7,6 +7,7 @@ using System.Linq;
 using System.Text;
 using SphFluid.Compute;
 using SphFluid.Headless.Cli;
+using SphFluid.Headless.Output;
 using SphFluid.Headless.Scenes;
 using SphFluid.Simulation;
 using SphFluid.Vulkan;
@@ -21,7 +22,7 @@ namespace SphFluid.Headless.Runs;
 public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter stderr)
 {
     static readonly CultureInfo C = CultureInfo.InvariantCulture;
-    static readonly string[] Passes = { PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals, PassNames.Forces, PassNames.FullStep };
+    static readonly string[] Passes = { PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals, PassNames.Forces, PassNames.FullStep, PassNames.UploadContainer, PassNames.PlaceBoundary };
 
     /// <summary>A device to use instead of opening one (tests share theirs); not disposed here.</summary>
     public IComputeDevice Device { get; init; }
@@ -31,6 +32,9 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
 
     public List<Row> Rows { get; } = new();
 
+    /// <summary>The solver the rows ran (the scene's, or --solver's).</summary>
+    string SolverName { get; set; } = "WCSPH";
+
     public int Execute()
     {
         var scene = SceneLoader.Load(options.ScenePath);
@@ -38,6 +42,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         // (exit 2, naming --particles) without measuring the others first.
         var targets = options.Particles.Count > 0 ? options.Particles.Select(n => (int?)n).ToList() : new List<int?> { null };
         var descriptions = targets.Select(target => Scaled(scene, target)).ToList();
+        var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name + "-bench"), "--out", "bench");
         IComputeDevice device = Device;
         IDisposable owned = null;
         if (device == null)
@@ -49,6 +54,8 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         try
         {
             stdout.WriteLine($"bench: {scene.Path} on {device.DeviceName}; {options.Warmup} warm-up + {options.Steps} timed sub-steps per row, one submit each");
+            stdout.WriteLine(SolverChoice.Describe(descriptions[0].Settings));
+            SolverName = SolverChoice.ShortName(descriptions[0].Settings.PressureSolver);
             foreach (var description in descriptions)
             {
                 using var sim = new FluidSimulation(device, description);
@@ -57,6 +64,12 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
                 stderr.WriteLine(string.Format(C, "bench: {0} particles: {1:F3} ms/sub-step wall, {2:F3} ms GPU", row.Particles, row.WallMs, row.GpuMs));
             }
             stdout.Write(Table(scene.Name, device.DeviceName));
+            if (!options.SkipSavings) MeasureSavings(descriptions[^1], device);
+            stdout.Write(SavingsTable());
+            BenchScalingChart.Build(scene.Name, device.DeviceName, SolverName, Rows.Select(r => (r.Particles, r.WallMs, r.GpuMs)).ToList())
+                .Save(output, BenchScalingChart.Stem);
+            stdout.WriteLine();
+            stdout.WriteLine($"chart: {Path.GetFullPath(output.PathOf(BenchScalingChart.Stem + ".png"))} (and .svg)");
             return Rows.All(r => r.Finite) ? ExitCodes.Ok : ExitCodes.SimulationFailed;
         }
         finally
@@ -65,10 +78,58 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         }
     }
 
+    /// <summary>What one planner decision saves: the same scene with that effect forced on, against the plan's own run.</summary>
+    public sealed record Saving(string Decision, string Forced, Row WithEffect, double WallMsSaved, double GpuMsSaved);
+
+    public List<Saving> Savings { get; } = new();
+
+    /// <summary>Each effect the planner left out of this scene, forced on in turn (<see cref="PlanOverrides"/>), timed as
+    /// the rows are; the difference to the last row is what leaving it out saves per sub-step.</summary>
+    void MeasureSavings(FluidSceneDescription description, IComputeDevice device)
+    {
+        var baseline = Rows[^1];
+        var plan = PipelinePlanner.Plan(description, false);
+        var decisions = new List<(string Decision, bool Off, PlanOverrides Forced)>
+        {
+            ("one phase: no MULTIPHASE variant", !plan.Multiphase, new PlanOverrides { Multiphase = true }),
+            ("no surface tension: no normals pass, no SURFACE_TENSION variant", !plan.SurfaceTension, new PlanOverrides { SurfaceTension = true }),
+            ("no XSPH: no XSPH variant", !plan.Xsph, new PlanOverrides { Xsph = true }),
+            ("no obstacles: no OBSTACLES variant", !plan.Obstacles, new PlanOverrides { Obstacles = true }),
+            ("container at rest: no transform upload, no wall re-placement", true, new PlanOverrides { ContainerMoving = true }),
+        };
+        foreach (var (decision, off, forced) in decisions)
+        {
+            if (!off) continue;
+            using var sim = new FluidSimulation(device, description) { ForcedEffects = forced };
+            var row = Measure(sim, device);
+            Savings.Add(new Saving(decision, forced.ToString(), row, row.WallMs - baseline.WallMs, row.GpuMs - baseline.GpuMs));
+            stderr.WriteLine(string.Format(C, "bench: {0} forced on: {1:F3} ms/sub-step wall, {2:F3} ms GPU", forced, row.WallMs, row.GpuMs));
+        }
+    }
+
+    /// <summary>The planner's savings as a Markdown table (empty without measurements).</summary>
+    public string SavingsTable()
+    {
+        if (Savings.Count == 0) return "";
+        var b = new StringBuilder();
+        var baseline = Rows[^1];
+        b.AppendLine();
+        b.AppendLine(string.Format(C, "Planner savings at {0} particles: ms per sub-step the scene's plan saves against the same scene with the effect forced on "
+            + "(plan as planned: {1:F3} ms wall, {2:F3} ms GPU; mean of {3}; a negative figure is within the timing noise)", baseline.Particles, baseline.WallMs, baseline.GpuMs, options.Steps));
+        b.AppendLine();
+        b.AppendLine("| planner decision | forced on | wall ms with it | GPU ms with it | wall ms saved | GPU ms saved | GPU saved % |");
+        b.AppendLine("|---|---|---:|---:|---:|---:|---:|");
+        foreach (var s in Savings)
+            b.AppendLine(string.Format(C, "| {0} | {1} | {2:F3} | {3:F3} | {4:F3} | {5:F3} | {6:P1} |", s.Decision, s.Forced, s.WithEffect.WallMs, s.WithEffect.GpuMs,
+                s.WallMsSaved, s.GpuMsSaved, s.WithEffect.GpuMs > 0 ? s.GpuMsSaved / s.WithEffect.GpuMs : 0));
+        return b.ToString();
+    }
+
     /// <summary>The scene's description, rescaled to about <paramref name="target"/> particles when one is given.</summary>
     FluidSceneDescription Scaled(LoadedScene scene, int? target)
     {
         var description = target.HasValue ? SceneLoader.Load(options.ScenePath).Description : scene.Description;
+        options.Solver.ApplyTo(description, "bench");
         if (!target.HasValue) return description;
         ParticleScaling.ScaleTo(description, target.Value);
         SceneFit.RequireScaled(description, "bench", "--particles", target.Value.ToString(C));
@@ -121,7 +182,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         var b = new StringBuilder();
         var passes = Passes.Where(p => Rows.Any(r => r.PassMs.ContainsKey(p))).ToList();
         b.AppendLine();
-        b.AppendLine($"Scene {sceneName}, device {deviceName}: milliseconds per sub-step (mean of {options.Steps}; GPU = sum of the pass ranges)");
+        b.AppendLine($"Scene {sceneName}, device {deviceName}, {SolverName}: milliseconds per sub-step (mean of {options.Steps}; GPU = sum of the pass ranges)");
         b.AppendLine();
         b.AppendLine("| particles | dt (ms) | wall ms | GPU ms | " + string.Join(" | ", passes) + " |");
         b.AppendLine("|---:|---:|---:|---:|" + string.Concat(passes.Select(_ => "---:|")));

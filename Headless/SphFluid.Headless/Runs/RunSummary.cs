@@ -1,6 +1,7 @@
 using System.Globalization;
 using System.Linq;
 using System.Text;
+using SphFluid.Headless.Cli;
 using SphFluid.Headless.Output;
 using SphFluid.Headless.Scenes;
 using SphFluid.Simulation;
@@ -19,13 +20,17 @@ public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, s
     /// <summary>Particle exports written (particles_NNNN.vtu/.ply), 0 without --export-every.</summary>
     public int Exports { get; init; }
 
+    /// <summary>The settings the run simulated (after the command line's overrides).</summary>
+    public FluidSettings Settings { get; init; }
+
     public string OneLine() => string.Format(C,
-        "{0}: {1:F3} s simulated in {2} frames / {3} sub-steps, {4:F1} s wall ({5:F2} s per simulated s){6}; {7} snapshot(s){8}{9}; mass {10}",
+        "{0} ({11}): {1:F3} s simulated in {2} frames / {3} sub-steps, {4:F1} s wall ({5:F2} s per simulated s){6}; {7} snapshot(s){8}{9}; mass {10}",
         Ok ? "done" : "FAILED", SimulatedSeconds, Frames, Substeps, WallSeconds, SimulatedSeconds > 0 ? WallSeconds / SimulatedSeconds : 0,
         CappedFrames > 0 ? $", {CappedFrames} frame(s) capped at MaxSubsteps" : "", Snapshots,
         Exports > 0 ? $", {Exports} particle export(s)" : "",
         Measures != null && double.IsFinite(Measures.LayeringIndex) ? string.Format(C, "; layering index {0:F2}", Measures.LayeringIndex) : "",
-        First != null && Last != null ? string.Format(C, "{0:G9} -> {1:G9} kg", First.TotalMass, Last.TotalMass) : "n/a");
+        First != null && Last != null ? string.Format(C, "{0:G9} -> {1:G9} kg", First.TotalMass, Last.TotalMass) : "n/a",
+        SolverChoice.ShortName(Settings?.PressureSolver ?? PressureSolver.Wcsph));
 
     public string ToText()
     {
@@ -34,13 +39,14 @@ public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, s
         b.AppendLine($"device: {Device}");
         b.AppendLine($"particles: {Simulation.ParticleCount}");
         b.AppendLine(Simulation.Plan.ToString());
+        b.AppendLine(SolverChoice.Describe(Settings));
         b.AppendLine(string.Format(C, "simulated: {0:F4} s in {1} frames, {2} sub-steps ({3} capped frames)", SimulatedSeconds, Frames, Substeps, CappedFrames));
         b.AppendLine(string.Format(C, "wall clock: {0:F2} s", WallSeconds));
         b.AppendLine($"result: {(Ok ? "ok" : "FAILED: " + Failure)}");
         if (First != null) b.AppendLine($"first diagnostics: {First}");
         if (Last != null) b.AppendLine($"last diagnostics:  {Last}");
         if (Measures != null) AppendMeasures(b);
-        b.Append($"files: diagnostics.csv, frame_0000.png .. frame_{Snapshots - 1:D4}.png{(Simulation.Phases.Count > 1 ? ", layering.png" : "")}");
+        b.Append($"files: diagnostics.csv, frame_0000.png .. frame_{Snapshots - 1:D4}.png{(Simulation.Phases.Count > 1 ? ", layering.png, layering.svg" : "")}");
         if (Exports > 0) b.Append($", particles_0000.vtu/.ply .. particles_{Exports - 1:D4}.vtu/.ply, {ParticleExport.IndexName}");
         b.AppendLine(", summary.txt");
         return b.ToString();

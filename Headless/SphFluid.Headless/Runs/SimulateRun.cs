@@ -36,6 +36,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         var scene = SceneLoader.Load(options.ScenePath);
         var description = scene.Description;
         int sceneCount = SpawnLayout.TotalCount(description);
+        options.Solver.ApplyTo(description, "simulate");
         ParticleScaling.ScaleBy(description, options.ParticlesScale);
         SceneFit.RequireScaled(description, "simulate", "--particles-scale", options.ParticlesScale.ToString("G6", C));
 
@@ -80,6 +81,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             settings.ParticleSpacing, settings.SmoothingRadius,
             string.Join(", ", sim.Phases.Select((p, k) => string.Format(C, "{0} {1} rho0 {2:G4} kg/m^3 mu {3:G3} Pa s", p.Name, CountOf(description, settings, k, sim), p.RestDensity, p.Viscosity)))));
         stdout.WriteLine(sim.Plan.ToString());
+        stdout.WriteLine(SolverChoice.Describe(settings));
         stdout.WriteLine(string.Format(C, "device: {0}", device.DeviceName));
         stdout.WriteLine(string.Format(C, "run: {0:G4} s simulated in {1} frames of {2:G4} ms; output: {3}", duration, frames, options.FrameSeconds * 1000, Path.GetFullPath(output.Path)));
         stdout.Flush();
@@ -171,10 +173,10 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         double wall = clock.Elapsed.TotalSeconds;
 
         if (sim.Phases.Count > 1)
-            PngEncoder.Write(output.PathOf("layering.png"), LayeringFigure.Render(layering, particles, phases, container, settings.Gravity));
+            LayeringChart.Build(scene.Name, layering, sim.Phases).Save(output, LayeringChart.Stem);
 
         Summary = new RunSummary(scene, sim, device.DeviceName, sim.SimulatedTime, frame, substeps, cappedFrames, wall, snapshots,
-            first, last, layering.Count > 0 ? layering[^1] : null, failure, Path.GetFullPath(output.Path)) { Exports = export?.Count ?? 0 };
+            first, last, layering.Count > 0 ? layering[^1] : null, failure, Path.GetFullPath(output.Path)) { Exports = export?.Count ?? 0, Settings = settings };
         File.WriteAllText(output.PathOf("summary.txt"), Summary.ToText());
         stdout.WriteLine(Summary.OneLine());
         if (failure != null)

@@ -128,7 +128,7 @@ namespace SphFluid.Tests.Runner
             int code = Program.Run(new[] { "simulate", "--help" }, stdout, new StringWriter());
 
             Assert.That(code, Is.EqualTo(ExitCodes.Ok));
-            Assert.That(stdout.ToString(), Does.Contain("--export-every S"));
+            Assert.That(stdout.ToString(), Does.Contain("--export-every <S>"));
             Assert.That(stdout.ToString(), Does.Contain("particles.pvd"));
             Assert.That(stdout.ToString(), Does.Contain("(ordered - inverted) / pairs"));
             Assert.That(stdout.ToString(), Does.Contain("surge front"));

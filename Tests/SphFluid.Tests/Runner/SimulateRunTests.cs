@@ -52,7 +52,8 @@ namespace SphFluid.Tests.Runner
             int code = run.Execute();
 
             Assert.That(code, Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
-            Assert.That(File.Exists(Path.Combine(outDir, "layering.png")), Is.True);
+            ChartFiles.Check(outDir, "layering", "Layering over time: OilAndWater", "simulated time (s)", "mean height above the floor (m)",
+                "layering index", "Water mean height", "Oil mean height");
             Assert.That(File.Exists(Path.Combine(outDir, "top_0000.png")), Is.True);
             Assert.That(File.ReadAllLines(Path.Combine(outDir, "diagnostics.csv"))[0], Does.EndWith("oil_mean_height_m,oil_bottom_m,oil_top_m,oil_floor_share,oil_wall_share,layering_index,surge_front_m,back_wall_column_m,potential_energy_J,clamp_hits,density_iterations,divergence_iterations,divergence_error_pct_per_s"));
             Assert.That(stdout.ToString(), Does.Contain("scaled x0.1"));
@@ -63,7 +64,8 @@ namespace SphFluid.Tests.Runner
         public void BenchPrintsATableWithEveryPass()
         {
             var stdout = new StringWriter();
-            var bench = new BenchRun(BenchOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--steps", "2", "--warmup", "1" }), stdout, new StringWriter())
+            string outDir = RunnerPaths.ScratchFolder("bench");
+            var bench = new BenchRun(BenchOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--steps", "2", "--warmup", "1", "--particles", "150", "400", "--out", outDir }), stdout, new StringWriter())
             {
                 Device = GpuTestDevice.Shared,
             };
@@ -71,10 +73,12 @@ namespace SphFluid.Tests.Runner
             int code = bench.Execute();
 
             Assert.That(code, Is.EqualTo(ExitCodes.Ok));
-            Assert.That(bench.Rows.Count, Is.EqualTo(1));
-            Assert.That(bench.Rows[0].Particles, Is.EqualTo(192));
+            Assert.That(bench.Rows.Count, Is.EqualTo(2));
+            Assert.That(bench.Rows[0].Particles, Is.EqualTo(150).Within(15));
             Assert.That(stdout.ToString(), Does.Contain("| particles | dt (ms) | wall ms | GPU ms |"));
-            Assert.That(stdout.ToString(), Does.Contain("| 192 |"));
+            Assert.That(stdout.ToString(), Does.Contain($"| {bench.Rows[1].Particles} |"));
+            ChartFiles.Check(outDir, "bench-scaling", "Bench scaling: PlayModeTest, WCSPH", "particles", "milliseconds per sub-step (ms)",
+                "wall clock per sub-step", "GPU per sub-step");
         }
     }
 }

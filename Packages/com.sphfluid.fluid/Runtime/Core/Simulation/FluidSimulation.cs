@@ -176,6 +176,20 @@ namespace SphFluid.Simulation
         /// <summary>The neighbour grid (container-local cells of size h).</summary>
         public CellGrid Grid => _grid;
 
+        /// <summary>Effects run although the scene does not need them (the benchmark's measure of the planner's savings);
+        /// null for none, as every simulation but the benchmark's.</summary>
+        public PlanOverrides ForcedEffects
+        {
+            get => _forcedEffects;
+            set
+            {
+                _forcedEffects = value;
+                _plans[0] = _plans[1] = null;
+            }
+        }
+
+        PlanOverrides _forcedEffects;
+
         /// <summary>What the last frame ran (variants and passes).</summary>
         public SimulationPlan Plan { get; private set; }
 
@@ -266,7 +280,7 @@ namespace SphFluid.Simulation
             int moved = _containerChanged ? 1 : 0;
             var plan = _plans[moved];
             if (plan == null || plan.ObstacleCount != _scene.Obstacles.Count)
-                _plans[moved] = plan = PipelinePlanner.Plan(_scene, _containerChanged);
+                _plans[moved] = plan = PipelinePlanner.Plan(_scene, _containerChanged, _forcedEffects);
             Plan = plan;
             foreach (string keyword in SolverKeywords.All)
                 _device.SetKeyword(_solver, keyword, Plan.IsKeywordEnabled(keyword));

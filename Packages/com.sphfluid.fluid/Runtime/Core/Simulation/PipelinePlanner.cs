@@ -3,7 +3,9 @@ namespace SphFluid.Simulation
     /// <summary>Decides from a scene which effects are simulated: the GPU only pays for what the scene asks for.</summary>
     public static class PipelinePlanner
     {
-        public static SimulationPlan Plan(FluidSceneDescription scene, bool containerMoved)
+        /// <param name="forced">Effects to run although the scene does not need them (the benchmark's measure of what
+        /// each decision saves); null for none.</param>
+        public static SimulationPlan Plan(FluidSceneDescription scene, bool containerMoved, PlanOverrides forced = null)
         {
             var phases = scene.Phases();
             bool tension = false;
@@ -11,8 +13,11 @@ namespace SphFluid.Simulation
                 if (phase.SurfaceTension > 0f) tension = true;
             int obstacles = scene.Obstacles == null ? 0 : scene.Obstacles.Count;
             var settings = scene.Settings;
-            return new SimulationPlan(phases.Count, obstacles, tension, settings.XsphEpsilon > 0f,
-                settings.VelocityDamping > 0f, containerMoved, settings.PressureSolver);
+            if (forced == null)
+                return new SimulationPlan(phases.Count, obstacles, tension, settings.XsphEpsilon > 0f,
+                    settings.VelocityDamping > 0f, containerMoved, settings.PressureSolver);
+            return new SimulationPlan(phases.Count, obstacles, tension || forced.SurfaceTension, settings.XsphEpsilon > 0f || forced.Xsph,
+                settings.VelocityDamping > 0f, containerMoved || forced.ContainerMoving, settings.PressureSolver, forced.Multiphase, forced.Obstacles);
         }
     }
 }

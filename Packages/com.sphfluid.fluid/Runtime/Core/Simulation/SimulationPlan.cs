@@ -43,16 +43,18 @@ namespace SphFluid.Simulation
         /// <summary>The passes run once per frame, in order (before and after the sub-steps).</summary>
         public IReadOnlyList<string> FramePasses { get; }
 
+        /// <param name="forceMultiphase">Run the MULTIPHASE variant for one phase (<see cref="PlanOverrides"/>).</param>
+        /// <param name="forceObstacles">Run the OBSTACLES variant without spheres (<see cref="PlanOverrides"/>).</param>
         public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform,
-            PressureSolver pressureSolver = PressureSolver.Wcsph)
+            PressureSolver pressureSolver = PressureSolver.Wcsph, bool forceMultiphase = false, bool forceObstacles = false)
         {
             PressureSolver = pressureSolver;
             PhaseCount = phaseCount;
             ObstacleCount = obstacleCount;
-            Multiphase = phaseCount > 1;
+            Multiphase = phaseCount > 1 || forceMultiphase;
             SurfaceTension = surfaceTension;
             Xsph = xsph;
-            Obstacles = obstacleCount > 0;
+            Obstacles = obstacleCount > 0 || forceObstacles;
             Damping = damping;
             UploadContainerTransform = uploadContainerTransform;
 

@@ -1,0 +1,117 @@
+using System;
+using System.Collections.Generic;
+using System.CommandLine;
+using System.CommandLine.Parsing;
+using System.Linq;
+
+namespace SphFluid.Headless.Cli;
+
+/// <summary>
+/// The kinds of option <c>sphfluid</c> takes, built on System.CommandLine with the project's own range checks: every
+/// value is parsed by <see cref="Ranges"/>, so a bad one is refused with the option's name, range and unit, and a
+/// missing value names the option instead of the library's generic arity message.
+/// </summary>
+public static class OptionKinds
+{
+    /// <summary>A real number in a range; <paramref name="valueName"/> is the placeholder the help shows.</summary>
+    public static Option<double> Number(string command, string name, double min, double max, bool minExclusive, string unit,
+        string valueName, string description, double? fallback = null)
+    {
+        var option = new Option<double>(name) { Description = description, HelpName = valueName, Arity = ArgumentArity.ZeroOrOne };
+        option.CustomParser = r => Guard(r, command, name, text => Ranges.ParseDouble(command, name, text, min, max, minExclusive, unit));
+        if (fallback.HasValue) option.DefaultValueFactory = _ => fallback.Value;
+        return option;
+    }
+
+    public static Option<int> Whole(string command, string name, int min, int max, string valueName, string description, int? fallback = null)
+    {
+        var option = new Option<int>(name) { Description = description, HelpName = valueName, Arity = ArgumentArity.ZeroOrOne };
+        option.CustomParser = r => Guard(r, command, name, text => Ranges.ParseInt(command, name, text, min, max));
+        if (fallback.HasValue) option.DefaultValueFactory = _ => fallback.Value;
+        return option;
+    }
+
+    public static Option<string> Text(string command, string name, string valueName, string description)
+    {
+        var option = new Option<string>(name) { Description = description, HelpName = valueName, Arity = ArgumentArity.ZeroOrOne };
+        option.CustomParser = r => Guard(r, command, name, text => text);
+        return option;
+    }
+
+    /// <summary>One of a fixed set of words (case-insensitive); the refusal lists them.</summary>
+    public static Option<T> Choice<T>(string command, string name, IReadOnlyDictionary<string, T> words, string description)
+    {
+        string allowed = string.Join(" | ", words.Keys);
+        var option = new Option<T>(name) { Description = description, HelpName = string.Join("|", words.Keys), Arity = ArgumentArity.ZeroOrOne };
+        option.CustomParser = r => Guard(r, command, name, text =>
+        {
+            foreach (var pair in words)
+                if (string.Equals(pair.Key, text, StringComparison.OrdinalIgnoreCase)) return pair.Value;
+            throw new UsageException($"{command}: {name} must be one of {allowed} (was '{text}')");
+        });
+        return option;
+    }
+
+    /// <summary>A list of values (<c>--particles 4000 16000</c> or <c>4000,16000</c>); an empty entry is refused by
+    /// name instead of silently running with fewer values.</summary>
+    public static Option<List<T>> List<T>(string command, string name, string valueName, string description, Func<string, T> parse)
+    {
+        var option = new Option<List<T>>(name)
+        {
+            Description = description, HelpName = valueName, Arity = ArgumentArity.ZeroOrMore, AllowMultipleArgumentsPerToken = true,
+        };
+        option.CustomParser = r =>
+        {
+            if (r.Tokens.Count == 0)
+            {
+                r.AddError($"{command}: option {name} needs a value");
+                return null;
+            }
+            try
+            {
+                return r.Tokens.SelectMany(t => t.Value.Split(',', StringSplitOptions.TrimEntries)).Select(parse).ToList();
+            }
+            catch (UsageException e)
+            {
+                r.AddError(e.Message);
+                return null;
+            }
+        };
+        return option;
+    }
+
+    /// <summary>A switch: takes no value (<c>--quiet=yes</c> is refused before parsing, see <see cref="SphfluidCommandLine"/>).</summary>
+    public static Option<bool> Flag(string name, string description) =>
+        new(name) { Description = description, Arity = ArgumentArity.Zero };
+
+    /// <summary>The scene file, the one positional argument; an unknown option standing where it goes is named as such.</summary>
+    public static Argument<string> Scene(string command)
+    {
+        var scene = new Argument<string>("scene.unity") { Description = "the Unity scene file (.unity)", Arity = ArgumentArity.ZeroOrOne };
+        scene.Validators.Add(r =>
+        {
+            var token = r.Tokens.FirstOrDefault()?.Value;
+            if (token != null && Ranges.LooksLikeOption(token))
+                r.AddError($"{command}: unknown option {token} (see sphfluid {command} --help)");
+        });
+        return scene;
+    }
+
+    static T Guard<T>(ArgumentResult result, string command, string name, Func<string, T> parse)
+    {
+        if (result.Tokens.Count == 0)
+        {
+            result.AddError($"{command}: option {name} needs a value");
+            return default;
+        }
+        try
+        {
+            return parse(result.Tokens[^1].Value);
+        }
+        catch (UsageException e)
+        {
+            result.AddError(e.Message);
+            return default;
+        }
+    }
+}

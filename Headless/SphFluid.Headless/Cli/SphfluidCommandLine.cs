@@ -1,0 +1,155 @@
+using System.Collections.Generic;
+using System.CommandLine;
+using System.CommandLine.Help;
+using System.CommandLine.Invocation;
+using System.CommandLine.Parsing;
+using System.IO;
+using System.Linq;
+
+namespace SphFluid.Headless.Cli;
+
+/// <summary>
+/// The <c>sphfluid</c> command line on System.CommandLine: the commands, their generated help and <c>--version</c>.
+/// Parse errors are not printed by the library: the first one becomes a <see cref="UsageException"/> worded as the
+/// project words its refusals (command, option, allowed range, what was given), so every mistake exits 2 with one line.
+/// </summary>
+public sealed class SphfluidCommandLine
+{
+    public const string ExitCodesText =
+@"Exit codes: 0 ok, 1 no Vulkan device or unexpected failure, 2 bad arguments, 3 scene errors,
+4 the run became unhealthy: non-finite, particles lost, or faster, more compressed or more
+energetic than the scene allows (the message names the time, phase and figure).";
+
+    public const string DeviceHelp = "Vulkan adapter whose name contains NAME (default: SPHFLUID_VULKAN_DEVICE, else the best)";
+
+    const string About =
+@"sphfluid: the SPH fluid of a Unity scene, run headless on Vulkan (lavapipe or a GPU)
+
+  sphfluid simulate <scene.unity> [--seconds S | --steps N] [--out DIR] [--frames-every S] ...
+  sphfluid bench <scene.unity> [--particles N ...] [--steps N] ...
+  sphfluid study <scene.unity> [--quick] [--out DIR] ...
+  sphfluid <command> --help
+
+" + ExitCodesText;
+
+    /// <summary>Help lines are wrapped here whatever the terminal (and in redirected output).</summary>
+    const int HelpWidth = 120;
+
+    public RootCommand Root { get; }
+    public SimulateCommand Simulate { get; } = new();
+    public BenchCommand Bench { get; } = new();
+    public StudyCommand Study { get; } = new();
+
+    public SphfluidCommandLine()
+    {
+        Root = new RootCommand(About) { Simulate, Bench, Study };
+        foreach (var help in Root.Options.OfType<HelpOption>())
+            if (help.Action is HelpAction action)
+            {
+                action.MaxWidth = HelpWidth;
+                help.Action = new DetailedHelp(action, Details);
+            }
+    }
+
+    IEnumerable<Command> Commands => Root.Subcommands;
+
+    /// <summary>Each command's long text, printed after its generated help; the command list shows its one-line description.</summary>
+    IReadOnlyDictionary<Command, string> Details => new Dictionary<Command, string>
+    {
+        [Simulate] = SimulateCommand.Details,
+        [Bench] = BenchCommand.Details,
+        [Study] = StudyCommand.Details,
+    };
+
+    /// <summary>The library's help, then the command's details (what it reads, measures and writes; exit codes).</summary>
+    sealed class DetailedHelp(HelpAction generated, IReadOnlyDictionary<Command, string> details) : SynchronousCommandLineAction
+    {
+        public override int Invoke(ParseResult parseResult)
+        {
+            generated.Invoke(parseResult);
+            var output = parseResult.InvocationConfiguration.Output;
+            if (details.TryGetValue(parseResult.CommandResult.Command, out string text))
+            {
+                output.WriteLine(text);
+                output.WriteLine();
+            }
+            return ExitCodes.Ok;
+        }
+    }
+
+    /// <summary>Parses a whole command line. Help is returned even beside other mistakes (the reader asked for it);
+    /// otherwise the first mistake is thrown.</summary>
+    public ParseResult Parse(string[] args)
+    {
+        RefuseFlagValues(args);
+        var result = Root.Parse(args);
+        if (result.Action is DetailedHelp) return result;
+        string error = FirstError(result);
+        if (error != null) throw new UsageException(error);
+        return result;
+    }
+
+    /// <summary>The options of one command without running it (tests and scripts that build runs themselves).</summary>
+    public static T ParseOnly<T>(string command, string[] args)
+    {
+        var cli = new SphfluidCommandLine();
+        var result = cli.Parse(new[] { command }.Concat(args).ToArray());
+        return (T)cli.Read(result);
+    }
+
+    /// <summary>The options object of the parsed command (SimulateOptions, BenchOptions ...), null for the root.</summary>
+    public object Read(ParseResult result)
+    {
+        var command = result.CommandResult.Command;
+        if (command == Simulate) return Simulate.Read(result);
+        if (command == Bench) return Bench.Read(result);
+        if (command == Study) return Study.Read(result);
+        return null;
+    }
+
+    public int WriteHelp(TextWriter writer, params string[] path)
+    {
+        var result = Root.Parse(path.Append("--help").ToArray());
+        return result.Invoke(new InvocationConfiguration { Output = writer, Error = writer, EnableDefaultExceptionHandler = false });
+    }
+
+    /// <summary>A switch given a value (<c>--quiet=yes</c>) is refused by name; the library would only see an odd token.</summary>
+    void RefuseFlagValues(string[] args)
+    {
+        var command = Commands.FirstOrDefault(c => args.Length > 0 && c.Name == args[0]);
+        if (command == null) return;
+        foreach (string arg in args.Skip(1))
+        {
+            int eq = arg.StartsWith("--", System.StringComparison.Ordinal) ? arg.IndexOfAny(new[] { '=', ':' }) : -1;
+            if (eq < 0) continue;
+            string name = arg[..eq];
+            if (command.Options.Any(o => o.Name == name && o.Arity.MaximumNumberOfValues == 0))
+                throw new UsageException($"{command.Name}: option {name} takes no value (was '{arg[(eq + 1)..]}')");
+        }
+    }
+
+    string FirstError(ParseResult result)
+    {
+        var command = result.CommandResult.Command;
+        string name = command == Root ? null : command.Name;
+        // The project's own refusals first (they name the option and range), then unknown tokens: the library's
+        // "Unrecognized command or argument" says less than what the token is.
+        var own = result.Errors.FirstOrDefault(e => name != null && e.Message.StartsWith(name + ":", System.StringComparison.Ordinal));
+        if (own != null) return own.Message;
+        if (result.UnmatchedTokens.Count > 0)
+        {
+            // An unknown option before the scene is taken for the scene, and the scene then is the odd one out.
+            string token = result.Tokens.FirstOrDefault(t => t.Type == TokenType.Argument && Ranges.LooksLikeOption(t.Value))?.Value
+                ?? result.UnmatchedTokens[0];
+            if (name == null)
+                return $"unknown command '{token}' (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)";
+            return Ranges.LooksLikeOption(token)
+                ? $"{name}: unknown option {token} (see sphfluid {name} --help)"
+                : $"{name}: unexpected argument '{token}' (see sphfluid {name} --help)";
+        }
+        if (result.Errors.Count == 0) return null;
+        string message = result.Errors[0].Message;
+        if (name == null) return $"{message} (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)";
+        return message.StartsWith(name + ":", System.StringComparison.Ordinal) ? message : $"{name}: {message}";
+    }
+}

@@ -1,0 +1,111 @@
+using System.Collections.Generic;
+using System.CommandLine;
+
+namespace SphFluid.Headless.Cli;
+
+/// <summary>The arguments of <c>sphfluid study</c>: the matrix of configurations the accuracy-for-time study runs.</summary>
+public sealed class StudyOptions
+{
+    public string ScenePath { get; set; }
+    public string OutputDirectory { get; set; }
+    public string DeviceName { get; set; }
+    public bool Quick { get; set; }
+
+    /// <summary>Simulated seconds per configuration.</summary>
+    public double Seconds { get; set; } = 1.0;
+
+    /// <summary>WCSPH runs: multiples of the scene's Tait stiffness.</summary>
+    public List<double> StiffnessFactors { get; set; } = new() { 1, 4 };
+
+    /// <summary>DFSPH runs: density tolerances, %.</summary>
+    public List<double> DensityTolerances { get; set; } = new() { 1, 0.1, 0.01 };
+
+    /// <summary>Resolutions: particle-count multipliers (ParticleScaling).</summary>
+    public List<double> ParticleScales { get; set; } = new() { 0.5, 1 };
+
+    /// <summary>CFL numbers; empty = the scene's.</summary>
+    public List<double> CflNumbers { get; set; } = new();
+
+    /// <summary>The pressure solvers to run (default both).</summary>
+    public List<SphFluid.Simulation.PressureSolver> Solvers { get; set; } = new() { SphFluid.Simulation.PressureSolver.Wcsph, SphFluid.Simulation.PressureSolver.Dfsph };
+
+    public static StudyOptions Parse(string[] args) => SphfluidCommandLine.ParseOnly<StudyOptions>("study", args);
+}
+
+/// <summary>The <c>study</c> command's syntax and generated help.</summary>
+public sealed class StudyCommand : Command
+{
+    const string Verb = "study";
+
+    public const string Details =
+@"Details:
+Runs the scene once per configuration of a matrix: WCSPH at each --stiffness-factors multiple of the
+scene's Tait stiffness and DFSPH at each --density-tolerances value, each at every --particles-scales
+resolution and every --cfl number, for --seconds of simulated time. For each configuration it reports the
+average and max density error per phase (|rho/rho0 - 1|, GPU diagnostics, averaged / maximised over the
+samples), the divergence error (DFSPH), the energy drift ((E_end - E_0) / E_0, kinetic + potential), the
+scene's observables at the end (layering index, surge front, column height at the back wall) and their
+error against the finest configuration run (largest particle scale, smallest CFL, tightest solver), the
+pressure-solver iterations per sub-step, sub-steps, GPU ms and wall ms per simulated second and the
+real-time factor. Writes study.csv, study.md (the same table in Markdown) and study-pareto.png/.svg
+(observable error against wall time per simulated second, log axes, one series per solver) into --out.
+--quick: a small matrix for a check in a few minutes on 2 CPU cores (0.1 s simulated; scales 0.25 and
+0.5; the scene's CFL; WCSPH x1; DFSPH 1, 0.1 and 0.01 %).
+
+" + SphfluidCommandLine.ExitCodesText;
+
+    readonly Argument<string> _scene = OptionKinds.Scene(Verb);
+    readonly Option<string> _out = OptionKinds.Text(Verb, "--out", "DIR",
+        "output folder (default Output/<scene name>-study; the same rules as simulate --out: only files sphfluid wrote there are replaced)");
+    readonly Option<double> _seconds = OptionKinds.Number(Verb, "--seconds", 0, 60, true, "s", "S", "simulated seconds per configuration, in (0, 60] (default 1; --quick 0.1)");
+    readonly Option<List<double>> _stiffness = OptionKinds.List(Verb, "--stiffness-factors", "F",
+        "WCSPH runs: multiples of the scene's Tait stiffness, each in [0.01, 100] (default 1 4; --quick 1)",
+        text => Ranges.ParseDouble(Verb, "--stiffness-factors", text, 0.01, 100, false, ""));
+    readonly Option<List<double>> _tolerances = OptionKinds.List(Verb, "--density-tolerances", "PCT",
+        "DFSPH runs: density tolerances, each in [0.001, 10] % (default 1 0.1 0.01)",
+        text => Ranges.ParseDouble(Verb, "--density-tolerances", text, 0.001, 10, false, "%"));
+    readonly Option<List<double>> _scales = OptionKinds.List(Verb, "--particles-scales", "F",
+        "resolutions: particle-count multipliers, each in [0.01, 100] (default 0.5 1; --quick 0.25 0.5)",
+        text => Ranges.ParseDouble(Verb, "--particles-scales", text, 0.01, 100, false, ""));
+    readonly Option<List<double>> _cfl = OptionKinds.List(Verb, "--cfl", "C",
+        "CFL numbers, each in (0, 1] (default: the scene's CflNumber and half of it; --quick the scene's)",
+        text => Ranges.ParseDouble(Verb, "--cfl", text, 0, 1, true, ""));
+    readonly Option<List<SphFluid.Simulation.PressureSolver>> _solvers = OptionKinds.List(Verb, "--solvers", "wcsph|dfsph",
+        "the solvers to run (default both)",
+        text => SolverChoice.Words.TryGetValue(text.ToLowerInvariant(), out var s) ? s : throw new UsageException($"{Verb}: --solvers must be wcsph and/or dfsph (was '{text}')"));
+    readonly Option<bool> _quick = OptionKinds.Flag("--quick", "a small matrix that finishes in a few minutes on 2 CPU cores (see Details); explicit options still apply");
+    readonly Option<string> _device = OptionKinds.Text(Verb, "--device", "NAME", SphfluidCommandLine.DeviceHelp);
+
+    public StudyCommand() : base(Verb, "accuracy for time: a matrix of solvers, tolerances, resolutions and CFL numbers; CSV, Markdown, Pareto chart")
+    {
+        Add(_scene);
+        foreach (var option in new Option[] { _out, _seconds, _stiffness, _tolerances, _scales, _cfl, _solvers, _quick, _device }) Add(option);
+    }
+
+    public StudyOptions Read(ParseResult r)
+    {
+        bool quick = r.GetValue(_quick);
+        var options = new StudyOptions
+        {
+            ScenePath = r.GetValue(_scene),
+            OutputDirectory = r.GetValue(_out),
+            DeviceName = r.GetValue(_device),
+            Quick = quick,
+        };
+        if (quick)
+        {
+            options.Seconds = 0.1;
+            options.StiffnessFactors = new() { 1 };
+            options.ParticleScales = new() { 0.25, 0.5 };
+        }
+        if (r.GetResult(_seconds) != null) options.Seconds = r.GetValue(_seconds);
+        if (r.GetResult(_stiffness) != null) options.StiffnessFactors = r.GetValue(_stiffness);
+        if (r.GetResult(_tolerances) != null) options.DensityTolerances = r.GetValue(_tolerances);
+        if (r.GetResult(_scales) != null) options.ParticleScales = r.GetValue(_scales);
+        if (r.GetResult(_cfl) != null) options.CflNumbers = r.GetValue(_cfl);
+        if (r.GetResult(_solvers) != null) options.Solvers = r.GetValue(_solvers);
+        if (string.IsNullOrWhiteSpace(options.ScenePath))
+            throw new UsageException($"{Verb}: the scene file argument is missing (e.g. sphfluid study Assets/FluidDemo/Scenes/DamBreak.unity --quick)");
+        return options;
+    }
+}

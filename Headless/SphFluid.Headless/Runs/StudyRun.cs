@@ -1,0 +1,279 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Numerics;
+using System.Text;
+using SphFluid.Compute;
+using SphFluid.Headless.Cli;
+using SphFluid.Headless.Output;
+using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
+using SphFluid.Vulkan;
+
+namespace SphFluid.Headless.Runs;
+
+/// <summary>
+/// <c>sphfluid study</c>: the accuracy-for-time study. Runs the scene once per configuration (solver and its stiffness or
+/// tolerance, resolution, CFL number), measures how far each is from incompressible and from the finest configuration's
+/// observables, and what each costs per simulated second; writes study.csv, study.md and the Pareto chart.
+/// </summary>
+public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter stderr)
+{
+    static readonly CultureInfo C = CultureInfo.InvariantCulture;
+    const double FrameSeconds = 1.0 / 60.0;
+
+    /// <summary>A device to use instead of opening one (tests share theirs); not disposed here.</summary>
+    public IComputeDevice Device { get; init; }
+
+    public sealed record Configuration(PressureSolver Solver, double StiffnessFactor, double DensityTolerance, double ParticleScale, double Cfl)
+    {
+        public string Label => Solver == PressureSolver.Dfsph
+            ? string.Format(C, "DFSPH {0:G3} %", DensityTolerance)
+            : string.Format(C, "WCSPH k x{0:G3}", StiffnessFactor);
+    }
+
+    public sealed class Row
+    {
+        public Configuration Config;
+        public int Particles;
+        public double SimulatedSeconds, WallSeconds, GpuMilliseconds;
+        public int Substeps;
+        public string[] PhaseNames;
+        public double[] DensityErrorAverage, DensityErrorMax;
+        public double DivergenceError, EnergyDrift, SolverIterations;
+        public double Layering, SurgeFront, Column;
+        public double LayeringError, FrontError, ColumnError, ObservableError;
+        public string Failure;
+
+        public double SubstepsPerSecond => Substeps / SimulatedSeconds;
+        public double WallMsPerSecond => WallSeconds * 1000 / SimulatedSeconds;
+        public double GpuMsPerSecond => GpuMilliseconds / SimulatedSeconds;
+        public double RealTimeFactor => SimulatedSeconds / WallSeconds;
+    }
+
+    public List<Row> Rows { get; } = new();
+
+    public int Execute()
+    {
+        var scene = SceneLoader.Load(options.ScenePath);
+        var configs = Matrix(scene.Description.Settings);
+        // Every configuration is made into a scene before the device opens: an impossible one is refused by name first.
+        var descriptions = configs.Select(c => Describe(c)).ToList();
+        var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name + "-study"), "--out", "study");
+        IComputeDevice device = Device;
+        IDisposable owned = null;
+        if (device == null)
+        {
+            var opened = DeviceFactory.Open(scene.ProjectRoot, options.DeviceName, "study");
+            device = opened;
+            owned = opened;
+        }
+        try
+        {
+            stdout.WriteLine(string.Format(C, "study: {0} on {1}; {2} configuration(s) of {3:G3} s simulated each{4}", scene.Path, device.DeviceName, configs.Count,
+                options.Seconds, options.Quick ? " (--quick)" : ""));
+            for (int i = 0; i < configs.Count; i++)
+            {
+                var row = Run(scene, descriptions[i], configs[i], device);
+                Rows.Add(row);
+                stderr.WriteLine(string.Format(C, "study: [{0}/{1}] {2}, scale {3:G3}, CFL {4:G3}: {5} particles, {6:F0} wall ms per simulated s{7}",
+                    i + 1, configs.Count, configs[i].Label, configs[i].ParticleScale, configs[i].Cfl, row.Particles, row.WallMsPerSecond,
+                    row.Failure != null ? " FAILED: " + row.Failure : ""));
+            }
+            CompareWithFinest(scene.Description.Container);
+            File.WriteAllText(output.PathOf("study.csv"), Csv());
+            string table = Markdown(scene.Name, device.DeviceName);
+            File.WriteAllText(output.PathOf("study.md"), table);
+            stdout.Write(table);
+            StudyParetoChart.Build(scene.Name, device.DeviceName, Rows).Save(output, StudyParetoChart.Stem);
+            stdout.WriteLine();
+            stdout.WriteLine($"files: {Path.GetFullPath(output.Path)}: study.csv, study.md, {StudyParetoChart.Stem}.png, {StudyParetoChart.Stem}.svg");
+            return Rows.All(r => r.Failure == null) ? ExitCodes.Ok : ExitCodes.SimulationFailed;
+        }
+        finally
+        {
+            owned?.Dispose();
+        }
+    }
+
+    List<Configuration> Matrix(FluidSettings scene)
+    {
+        var cfls = options.CflNumbers.Count > 0 ? options.CflNumbers
+            : options.Quick ? new List<double> { scene.CflNumber } : new List<double> { scene.CflNumber, scene.CflNumber / 2 };
+        var solvers = new List<(PressureSolver, double, double)>();
+        if (options.Solvers.Contains(PressureSolver.Wcsph))
+            foreach (double k in options.StiffnessFactors) solvers.Add((PressureSolver.Wcsph, k, 0));
+        if (options.Solvers.Contains(PressureSolver.Dfsph))
+            foreach (double tol in options.DensityTolerances) solvers.Add((PressureSolver.Dfsph, 1, tol));
+        var configs = new List<Configuration>();
+        foreach (double scale in options.ParticleScales)
+            foreach (double cfl in cfls)
+                foreach (var (solver, k, tol) in solvers)
+                    configs.Add(new Configuration(solver, k, tol, scale, cfl));
+        return configs;
+    }
+
+    FluidSceneDescription Describe(Configuration config)
+    {
+        var description = SceneLoader.Load(options.ScenePath).Description;
+        var settings = description.Settings.Clone();
+        settings.PressureSolver = config.Solver;
+        if (config.Solver == PressureSolver.Dfsph) settings.DensityTolerance = (float)config.DensityTolerance;
+        settings.Stiffness = (float)(settings.Stiffness * config.StiffnessFactor);
+        settings.CflNumber = (float)config.Cfl;
+        description.Settings = settings;
+        ParticleScaling.ScaleBy(description, config.ParticleScale);
+        SceneFit.RequireScaled(description, "study", "--particles-scales", config.ParticleScale.ToString("G6", C));
+        var errors = description.Validate();
+        if (errors.Count > 0)
+            throw new UsageException($"study: configuration {config.Label}, CFL {config.Cfl.ToString("G3", C)} is invalid for this scene: {errors[0].Message}");
+        return description;
+    }
+
+    Row Run(LoadedScene scene, FluidSceneDescription description, Configuration config, IComputeDevice device)
+    {
+        using var sim = new FluidSimulation(device, description);
+        var settings = description.Settings;
+        var restContainer = description.Container.Clone();
+        var restObstacles = description.Obstacles.Select(o => o.Clone()).ToList();
+        var container = restContainer;
+        var particles = new Particle[sim.ParticleCount];
+        var densities = new Vector4[sim.ParticleCount];
+        var health = new HealthCheck(description, sim.ParticleCount);
+        int phases = sim.Phases.Count;
+        var row = new Row
+        {
+            Config = config, Particles = sim.ParticleCount, PhaseNames = sim.Phases.Select(p => p.Name).ToArray(),
+            DensityErrorAverage = new double[phases], DensityErrorMax = new double[phases],
+        };
+        int samples = 0;
+        double energy0 = double.NaN, energy = double.NaN, divergence = 0, iterations = 0;
+        FluidMeasures last = null;
+        void Sample()
+        {
+            var report = sim.ReadDiagnostics();
+            sim.Particles.GetData(particles);
+            sim.Densities.GetData(densities);
+            last = FluidMeasures.Measure(sim.SimulatedTime, particles, densities, sim.PhaseRows, container, settings.Gravity, settings.ParticleSpacing, settings.SmoothingRadius);
+            for (int k = 0; k < phases; k++)
+            {
+                row.DensityErrorAverage[k] += report.Phases[k].AverageDensityError;
+                row.DensityErrorMax[k] = Math.Max(row.DensityErrorMax[k], report.Phases[k].MaxDensityError);
+            }
+            divergence += report.DivergenceError;
+            iterations += report.DensitySolveIterations + report.DivergenceSolveIterations;
+            energy = report.KineticEnergy + last.PotentialEnergy;
+            if (double.IsNaN(energy0)) energy0 = energy;
+            samples++;
+            row.Failure ??= health.Check(report, particles)?.Message;
+        }
+
+        Sample();
+        var clock = Stopwatch.StartNew();
+        int frame = 0;
+        while (row.Failure == null && sim.SimulatedTime < options.Seconds - 1e-6)
+        {
+            double target = sim.SimulatedTime + FrameSeconds;
+            if (scene.Motion.MovesContainer)
+            {
+                container = scene.Motion.ContainerAt(restContainer, target);
+                sim.UpdateContainer(container);
+            }
+            if (scene.Motion.MovesObstacles) sim.UpdateObstacles(scene.Motion.ObstaclesAt(restObstacles, target));
+            var step = sim.Step((float)Math.Min(FrameSeconds, options.Seconds - sim.SimulatedTime + 1e-7));
+            row.Substeps += step.Substeps;
+            if (device is VulkanComputeDevice vulkan)
+            {
+                vulkan.WaitIdle();
+                row.GpuMilliseconds += vulkan.LastDispatchTimings.Sum(t => t.Milliseconds);
+            }
+            frame++;
+            if (frame % 3 == 0)
+            {
+                clock.Stop();
+                Sample();
+                clock.Start();
+            }
+        }
+        row.WallSeconds = clock.Elapsed.TotalSeconds;
+        row.SimulatedSeconds = sim.SimulatedTime;
+        Sample();
+        for (int k = 0; k < phases; k++) row.DensityErrorAverage[k] /= samples;
+        row.DivergenceError = divergence / samples;
+        row.SolverIterations = iterations / samples;
+        row.EnergyDrift = Math.Abs(energy0) > 0 ? (energy - energy0) / Math.Abs(energy0) : 0;
+        row.Layering = last.LayeringIndex;
+        row.SurgeFront = last.SurgeFront;
+        row.Column = last.BackWallColumn;
+        if (device is not VulkanComputeDevice) row.GpuMilliseconds = double.NaN;
+        return row;
+    }
+
+    /// <summary>Observable errors against the finest configuration run: the largest particle scale, then the smallest CFL,
+    /// then the tightest DFSPH tolerance (or the stiffest WCSPH when no DFSPH ran). Lengths are relative to the
+    /// container's length (front) and height (column); the layering index to its range of 2.</summary>
+    void CompareWithFinest(ContainerDescription container)
+    {
+        var finest = Rows.Where(r => r.Failure == null)
+            .OrderByDescending(r => r.Config.ParticleScale).ThenBy(r => r.Config.Cfl)
+            .ThenByDescending(r => r.Config.Solver == PressureSolver.Dfsph ? 1 : 0)
+            .ThenBy(r => r.Config.Solver == PressureSolver.Dfsph ? r.Config.DensityTolerance : -r.Config.StiffnessFactor)
+            .FirstOrDefault();
+        foreach (var r in Rows)
+        {
+            if (finest == null) { r.ObservableError = double.NaN; continue; }
+            r.LayeringError = double.IsFinite(r.Layering) && double.IsFinite(finest.Layering) ? Math.Abs(r.Layering - finest.Layering) / 2 : 0;
+            r.FrontError = Math.Abs(r.SurgeFront - finest.SurgeFront) / container.Size.X;
+            r.ColumnError = Math.Abs(r.Column - finest.Column) / container.Size.Y;
+            r.ObservableError = Math.Max(r.LayeringError, Math.Max(r.FrontError, r.ColumnError));
+        }
+        Finest = finest;
+    }
+
+    /// <summary>The configuration the others are compared with.</summary>
+    public Row Finest { get; private set; }
+
+    string Csv()
+    {
+        var b = new StringBuilder();
+        int phases = Rows[0].PhaseNames.Length;
+        b.Append("solver,stiffness_factor,density_tolerance_pct,particles_scale,cfl,particles");
+        foreach (string p in Rows[0].PhaseNames) b.Append(C, $",{p.ToLowerInvariant()}_density_error_avg,{p.ToLowerInvariant()}_density_error_max");
+        b.AppendLine(",divergence_error,energy_drift,layering_index,surge_front_m,column_m,layering_error,front_error,column_error,observable_error,"
+            + "solver_iterations_per_step,substeps_per_s,gpu_ms_per_s,wall_ms_per_s,real_time_factor,finest,status");
+        foreach (var r in Rows)
+        {
+            b.Append(string.Format(C, "{0},{1:G6},{2:G6},{3:G6},{4:G6},{5}", SolverChoice.ShortName(r.Config.Solver), r.Config.StiffnessFactor,
+                r.Config.Solver == PressureSolver.Dfsph ? r.Config.DensityTolerance : double.NaN, r.Config.ParticleScale, r.Config.Cfl, r.Particles));
+            for (int k = 0; k < phases; k++) b.Append(string.Format(C, ",{0:G6},{1:G6}", r.DensityErrorAverage[k], r.DensityErrorMax[k]));
+            b.AppendLine(string.Format(C, ",{0:G6},{1:G6},{2:G6},{3:G6},{4:G6},{5:G6},{6:G6},{7:G6},{8:G6},{9:G6},{10:G6},{11:G6},{12:G6},{13:G6},{14},{15}",
+                r.DivergenceError, r.EnergyDrift, r.Layering, r.SurgeFront, r.Column, r.LayeringError, r.FrontError, r.ColumnError, r.ObservableError,
+                r.SolverIterations, r.SubstepsPerSecond, r.GpuMsPerSecond, r.WallMsPerSecond, r.RealTimeFactor, r == Finest ? "yes" : "no",
+                r.Failure == null ? "ok" : "failed: " + r.Failure.Replace(',', ';')));
+        }
+        return b.ToString();
+    }
+
+    string Markdown(string sceneName, string deviceName)
+    {
+        var b = new StringBuilder();
+        b.AppendLine();
+        b.AppendLine(string.Format(C, "Study of {0} on {1}: {2:G3} s simulated per configuration; density error |rho/rho0 - 1| avg / max per phase; "
+            + "observable error = largest of |layering - ref| / 2, |front - ref| / length, |column - ref| / height against the finest run (ref)", sceneName, deviceName, options.Seconds));
+        b.AppendLine();
+        b.AppendLine("| configuration | scale | CFL | particles | density error avg / max | div. error | energy drift | layering | front m | column m | obs. error | iter/step | sub-steps/s | GPU ms/s | wall ms/s | real time |");
+        b.AppendLine("|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+        foreach (var r in Rows)
+        {
+            string density = string.Join("; ", r.PhaseNames.Select((p, k) => string.Format(C, "{0} {1:P2} / {2:P2}", p, r.DensityErrorAverage[k], r.DensityErrorMax[k])));
+            b.AppendLine(string.Format(C, "| {0}{1} | {2:G3} | {3:G3} | {4} | {5} | {6:G3} | {7:P2} | {8:F2} | {9:F3} | {10:F3} | {11:G3} | {12:F1} | {13:F0} | {14:F0} | {15:F0} | {16:G3}x |",
+                r.Config.Label, r == Finest ? " (ref)" : r.Failure != null ? " (FAILED)" : "", r.Config.ParticleScale, r.Config.Cfl, r.Particles, density,
+                r.DivergenceError, r.EnergyDrift, r.Layering, r.SurgeFront, r.Column, r.ObservableError, r.SolverIterations, r.SubstepsPerSecond,
+                r.GpuMsPerSecond, r.WallMsPerSecond, r.RealTimeFactor));
+        }
+        return b.ToString();
+    }
+}

@@ -1,0 +1,71 @@
+using System.IO;
+using NUnit.Framework;
+using SphFluid.Headless;
+using SphFluid.Headless.Cli;
+using SphFluid.Headless.Runs;
+using SphFluid.Simulation;
+
+namespace SphFluid.Tests.Runner
+{
+    /// <summary>--solver and --density-tolerance: parsed, refused by name with their range, applied to the run and printed.</summary>
+    public sealed class SolverOptionTests
+    {
+        static int Run(out string stderr, params string[] args)
+        {
+            var e = new StringWriter();
+            int code = Program.Run(args, new StringWriter(), e);
+            stderr = e.ToString();
+            return code;
+        }
+
+        [TestCase("simulate")]
+        [TestCase("bench")]
+        public void AnUnknownSolverIsRefusedWithTheChoices(string command)
+        {
+            Assert.That(Run(out string err, command, RunnerPaths.Scene("PlayModeTest"), "--solver", "pcisph"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain($"{command}: --solver must be one of wcsph | dfsph (was 'pcisph')"));
+        }
+
+        [TestCase("0", "--density-tolerance must be in [0.001, 10] % (was 0)")]
+        [TestCase("tight", "--density-tolerance must be a number in [0.001, 10] % (was 'tight')")]
+        public void ADensityToleranceOutOfRangeIsRefused(string value, string message)
+        {
+            Assert.That(Run(out string err, "simulate", RunnerPaths.Scene("PlayModeTest"), "--solver", "dfsph", "--density-tolerance", value), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain(message));
+        }
+
+        [Test]
+        public void ADensityToleranceForAWcsphRunIsRefusedInsteadOfIgnored()
+        {
+            Assert.That(Run(out string err, "simulate", RunnerPaths.Scene("PlayModeTest"), "--density-tolerance", "0.1", "--steps", "1"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain("--density-tolerance applies to the DFSPH solver only"));
+        }
+
+        [Test]
+        public void TheChoiceOverridesTheScenesSettings()
+        {
+            var options = SimulateOptions.Parse(new[] { "x.unity", "--solver", "DFSPH", "--density-tolerance", "0.01" });
+            var scene = new FluidSceneDescription { Settings = new FluidSettings() };
+
+            options.Solver.ApplyTo(scene, "simulate");
+
+            Assert.That(scene.Settings.PressureSolver, Is.EqualTo(PressureSolver.Dfsph));
+            Assert.That(scene.Settings.DensityTolerance, Is.EqualTo(0.01f));
+            Assert.That(SimulateOptions.Parse(new[] { "x.unity" }).Solver.Solver, Is.Null, "without --solver the scene's solver runs");
+        }
+
+        [Test]
+        public void TheRunHeaderAndSummaryNameTheSolver()
+        {
+            string outDir = RunnerPaths.ScratchFolder("solver-header");
+            var stdout = new StringWriter();
+            var run = new SimulateRun(SimulateOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--steps", "1", "--solver", "dfsph", "--density-tolerance", "0.05", "--out", outDir, "--quiet" }),
+                stdout, new StringWriter()) { Device = GpuTestDevice.Shared, InteractiveProgress = false };
+
+            Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok), stdout.ToString());
+            Assert.That(stdout.ToString(), Does.Contain("solver: DFSPH (density tolerance 0.05 %"));
+            Assert.That(stdout.ToString(), Does.Contain("done (DFSPH)"));
+            Assert.That(File.ReadAllText(Path.Combine(outDir, "summary.txt")), Does.Contain("solver: DFSPH"));
+        }
+    }
+}

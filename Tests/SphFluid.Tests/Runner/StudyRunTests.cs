@@ -1,0 +1,55 @@
+using System;
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+using SphFluid.Headless.Cli;
+using SphFluid.Headless.Runs;
+
+namespace SphFluid.Tests.Runner
+{
+    /// <summary>sphfluid study --quick on the small shipped tank: every configuration runs, has a finite error and cost,
+    /// and the CSV, Markdown table and Pareto chart are written.</summary>
+    public sealed class StudyRunTests
+    {
+        [Test]
+        public void AQuickStudyWritesTheTableAndChartWithAFiniteErrorAndCostInEveryRow()
+        {
+            string outDir = RunnerPaths.ScratchFolder("study");
+            var stdout = new StringWriter();
+            var run = new StudyRun(StudyOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--quick", "--out", outDir }), stdout, new StringWriter())
+            {
+                Device = GpuTestDevice.Shared,
+            };
+
+            int code = run.Execute();
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok), stdout.ToString());
+            Assert.That(run.Rows.Count, Is.EqualTo(8), "WCSPH x1 and DFSPH 1, 0.1, 0.01 % at scales 0.25 and 0.5");
+            foreach (var row in run.Rows)
+            {
+                Assert.That(double.IsFinite(row.ObservableError), Is.True, row.Config.Label + " error");
+                Assert.That(row.DensityErrorAverage.All(double.IsFinite), Is.True, row.Config.Label + " density error");
+                Assert.That(row.WallMsPerSecond, Is.GreaterThan(0).And.LessThan(double.PositiveInfinity), row.Config.Label + " wall cost");
+                Assert.That(double.IsFinite(row.GpuMsPerSecond), Is.True, row.Config.Label + " GPU cost");
+                Assert.That(row.SubstepsPerSecond, Is.GreaterThan(0), row.Config.Label + " sub-steps");
+            }
+            string[] csv = File.ReadAllLines(Path.Combine(outDir, "study.csv"));
+            Assert.That(csv.Length, Is.EqualTo(9));
+            Assert.That(csv[0], Does.StartWith("solver,stiffness_factor,density_tolerance_pct,particles_scale,cfl,particles,water_density_error_avg"));
+            Assert.That(csv.Count(l => l.EndsWith(",yes,ok", StringComparison.Ordinal)), Is.EqualTo(1), "one finest run");
+            Assert.That(File.ReadAllText(Path.Combine(outDir, "study.md")), Does.Contain("| DFSPH 0.01 % (ref) | 0.5 |"));
+            ChartFiles.Check(outDir, "study-pareto", "Accuracy for time: PlayModeTest", "wall time per simulated second (ms, log)",
+                "observable error vs finest run (relative, log)", "WCSPH", "DFSPH");
+        }
+
+        [Test]
+        public void StudyOptionsAreRefusedByName()
+        {
+            var error = Assert.Throws<UsageException>(() => StudyOptions.Parse(new[] { "x.unity", "--density-tolerances", "1", "50" }));
+            Assert.That(error.Message, Does.Contain("study: --density-tolerances must be in [0.001, 10] % (was 50)"));
+            error = Assert.Throws<UsageException>(() => StudyOptions.Parse(new[] { "x.unity", "--solvers", "sph" }));
+            Assert.That(error.Message, Does.Contain("--solvers must be wcsph and/or dfsph (was 'sph')"));
+            Assert.That(StudyOptions.Parse(new[] { "x.unity", "--quick" }).ParticleScales, Is.EqualTo(new[] { 0.25, 0.5 }));
+        }
+    }
+}

@@ -1,0 +1,134 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using NUnit.Framework;
+using SphFluid.Compute;
+using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
+using SphFluid.Tests.Runner;
+
+namespace SphFluid.Tests.Solver
+{
+    /// <summary>
+    /// The planner: each effect that is off dispatches none of its kernels. Every dispatch is recorded with the kernel's
+    /// name and the keywords enabled at that moment; a scene needing nothing runs no variant, no normals pass and, once its
+    /// container is placed, no wall placement. Each effect forced on (PlanOverrides, the benchmark's switch) shows up in the
+    /// same count, so the counter is seen to catch what it is asked about.
+    /// </summary>
+    public sealed class PlannerDispatchTests
+    {
+        sealed class Dispatch
+        {
+            public string Kernel;
+            public HashSet<string> Keywords;
+        }
+
+        /// <summary>Forwards to the shared device and records each dispatch of the solver program.</summary>
+        sealed class DispatchCountingDevice : ForwardingDevice
+        {
+            readonly Dictionary<IComputeProgram, HashSet<string>> _keywords = new Dictionary<IComputeProgram, HashSet<string>>();
+            readonly Dictionary<(IComputeProgram, int), string> _names = new Dictionary<(IComputeProgram, int), string>();
+
+            public DispatchCountingDevice(IComputeDevice inner) : base(inner) { }
+
+            public List<Dispatch> Dispatches { get; } = new List<Dispatch>();
+
+            public override IComputeProgram LoadProgram(string name)
+            {
+                var program = Inner.LoadProgram(name);
+                _keywords[program] = new HashSet<string>();
+                return program;
+            }
+
+            public override void SetKeyword(IComputeProgram program, string keyword, bool enabled)
+            {
+                if (enabled) _keywords[program].Add(keyword);
+                else _keywords[program].Remove(keyword);
+                Inner.SetKeyword(program, keyword, enabled);
+            }
+
+            public override void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ)
+            {
+                if (program.Name.Contains(FluidSimulation.SolverProgramName))
+                    Dispatches.Add(new Dispatch { Kernel = NameOf(program, kernel), Keywords = new HashSet<string>(_keywords[program]) });
+                Inner.Dispatch(program, kernel, groupsX, groupsY, groupsZ);
+            }
+
+            string NameOf(IComputeProgram program, int kernel)
+            {
+                if (_names.Count == 0 || !_names.Keys.Any(k => k.Item1 == program))
+                    foreach (string name in new[] { "HalfStep", "PlaceBoundary", "DensityPressure", "WallPressure", "Normals", "Forces", "FullStep" })
+                        _names[(program, program.FindKernel(name))] = name;
+                return _names.TryGetValue((program, kernel), out string known) ? known : "kernel " + kernel;
+            }
+        }
+
+        /// <summary>The small shipped tank with XSPH off: one phase, no tension, no XSPH, no obstacles, a container at rest.</summary>
+        static FluidSceneDescription PlainScene()
+        {
+            var scene = SceneLoader.Load(RunnerPaths.Scene("PlayModeTest")).Description;
+            var settings = scene.Settings.Clone();
+            settings.XsphEpsilon = 0f;
+            scene.Settings = settings;
+            return scene;
+        }
+
+        /// <summary>The dispatches of frames after the first (the first places the container's walls once).</summary>
+        static List<Dispatch> LaterFrames(PlanOverrides forced)
+        {
+            var device = new DispatchCountingDevice(GpuTestDevice.Shared);
+            using (var sim = new FluidSimulation(device, PlainScene()) { ForcedEffects = forced })
+            {
+                sim.StepFixed(1, 1e-4f);
+                device.Dispatches.Clear();
+                sim.StepFixed(2, 1e-4f);
+                sim.StepFixed(2, 1e-4f);
+            }
+            return device.Dispatches;
+        }
+
+        [Test]
+        public void EachEffectThatIsOffDispatchesNoneOfItsKernels()
+        {
+            var plan = PipelinePlanner.Plan(PlainScene(), false);
+            Assert.That(plan.Keywords, Is.Empty, plan.ToString());
+
+            var dispatches = LaterFrames(null);
+
+            Assert.That(dispatches.Count, Is.GreaterThan(0));
+            foreach (string keyword in SolverKeywords.All)
+                Assert.That(dispatches.Count(d => d.Keywords.Contains(keyword)), Is.EqualTo(0), keyword + " variant dispatched");
+            Assert.That(dispatches.Count(d => d.Kernel == "Normals"), Is.EqualTo(0), "normals pass without surface tension");
+            Assert.That(dispatches.Count(d => d.Kernel == "PlaceBoundary"), Is.EqualTo(0), "walls placed again for a container at rest");
+            Assert.That(dispatches.Count(d => d.Kernel == "Forces"), Is.EqualTo(4), "one force pass per sub-step");
+        }
+
+        [TestCase("multiphase")]
+        [TestCase("tension")]
+        [TestCase("xsph")]
+        [TestCase("obstacles")]
+        [TestCase("container")]
+        public void EachEffectForcedOnIsCounted(string effect)
+        {
+            var forced = new PlanOverrides
+            {
+                Multiphase = effect == "multiphase", SurfaceTension = effect == "tension", Xsph = effect == "xsph",
+                Obstacles = effect == "obstacles", ContainerMoving = effect == "container",
+            };
+
+            var dispatches = LaterFrames(forced);
+
+            switch (effect)
+            {
+                case "multiphase": Assert.That(dispatches.Count(d => d.Kernel == "Forces" && d.Keywords.Contains(SolverKeywords.Multiphase)), Is.EqualTo(4)); break;
+                case "tension":
+                    Assert.That(dispatches.Count(d => d.Kernel == "Normals"), Is.EqualTo(4));
+                    Assert.That(dispatches.Count(d => d.Kernel == "Forces" && d.Keywords.Contains(SolverKeywords.SurfaceTension)), Is.EqualTo(4));
+                    break;
+                case "xsph": Assert.That(dispatches.Count(d => d.Kernel == "Forces" && d.Keywords.Contains(SolverKeywords.Xsph)), Is.EqualTo(4)); break;
+                case "obstacles": Assert.That(dispatches.Count(d => d.Keywords.Contains(SolverKeywords.Obstacles)), Is.GreaterThanOrEqualTo(4)); break;
+                default: Assert.That(dispatches.Count(d => d.Kernel == "PlaceBoundary"), Is.EqualTo(2), "once per frame"); break;
+            }
+        }
+    }
+}
