@@ -238,7 +238,7 @@ namespace SphFluid.Tests.Runner
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: the fluid scene is invalid"));
-            Assert.That(run.Stderr, Does.Contain("GameObject 'Container', Transform.m_LocalScale and GameObject 'Fluid', FluidSimulator.smoothingRadius"));
+            Assert.That(run.Stderr, Does.Contain("GameObject 'Container', Transform.m_LocalScale and GameObject 'Fluid', FluidSimulator.settings.SmoothingRadius"));
             Assert.That(run.Stderr, Does.Contain("33336 x 33336 x 33336 = 3.70E+013 cells"));
         }
 
