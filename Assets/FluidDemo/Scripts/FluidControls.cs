@@ -8,8 +8,8 @@ namespace SphFluid.Demo
     /// <summary>Keyboard controls of the simulation: Space pause, period or N single step, R reset (respawn), Tab next scene.</summary>
     public sealed class FluidControls : MonoBehaviour
     {
-        [SerializeField, Tooltip("The simulator controlled; empty = the scene's FluidSimulator.")]
-        FluidSimulator simulator = null;
+        [SerializeField, Tooltip("The simulator controlled; empty = the scene's Fluid.")]
+        Fluid simulator = null;
 
         InputAction _pause, _step, _reset, _nextScene;
         readonly SimulatorTarget _target = new SimulatorTarget();
@@ -43,7 +43,7 @@ namespace SphFluid.Demo
                 LoadNextScene();
                 return;
             }
-            FluidSimulator target = _target.Resolve(simulator);
+            Fluid target = _target.Resolve(simulator);
             if (target == null) return;
             if (_pause.WasPressedThisFrame()) target.TogglePause();
             if (_step.WasPressedThisFrame()) target.StepOnce();

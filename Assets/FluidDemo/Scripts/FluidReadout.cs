@@ -12,12 +12,12 @@ namespace SphFluid.Demo
     /// <remarks>
     /// Formatting numbers makes strings, so the text is composed a few times a second and the same string is
     /// drawn in between; IMGUI itself still allocates in OnGUI, which is why the fluid's own frames are
-    /// measured without a readout (FluidSimulatorPlayModeTests).
+    /// measured without a readout (FluidPlayModeTests).
     /// </remarks>
     public sealed class FluidReadout : MonoBehaviour
     {
-        [SerializeField, Tooltip("The simulator shown; empty = the scene's FluidSimulator.")]
-        FluidSimulator simulator = null;
+        [SerializeField, Tooltip("The simulator shown; empty = the scene's Fluid.")]
+        Fluid simulator = null;
 
         [SerializeField, Tooltip("Show the readout.")]
         bool visible = true;
@@ -65,14 +65,14 @@ namespace SphFluid.Demo
             GUILayout.EndArea();
         }
 
-        void Compose(FluidSimulator target)
+        void Compose(Fluid target)
         {
             CultureInfo c = CultureInfo.InvariantCulture;
             _text.Clear();
             _text.AppendFormat(c, "FPS {0:F1} ({1:F1} ms)\n", 1f / Mathf.Max(_smoothedDelta, 1e-6f), _smoothedDelta * 1000f);
             if (target == null)
             {
-                _text.Append("No FluidSimulator in the scene");
+                _text.Append("No Fluid in the scene");
                 return;
             }
             if (!target.IsRunning)

@@ -13,16 +13,16 @@ namespace SphFluid.Demo
         /// <summary>Real-time seconds between two searches while the scene has no simulator.</summary>
         const float SearchInterval = 1f;
 
-        FluidSimulator _found;
+        Fluid _found;
         float _nextSearch;
 
-        public FluidSimulator Resolve(FluidSimulator assigned)
+        public Fluid Resolve(Fluid assigned)
         {
             if (assigned != null) return assigned;
             if (_found == null && Time.unscaledTime >= _nextSearch)
             {
                 _nextSearch = Time.unscaledTime + SearchInterval;
-                _found = Object.FindFirstObjectByType<FluidSimulator>();
+                _found = Object.FindFirstObjectByType<Fluid>();
             }
             return _found;
         }

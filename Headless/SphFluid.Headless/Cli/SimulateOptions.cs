@@ -63,7 +63,7 @@ public sealed class SimulateCommand : Command
 
     public const string Details =
 @"Details:
-Reads a Unity scene file (the FluidSimulator's settings, every SpawnBox with its world transform, the
+Reads a Unity scene file (the Fluid's settings, every SpawnBox with its world transform, the
 FluidContainer, SphereObstacles, ContainerSpinner/SphereDriver motion) and simulates it on the headless
 Vulkan backend. Writes diagnostics.csv, frame_NNNN.png snapshots, layering.png/.svg (multi-phase scenes)
 and summary.txt into the output folder. The scene must be a regular file of at most 16 MiB that passes the

@@ -32,7 +32,7 @@ public sealed class SolverChoice
         {
             if (settings.PressureSolver != PressureSolver.Dfsph)
                 throw new UsageException($"{command}: --density-tolerance applies to the DFSPH solver only; this run uses WCSPH "
-                    + "(add --solver dfsph, or set FluidSimulator.pressureSolver in the scene)");
+                    + "(add --solver dfsph, or set Fluid.pressureSolver in the scene)");
             settings.DensityTolerance = (float)DensityTolerance.Value;
         }
         scene.Settings = settings;
@@ -56,7 +56,7 @@ public sealed class SolverOptions
     public SolverOptions(string command)
     {
         _solver = OptionKinds.Choice(command, "--solver", SolverChoice.Words,
-            "pressure solver, overriding the scene's FluidSimulator.pressureSolver: wcsph (Tait equation of state) or dfsph "
+            "pressure solver, overriding the scene's Fluid.pressureSolver: wcsph (Tait equation of state) or dfsph "
             + "(divergence-free SPH, iterative; default: the scene's)");
         _densityTolerance = OptionKinds.Number(command, "--density-tolerance", 0.001, 10, false, "%", "PCT",
             "DFSPH: largest average density error the pressure solve accepts, in [0.001, 10] % (default: the scene's; "

@@ -14,7 +14,7 @@ using SphFluid.Simulation;
 namespace SphFluid.Headless.Runs;
 
 /// <summary>
-/// <c>sphfluid simulate</c>: steps the scene in 60 Hz frames as the FluidSimulator component would (the
+/// <c>sphfluid simulate</c>: steps the scene in 60 Hz frames as the Fluid component would (the
 /// container and spheres moved by their scripts before each frame, on simulated time), and writes what a
 /// reader needs to judge the run: diagnostics lines and CSV, snapshots, the layering figure, a summary.
 /// </summary>

@@ -20,7 +20,7 @@ public sealed class LoadedScene
 
     public SceneMotion Motion { get; init; } = new();
 
-    /// <summary>GameObject holding the FluidSimulator.</summary>
+    /// <summary>GameObject holding the Fluid.</summary>
     public string SimulatorObject { get; init; }
 
     /// <summary>GameObject of each spawn box, in spawn order.</summary>

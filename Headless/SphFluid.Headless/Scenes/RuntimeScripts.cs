@@ -6,17 +6,17 @@ namespace SphFluid.Headless.Scenes;
 /// <summary>The Unity components (Packages/com.sphfluid.fluid/Runtime) the runner reads, by class (= .cs file) name.</summary>
 public static class RuntimeScripts
 {
-    public const string FluidSimulator = "FluidSimulator";
+    public const string Fluid = "Fluid";
     public const string SpawnBox = "SpawnBox";
     public const string FluidContainer = "FluidContainer";
     public const string SphereObstacle = "SphereObstacle";
     public const string ContainerSpinner = "ContainerSpinner";
     public const string SphereDriver = "SphereDriver";
 
-    /// <summary>FluidSimulator's serialized FluidSettings field, which holds every declared setting by its field name.</summary>
+    /// <summary>Fluid's serialized FluidSettings field, which holds every declared setting by its field name.</summary>
     public const string Settings = "settings";
 
-    /// <summary>FluidSimulator's compute-shader fields and the program each must be (the pipeline loads them by name).</summary>
+    /// <summary>Fluid's compute-shader fields and the program each must be (the pipeline loads them by name).</summary>
     public static readonly IReadOnlyList<(string Field, string Program)> ShaderFields = new[]
     {
         ("solverShader", FluidSimulation.SolverProgramName),

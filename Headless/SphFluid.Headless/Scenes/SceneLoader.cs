@@ -13,7 +13,7 @@ using SphFluid.UnityFiles.Yaml;
 namespace SphFluid.Headless.Scenes;
 
 /// <summary>
-/// Reads a <c>.unity</c> file the way the FluidSimulator component sees its scene at Play: its serialized
+/// Reads a <c>.unity</c> file the way the Fluid component sees its scene at Play: its serialized
 /// settings, every active SpawnBox (world transform = box), the FluidContainer (the assigned one, else the
 /// scene's), every active SphereObstacle, and the ContainerSpinner / SphereDriver motions. Field names are
 /// the C# field names of Packages/com.sphfluid.fluid/Runtime; scripts are matched by the guid of their .cs.meta.
@@ -70,11 +70,11 @@ public static class SceneLoader
 
         public LoadedScene Read()
         {
-            var simulators = Active(ScriptGuid(RuntimeScripts.FluidSimulator));
+            var simulators = Active(ScriptGuid(RuntimeScripts.Fluid));
             if (simulators.Count == 0)
-                throw new SceneException($"{path}: no active GameObject has a {RuntimeScripts.FluidSimulator} component");
+                throw new SceneException($"{path}: no active GameObject has a {RuntimeScripts.Fluid} component");
             if (simulators.Count > 1)
-                throw new SceneException($"{path}: {simulators.Count} active {RuntimeScripts.FluidSimulator} components (GameObjects {string.Join(", ", simulators.Select(s => $"'{s.Go.Name}'"))}); the runner simulates one fluid per scene");
+                throw new SceneException($"{path}: {simulators.Count} active {RuntimeScripts.Fluid} components (GameObjects {string.Join(", ", simulators.Select(s => $"'{s.Go.Name}'"))}); the runner simulates one fluid per scene");
             (_simulatorGo, _simulator) = simulators[0];
             CheckShaders();
             CheckTransforms();
@@ -102,7 +102,7 @@ public static class SceneLoader
             bool settingsOk = !errors.Any(e => e.Field.StartsWith("Settings", StringComparison.Ordinal));
             if (settingsOk && SceneFit.GridProblem(description) is { } grid)
                 throw new SceneException($"{path}:{_containerGo.Transform?.Root["m_LocalScale"]?.Line ?? _containerGo.Document.Line}: the fluid scene is invalid:\n  GameObject '{_containerGo.Name}', Transform.m_LocalScale and " +
-                    $"{Where(_simulatorGo, RuntimeScripts.FluidSimulator, RuntimeScripts.Settings + "." + nameof(FluidSettings.SmoothingRadius))}: {grid}");
+                    $"{Where(_simulatorGo, RuntimeScripts.Fluid, RuntimeScripts.Settings + "." + nameof(FluidSettings.SmoothingRadius))}: {grid}");
             if (errors.Count > 0)
                 throw new SceneException($"{path}: the fluid scene is invalid:\n  " + string.Join("\n  ", errors.Select(Locate)));
 
@@ -208,7 +208,7 @@ public static class SceneLoader
         /// </summary>
         void CheckDrawingSettings()
         {
-            const string c = RuntimeScripts.FluidSimulator;
+            const string c = RuntimeScripts.Fluid;
             InRange(_simulatorGo, _simulator, c, "particleRadiusScale", 1.2f, 0.25f, 3f, "half spacings");
             InRange(_simulatorGo, _simulator, c, "maxFrameTime", 1f / 30f, 0.001f, 0.1f, "s");
         }
@@ -242,12 +242,12 @@ public static class SceneLoader
             {
                 var reference = _simulator.Root.GetReference(field);
                 if (reference == null || reference.IsNull)
-                    throw new SceneException($"{path}: {Where(_simulatorGo, RuntimeScripts.FluidSimulator, field)} has no compute shader assigned (expected {program}.compute)");
+                    throw new SceneException($"{path}: {Where(_simulatorGo, RuntimeScripts.Fluid, field)} has no compute shader assigned (expected {program}.compute)");
                 string asset = project.AssetPathOf(reference);
                 if (asset == null)
-                    throw new SceneException($"{path}: {Where(_simulatorGo, RuntimeScripts.FluidSimulator, field)} refers to guid {reference.Guid}, which no asset of the project has (expected {program}.compute)");
+                    throw new SceneException($"{path}: {Where(_simulatorGo, RuntimeScripts.Fluid, field)} refers to guid {reference.Guid}, which no asset of the project has (expected {program}.compute)");
                 if (Path.GetFileNameWithoutExtension(asset) != program || !asset.EndsWith(".compute", StringComparison.Ordinal))
-                    throw new SceneException($"{path}: {Where(_simulatorGo, RuntimeScripts.FluidSimulator, field)} refers to {asset}; the pipeline runs {program}.compute there");
+                    throw new SceneException($"{path}: {Where(_simulatorGo, RuntimeScripts.Fluid, field)} refers to {asset}; the pipeline runs {program}.compute there");
             }
         }
 
@@ -257,7 +257,7 @@ public static class SceneLoader
         FluidSettings ReadSettings()
         {
             var settings = new FluidSettings();
-            const string c = RuntimeScripts.FluidSimulator;
+            const string c = RuntimeScripts.Fluid;
             foreach (var declared in SettingRules.Declared(typeof(FluidSettings)))
             {
                 var field = declared.Field;
@@ -281,14 +281,14 @@ public static class SceneLoader
             {
                 var doc = scene.File.Find(reference);
                 if (doc == null || doc.ScriptGuid != containerGuid)
-                    throw new SceneException($"{path}: {Where(_simulatorGo, RuntimeScripts.FluidSimulator, "container")} refers to {reference}, which is not a {RuntimeScripts.FluidContainer} component of this scene");
+                    throw new SceneException($"{path}: {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} refers to {reference}, which is not a {RuntimeScripts.FluidContainer} component of this scene");
                 _containerGo = scene.GameObjectOf(doc);
             }
             else
             {
                 var found = Active(containerGuid);
                 if (found.Count == 0)
-                    throw new SceneException($"{path}: the scene has no active {RuntimeScripts.FluidContainer} (assign {Where(_simulatorGo, RuntimeScripts.FluidSimulator, "container")} or add one)");
+                    throw new SceneException($"{path}: the scene has no active {RuntimeScripts.FluidContainer} (assign {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} or add one)");
                 _containerGo = found[0].Go;
             }
             var w = _containerGo.World;
@@ -379,7 +379,7 @@ public static class SceneLoader
             {
                 string key = RuntimeScripts.Settings + "." + member;
                 int line = _simulator.Root.At(key)?.Line ?? _simulator.Line;
-                return $"line {line}: {Where(_simulatorGo, RuntimeScripts.FluidSimulator, key)}: {error.Message}";
+                return $"line {line}: {Where(_simulatorGo, RuntimeScripts.Fluid, key)}: {error.Message}";
             }
             if (head == "Container")
                 return $"GameObject '{_containerGo.Name}', {TransformField(member) ?? RuntimeScripts.FluidContainer}: {error.Message}";

@@ -93,7 +93,7 @@ namespace SphFluid.Runtime
             Gizmos.DrawWireCube(Vector3.zero, Vector3.one);
             Gizmos.matrix = Matrix4x4.identity;
 #if UNITY_EDITOR
-            FluidSimulator simulator = FindFirstObjectByType<FluidSimulator>();
+            Fluid simulator = FindFirstObjectByType<Fluid>();
             FluidSettings settings = simulator != null ? simulator.DescribeSettings() : new FluidSettings();
             UnityEditor.Handles.color = Gizmos.color;
             UnityEditor.Handles.Label(transform.position, $"{phaseName}: {ParticleCount(settings)} particles");

@@ -1,5 +1,5 @@
 // SPH particles as ray-cast sphere impostors that refract, reflect and absorb (Built-in render pipeline;
-// FluidParticlesUniversal.shader is the same pass for URP, and FluidSimulator picks the one that matches
+// FluidParticlesUniversal.shader is the same pass for URP, and Fluid picks the one that matches
 // the active pipeline). The pass itself lives in Include/FluidParticlesPass.hlsl.
 //
 // Drawn by ONE procedural call per frame, no mesh and no CPU copy of the particles:

@@ -1,6 +1,6 @@
 // The particles of FluidParticles.shader for the Universal Render Pipeline (URP 14, Unity 2022.3): the same
 // pass (Include/FluidParticlesPass.hlsl) and the same Properties, so one material's values serve both and
-// FluidSimulator draws with this shader whenever URP is the active pipeline.
+// Fluid draws with this shader whenever URP is the active pipeline.
 //
 // URP has no GrabPass: the liquid refracts URP's copy of the opaque scene, _CameraOpaqueTexture, which URP
 // makes only when "Opaque Texture" is ticked in the URP asset (Rendering > Opaque Texture) or on the camera

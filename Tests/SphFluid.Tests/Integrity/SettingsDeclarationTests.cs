@@ -82,7 +82,7 @@ namespace SphFluid.Tests.Integrity
             {
                 var lines = File.ReadAllLines(scene);
                 int at = Array.IndexOf(lines, "  " + RuntimeScripts.Settings + ":");
-                Assert.That(at, Is.GreaterThan(0), $"{Path.GetFileName(scene)} has no FluidSimulator.settings");
+                Assert.That(at, Is.GreaterThan(0), $"{Path.GetFileName(scene)} has no Fluid.settings");
                 var keys = lines.Skip(at + 1).TakeWhile(l => l.StartsWith("    ", StringComparison.Ordinal))
                     .Where(l => !l.StartsWith("      ", StringComparison.Ordinal))
                     .Select(l => l.Trim().Split(':')[0]);

@@ -65,7 +65,7 @@ namespace SphFluid.Tests.Rendering
             foreach (string scene in scenes)
             {
                 var simulators = UnityYamlFile.Load(scene).Documents.Where(d => d.Root.GetReference("particleMaterial") != null).ToList();
-                if (simulators.Count != 1) { problems.Add(Path.GetFileName(scene) + ": " + simulators.Count + " FluidSimulators"); continue; }
+                if (simulators.Count != 1) { problems.Add(Path.GetFileName(scene) + ": " + simulators.Count + " Fluids"); continue; }
                 var material = simulators[0].Root.GetReference("particleMaterial");
                 var universal = simulators[0].Root.GetReference("universalParticleShader");
                 if (material.Guid != materialGuid) problems.Add(Path.GetFileName(scene) + ": particleMaterial is not " + MaterialRelativePath);

@@ -238,7 +238,7 @@ namespace SphFluid.Tests.Runner
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: the fluid scene is invalid"));
-            Assert.That(run.Stderr, Does.Contain("GameObject 'Container', Transform.m_LocalScale and GameObject 'Fluid', FluidSimulator.settings.SmoothingRadius"));
+            Assert.That(run.Stderr, Does.Contain("GameObject 'Container', Transform.m_LocalScale and GameObject 'Fluid', Fluid.settings.SmoothingRadius"));
             Assert.That(run.Stderr, Does.Contain("33336 x 33336 x 33336 = 3.70E+013 cells"));
         }
 
@@ -268,8 +268,8 @@ namespace SphFluid.Tests.Runner
 
         // ---------------------------------------------------------------- smaller defects
 
-        [TestCase("--- !u!114 &1249553504", "particleRadiusScale: 1.2", "particleRadiusScale: 5", "FluidSimulator.particleRadiusScale must be in [0.25, 3] half spacings (was 5)")]
-        [TestCase("--- !u!114 &1249553504", "maxFrameTime: 0.0333333", "maxFrameTime: 0", "FluidSimulator.maxFrameTime must be in [0.001, 0.1] s (was 0)")]
+        [TestCase("--- !u!114 &1249553504", "particleRadiusScale: 1.2", "particleRadiusScale: 5", "Fluid.particleRadiusScale must be in [0.25, 3] half spacings (was 5)")]
+        [TestCase("--- !u!114 &1249553504", "maxFrameTime: 0.0333333", "maxFrameTime: 0", "Fluid.maxFrameTime must be in [0.001, 0.1] s (was 0)")]
         [TestCase("--- !u!114 &287989891", "color: {r: 0.95,", "color: {r: 2,", "SpawnBox.color.r must be in [0, 1] (was 2)")]
         public void InspectorRangesTheRunnerUsedToSkipAreChecked(string header, string find, string replace, string message)
         {

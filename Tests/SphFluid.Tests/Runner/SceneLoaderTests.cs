@@ -84,7 +84,7 @@ namespace SphFluid.Tests.Runner
 
             var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
 
-            Assert.That(error.Message, Does.Match(@"line \d+: GameObject 'Fluid', FluidSimulator\.settings\.SmoothingRadius"));
+            Assert.That(error.Message, Does.Match(@"line \d+: GameObject 'Fluid', Fluid\.settings\.SmoothingRadius"));
         }
 
         [Test]
@@ -102,7 +102,7 @@ namespace SphFluid.Tests.Runner
             var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
 
             Assert.That(error.Message, Does.Contain("no active FluidContainer"));
-            Assert.That(error.Message, Does.Contain("FluidSimulator.container"));
+            Assert.That(error.Message, Does.Contain("Fluid.container"));
         }
 
         [Test]
@@ -112,7 +112,7 @@ namespace SphFluid.Tests.Runner
 
             var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
 
-            Assert.That(error.Message, Does.Match(@"PlayModeTest\.unity:\d+: GameObject 'Fluid', FluidSimulator\.settings\.Stiffness must be a number \(was 'lots'\)"));
+            Assert.That(error.Message, Does.Match(@"PlayModeTest\.unity:\d+: GameObject 'Fluid', Fluid\.settings\.Stiffness must be a number \(was 'lots'\)"));
         }
 
         [Test]

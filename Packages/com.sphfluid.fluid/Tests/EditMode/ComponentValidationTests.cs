@@ -38,7 +38,7 @@ namespace SphFluid.Tests.EditMode
         [Test]
         public void DefaultsAreValid()
         {
-            Assert.That(Messages(Add<FluidSimulator>("Fluid").ValidationErrors()), Is.Empty);
+            Assert.That(Messages(Add<Fluid>("Fluid").ValidationErrors()), Is.Empty);
             Assert.That(Messages(Add<SpawnBox>("Water").ValidationErrors()), Is.Empty);
             Assert.That(Messages(Add<FluidContainer>("Tank").ValidationErrors()), Is.Empty);
             Assert.That(Messages(Add<SphereObstacle>("Ball").ValidationErrors()), Is.Empty);
@@ -99,9 +99,9 @@ namespace SphFluid.Tests.EditMode
         }
 
         [Test]
-        public void FluidSimulatorRefusesSettingsThroughTheCore()
+        public void FluidRefusesSettingsThroughTheCore()
         {
-            FluidSimulator simulator = Add<FluidSimulator>("Fluid");
+            Fluid simulator = Add<Fluid>("Fluid");
             simulator.Settings.SmoothingRadius = 0.2f;
             simulator.Settings.MaxSubsteps = 0;
             simulator.Settings.Gamma = 12f;
@@ -116,7 +116,7 @@ namespace SphFluid.Tests.EditMode
         {
             // A setting of a type Unity cannot serialize (System.Numerics.Vector3, a property) would silently reset
             // to its default in every scene.
-            var serialized = new UnityEditor.SerializedObject(Add<FluidSimulator>("Fluid"));
+            var serialized = new UnityEditor.SerializedObject(Add<Fluid>("Fluid"));
             foreach (DeclaredSetting declared in SettingRules.Declared(typeof(FluidSettings)))
                 Assert.That(serialized.FindProperty("settings." + declared.Field.Name), Is.Not.Null, declared.Field.Name);
         }

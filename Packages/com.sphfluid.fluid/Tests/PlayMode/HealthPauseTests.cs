@@ -24,7 +24,7 @@ namespace SphFluid.Tests.PlayMode
         public IEnumerator FirstProblem_PausesAndLogsOnce_AndResetClearsIt()
         {
             TestTank.RequireGpu();
-            FluidSimulator simulator = _tank.CreateFluid(false);
+            Fluid simulator = _tank.CreateFluid(false);
             for (int i = 0; i < 10; i++) yield return null;
             Assert.That(simulator.IsRunning, Is.True, simulator.FailureReason);
             Assert.That(simulator.HealthProblem, Is.Null, "a tank of water at rest is healthy");
@@ -33,7 +33,7 @@ namespace SphFluid.Tests.PlayMode
             var phases = new[] { new PhaseDiagnostics("Water", simulator.ParticleCount, 0f, 0f) };
             var blownUp = new DiagnosticsReport(1.0, 1.0, 0.5f, 7, 0, phases, 0.123);
             LogAssert.Expect(LogType.Error, new Regex(
-                @"^FluidSimulator 'Fluid': unhealthy at t = 0\.123 s, phase 'all phases': non-finite particle count 7 exceeds the bound 0 .*; paused"));
+                @"^Fluid 'Fluid': unhealthy at t = 0\.123 s, phase 'all phases': non-finite particle count 7 exceeds the bound 0 .*; paused"));
             simulator.CheckHealth(blownUp);
             simulator.CheckHealth(blownUp); // a second report of the same trouble is not logged again
             double pausedAt = simulator.SimulatedTime;

@@ -42,7 +42,7 @@ namespace SphFluid.Tests.PlayMode
         public IEnumerator DrivenFramesAllocateNoGarbage()
         {
             TestTank.RequireGpu();
-            FluidSimulator simulator = _tank.CreateDrivenFluid();
+            Fluid simulator = _tank.CreateDrivenFluid();
             Vector3 ballStart = GameObject.Find("Ball").transform.position;
             return FramesAllocateNoGarbage(simulator, running =>
             {
@@ -53,7 +53,7 @@ namespace SphFluid.Tests.PlayMode
         }
 
         /// <param name="whileRunning">Checks of the running fluid, after the measured frames (null: none).</param>
-        IEnumerator FramesAllocateNoGarbage(FluidSimulator simulator, System.Action<FluidSimulator> whileRunning)
+        IEnumerator FramesAllocateNoGarbage(Fluid simulator, System.Action<Fluid> whileRunning)
         {
             for (int i = 0; i < WarmUpFrames; i++) yield return null;
             Assert.That(simulator.IsRunning, Is.True, simulator.FailureReason);
@@ -96,7 +96,7 @@ namespace SphFluid.Tests.PlayMode
         public IEnumerator GpuPassTimesAreReadFromTheRecorderThatWasEnabled()
         {
             TestTank.RequireGpu();
-            FluidSimulator simulator = _tank.CreateFluid(false);
+            Fluid simulator = _tank.CreateFluid(false);
             for (int i = 0; i < WarmUpFrames; i++) yield return null;
             Assert.That(simulator.IsRunning, Is.True, simulator.FailureReason);
 

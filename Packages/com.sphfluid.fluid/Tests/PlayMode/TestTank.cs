@@ -56,7 +56,7 @@ namespace SphFluid.Tests.PlayMode
         }
 
         /// <summary>Builds the tank and starts its simulator (wired before its OnEnable runs).</summary>
-        public FluidSimulator CreateFluid(bool withSphere)
+        public Fluid CreateFluid(bool withSphere)
         {
             FluidContainer container = Create("Tank", ContainerCentre, ContainerSize).AddComponent<FluidContainer>();
             Create("Water", new Vector3(0f, 0.1f, 0f), new Vector3(0.12f, 0.12f, 0.12f)).AddComponent<SpawnBox>();
@@ -65,7 +65,7 @@ namespace SphFluid.Tests.PlayMode
 
             GameObject fluid = Create("Fluid", Vector3.zero, Vector3.one);
             fluid.SetActive(false);
-            FluidSimulator simulator = fluid.AddComponent<FluidSimulator>();
+            Fluid simulator = fluid.AddComponent<Fluid>();
             Set(simulator, "solverShader", LoadShader("FluidSolver"));
             Set(simulator, "diagnosticsShader", LoadShader("FluidDiagnostics"));
             Set(simulator, "sortShader", LoadShader("ParticleSort"));
@@ -78,9 +78,9 @@ namespace SphFluid.Tests.PlayMode
 
         /// <summary>The tank with its sphere, both set moving from the first frame: the container turns slowly about z
         /// (<see cref="ContainerSpinner"/>) and the sphere swings 0.1 m along x (<see cref="SphereDriver"/>).</summary>
-        public FluidSimulator CreateDrivenFluid()
+        public Fluid CreateDrivenFluid()
         {
-            FluidSimulator simulator = CreateFluid(true);
+            Fluid simulator = CreateFluid(true);
             ContainerSpinner spinner = Find("Tank").AddComponent<ContainerSpinner>();
             Set(spinner, "angularSpeed", 20f);
             Set(spinner, "startDelay", 0f);

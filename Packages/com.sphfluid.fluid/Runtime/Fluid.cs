@@ -15,7 +15,7 @@ namespace SphFluid.Runtime
     /// </summary>
     [DefaultExecutionOrder(100)] // after whatever moves the container or the spheres this frame
     [DisallowMultipleComponent]
-    public sealed class FluidSimulator : MonoBehaviour
+    public sealed class Fluid : MonoBehaviour
     {
         /// <summary>One press of single-step advances this much simulated time, s.</summary>
         public const float SingleStepSeconds = 1f / 60f;
@@ -234,7 +234,7 @@ namespace SphFluid.Runtime
             if (errors.Count > 0)
             {
                 foreach (ValidationError e in errors)
-                    Debug.LogError($"FluidSimulator '{name}': {e.Message} [{e.Field}]", this);
+                    Debug.LogError($"Fluid '{name}': {e.Message} [{e.Field}]", this);
                 Fail($"{errors.Count} invalid value(s) in the scene, listed in the Console; the simulation did not start");
                 return;
             }
@@ -267,13 +267,13 @@ namespace SphFluid.Runtime
                 _obstacleRows.Add(sphere.Describe(Vector3.zero)); // its Name is read here, once
             }
             if (particleMaterial == null)
-                Debug.LogWarning($"FluidSimulator '{name}': field 'particleMaterial' is empty; the fluid is simulated but not drawn", this);
+                Debug.LogWarning($"Fluid '{name}': field 'particleMaterial' is empty; the fluid is simulated but not drawn", this);
         }
 
         void Fail(string reason)
         {
             _failure = reason;
-            Debug.LogError($"FluidSimulator '{name}': {reason}", this);
+            Debug.LogError($"Fluid '{name}': {reason}", this);
         }
 
         void Shutdown()
@@ -323,7 +323,7 @@ namespace SphFluid.Runtime
             }
             catch (ArgumentException e)
             {
-                if (e.Message != _lastMotionError) Debug.LogError($"FluidSimulator '{name}': {e.Message}", this);
+                if (e.Message != _lastMotionError) Debug.LogError($"Fluid '{name}': {e.Message}", this);
                 _lastMotionError = e.Message;
             }
 
@@ -355,7 +355,7 @@ namespace SphFluid.Runtime
             if (problem == null) return;
             _healthProblem = problem;
             _paused = true;
-            Debug.LogError($"FluidSimulator '{name}': {problem.Message}; paused (Reset respawns)", this);
+            Debug.LogError($"Fluid '{name}': {problem.Message}; paused (Reset respawns)", this);
         }
 
         void PushContainer(float seconds)
@@ -441,8 +441,8 @@ namespace SphFluid.Runtime
             {
                 if (!_pipelineWarned)
                     Debug.LogWarning(universalParticleShader == null && pipeline.renderPipelineShaderTag == UniversalPipelineTag
-                        ? $"FluidSimulator '{name}': URP is the active pipeline but field 'universalParticleShader' is empty; assign Packages/com.sphfluid.fluid/Shaders/FluidParticlesUniversal.shader. The fluid is simulated but not drawn"
-                        : $"FluidSimulator '{name}': render pipeline '{pipeline.name}' (shader tag '{pipeline.renderPipelineShaderTag}') is neither Built-in nor URP ('{UniversalPipelineTag}'); the fluid is simulated but not drawn", this);
+                        ? $"Fluid '{name}': URP is the active pipeline but field 'universalParticleShader' is empty; assign Packages/com.sphfluid.fluid/Shaders/FluidParticlesUniversal.shader. The fluid is simulated but not drawn"
+                        : $"Fluid '{name}': render pipeline '{pipeline.name}' (shader tag '{pipeline.renderPipelineShaderTag}') is neither Built-in nor URP ('{UniversalPipelineTag}'); the fluid is simulated but not drawn", this);
                 _pipelineWarned = true;
                 return null;
             }
@@ -451,7 +451,7 @@ namespace SphFluid.Runtime
                 _universalMaterial = new Material(universalParticleShader) { name = particleMaterial.name + " (URP)", hideFlags = HideFlags.DontSave };
                 // Read by name: the project must compile without the URP package.
                 if (pipeline.GetType().GetProperty("supportsCameraOpaqueTexture")?.GetValue(pipeline) is bool opaque && !opaque)
-                    Debug.LogWarning($"FluidSimulator '{name}': URP asset '{pipeline.name}' has Opaque Texture off; the liquid shows no scene behind it unless the camera turns it on (Rendering > Opaque Texture)", this);
+                    Debug.LogWarning($"Fluid '{name}': URP asset '{pipeline.name}' has Opaque Texture off; the liquid shows no scene behind it unless the camera turns it on (Rendering > Opaque Texture)", this);
             }
             _universalMaterial.CopyPropertiesFromMaterial(particleMaterial); // inspector edits of the material carry over
             return _universalMaterial;

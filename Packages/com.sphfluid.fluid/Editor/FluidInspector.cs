@@ -11,21 +11,21 @@ namespace SphFluid.Editor
     /// The simulator's inspector: the default fields, then what the scene will spawn (or why it cannot start),
     /// and in play mode the live figures with Pause / Step / Reset, so an edited spawn box can be respawned at once.
     /// </summary>
-    [CustomEditor(typeof(FluidSimulator))]
-    public sealed class FluidSimulatorInspector : UnityEditor.Editor
+    [CustomEditor(typeof(Fluid))]
+    public sealed class FluidInspector : UnityEditor.Editor
     {
         public override bool RequiresConstantRepaint() => Application.isPlaying;
 
         public override void OnInspectorGUI()
         {
             DrawDefaultInspector();
-            var simulator = (FluidSimulator)target;
+            var simulator = (Fluid)target;
             EditorGUILayout.Space();
             if (Application.isPlaying) DrawRunning(simulator);
             else DrawScene(simulator);
         }
 
-        static void DrawScene(FluidSimulator simulator)
+        static void DrawScene(Fluid simulator)
         {
             FluidSceneDescription scene = simulator.DescribeScene();
             IReadOnlyList<ValidationError> errors = scene.Validate();
@@ -48,7 +48,7 @@ namespace SphFluid.Editor
                 plan.Keywords.Count == 0 ? "(none)" : string.Join(" ", plan.Keywords));
         }
 
-        static void DrawRunning(FluidSimulator simulator)
+        static void DrawRunning(Fluid simulator)
         {
             if (!simulator.IsRunning)
             {

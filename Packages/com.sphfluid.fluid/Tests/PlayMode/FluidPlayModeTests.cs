@@ -15,7 +15,7 @@ namespace SphFluid.Tests.PlayMode
     /// and loses nothing; disabling, destroying and unloading release every ComputeBuffer.
     /// Skipped (inconclusive) where there are no compute shaders, e.g. under -nographics.
     /// </summary>
-    public sealed class FluidSimulatorPlayModeTests
+    public sealed class FluidPlayModeTests
     {
         const int Frames = 30;
         static readonly Vector3 ContainerCentre = TestTank.ContainerCentre;
@@ -28,7 +28,7 @@ namespace SphFluid.Tests.PlayMode
 
         static void RequireGpu() => TestTank.RequireGpu();
 
-        FluidSimulator CreateFluid(bool withSphere, out int expectedParticles)
+        Fluid CreateFluid(bool withSphere, out int expectedParticles)
         {
             expectedParticles = TestTank.ExpectedParticles;
             return _tank.CreateFluid(withSphere);
@@ -38,7 +38,7 @@ namespace SphFluid.Tests.PlayMode
         public IEnumerator RunsFramesOnTheGpuFiniteWithNoParticleLostOrOutside()
         {
             RequireGpu();
-            FluidSimulator simulator = CreateFluid(true, out int expected);
+            Fluid simulator = CreateFluid(true, out int expected);
             Assert.That(simulator.IsRunning, Is.True, simulator.FailureReason);
             Assert.That(simulator.ParticleCount, Is.EqualTo(expected));
 
@@ -81,7 +81,7 @@ namespace SphFluid.Tests.PlayMode
         {
             RequireGpu();
             int before = UnityComputeDevice.LiveBufferTotal;
-            FluidSimulator simulator = CreateFluid(false, out _);
+            Fluid simulator = CreateFluid(false, out _);
             yield return null;
             yield return null;
             Assert.That(simulator.IsRunning, Is.True, simulator.FailureReason);
@@ -109,7 +109,7 @@ namespace SphFluid.Tests.PlayMode
         public IEnumerator ResetRespawnsWithoutLeaking()
         {
             RequireGpu();
-            FluidSimulator simulator = CreateFluid(false, out int expected);
+            Fluid simulator = CreateFluid(false, out int expected);
             for (int i = 0; i < 5; i++) yield return null;
             int live = UnityComputeDevice.LiveBufferTotal;
             simulator.ResetSimulation();
@@ -130,7 +130,7 @@ namespace SphFluid.Tests.PlayMode
             {
                 Scene scene = SceneManager.CreateScene("SphFluidLeakTest" + round);
                 SceneManager.SetActiveScene(scene); // new GameObjects go into the active scene
-                FluidSimulator simulator = CreateFluid(true, out _);
+                Fluid simulator = CreateFluid(true, out _);
                 for (int i = 0; i < 5; i++) yield return null;
                 Assert.That(simulator.IsRunning, Is.True, simulator.FailureReason);
                 Assert.That(UnityComputeDevice.LiveBufferTotal, Is.GreaterThan(before));
@@ -155,13 +155,13 @@ namespace SphFluid.Tests.PlayMode
                 Scene scene = SceneManager.GetSceneByBuildIndex(index);
                 for (int i = 0; i < 10; i++) yield return null;
 
-                FluidSimulator simulator = null;
+                Fluid simulator = null;
                 foreach (GameObject root in scene.GetRootGameObjects())
                 {
-                    simulator = root.GetComponentInChildren<FluidSimulator>();
+                    simulator = root.GetComponentInChildren<Fluid>();
                     if (simulator != null) break;
                 }
-                Assert.That(simulator, Is.Not.Null, $"{scene.path} has no FluidSimulator");
+                Assert.That(simulator, Is.Not.Null, $"{scene.path} has no Fluid");
                 Assert.That(simulator.IsRunning, Is.True, $"{scene.path}: {simulator.FailureReason}");
                 DiagnosticsReport report = simulator.Simulation.ReadDiagnostics();
                 Assert.That(report.NanCount, Is.EqualTo(0), $"{scene.path}: {report}");
