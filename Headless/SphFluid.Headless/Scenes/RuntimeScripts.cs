@@ -16,7 +16,10 @@ public static class RuntimeScripts
     /// <summary>Fluid's serialized FluidSettings field, which holds every declared setting by its field name.</summary>
     public const string Settings = "settings";
 
-    /// <summary>Fluid's compute-shader fields and the program each must be (the pipeline loads them by name).</summary>
+    /// <summary>The package's resources asset (Runtime/Resources), which names every Fluid's shaders and material.</summary>
+    public const string ResourcesAsset = "SphFluidResources";
+
+    /// <summary>The resources asset's compute-shader fields and the program each must be (the pipeline loads them by name).</summary>
     public static readonly IReadOnlyList<(string Field, string Program)> ShaderFields = new[]
     {
         ("solverShader", FluidSimulation.SolverProgramName),

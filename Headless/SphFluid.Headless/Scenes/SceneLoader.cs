@@ -236,18 +236,25 @@ public static class SceneLoader
 
         string Text(UnityDocument mb, string field, string fallback) => mb.Root[field] is { IsScalar: true } n ? n.Value : fallback;
 
+        /// <summary>The compute shaders Unity would run: those the package's resources asset names, which must be the
+        /// programs the headless pipeline loads by name (a renamed or re-pointed shader fails here, not mid-run).</summary>
         void CheckShaders()
         {
+            string resources = project.AssetPathOfResource(RuntimeScripts.ResourcesAsset + ".asset");
+            if (resources == null)
+                throw new SceneException($"{path}: the project has no Resources/{RuntimeScripts.ResourcesAsset}.asset (the fluid package's shaders and material)");
+            var root = UnityYamlFile.Load(project.FullPath(resources)).Documents.FirstOrDefault()?.Root;
             foreach (var (field, program) in RuntimeScripts.ShaderFields)
             {
-                var reference = _simulator.Root.GetReference(field);
+                var reference = root?.GetReference(field);
+                int line = root?[field]?.Line ?? 1;
                 if (reference == null || reference.IsNull)
-                    throw new SceneException($"{path}: {Where(_simulatorGo, RuntimeScripts.Fluid, field)} has no compute shader assigned (expected {program}.compute)");
+                    throw new SceneException($"{resources}:{line}: {field} has no compute shader assigned (expected {program}.compute)");
                 string asset = project.AssetPathOf(reference);
                 if (asset == null)
-                    throw new SceneException($"{path}: {Where(_simulatorGo, RuntimeScripts.Fluid, field)} refers to guid {reference.Guid}, which no asset of the project has (expected {program}.compute)");
+                    throw new SceneException($"{resources}:{line}: {field} refers to guid {reference.Guid}, which no asset of the project has (expected {program}.compute)");
                 if (Path.GetFileNameWithoutExtension(asset) != program || !asset.EndsWith(".compute", StringComparison.Ordinal))
-                    throw new SceneException($"{path}: {Where(_simulatorGo, RuntimeScripts.Fluid, field)} refers to {asset}; the pipeline runs {program}.compute there");
+                    throw new SceneException($"{resources}:{line}: {field} refers to {asset}; the pipeline runs {program}.compute there");
             }
         }
 

@@ -70,6 +70,12 @@ public sealed class UnityProject
             : $"{className}.cs exists {matches.Count} times: {string.Join(", ", matches.Select(m => m.Key))}");
     }
 
+    /// <summary>Project path of the asset named <paramref name="fileName"/> directly in a Resources folder (where
+    /// Resources.Load finds it), or null; the first in path order when several exist.</summary>
+    public string AssetPathOfResource(string fileName) => _guidByPath.Keys
+        .Where(p => p.EndsWith("/Resources/" + fileName, StringComparison.Ordinal))
+        .OrderBy(p => p, StringComparer.Ordinal).FirstOrDefault();
+
     /// <summary>Absolute path for an "Assets/…" path.</summary>
     public string FullPath(string projectPath) => Path.GetFullPath(Path.Combine(Root, projectPath));
 

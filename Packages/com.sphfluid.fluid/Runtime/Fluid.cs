@@ -23,26 +23,7 @@ namespace SphFluid.Runtime
         /// <summary>Fastest wall or sphere motion passed on, m/s and rad/s.</summary>
         const float MaxWallSpeed = 50f, MaxWallSpin = 50f;
 
-        [Header("Compute shaders (Packages/com.sphfluid.fluid/Shaders)")]
-        [SerializeField, Tooltip("FluidSolver.compute: density, forces, integration, boundaries.")]
-        ComputeShader solverShader = null;
-
-        [SerializeField, Tooltip("FluidDiagnostics.compute: motion and health reductions.")]
-        ComputeShader diagnosticsShader = null;
-
-        [SerializeField, Tooltip("ParticleSort.compute: counting sort of particles by grid cell.")]
-        ComputeShader sortShader = null;
-
-        [SerializeField, Tooltip("PrefixSum.compute: the scan the sort is built on.")]
-        ComputeShader prefixSumShader = null;
-
         [Header("Rendering")]
-        [SerializeField, Tooltip("Material of the particle shader FluidParticles.shader (Built-in pipeline); its values also drive the URP shader.")]
-        Material particleMaterial = null;
-
-        [SerializeField, Tooltip("FluidParticlesUniversal.shader: drawn with the material's values when URP is the active pipeline (enable Opaque Texture in the URP asset).")]
-        Shader universalParticleShader = null;
-
         [SerializeField, Range(0.25f, 3f), Tooltip("Drawn particle radius in half particle spacings (1 = spheres just touching).")]
         float particleRadiusScale = 1.2f;
 
@@ -64,7 +45,8 @@ namespace SphFluid.Runtime
         UnityComputeDevice _device;
         FluidSimulation _simulation;
         MaterialPropertyBlock _properties;
-        Material _universalMaterial; // particleMaterial's values on universalParticleShader, made on the first URP frame
+        FluidResources _resources; // the package's shaders and material (Resources), found at start
+        Material _universalMaterial; // the particle material's values on the URP shader, made on the first URP frame
         bool _pipelineWarned;
         FluidContainer _container;
         readonly List<SphereObstacle> _obstacles = new List<SphereObstacle>();
@@ -216,10 +198,16 @@ namespace SphFluid.Runtime
                 Fail("this graphics device has no compute shaders");
                 return;
             }
-            string missing = MissingShaderField();
+            _resources = FluidResources.Load();
+            if (_resources == null)
+            {
+                Fail($"the package's Resources/{FluidResources.ResourceName}.asset is missing; reinstall com.sphfluid.fluid");
+                return;
+            }
+            string missing = _resources.MissingField();
             if (missing != null)
             {
-                Fail($"field '{missing}' has no compute shader assigned (Packages/com.sphfluid.fluid/Shaders)");
+                Fail($"{FluidResources.ResourceName}.asset has no '{missing}' assigned (Packages/com.sphfluid.fluid/Runtime/Resources)");
                 return;
             }
             _container = FindContainer();
@@ -239,7 +227,7 @@ namespace SphFluid.Runtime
                 return;
             }
 
-            _device = new UnityComputeDevice(new[] { solverShader, diagnosticsShader, sortShader, prefixSumShader });
+            _device = new UnityComputeDevice(_resources.ComputeShaders());
             try
             {
                 // A player frame must never wait on the GPU: plan from asynchronous read-backs.
@@ -266,8 +254,6 @@ namespace SphFluid.Runtime
                 _obstaclePositions.Add(sphere.transform.position);
                 _obstacleRows.Add(sphere.Describe(Vector3.zero)); // its Name is read here, once
             }
-            if (particleMaterial == null)
-                Debug.LogWarning($"Fluid '{name}': field 'particleMaterial' is empty; the fluid is simulated but not drawn", this);
         }
 
         void Fail(string reason)
@@ -293,15 +279,6 @@ namespace SphFluid.Runtime
             _obstaclePositions.Clear();
             _obstacleRows.Clear();
             _obstacleDescriptions.Clear();
-        }
-
-        string MissingShaderField()
-        {
-            if (solverShader == null) return nameof(solverShader);
-            if (diagnosticsShader == null) return nameof(diagnosticsShader);
-            if (sortShader == null) return nameof(sortShader);
-            if (prefixSumShader == null) return nameof(prefixSumShader);
-            return null;
         }
 
         // ------------------------------------------------------------------ per frame
@@ -428,27 +405,25 @@ namespace SphFluid.Runtime
         }
 
         /// <summary>
-        /// The material for the active render pipeline: particleMaterial itself in the Built-in pipeline (no
-        /// pipeline asset), a copy of its values on universalParticleShader in URP, null (not drawn, one warning)
-        /// for any other pipeline. Asked every frame: the pipeline asset may change with the quality level.
+        /// The material for the active render pipeline: the resources' particle material itself in the Built-in
+        /// pipeline (no pipeline asset), a copy of its values on the URP particle shader in URP, null (not drawn, one
+        /// warning) for any other pipeline. Asked every frame: the pipeline asset may change with the quality level.
         /// </summary>
         Material MaterialForPipeline()
         {
-            if (particleMaterial == null) return null;
+            Material particleMaterial = _resources.ParticleMaterial;
             RenderPipelineAsset pipeline = GraphicsSettings.currentRenderPipeline;
             if (pipeline == null) return particleMaterial;
-            if (pipeline.renderPipelineShaderTag != UniversalPipelineTag || universalParticleShader == null)
+            if (pipeline.renderPipelineShaderTag != UniversalPipelineTag)
             {
                 if (!_pipelineWarned)
-                    Debug.LogWarning(universalParticleShader == null && pipeline.renderPipelineShaderTag == UniversalPipelineTag
-                        ? $"Fluid '{name}': URP is the active pipeline but field 'universalParticleShader' is empty; assign Packages/com.sphfluid.fluid/Shaders/FluidParticlesUniversal.shader. The fluid is simulated but not drawn"
-                        : $"Fluid '{name}': render pipeline '{pipeline.name}' (shader tag '{pipeline.renderPipelineShaderTag}') is neither Built-in nor URP ('{UniversalPipelineTag}'); the fluid is simulated but not drawn", this);
+                    Debug.LogWarning($"Fluid '{name}': render pipeline '{pipeline.name}' (shader tag '{pipeline.renderPipelineShaderTag}') is neither Built-in nor URP ('{UniversalPipelineTag}'); the fluid is simulated but not drawn", this);
                 _pipelineWarned = true;
                 return null;
             }
             if (_universalMaterial == null)
             {
-                _universalMaterial = new Material(universalParticleShader) { name = particleMaterial.name + " (URP)", hideFlags = HideFlags.DontSave };
+                _universalMaterial = new Material(_resources.UniversalParticleShader) { name = particleMaterial.name + " (URP)", hideFlags = HideFlags.DontSave };
                 // Read by name: the project must compile without the URP package.
                 if (pipeline.GetType().GetProperty("supportsCameraOpaqueTexture")?.GetValue(pipeline) is bool opaque && !opaque)
                     Debug.LogWarning($"Fluid '{name}': URP asset '{pipeline.name}' has Opaque Texture off; the liquid shows no scene behind it unless the camera turns it on (Rendering > Opaque Texture)", this);

@@ -54,25 +54,18 @@ namespace SphFluid.Tests.Rendering
         }
 
         [Test]
-        public void Every_scene_gives_its_simulator_the_material_and_the_URP_shader()
+        public void The_package_resources_give_every_fluid_the_material_and_both_pipelines_shaders()
         {
+            const string resources = "Packages/com.sphfluid.fluid/Runtime/Resources/SphFluidResources.asset";
             const string universalShader = "Packages/com.sphfluid.fluid/Shaders/FluidParticlesUniversal.shader";
-            string materialGuid = UnityMeta.GuidOf(At(MaterialRelativePath));
-            string universalGuid = UnityMeta.GuidOf(At(universalShader));
-            var scenes = Directory.GetFiles(At("Assets/FluidDemo/Scenes"), "*.unity");
-            Assert.That(scenes, Is.Not.Empty);
-            var problems = new List<string>();
-            foreach (string scene in scenes)
-            {
-                var simulators = UnityYamlFile.Load(scene).Documents.Where(d => d.Root.GetReference("particleMaterial") != null).ToList();
-                if (simulators.Count != 1) { problems.Add(Path.GetFileName(scene) + ": " + simulators.Count + " Fluids"); continue; }
-                var material = simulators[0].Root.GetReference("particleMaterial");
-                var universal = simulators[0].Root.GetReference("universalParticleShader");
-                if (material.Guid != materialGuid) problems.Add(Path.GetFileName(scene) + ": particleMaterial is not " + MaterialRelativePath);
-                if (universal == null || universal.Guid != universalGuid || universal.FileId != 4800000L || universal.Type != 3)
-                    problems.Add(Path.GetFileName(scene) + ": universalParticleShader is not " + universalShader + " (the particles would not draw in URP)");
-            }
-            Assert.That(problems, Is.Empty, string.Join("\n", problems));
+            var root = UnityYamlFile.Load(At(resources)).Documents.Single().Root;
+            Assert.That(root.GetReference("m_Script").Guid, Is.EqualTo(UnityMeta.GuidOf(At("Packages/com.sphfluid.fluid/Runtime/FluidResources.cs"))));
+            Assert.That(root.GetReference("particleMaterial").Guid, Is.EqualTo(UnityMeta.GuidOf(At(MaterialRelativePath))), "particleMaterial");
+            var universal = root.GetReference("universalParticleShader");
+            Assert.That(universal.Guid, Is.EqualTo(UnityMeta.GuidOf(At(universalShader))), "universalParticleShader: the particles would not draw in URP");
+            Assert.That(universal.FileId, Is.EqualTo(4800000L));
+            foreach (string scene in Directory.GetFiles(At("Assets/FluidDemo/Scenes"), "*.unity"))
+                Assert.That(File.ReadAllText(scene), Does.Not.Contain("particleMaterial:"), scene + ": a Fluid has no per-component material slot");
         }
 
         [Test]

@@ -23,20 +23,6 @@ namespace SphFluid.Tests.PlayMode
         public static void RequireGpu()
         {
             Assume.That(SystemInfo.supportsComputeShaders, Is.True, "needs a graphics device with compute shaders (run without -nographics)");
-#if !UNITY_EDITOR
-            Assert.Ignore("loads the compute shaders through the editor's AssetDatabase");
-#endif
-        }
-
-        static ComputeShader LoadShader(string name)
-        {
-#if UNITY_EDITOR
-            var shader = UnityEditor.AssetDatabase.LoadAssetAtPath<ComputeShader>($"Packages/com.sphfluid.fluid/Shaders/{name}.compute");
-            Assert.That(shader, Is.Not.Null, $"Packages/com.sphfluid.fluid/Shaders/{name}.compute");
-            return shader;
-#else
-            return null;
-#endif
         }
 
         static void Set(object component, string field, object value)
@@ -66,10 +52,6 @@ namespace SphFluid.Tests.PlayMode
             GameObject fluid = Create("Fluid", Vector3.zero, Vector3.one);
             fluid.SetActive(false);
             Fluid simulator = fluid.AddComponent<Fluid>();
-            Set(simulator, "solverShader", LoadShader("FluidSolver"));
-            Set(simulator, "diagnosticsShader", LoadShader("FluidDiagnostics"));
-            Set(simulator, "sortShader", LoadShader("ParticleSort"));
-            Set(simulator, "prefixSumShader", LoadShader("PrefixSum"));
             Set(simulator, "container", container);
             simulator.Settings.ParticleSpacing = Spacing;
             fluid.SetActive(true);
