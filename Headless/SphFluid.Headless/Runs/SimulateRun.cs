@@ -74,7 +74,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         stdout.WriteLine($"scene: {scene.Path} ({scene.Name}): fluid '{scene.SimulatorObject}', container '{scene.ContainerObject}' "
             + string.Format(C, "{0:G4} x {1:G4} x {2:G4} m", restContainer.Size.X, restContainer.Size.Y, restContainer.Size.Z)
             + $", {description.SpawnBoxes.Count} spawn box(es), {description.Obstacles.Count} obstacle(s)"
-            + (scene.Motion.MovesContainer ? string.Format(C, ", container spins {0:G3} deg/s after {1:G3} s", scene.Motion.ContainerSpin.DegreesPerSecond, scene.Motion.ContainerSpin.StartDelay) : "")
+            + (scene.Motion.MovesContainer ? string.Format(C, ", container spins {0:G3} deg/s after {1:G3} s", scene.Motion.ContainerSpin.AngularSpeed, scene.Motion.ContainerSpin.StartDelay) : "")
             + (scene.Motion.MovesObstacles ? $", {scene.Motion.SphereDrives.Count} driven sphere(s)" : ""));
         stdout.WriteLine(string.Format(C, "particles: {0}{1} (spacing {2:G4} m, support {3:G4} m); phases: {4}",
             sim.ParticleCount, sceneCount != sim.ParticleCount ? $" (scene: {sceneCount}, scaled x{options.ParticlesScale:G4})" : "",

@@ -16,6 +16,9 @@ public static class RuntimeScripts
     /// <summary>Fluid's serialized FluidSettings field, which holds every declared setting by its field name.</summary>
     public const string Settings = "settings";
 
+    /// <summary>ContainerSpinner's serialized ContainerSpin law and SphereDriver's SphereDrive law.</summary>
+    public const string Spin = "spin", Drive = "drive";
+
     /// <summary>The package's resources asset (Runtime/Resources), which names every Fluid's shaders and material.</summary>
     public const string ResourcesAsset = "SphFluidResources";
 

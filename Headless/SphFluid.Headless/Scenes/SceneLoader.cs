@@ -258,26 +258,36 @@ public static class SceneLoader
             }
         }
 
-        /// <summary>The simulator's <c>settings</c>, field by declared field (<see cref="SettingRules"/>): the names, types
-        /// and defaults are FluidSettings' own, so a new setting needs no line here. A missing field keeps its default,
-        /// as in Unity.</summary>
-        FluidSettings ReadSettings()
+        /// <summary>The simulator's <c>settings</c>, field by declared field (<see cref="SettingRules"/>).</summary>
+        FluidSettings ReadSettings() => ReadDeclared<FluidSettings>(_simulatorGo, _simulator, RuntimeScripts.Fluid, RuntimeScripts.Settings);
+
+        /// <summary>A component's serialized settings object, field by declared field: the names, types and defaults
+        /// are the core class's own, so a new setting needs no line here. A missing field keeps its default, as in
+        /// Unity.</summary>
+        T ReadDeclared<T>(UnityGameObject go, UnityDocument mb, string component, string prefix) where T : new()
         {
-            var settings = new FluidSettings();
-            const string c = RuntimeScripts.Fluid;
-            foreach (var declared in SettingRules.Declared(typeof(FluidSettings)))
+            var values = new T();
+            foreach (var declared in SettingRules.Declared(typeof(T)))
             {
                 var field = declared.Field;
-                string key = RuntimeScripts.Settings + "." + field.Name;
-                object value = field.GetValue(settings);
-                if (field.FieldType == typeof(float)) value = Float(_simulatorGo, _simulator, c, key, (float)value);
-                else if (field.FieldType == typeof(int)) value = Int(_simulatorGo, _simulator, c, key, (int)value);
-                else if (field.FieldType == typeof(SettingVector)) value = (SettingVector)Vector(_simulatorGo, _simulator, c, key, (SettingVector)value);
-                else if (field.FieldType.IsEnum) value = Enum.ToObject(field.FieldType, Int(_simulatorGo, _simulator, c, key, Convert.ToInt32(value)));
-                else throw new NotSupportedException($"FluidSettings.{field.Name}: no scene reading for {field.FieldType.Name}");
-                field.SetValue(settings, value);
+                string key = prefix + "." + field.Name;
+                object value = field.GetValue(values);
+                if (field.FieldType == typeof(float)) value = Float(go, mb, component, key, (float)value);
+                else if (field.FieldType == typeof(int)) value = Int(go, mb, component, key, (int)value);
+                else if (field.FieldType == typeof(SettingVector)) value = (SettingVector)Vector(go, mb, component, key, (SettingVector)value);
+                else if (field.FieldType.IsEnum) value = Enum.ToObject(field.FieldType, Int(go, mb, component, key, Convert.ToInt32(value)));
+                else throw new NotSupportedException($"{typeof(T).Name}.{field.Name}: no scene reading for {field.FieldType.Name}");
+                field.SetValue(values, value);
             }
-            return settings;
+            return values;
+        }
+
+        /// <summary>Refuses a motion law's first out-of-range field, naming the file, line, GameObject and field.</summary>
+        void RequireValid(IReadOnlyList<ValidationError> errors, UnityGameObject go, UnityDocument mb, string component, string prefix)
+        {
+            if (errors.Count == 0) return;
+            string key = prefix + "." + errors[0].Field;
+            throw new SceneException($"{path}:{mb.Root.At(key)?.Line ?? mb.Line}: {Where(go, component, key)}: {errors[0].Message}");
         }
 
         ContainerDescription ReadContainer()
@@ -340,6 +350,7 @@ public static class SceneLoader
         SceneMotion ReadMotion()
         {
             ContainerSpin spin = null;
+            Vector3 pivot = Vector3.Zero;
             foreach (var (go, mb) in Active(ScriptGuid(RuntimeScripts.ContainerSpinner)))
             {
                 if (!IsSelfOrAncestor(go, _containerGo))
@@ -347,30 +358,23 @@ public static class SceneLoader
                 if (spin != null)
                     throw new SceneException($"{path}: more than one {RuntimeScripts.ContainerSpinner} turns the container '{_containerGo.Name}'");
                 const string c = RuntimeScripts.ContainerSpinner;
-                spin = new ContainerSpin(Vector(go, mb, c, "axis", Vector3.UnitZ), Float(go, mb, c, "angularSpeed", 30f), Float(go, mb, c, "startDelay", 1f), go.World.Position);
-                if (spin.Axis.LengthSquared() < 1e-12f)
-                    throw new SceneException($"{path}: {Where(go, c, "axis")} must be non-zero (was {spin.Axis})");
-                if (!float.IsFinite(spin.DegreesPerSecond) || Math.Abs(spin.DegreesPerSecond) > 360f)
-                    throw new SceneException($"{path}: {Where(go, c, "angularSpeed")} must be in [-360, 360] degrees/s (was {spin.DegreesPerSecond})");
-                if (!(spin.StartDelay >= 0f) || !float.IsFinite(spin.StartDelay))
-                    throw new SceneException($"{path}: {Where(go, c, "startDelay")} must be >= 0 s (was {spin.StartDelay})");
+                spin = ReadDeclared<ContainerSpin>(go, mb, c, RuntimeScripts.Spin);
+                RequireValid(spin.Validate(c), go, mb, c, RuntimeScripts.Spin);
+                pivot = go.World.Position;
             }
 
-            var drives = new List<SphereDrive>();
+            var drives = new List<DrivenSphere>();
             foreach (var (go, mb) in Active(ScriptGuid(RuntimeScripts.SphereDriver)))
             {
                 int index = _obstacles.FindIndex(o => o.Go.FileId == go.FileId);
                 if (index < 0)
                     throw new SceneException($"{path}: GameObject '{go.Name}' has a {RuntimeScripts.SphereDriver} but no active {RuntimeScripts.SphereObstacle}; the runner drives obstacles only");
                 const string c = RuntimeScripts.SphereDriver;
-                var drive = new SphereDrive(index, Vector(go, mb, c, "travel", new Vector3(0.3f, 0, 0)), Float(go, mb, c, "period", 4f), Float(go, mb, c, "startDelay", 1f));
-                if (!(drive.Period >= 0.1f) || !float.IsFinite(drive.Period))
-                    throw new SceneException($"{path}: {Where(go, c, "period")} must be at least 0.1 s (was {drive.Period})");
-                if (!(drive.StartDelay >= 0f) || !float.IsFinite(drive.StartDelay))
-                    throw new SceneException($"{path}: {Where(go, c, "startDelay")} must be >= 0 s (was {drive.StartDelay})");
-                drives.Add(drive);
+                var drive = ReadDeclared<SphereDrive>(go, mb, c, RuntimeScripts.Drive);
+                RequireValid(drive.Validate(c), go, mb, c, RuntimeScripts.Drive);
+                drives.Add(new DrivenSphere(index, drive));
             }
-            return new SceneMotion { ContainerSpin = spin, SphereDrives = drives };
+            return new SceneMotion { ContainerSpin = spin, SpinPivot = pivot, SphereDrives = drives };
         }
 
         static bool IsSelfOrAncestor(UnityGameObject candidate, UnityGameObject of) =>

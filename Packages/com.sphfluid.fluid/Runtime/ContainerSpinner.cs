@@ -1,36 +1,33 @@
+using SphFluid.Simulation;
 using UnityEngine;
 
 namespace SphFluid.Runtime
 {
-    /// <summary>Spins its Transform (the rotating-container scene's box) at a steady angular speed.</summary>
+    /// <summary>Spins its Transform (the rotating-container scene's box) by the core's <see cref="ContainerSpin"/> law,
+    /// the same law the headless runner applies, about a world axis through its own position.</summary>
     public sealed class ContainerSpinner : MonoBehaviour
     {
-        [SerializeField, Tooltip("Axis of rotation, world space (need not be normalised).")]
-        Vector3 axis = Vector3.forward;
+        [SerializeField, Tooltip("The spin: axis, angular speed and start delay, each declared once in ContainerSpin.")]
+        ContainerSpin spin = new ContainerSpin();
 
-        [SerializeField, Range(-360f, 360f), Tooltip("Angular speed, degrees per second; negative turns the other way.")]
-        float angularSpeed = 30f;
+        Quaternion _restRotation;
+        double _elapsed;
 
-        [SerializeField, Min(0f), Tooltip("Seconds after start before spinning, so the fluid can settle first.")]
-        float startDelay = 1f;
+        /// <summary>The law, for scripts; a change applies from the next frame.</summary>
+        public ContainerSpin Spin => spin;
 
-        float _elapsed;
-
-        public float AngularSpeed => angularSpeed;
-
-        void OnEnable() => _elapsed = 0f;
+        void OnEnable()
+        {
+            _restRotation = transform.rotation;
+            _elapsed = 0.0;
+        }
 
         void Update()
         {
             _elapsed += Time.deltaTime;
-            if (_elapsed < startDelay || axis.sqrMagnitude < 1e-12f) return;
-            transform.Rotate(axis.normalized, angularSpeed * Time.deltaTime, Space.World);
+            transform.rotation = spin.Turn(_elapsed).ToUnity() * _restRotation;
         }
 
-        void OnValidate()
-        {
-            if (axis.sqrMagnitude < 1e-12f)
-                Debug.LogError($"ContainerSpinner '{name}': axis must be non-zero (was {axis})", this);
-        }
+        void OnValidate() => ComponentValidation.Log(spin.Validate($"ContainerSpinner '{name}'"), this);
     }
 }

@@ -116,6 +116,26 @@ namespace SphFluid.Tests.Runner
         }
 
         [Test]
+        public void AMotionLawOutOfRangeNamesTheFieldLineAndRange()
+        {
+            string path = RunnerPaths.EditedScene("RotatingContainer", "    AngularSpeed: 45", "    AngularSpeed: 400");
+
+            var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
+
+            Assert.That(error.Message, Does.Match(@"RotatingContainer\.unity:\d+: GameObject '[^']+', ContainerSpinner\.spin\.AngularSpeed: ContainerSpinner: AngularSpeed must be in \[-360, 360\] deg/s \(was 400\)"));
+        }
+
+        [Test]
+        public void AZeroSpinAxisIsRefused()
+        {
+            string path = RunnerPaths.EditedScene("RotatingContainer", "    Axis:\n      x: 0\n      y: 0\n      z: 1", "    Axis:\n      x: 0\n      y: 0\n      z: 0");
+
+            var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
+
+            Assert.That(error.Message, Does.Contain("ContainerSpinner.spin.Axis: ContainerSpinner: Axis must be finite with magnitude in (0, 1000000]"));
+        }
+
+        [Test]
         public void AMissingFileIsASceneError()
         {
             var error = Assert.Throws<SceneException>(() => SceneLoader.Load("/nonexistent/Nothing.unity", RunnerPaths.Project));

@@ -64,12 +64,12 @@ namespace SphFluid.Tests.PlayMode
         {
             Fluid simulator = CreateFluid(true);
             ContainerSpinner spinner = Find("Tank").AddComponent<ContainerSpinner>();
-            Set(spinner, "angularSpeed", 20f);
-            Set(spinner, "startDelay", 0f);
+            spinner.Spin.AngularSpeed = 20f;
+            spinner.Spin.StartDelay = 0f;
             SphereDriver driver = Find("Ball").AddComponent<SphereDriver>();
-            Set(driver, "travel", new Vector3(-0.1f, 0f, 0f));
-            Set(driver, "period", 2f);
-            Set(driver, "startDelay", 0f);
+            driver.Drive.Travel = new System.Numerics.Vector3(-0.1f, 0f, 0f);
+            driver.Drive.Period = 2f;
+            driver.Drive.StartDelay = 0f;
             return simulator;
         }
 

@@ -69,7 +69,11 @@ namespace SphFluid.Simulation
                 case int i:
                     return ValidationRules.InRange(errors, owner, path, field, i, (int)d.Min, (int)d.Max, d.Unit);
                 case SettingVector v:
-                    return ValidationRules.Finite(errors, owner, path, field, v, (float)d.Max, d.Unit);
+                    if (d.Min == 0 && !d.MinExclusive) return ValidationRules.Finite(errors, owner, path, field, v, (float)d.Max, d.Unit);
+                    float length = v.Length();
+                    if (ValidationRules.IsFinite(length) && (d.MinExclusive ? length > d.Min : length >= d.Min) && length <= d.Max) return true;
+                    errors.Add(new ValidationError(path + field, $"{owner}: {field} must be finite with magnitude in {d.RangeText} (was {v})"));
+                    return false;
                 case Enum e:
                     if (Enum.IsDefined(e.GetType(), e)) return true;
                     errors.Add(new ValidationError(path + field, $"{owner}: {field} must be one of {string.Join(", ", Names(e.GetType()))} (was {Convert.ToInt64(e)})"));

@@ -5,12 +5,15 @@ using UnityEngine;
 namespace SphFluid.Editor
 {
     /// <summary>
-    /// Draws <see cref="FluidSettings"/> from its declarations: a header per group, each field with its tooltip, unit
-    /// and range, clamped to that range like Unity's own Range attribute. The core cannot carry Unity's attributes (it
-    /// is engine-free), so this drawer is how the inspector reads the one declaration.
+    /// Draws a core settings object (<see cref="FluidSettings"/>, the <see cref="ContainerSpin"/> and
+    /// <see cref="SphereDrive"/> laws) from its declarations: a header per group, each field with its tooltip, unit and
+    /// range, clamped to that range like Unity's own Range attribute. The core cannot carry Unity's attributes (it is
+    /// engine-free), so this drawer is how the inspector reads the one declaration.
     /// </summary>
     [CustomPropertyDrawer(typeof(FluidSettings))]
-    public sealed class FluidSettingsDrawer : PropertyDrawer
+    [CustomPropertyDrawer(typeof(ContainerSpin))]
+    [CustomPropertyDrawer(typeof(SphereDrive))]
+    public sealed class DeclaredSettingsDrawer : PropertyDrawer
     {
         static float Line => EditorGUIUtility.singleLineHeight;
 
@@ -20,7 +23,7 @@ namespace SphFluid.Editor
         {
             float height = 0f;
             string group = null;
-            foreach (DeclaredSetting setting in SettingRules.Declared(typeof(FluidSettings)))
+            foreach (DeclaredSetting setting in SettingRules.Declared(fieldInfo.FieldType))
             {
                 if (setting.Declaration.Group != group)
                 {
@@ -37,7 +40,7 @@ namespace SphFluid.Editor
         {
             var row = new Rect(position.x, position.y, position.width, Line);
             string group = null;
-            foreach (DeclaredSetting setting in SettingRules.Declared(typeof(FluidSettings)))
+            foreach (DeclaredSetting setting in SettingRules.Declared(fieldInfo.FieldType))
             {
                 SettingAttribute declaration = setting.Declaration;
                 if (declaration.Group != group)

@@ -1,0 +1,62 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+
+namespace SphFluid.Simulation
+{
+    /// <summary>
+    /// The law of a driven sphere, as a function of time: start + travel (1 - cos(2 pi t' / period)) / 2 with
+    /// t' = t - startDelay, so the sphere starts and turns at rest; its velocity is the derivative. One law for the
+    /// Unity SphereDriver and the headless runner; each field declared once (<see cref="SettingAttribute"/>).
+    /// </summary>
+    [Serializable]
+    public sealed class SphereDrive
+    {
+        const string Group = "Drive";
+
+        [Setting(Group, 0, 1000, "m", "From the start position to the far end of the path, world space.")]
+        public SettingVector Travel = new Vector3(0.3f, 0f, 0f);
+
+        [Setting(Group, 0.1, 3600, "s", "Time for one trip there and back.")]
+        public float Period = 4f;
+
+        [Setting(Group, 0, 3600, "s", "Time after start before moving, so the fluid can settle first.")]
+        public float StartDelay = 1f;
+
+        /// <summary>Offset from the start position at time <paramref name="t"/>, m.</summary>
+        public Vector3 Offset(double t)
+        {
+            double phaseTime = t - StartDelay;
+            if (phaseTime < 0 || !(Period >= 0.1f)) return Vector3.Zero;
+            return (Vector3)Travel * (float)(0.5 - 0.5 * Math.Cos(2.0 * Math.PI / Period * phaseTime));
+        }
+
+        /// <summary>Velocity at time <paramref name="t"/>, m/s.</summary>
+        public Vector3 Velocity(double t)
+        {
+            double phaseTime = t - StartDelay;
+            if (phaseTime < 0 || !(Period >= 0.1f)) return Vector3.Zero;
+            double w = 2.0 * Math.PI / Period;
+            return (Vector3)Travel * (float)(0.5 * w * Math.Sin(w * phaseTime));
+        }
+
+        /// <summary>A sphere at rest moved to time <paramref name="t"/>, with its velocity.</summary>
+        public SphereObstacleDescription At(SphereObstacleDescription rest, double t)
+        {
+            var result = rest.Clone();
+            result.Center = rest.Center + Offset(t);
+            result.Velocity = Velocity(t);
+            return result;
+        }
+
+        public SphereDrive Clone() => (SphereDrive)MemberwiseClone();
+
+        public IReadOnlyList<ValidationError> Validate(string owner)
+        {
+            var errors = new List<ValidationError>();
+            foreach (var declared in SettingRules.Declared(typeof(SphereDrive)))
+                SettingRules.Validate(this, errors, owner, "", declared.Field.Name);
+            return errors;
+        }
+    }
+}
