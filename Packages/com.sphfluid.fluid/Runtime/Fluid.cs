@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using SphFluid.Simulation;
+using Unity.Mathematics;
 using UnityEngine;
 using UnityEngine.Rendering;
 
@@ -358,11 +359,12 @@ namespace SphFluid.Runtime
         /// <summary>Rotation from <paramref name="from"/> to <paramref name="to"/> as axis times angle, rad (shortest way).</summary>
         static Vector3 AngularVelocity(Quaternion from, Quaternion to)
         {
-            Quaternion delta = to * Quaternion.Inverse(from);
-            delta.ToAngleAxis(out float degrees, out Vector3 axis);
-            if (degrees > 180f) degrees -= 360f;
-            if (float.IsNaN(axis.x) || float.IsInfinity(axis.x) || Mathf.Abs(degrees) < 1e-6f) return Vector3.zero;
-            return axis.normalized * (degrees * Mathf.Deg2Rad);
+            // The quaternion logarithm of the frame-to-frame turn is half its rotation vector; q and -q are the same
+            // turn, so the short way round is the one with w >= 0.
+            quaternion delta = math.mul(to, math.inverse(from));
+            if (delta.value.w < 0f) delta.value = -delta.value;
+            float3 rotation = 2f * math.log(delta).value.xyz;
+            return math.all(math.isfinite(rotation)) ? (Vector3)rotation : Vector3.zero; // no turn: log is 0/0
         }
 
         void PushObstacles(float seconds)
