@@ -14,17 +14,9 @@
 // (container centre c, rotation R, size S; one margin cell on every side). Positions outside the
 // grid clamp into its border cells, so every particle, even a NaN one, has a valid cell.
 //
-// Set by SphFluid.Sorting.CellGrid.SetOn. The cell sort (ParticleSort.compute) also provides
-// _CellStart / _CellCount (per linear cell: first sorted particle, particle count). A 27-cell loop:
-//   int3 home = GridCoordOf(p.position);
-//   for (int dz = -1; dz <= 1; dz++) for (int dy = -1; dy <= 1; dy++) for (int dx = -1; dx <= 1; dx++)
-//   {
-//       int3 c = home + int3(dx, dy, dz);
-//       if (!GridCoordInside(c)) continue;
-//       uint cell = CellIndexOf(c);
-//       uint end = _CellStart[cell] + _CellCount[cell];
-//       for (uint j = _CellStart[cell]; j < end; j++) { ... _SortedParticles[j] ... }
-//   }
+// Set by SphFluid.Sorting.CellGrid.SetOn. The cell sort (ParticleSort.compute) provides _CellStart /
+// _CellCount per linear cell; the neighbour loops themselves are in SphNeighbourhood.hlsl, which visits
+// the 27 cells around a particle as 9 contiguous x-rows of the sorted buffer.
 
 float4x4 _WorldToGrid; // world -> grid units (column vectors, translation in the last column)
 uint3 _GridDims;       // cells per local axis, margin included
