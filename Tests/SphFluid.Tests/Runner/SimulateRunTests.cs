@@ -1,3 +1,4 @@
+using System;
 using System.IO;
 using System.Linq;
 using NUnit.Framework;
@@ -75,7 +76,12 @@ namespace SphFluid.Tests.Runner
             Assert.That(code, Is.EqualTo(ExitCodes.Ok));
             Assert.That(bench.Rows.Count, Is.EqualTo(2));
             Assert.That(bench.Rows[0].Particles, Is.EqualTo(150).Within(15));
-            Assert.That(stdout.ToString(), Does.Contain("| particles | dt (ms) | wall ms | GPU ms |"));
+            Assert.That(stdout.ToString(), Does.Contain("| particles | dt (ms) | wall ms | GPU ms | wall ms in a frame (sub-steps) |"));
+            foreach (var row in bench.Rows)
+            {
+                Assert.That(row.FrameSubsteps, Is.EqualTo((int)Math.Ceiling(1.0 / 60.0 / row.TimeStep)), "a 60 Hz frame's sub-steps");
+                Assert.That(row.FrameWallMs, Is.GreaterThan(0).And.LessThan(double.PositiveInfinity));
+            }
             Assert.That(stdout.ToString(), Does.Contain($"| {bench.Rows[1].Particles} |"));
             ChartFiles.Check(outDir, "bench-scaling", "Bench scaling: PlayModeTest, WCSPH", "particles", "milliseconds per sub-step (ms)",
                 "wall clock per sub-step", "GPU per sub-step");
