@@ -80,6 +80,9 @@ namespace SphFluid.Runtime
         [SerializeField, Range(0f, 1f), Tooltip("Monaghan artificial viscosity alpha, in [0, 1]: damps the acoustic noise of the weakly compressible fluid; 0 turns it off.")]
         float artificialViscosity = CoreDefaults.ArtificialViscosity;
 
+        [SerializeField, Range(0f, 10f), Tooltip("Particle shifting coefficient A, in [0, 10]: each sub-step a particle moves by -A h |v| dt gradC towards a uniform distribution (Lind et al. 2012), only along free surfaces and phase interfaces; 0 turns the pass off.")]
+        float particleShifting = CoreDefaults.ParticleShifting;
+
         [Header("Time stepping")]
         [SerializeField, Range(0.01f, 1f), Tooltip("Courant number of the CFL condition, in (0, 1].")]
         float cflNumber = CoreDefaults.CflNumber;
@@ -205,6 +208,7 @@ namespace SphFluid.Runtime
                 Gravity = gravity.ToNumerics(),
                 XsphEpsilon = xsphEpsilon,
                 ArtificialViscosity = artificialViscosity,
+                ParticleShifting = particleShifting,
                 VelocityDamping = velocityDamping,
                 CflNumber = cflNumber,
                 MaxSubsteps = maxSubsteps,

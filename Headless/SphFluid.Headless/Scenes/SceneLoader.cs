@@ -268,6 +268,7 @@ public static class SceneLoader
                 XsphEpsilon = Float(go, mb, c, "xsphEpsilon", d.XsphEpsilon),
                 VelocityDamping = Float(go, mb, c, "velocityDamping", d.VelocityDamping),
                 ArtificialViscosity = Float(go, mb, c, "artificialViscosity", d.ArtificialViscosity),
+                ParticleShifting = Float(go, mb, c, "particleShifting", d.ParticleShifting),
                 CflNumber = Float(go, mb, c, "cflNumber", d.CflNumber),
                 MaxSubsteps = Int(go, mb, c, "maxSubsteps", d.MaxSubsteps),
                 MaxTimeStep = Float(go, mb, c, "maxTimeStep", d.MaxTimeStep),

@@ -52,6 +52,14 @@ namespace SphFluid.Simulation
         /// compressible fluid on approaching particle pairs (SphViscosity.hlsl). 0 turns it off.</summary>
         public float ArtificialViscosity { get; set; } = 0.02f;
 
+        /// <summary>Particle shifting coefficient A, in [0, 10]; 0 turns the pass off. Each sub-step a particle moves by
+        /// -A h |v| dt gradC down its concentration gradient (Lind et al. 2012; ParticleShifting.hlsl): it spreads
+        /// particles back towards a uniform distribution, along free surfaces and phase interfaces only.</summary>
+        public float ParticleShifting { get; set; } = DefaultParticleShifting;
+
+        /// <summary>Default <see cref="ParticleShifting"/>.</summary>
+        public const float DefaultParticleShifting = 0f;
+
         /// <summary>Global velocity damping, 1/s, in [0, 1000]; 0 = none.</summary>
         public float VelocityDamping { get; set; }
 
@@ -93,6 +101,7 @@ namespace SphFluid.Simulation
             ValidationRules.Finite(errors, owner, path, nameof(Gravity), Gravity, 1000f, "m/s^2");
             ValidationRules.InRange(errors, owner, path, nameof(XsphEpsilon), XsphEpsilon, 0f, 1f, "");
             ValidationRules.InRange(errors, owner, path, nameof(ArtificialViscosity), ArtificialViscosity, 0f, 1f, "");
+            ValidationRules.InRange(errors, owner, path, nameof(ParticleShifting), ParticleShifting, 0f, 10f, "");
             ValidationRules.InRange(errors, owner, path, nameof(VelocityDamping), VelocityDamping, 0f, 1000f, "1/s");
             ValidationRules.Positive(errors, owner, path, nameof(CflNumber), CflNumber, 1f, "");
             ValidationRules.InRange(errors, owner, path, nameof(MaxSubsteps), MaxSubsteps, 1, 1000, "");

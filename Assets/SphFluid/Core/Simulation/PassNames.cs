@@ -12,6 +12,8 @@ namespace SphFluid.Simulation
         public const string Normals = "Normals";
         public const string Forces = "Forces";
         public const string FullStep = "FullStep";
+        public const string ParticleShift = "ParticleShift";
+        public const string ApplyShift = "ApplyShift";
         public const string MotionReduction = "MotionReduction";
         public const string Diagnostics = "Diagnostics";
     }

@@ -12,7 +12,7 @@ namespace SphFluid.Simulation
             int obstacles = scene.Obstacles == null ? 0 : scene.Obstacles.Count;
             var settings = scene.Settings;
             return new SimulationPlan(phases.Count, obstacles, tension, settings.XsphEpsilon > 0f,
-                settings.VelocityDamping > 0f, containerMoved);
+                settings.VelocityDamping > 0f, containerMoved, settings.ParticleShifting > 0f);
         }
     }
 }

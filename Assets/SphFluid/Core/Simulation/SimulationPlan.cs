@@ -25,6 +25,9 @@ namespace SphFluid.Simulation
         /// and the sphere clamp runs (OBSTACLES).</summary>
         public bool Obstacles { get; }
 
+        /// <summary>ParticleShifting &gt; 0: the shift passes run after every sub-step.</summary>
+        public bool Shifting { get; }
+
         /// <summary>VelocityDamping &gt; 0.</summary>
         public bool Damping { get; }
 
@@ -40,8 +43,10 @@ namespace SphFluid.Simulation
         /// <summary>The passes run once per frame, in order (before and after the sub-steps).</summary>
         public IReadOnlyList<string> FramePasses { get; }
 
-        public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform)
+        public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform,
+            bool shifting = false)
         {
+            Shifting = shifting;
             PhaseCount = phaseCount;
             ObstacleCount = obstacleCount;
             Multiphase = phaseCount > 1;
@@ -62,6 +67,11 @@ namespace SphFluid.Simulation
             if (SurfaceTension) passes.Add(PassNames.Normals);
             passes.Add(PassNames.Forces);
             passes.Add(PassNames.FullStep);
+            if (Shifting)
+            {
+                passes.Add(PassNames.ParticleShift);
+                passes.Add(PassNames.ApplyShift);
+            }
             SubstepPasses = passes;
 
             var frame = new List<string>();
@@ -82,6 +92,7 @@ namespace SphFluid.Simulation
              .Append(ObstacleCount).Append(ObstacleCount == 1 ? " obstacle" : " obstacles");
             b.Append(" | variants: ").Append(Keywords.Count == 0 ? "(none)" : string.Join(" ", Keywords));
             b.Append(" | sub-step: ").Append(string.Join(" > ", SubstepPasses));
+            b.Append(" | shifting: ").Append(Shifting ? "on" : "off");
             b.Append(" | damping: ").Append(Damping ? "on" : "off");
             b.Append(" | container transform: ").Append(UploadContainerTransform ? "upload" : "unchanged");
             return b.ToString();

@@ -123,6 +123,7 @@ namespace SphFluid.Tests.EditMode
             Assert.That(mirrored.Gravity, Is.EqualTo(core.Gravity));
             Assert.That(mirrored.XsphEpsilon, Is.EqualTo(core.XsphEpsilon));
             Assert.That(mirrored.ArtificialViscosity, Is.EqualTo(core.ArtificialViscosity));
+            Assert.That(mirrored.ParticleShifting, Is.EqualTo(core.ParticleShifting));
             Assert.That(mirrored.VelocityDamping, Is.EqualTo(core.VelocityDamping));
             Assert.That(mirrored.CflNumber, Is.EqualTo(core.CflNumber));
             Assert.That(mirrored.MaxSubsteps, Is.EqualTo(core.MaxSubsteps));
