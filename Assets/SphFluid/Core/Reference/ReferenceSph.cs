@@ -326,7 +326,7 @@ namespace SphFluid.Reference
                     divergence -= Double3.Dot(rib, g);
                 }
                 var shift = gradient * -(coefficient * new Double3(particles[i].Velocity).Length() * dt);
-                if (divergence < 2.5 && gradient.Length() > 0) shift = Tangential(shift, gradient / gradient.Length());
+                if (divergence < 2.8 && gradient.Length() > 0) shift = Tangential(shift, gradient / gradient.Length());
                 if (otherPhases.Length() > 0) shift = Tangential(shift, otherPhases / otherPhases.Length());
                 double cap = 0.05 * _settings.ParticleSpacing;
                 double length = shift.Length();

@@ -34,7 +34,7 @@
 // against a violent splash). Velocities are not corrected for the shift: at |dr| << s the Taylor correction
 // (dr . grad) v is below the solver's noise.
 
-#define SHIFTING_SURFACE_DIVERGENCE 2.5
+#define SHIFTING_SURFACE_DIVERGENCE 2.8
 #define SHIFTING_MAX_FRACTION 0.05
 
 float _ShiftingCoefficient; // A h, m (A dimensionless, h = H / 2)
