@@ -80,7 +80,7 @@ namespace SphFluid.Runtime
         [SerializeField, Range(0f, 1f), Tooltip("Monaghan artificial viscosity alpha, in [0, 1]: damps the acoustic noise of the weakly compressible fluid; 0 turns it off.")]
         float artificialViscosity = CoreDefaults.ArtificialViscosity;
 
-        [SerializeField, Range(0f, 10f), Tooltip("Particle shifting coefficient A, in [0, 10]: each sub-step a particle moves by -A h |v| dt gradC towards a uniform distribution (Lind et al. 2012), only along free surfaces and phase interfaces; 0 turns the pass off.")]
+        [SerializeField, Range(0f, 10f), Tooltip("Particle shifting coefficient A, in [0, 10]: each sub-step a particle moves by -A h |v| dt gradC towards a uniform distribution (Lind et al. 2012), along (not across) free surfaces and phase interfaces; 0 turns the pass off (the default).")]
         float particleShifting = CoreDefaults.ParticleShifting;
 
         [Header("Time stepping")]

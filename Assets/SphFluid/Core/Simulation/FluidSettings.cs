@@ -54,7 +54,9 @@ namespace SphFluid.Simulation
 
         /// <summary>Particle shifting coefficient A, in [0, 10]; 0 turns the pass off. Each sub-step a particle moves by
         /// -A h |v| dt gradC down its concentration gradient (Lind et al. 2012; ParticleShifting.hlsl): it spreads
-        /// particles back towards a uniform distribution, along free surfaces and phase interfaces only.</summary>
+        /// particles back towards a uniform distribution, along (not across) free surfaces and phase interfaces.
+        /// Off by default: measured at A = 2, it did not settle a resting tank (65 mm/s between 1 and 2 s against 38 mm/s
+        /// without, and dp/dy 4.4 % off rho0 g against 2.3 %) and did not lower the shipped scenes' clamp hits.</summary>
         public float ParticleShifting { get; set; } = DefaultParticleShifting;
 
         /// <summary>Default <see cref="ParticleShifting"/>.</summary>
