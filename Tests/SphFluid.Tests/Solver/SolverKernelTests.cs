@@ -128,12 +128,14 @@ namespace SphFluid.Tests.Solver
         }
 
         /// <summary>Particle shifting (ParticleShifting.hlsl) against ReferenceSph.Shifts: the shift of every particle and
-        /// the state after a sub-step with it, two phases (the interface rule) in a container with a free surface.</summary>
-        [Test]
-        public void ShiftingMatchesReference()
+        /// the state after a sub-step with it, two phases (the interface rule) in a container with a free surface; at A = 0.5
+        /// every shift is below the cap, at A = 4 most are capped.</summary>
+        [TestCase(0.5f, TestName = "Shifting_MatchesReference_Uncapped")]
+        [TestCase(4f, TestName = "Shifting_MatchesReference_Capped")]
+        public void ShiftingMatchesReference(float coefficient)
         {
             var scene = RandomScene(true, false, false, false);
-            scene.Settings.ParticleShifting = 4f;
+            scene.Settings.ParticleShifting = coefficient;
             using (var sim = new FluidSimulation(GpuTestDevice.Shared, scene))
             {
                 var input = RandomParticles(scene, sim.ParticleCount, 4242);

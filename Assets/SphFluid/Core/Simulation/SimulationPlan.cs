@@ -92,7 +92,6 @@ namespace SphFluid.Simulation
              .Append(ObstacleCount).Append(ObstacleCount == 1 ? " obstacle" : " obstacles");
             b.Append(" | variants: ").Append(Keywords.Count == 0 ? "(none)" : string.Join(" ", Keywords));
             b.Append(" | sub-step: ").Append(string.Join(" > ", SubstepPasses));
-            b.Append(" | shifting: ").Append(Shifting ? "on" : "off");
             b.Append(" | damping: ").Append(Damping ? "on" : "off");
             b.Append(" | container transform: ").Append(UploadContainerTransform ? "upload" : "unchanged");
             return b.ToString();
