@@ -127,6 +127,51 @@ namespace SphFluid.Tests.Solver
             }
         }
 
+        /// <summary>Particle shifting (ParticleShifting.hlsl) against ReferenceSph.Shifts: the shift of every particle and
+        /// the state after a sub-step with it, two phases (the interface rule) in a container with a free surface; at A = 0.5
+        /// every shift is below the cap, at A = 4 most are capped.</summary>
+        [TestCase(0.5f, TestName = "Shifting_MatchesReference_Uncapped")]
+        [TestCase(4f, TestName = "Shifting_MatchesReference_Capped")]
+        public void ShiftingMatchesReference(float coefficient)
+        {
+            var scene = RandomScene(true, false, false, false);
+            scene.Settings.ParticleShifting = coefficient;
+            using (var sim = new FluidSimulation(GpuTestDevice.Shared, scene))
+            {
+                var input = RandomParticles(scene, sim.ParticleCount, 4242);
+                sim.SetParticles(input);
+                Assert.That(sim.Plan.Shifting, Is.True);
+                var referenceSph = new ReferenceSph(scene);
+                var start = GpuState.Read(sim).ByIdParticles(input);
+                var startState = referenceSph.Evaluate(start);
+                const float dt = 0.0005f;
+                var shifted = referenceSph.Substep(start, startState, dt, false, out var next);
+                var unshifted = ReferenceWithoutShifting(scene).Substep(start, startState, dt, false, out _);
+                var shifts = referenceSph.Shifts(unshifted, next, dt);
+
+                sim.StepFixed(1, dt);
+                var after = GpuState.Read(sim);
+                var gpuShifts = new Vector4[sim.ParticleCount];
+                sim.Shifts.GetData(gpuShifts);
+                var byId = after.IndexById();
+                int n = input.Length;
+                Assert.That(Max(n, i => shifts[i].Length()), Is.GreaterThan(1e-4 * scene.Settings.ParticleSpacing), "the case must shift");
+                CompareVectors("shift", n, i => shifts[i], i => gpuShifts[byId[i]]);
+                CompareVectors("position", n, i => new Double3(shifted[i].Position) - new Double3(start[i].Position),
+                    i => new Vector4(after.Particles[byId[i]].Position - start[i].Position, 0f));
+            }
+        }
+
+        static ReferenceSph ReferenceWithoutShifting(FluidSceneDescription scene)
+        {
+            var settings = scene.Settings.Clone();
+            settings.ParticleShifting = 0f;
+            return new ReferenceSph(new FluidSceneDescription
+            {
+                Settings = settings, SpawnBoxes = scene.SpawnBoxes, Container = scene.Container, Obstacles = scene.Obstacles,
+            });
+        }
+
         static double Max(int n, Func<int, double> f)
         {
             double m = 0;

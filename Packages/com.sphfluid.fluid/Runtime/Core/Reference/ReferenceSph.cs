@@ -295,9 +295,57 @@ namespace SphFluid.Reference
 
         // ------------------------------------------------------------------ integration
 
+        /// <summary>Particle shifting (ParticleShifting.hlsl) of <paramref name="particles"/> whose number densities
+        /// <paramref name="state"/> holds: dr = -A h |v| dt gradC, along (not across) free surfaces and phase interfaces,
+        /// capped at 5 % of the spacing.</summary>
+        public Double3[] Shifts(Particle[] particles, ReferenceState state, double dt)
+        {
+            int n = particles.Length;
+            var shifts = new Double3[n];
+            var walls = PlacedBoundary();
+            double coefficient = _settings.ParticleShifting * 0.5 * _h;
+            for (int i = 0; i < n; i++)
+            {
+                var xi = new Double3(particles[i].Position);
+                double volumeI = 1.0 / state.NumberDensity[i];
+                var gradient = Double3.Zero;
+                var otherPhases = Double3.Zero;
+                double divergence = 0;
+                for (int j = 0; j < n; j++)
+                {
+                    var rij = xi - new Double3(particles[j].Position);
+                    double r2 = rij.LengthSquared();
+                    if (r2 >= _h2 || j == i) continue;
+                    var g = PairGradient(rij, Math.Sqrt(r2), particles[i].Id, particles[j].Id) / state.NumberDensity[j];
+                    gradient += g;
+                    divergence -= Double3.Dot(rij, g);
+                    if (particles[j].Phase != particles[i].Phase) otherPhases += g;
+                }
+                foreach (var wall in walls)
+                {
+                    var rib = xi - new Double3(wall.Position);
+                    double r2 = rib.LengthSquared();
+                    if (r2 >= _h2) continue;
+                    var g = PairGradient(rib, Math.Sqrt(r2), 1, 0) * (wall.Weight * volumeI);
+                    gradient += g;
+                    divergence -= Double3.Dot(rib, g);
+                }
+                var shift = gradient * -(coefficient * new Double3(particles[i].Velocity).Length() * dt);
+                if (divergence < 2.8 && gradient.Length() > 0) shift = Tangential(shift, gradient / gradient.Length());
+                if (otherPhases.Length() > 0) shift = Tangential(shift, otherPhases / otherPhases.Length());
+                double cap = 0.05 * _settings.ParticleSpacing;
+                double length = shift.Length();
+                shifts[i] = length > cap ? shift * (cap / length) : shift;
+            }
+            return shifts;
+        }
+
+        static Double3 Tangential(Double3 v, Double3 n) => v - n * Double3.Dot(v, n);
+
         /// <summary>One Velocity Verlet sub-step as FluidSimulation runs it: kick-drift and clamp with the
-        /// accelerations of <paramref name="current"/>, forces at the new positions, kick plus XSPH, damping, clamp.
-        /// Returns the new particles and their evaluated state.</summary>
+        /// accelerations of <paramref name="current"/>, forces at the new positions, kick plus XSPH, damping, clamp,
+        /// then the particle shift and clamp when shifting is on.
+        /// Returns the new particles and their evaluated state (before the shift).</summary>
         public Particle[] Substep(Particle[] particles, ReferenceState current, double dt, bool xsph, out ReferenceState next)
         {
             int n = particles.Length;
@@ -321,6 +369,17 @@ namespace SphFluid.Reference
                 var xi = x[i];
                 Clamp(ref xi, ref vi);
                 moved[i] = new Particle(xi.ToVector3(), vi.ToVector3(), particles[i].Phase, particles[i].Id);
+            }
+            if (_settings.ParticleShifting > 0f)
+            {
+                var shifts = Shifts(moved, next, dt);
+                for (int i = 0; i < n; i++)
+                {
+                    var xi = new Double3(moved[i].Position) + shifts[i];
+                    var vi = new Double3(moved[i].Velocity);
+                    Clamp(ref xi, ref vi);
+                    moved[i] = new Particle(xi.ToVector3(), vi.ToVector3(), moved[i].Phase, moved[i].Id);
+                }
             }
             return moved;
         }

@@ -44,13 +44,14 @@ namespace SphFluid.Simulation
         readonly int _densityFactor, _nonPressureForces, _predictVelocity, _beginSolve, _densitySolveError, _divergenceSolveError,
             _solveFinal, _applyStiffness, _drift, _divergenceRate;
         readonly bool _divergenceFree;
+        readonly int _particleShift, _applyShift;
         readonly int[] _solverKernels;
         readonly int _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal;
         readonly int _reductionGroups;
         readonly ShaderIds _ids;
 
         IComputeBuffer _particles, _particlesOther;
-        IComputeBuffer _phaseBuffer, _densities, _normalsBuffer, _accelerations, _xsph, _obstacles;
+        IComputeBuffer _phaseBuffer, _densities, _normalsBuffer, _accelerations, _xsph, _obstacles, _shifts;
         IComputeBuffer _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits;
         IComputeBuffer _boundaryRest, _boundaryPlaced, _boundarySorted, _boundaryPressures;
         IComputeBuffer _factors, _solverStiffness, _warmStart, _solverPartials, _solverState, _solverArguments, _divergenceRates;
@@ -113,10 +114,13 @@ namespace SphFluid.Simulation
             _drift = _solver.FindKernel("Drift");
             _divergenceRate = _solver.FindKernel("DivergenceRate");
             _divergenceFree = _scene.Settings.PressureSolver == PressureSolver.Dfsph;
+            _particleShift = _solver.FindKernel("ParticleShift");
+            _applyShift = _solver.FindKernel("ApplyShift");
             _solverKernels = new[]
             {
                 _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep, _densityFactor, _nonPressureForces,
                 _predictVelocity, _beginSolve, _densitySolveError, _divergenceSolveError, _solveFinal, _applyStiffness, _drift, _divergenceRate,
+                _particleShift, _applyShift,
             };
             _motionPartial = _diagnostics.FindKernel("MotionPartial");
             _motionFinal = _diagnostics.FindKernel("MotionFinal");
@@ -167,6 +171,9 @@ namespace SphFluid.Simulation
         /// solves applied in total, the next sub-step's warm start (DivergenceFreeSolver.hlsl).</summary>
         public IComputeBuffer WarmStart => _warmStart;
 
+        /// <summary>Per particle: the particle shift (xyz) of the last sub-step when shifting is on, m (ParticleShifting.hlsl).</summary>
+        public IComputeBuffer Shifts => _shifts;
+
         /// <summary>The boundary particles (<see cref="BoundaryParticle"/>) in world space, sorted by grid cell.</summary>
         public IComputeBuffer BoundaryParticles => _boundarySorted;
 
@@ -216,7 +223,7 @@ namespace SphFluid.Simulation
         {
             PassNames.UploadContainer, PassNames.PlaceBoundary, PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals,
             PassNames.Forces, PassNames.FullStep, PassNames.NonPressureForces, PassNames.PredictVelocity, PassNames.DensitySolve, PassNames.Drift,
-            PassNames.DensityFactor, PassNames.DivergenceSolve, PassNames.MotionReduction, PassNames.Diagnostics,
+            PassNames.DensityFactor, PassNames.DivergenceSolve, PassNames.ParticleShift, PassNames.ApplyShift, PassNames.MotionReduction, PassNames.Diagnostics,
         };
 
         /// <summary>Advances the simulation by one frame of <paramref name="frameSeconds"/> real time, in as
@@ -322,6 +329,21 @@ namespace SphFluid.Simulation
             _device.BeginSample(PassNames.FullStep);
             _device.DispatchThreads(_solver, _fullStep, ParticleCount);
             _device.EndSample(PassNames.FullStep);
+
+            if (Plan.Shifting)
+                Shift();
+        }
+
+        /// <summary>Particle shifting (ParticleShifting.hlsl): the shifts from the sorted state the forces saw, then
+        /// applied in a second pass so that no particle moves while its neighbours still read it.</summary>
+        void Shift()
+        {
+            _device.BeginSample(PassNames.ParticleShift);
+            _device.DispatchThreads(_solver, _particleShift, ParticleCount);
+            _device.EndSample(PassNames.ParticleShift);
+            _device.BeginSample(PassNames.ApplyShift);
+            _device.DispatchThreads(_solver, _applyShift, ParticleCount);
+            _device.EndSample(PassNames.ApplyShift);
         }
 
         /// <summary>One DFSPH sub-step (Bender &amp; Koschier 2017, Algorithm 1): non-pressure forces, predicted velocity,
@@ -729,6 +751,7 @@ namespace SphFluid.Simulation
             _normalsBuffer = _device.CreateBuffer("FluidSimulation.Normals", n, 16);
             _accelerations = _device.CreateBuffer("FluidSimulation.Accelerations", n, 16);
             _xsph = _device.CreateBuffer("FluidSimulation.XsphCorrections", n, 16);
+            _shifts = _device.CreateBuffer("FluidSimulation.Shifts", n, 16);
             _obstacles = _device.CreateBuffer("FluidSimulation.Obstacles", FluidSceneDescription.MaxObstacles, SphereObstacleData.Stride);
             _motionPartials = _device.CreateBuffer("FluidSimulation.MotionPartials", _reductionGroups, 16);
             _motionTotals = _device.CreateBuffer("FluidSimulation.MotionTotals", 1, 16);
@@ -755,6 +778,7 @@ namespace SphFluid.Simulation
             var zero = new Vector4[n];
             _accelerations.SetData(zero);
             _xsph.SetData(zero);
+            _shifts.SetData(zero);
             _normalsBuffer.SetData(zero);
             _densities.SetData(zero);
 
@@ -769,6 +793,7 @@ namespace SphFluid.Simulation
                 _device.SetBuffer(_solver, k, _ids.Normals, _normalsBuffer);
                 _device.SetBuffer(_solver, k, _ids.Accelerations, _accelerations);
                 _device.SetBuffer(_solver, k, _ids.XsphCorrections, _xsph);
+                _device.SetBuffer(_solver, k, _ids.Shifts, _shifts);
                 _device.SetBuffer(_solver, k, _ids.Obstacles, _obstacles);
                 _device.SetBuffer(_solver, k, _ids.DivergenceFreeFactors, _factors);
                 _device.SetBuffer(_solver, k, _ids.SolverStiffness, _solverStiffness);
@@ -890,6 +915,7 @@ namespace SphFluid.Simulation
             _device.SetFloat(_solver, _ids.Gamma, s.Gamma);
             _device.SetVector(_solver, _ids.Gravity, new Vector4(s.Gravity, 0f));
             _device.SetFloat(_solver, _ids.XsphEpsilon, s.XsphEpsilon);
+            _device.SetFloat(_solver, _ids.ShiftingCoefficient, (float)(s.ParticleShifting * 0.5 * h));
             _device.SetFloat(_solver, _ids.VelocityDamping, s.VelocityDamping);
             _device.SetFloat(_solver, _ids.TimeStep, 0f);
         }
@@ -960,12 +986,12 @@ namespace SphFluid.Simulation
             _motionReadback = null;
             _diagnosticsReadback = null;
             foreach (var buffer in new[] { _particles, _particlesOther, _phaseBuffer, _densities, _normalsBuffer, _accelerations,
-                         _xsph, _obstacles, _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits,
+                         _xsph, _shifts, _obstacles, _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits,
                          _factors, _solverStiffness, _warmStart, _solverPartials, _solverState, _solverArguments, _divergenceRates })
                 buffer?.Dispose();
             _factors = _solverStiffness = _warmStart = _solverPartials = _solverState = _solverArguments = _divergenceRates = null;
             _particles = _particlesOther = _phaseBuffer = _densities = _normalsBuffer = _accelerations = null;
-            _xsph = _obstacles = _motionPartials = _motionTotals = _diagnosticsPartials = _diagnosticsTotals = _clampHits = null;
+            _xsph = _shifts = _obstacles = _motionPartials = _motionTotals = _diagnosticsPartials = _diagnosticsTotals = _clampHits = null;
             ReleaseBoundary();
             _sorter?.Dispose();
             _sorter = null;
@@ -979,7 +1005,8 @@ namespace SphFluid.Simulation
         /// <summary>Property ids, looked up once.</summary>
         sealed class ShaderIds
         {
-            public readonly int Particles, Phases, Densities, Normals, Accelerations, XsphCorrections, Obstacles, CellStart, CellCount;
+            public readonly int Particles, Phases, Densities, Normals, Accelerations, XsphCorrections, Shifts, Obstacles, CellStart, CellCount;
+            public readonly int ShiftingCoefficient;
             public readonly int MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
             public readonly int ParticleCount, PhaseCount, ReductionGroupCount, ObstacleCount, TimeStep;
             public readonly int SmoothingRadius, SmoothingRadius2, KernelCoefficient, GradientCoefficient, CohesionCoefficient;
@@ -997,6 +1024,8 @@ namespace SphFluid.Simulation
                 Normals = d.PropertyId("_Normals");
                 Accelerations = d.PropertyId("_Accelerations");
                 XsphCorrections = d.PropertyId("_XsphCorrections");
+                Shifts = d.PropertyId("_Shifts");
+                ShiftingCoefficient = d.PropertyId("_ShiftingCoefficient");
                 Obstacles = d.PropertyId("_Obstacles");
                 CellStart = d.PropertyId(ParticleSorter.CellStartProperty);
                 CellCount = d.PropertyId(ParticleSorter.CellCountProperty);

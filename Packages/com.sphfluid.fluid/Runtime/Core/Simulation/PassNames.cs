@@ -18,6 +18,8 @@ namespace SphFluid.Simulation
         public const string Drift = "Drift";
         public const string DensityFactor = "DensityFactor";
         public const string DivergenceSolve = "DivergenceSolve";
+        public const string ParticleShift = "ParticleShift";
+        public const string ApplyShift = "ApplyShift";
         public const string MotionReduction = "MotionReduction";
         public const string Diagnostics = "Diagnostics";
     }

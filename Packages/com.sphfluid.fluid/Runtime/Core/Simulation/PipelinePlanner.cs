@@ -13,11 +13,13 @@ namespace SphFluid.Simulation
                 if (phase.SurfaceTension > 0f) tension = true;
             int obstacles = scene.Obstacles == null ? 0 : scene.Obstacles.Count;
             var settings = scene.Settings;
+            bool shifting = settings.ParticleShifting > 0f;
             if (forced == null)
                 return new SimulationPlan(phases.Count, obstacles, tension, settings.XsphEpsilon > 0f,
-                    settings.VelocityDamping > 0f, containerMoved, settings.PressureSolver);
+                    settings.VelocityDamping > 0f, containerMoved, settings.PressureSolver, shifting: shifting);
             return new SimulationPlan(phases.Count, obstacles, tension || forced.SurfaceTension, settings.XsphEpsilon > 0f || forced.Xsph,
-                settings.VelocityDamping > 0f, containerMoved || forced.ContainerMoving, settings.PressureSolver, forced.Multiphase, forced.Obstacles);
+                settings.VelocityDamping > 0f, containerMoved || forced.ContainerMoving, settings.PressureSolver, forced.Multiphase, forced.Obstacles,
+                shifting);
         }
     }
 }

@@ -28,6 +28,9 @@ namespace SphFluid.Simulation
         /// <summary>The pressure solver whose passes run: WCSPH's equation of state or DFSPH's two iterative solves.</summary>
         public PressureSolver PressureSolver { get; }
 
+        /// <summary>ParticleShifting &gt; 0: the shift passes run after every sub-step.</summary>
+        public bool Shifting { get; }
+
         /// <summary>VelocityDamping &gt; 0.</summary>
         public bool Damping { get; }
 
@@ -45,10 +48,12 @@ namespace SphFluid.Simulation
 
         /// <param name="forceMultiphase">Run the MULTIPHASE variant for one phase (<see cref="PlanOverrides"/>).</param>
         /// <param name="forceObstacles">Run the OBSTACLES variant without spheres (<see cref="PlanOverrides"/>).</param>
+        /// <param name="shifting">Run the particle-shifting passes after each WCSPH sub-step (ParticleShifting &gt; 0).</param>
         public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform,
-            PressureSolver pressureSolver = PressureSolver.Wcsph, bool forceMultiphase = false, bool forceObstacles = false)
+            PressureSolver pressureSolver = PressureSolver.Wcsph, bool forceMultiphase = false, bool forceObstacles = false, bool shifting = false)
         {
             PressureSolver = pressureSolver;
+            Shifting = shifting && pressureSolver == PressureSolver.Wcsph;
             PhaseCount = phaseCount;
             ObstacleCount = obstacleCount;
             Multiphase = phaseCount > 1 || forceMultiphase;
@@ -87,6 +92,11 @@ namespace SphFluid.Simulation
                 if (SurfaceTension) passes.Add(PassNames.Normals);
                 passes.Add(PassNames.Forces);
                 passes.Add(PassNames.FullStep);
+                if (Shifting)
+                {
+                    passes.Add(PassNames.ParticleShift);
+                    passes.Add(PassNames.ApplyShift);
+                }
             }
             SubstepPasses = passes;
 

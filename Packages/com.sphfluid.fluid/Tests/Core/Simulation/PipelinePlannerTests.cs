@@ -59,6 +59,23 @@ namespace SphFluid.Tests.Core.Simulation
         }
 
         [Test]
+        public void ZeroShifting_NoShiftPasses()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            var plan = PipelinePlanner.Plan(scene, false);
+            Assert.That(plan.Shifting, Is.False);
+            Assert.That(plan.SubstepPasses, Has.No.Member(PassNames.ParticleShift).And.No.Member(PassNames.ApplyShift));
+            scene.Settings.ParticleShifting = 2f;
+            plan = PipelinePlanner.Plan(scene, false);
+            Assert.That(plan.Shifting, Is.True);
+            Assert.That(plan.SubstepPasses, Is.EqualTo(new[]
+            {
+                PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Forces,
+                PassNames.FullStep, PassNames.ParticleShift, PassNames.ApplyShift,
+            }));
+        }
+
+        [Test]
         public void UnmovedContainer_NoTransformUpload()
         {
             var scene = SimulationTestScenes.OilOnWater();

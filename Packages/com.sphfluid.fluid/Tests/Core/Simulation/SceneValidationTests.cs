@@ -38,6 +38,7 @@ namespace SphFluid.Tests.Core.Simulation
         [TestCase("Gamma", "Gamma must be in [1, 10] (was -1)")]
         [TestCase("XsphEpsilon", "XsphEpsilon must be in [0, 1] (was -1)")]
         [TestCase("CflNumber", "CflNumber must be in (0, 1] (was -1)")]
+        [TestCase("ParticleShifting", "ParticleShifting must be in [0, 10] (was -1)")]
         [TestCase("MaxTimeStep", "MaxTimeStep must be in (0, 0.1] s (was -1)")]
         public void SettingsOutOfRange_NameTheField(string field, string message)
         {
