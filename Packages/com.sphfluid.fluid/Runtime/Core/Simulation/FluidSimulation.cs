@@ -381,7 +381,7 @@ namespace SphFluid.Simulation
             if (mostIterations <= 0 && cutOff <= 0) return rounds;
             int next = 2 * mostIterations + 4;
             if (cutOff > 0) next = Math.Max(next, 2 * rounds);
-            return Math.Max(3, Math.Min(maxIterations, next));
+            return Math.Min(maxIterations, Math.Max(3, next));
         }
 
         /// <summary>Sizes the next solves from the iterations the motion reduction read back (<see cref="SolveBudget"/>).</summary>
