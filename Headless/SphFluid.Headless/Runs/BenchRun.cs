@@ -22,8 +22,13 @@ namespace SphFluid.Headless.Runs;
 public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter stderr)
 {
     static readonly CultureInfo C = CultureInfo.InvariantCulture;
-    static readonly string[] Passes = { PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals, PassNames.Forces, PassNames.FullStep,
-        PassNames.ParticleShift, PassNames.ApplyShift, PassNames.UploadContainer, PassNames.PlaceBoundary };
+    static readonly string[] Passes =
+    {
+        PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals, PassNames.Forces, PassNames.FullStep,
+        PassNames.NonPressureForces, PassNames.PredictVelocity, PassNames.DensitySolve, PassNames.Drift, PassNames.DensityFactor, PassNames.DivergenceSolve,
+        PassNames.ParticleShift, PassNames.ApplyShift,
+        PassNames.UploadContainer, PassNames.PlaceBoundary,
+    };
 
     /// <summary>A device to use instead of opening one (tests share theirs); not disposed here.</summary>
     public IComputeDevice Device { get; init; }

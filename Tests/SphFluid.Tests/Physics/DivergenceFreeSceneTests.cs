@@ -26,8 +26,9 @@ namespace SphFluid.Tests.Physics
             return scene;
         }
 
-        [Test, Ignore("Not measured yet: on the shared 2-core machine the run did not finish within 7 minutes (the test host ended without a " +
-                      "result); up to 32 sub-steps x 600 recorded solve dispatches per frame. Needs a per-frame iteration budget or fewer recorded iterations.")]
+        [Test, Ignore("Not met: measured with the solve-round budget (about 40 s wall for the first 0.4 s on 2 cores, N = 1440): vmax " +
+                      "1.9, 2.6, 5.1, 3.4 m/s at t = 0.1 ... 0.4 s, then at t = 0.43 s the velocities diverge (dt collapses to 1e-21 s, " +
+                      "tens of thousands of clamp hits). The same happens with all 100 rounds recorded, so the blow-up is in the solver, not the budget.")]
         public void DamBreak_StaysFiniteAndLosesNothingForTwoSeconds()
         {
             var scene = DivergenceFree("DamBreak");
@@ -49,7 +50,7 @@ namespace SphFluid.Tests.Physics
             Assert.That(report.TotalMass, Is.GreaterThan(0.0));
         }
 
-        [Test, Ignore("Not measured yet: ran together with the dam break, which did not finish within 7 minutes on the shared 2-core machine.")]
+        [Test, Ignore("Not measured yet: the DFSPH dam break diverges at t = 0.43 s (see above); measure once that is fixed.")]
         public void DefaultOilAndWater_LayersFullyWithin6Seconds_AndNoOilStaysOnTheFloor()
         {
             var scene = DivergenceFree("OilAndWater");

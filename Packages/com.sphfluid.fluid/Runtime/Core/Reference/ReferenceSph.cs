@@ -450,6 +450,31 @@ namespace SphFluid.Reference
             return rates;
         }
 
+        /// <summary>DFSPH's wall contact (DivergenceFreeSolver.hlsl): an under-dense particle loses the velocity along
+        /// G_w = sum_b omega_b gradW_ib that would compress its wall side.</summary>
+        public void WallContact(Particle[] particles, double[] numberDensity, Double3[] v)
+        {
+            var walls = PlacedBoundary();
+            for (int i = 0; i < particles.Length; i++)
+            {
+                if (numberDensity[i] >= RestNumberDensity(particles[i])) continue;
+                var xi = new Double3(particles[i].Position);
+                var g = new Double3(0, 0, 0);
+                double wallRate = 0;
+                foreach (var wall in walls)
+                {
+                    var rib = xi - new Double3(wall.Position);
+                    double r = rib.Length();
+                    if (r >= _h) continue;
+                    var gradient = PairGradient(rib, r, 1, 0) * wall.Weight;
+                    g += gradient;
+                    wallRate += Double3.Dot(new Double3(wall.Velocity), gradient);
+                }
+                double rate = Double3.Dot(v[i], g) - wallRate, g2 = Double3.Dot(g, g);
+                if (rate > 0 && g2 > 1e-20) v[i] -= g * (rate / g2);
+            }
+        }
+
         /// <summary>Applies the pressure terms q to the velocities: v_i -= (dt / m_i) (sum_j (q_i + q_j) gradW_ij + sum_b omega_b q_i gradW_ib).</summary>
         public void ApplyStiffness(Particle[] particles, Double3[] v, double[] q, double dt)
         {
@@ -485,7 +510,7 @@ namespace SphFluid.Reference
         /// <summary>
         /// One DFSPH sub-step as FluidSimulation runs it from a state without warm start, with exactly
         /// <paramref name="iterations"/> corrections per solve (MaxSolverIterations = 1 stops each solve after one): non-pressure
-        /// forces, predicted velocity (XSPH, damping), constant-density solve, drift and clamp, factors at the new positions,
+        /// forces, predicted velocity (XSPH, damping), constant-density solve, wall contact, drift and clamp, factors at the new positions,
         /// divergence-free solve. Returns the new particles and the q each solve summed per particle.
         /// </summary>
         public Particle[] DivergenceFreeSubstep(Particle[] particles, double dt, bool xsph, int iterations,
@@ -516,6 +541,7 @@ namespace SphFluid.Reference
                 ApplyStiffness(particles, v, q, dt);
             }
             var moved = new Particle[n];
+            WallContact(particles, state.NumberDensity, v);
             for (int i = 0; i < n; i++)
             {
                 var x = new Double3(particles[i].Position) + v[i] * dt;

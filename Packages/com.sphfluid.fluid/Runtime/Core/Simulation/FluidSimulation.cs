@@ -62,7 +62,8 @@ namespace SphFluid.Simulation
         int _boundaryCount;
         IReadbackRequest _motionReadback, _diagnosticsReadback;
         double _diagnosticsRequestTime;
-        readonly Vector4[] _motionRow = new Vector4[1];
+        readonly Vector4[] _motionRow = new Vector4[2]; // [0] vmax, amax; [1] the DFSPH solves' iterations (SolveBudget)
+        readonly int[] _solveRounds = new int[2];       // rounds recorded per solve, by solve slot (SolveBudget)
         // Kept for the simulation's lifetime so that a steady frame makes no garbage (Unity's GC stalls show as hitches).
         readonly IComputeProgram[] _programs;
         readonly int[] _diagnosticsKernels;
@@ -271,6 +272,8 @@ namespace SphFluid.Simulation
             if (substeps < 0) throw new ArgumentOutOfRangeException(nameof(substeps), substeps, "FluidSimulation: substeps must be >= 0");
             if (!(timeStep > 0f) || float.IsInfinity(timeStep))
                 throw new ArgumentOutOfRangeException(nameof(timeStep), timeStep, "FluidSimulation: timeStep must be a finite number > 0 s");
+            if (_divergenceFree && ReproducibleStepPlanning)
+                ReadMotionIntoTimeStep(); // the solves' iterations for their budget (SolveRounds), as Step reads them
             BeginFrame();
             for (int s = 0; s < substeps; s++)
                 Substep(timeStep);
@@ -382,20 +385,52 @@ namespace SphFluid.Simulation
 
         const int DensitySolveSlot = 0, DivergenceSolveSlot = 1;
 
+        /// <summary>Rounds (error pass, SolveFinal, correction) recorded for each DFSPH solve of the next sub-steps:
+        /// [0] constant density, [1] divergence-free. At most MaxSolverIterations; see <see cref="SolveBudget"/>.</summary>
+        public IReadOnlyList<int> SolveRounds => _solveRounds;
+
         /// <summary>
-        /// Records one DFSPH solve without reading anything back: the warm start's correction, then MaxSolverIterations
-        /// rounds of error pass, SolveFinal and correction. The error pass and the correction are indirect dispatches whose
-        /// group count SolveFinal sets to zero once the solve has converged (FluidSolver.compute), so the rounds recorded
-        /// beyond convergence cost the GPU an empty dispatch each and the host nothing but their recording.
+        /// The rounds a solve needs to converge after <paramref name="mostIterations"/> corrections (the most any solve of
+        /// its kind made since the last motion read-back) are that many plus one, the round whose SolveFinal sees the
+        /// error within tolerance. Twice that plus a margin is recorded, so that a flow that turns harder from one frame
+        /// to the next still converges within the rounds of the frame planned before it was known; a solve that ran out
+        /// of rounds anyway (<paramref name="cutOff"/> &gt; 0) at least doubles the budget. Never more than
+        /// <paramref name="maxIterations"/> (the setting's hard limit), never fewer than the three rounds the first
+        /// possible convergence takes; no solve since (0 and 0) keeps <paramref name="rounds"/>.
+        /// </summary>
+        public static int SolveBudget(int rounds, int mostIterations, int cutOff, int maxIterations)
+        {
+            if (mostIterations <= 0 && cutOff <= 0) return rounds;
+            int next = 2 * mostIterations + 4;
+            if (cutOff > 0) next = Math.Max(next, 2 * rounds);
+            return Math.Min(maxIterations, Math.Max(3, next));
+        }
+
+        /// <summary>Sizes the next solves from the iterations the motion reduction read back (<see cref="SolveBudget"/>).</summary>
+        void ReportSolveIterations(Vector4 solves)
+        {
+            if (!_divergenceFree) return;
+            int max = _scene.Settings.MaxSolverIterations;
+            _solveRounds[DensitySolveSlot] = SolveBudget(_solveRounds[DensitySolveSlot], (int)Math.Round(solves.X), (int)Math.Round(solves.Y), max);
+            _solveRounds[DivergenceSolveSlot] = SolveBudget(_solveRounds[DivergenceSolveSlot], (int)Math.Round(solves.Z), (int)Math.Round(solves.W), max);
+        }
+
+        /// <summary>
+        /// Records one DFSPH solve without reading anything back: the warm start's correction, then
+        /// <see cref="SolveRounds"/> rounds of error pass, SolveFinal and correction. The error pass and the correction are
+        /// indirect dispatches whose group count SolveFinal sets to zero once the solve has converged (FluidSolver.compute),
+        /// so the rounds recorded beyond convergence cost the GPU an empty dispatch each; the budget keeps their number
+        /// (and their recording) near what the solves have been using.
         /// </summary>
         void Solve(int slot, int errorKernel, float tolerance)
         {
+            int rounds = _solveRounds[slot];
             _device.SetInt(_solver, _ids.SolveSlot, slot);
             _device.SetFloat(_solver, _ids.SolveTolerance, tolerance);
+            _device.SetInt(_solver, _ids.SolveRounds, rounds);
             _device.Dispatch(_solver, _beginSolve, 1, 1, 1);
             _device.DispatchThreads(_solver, _applyStiffness, ParticleCount);
-            int iterations = _scene.Settings.MaxSolverIterations;
-            for (int l = 0; l < iterations; l++)
+            for (int l = 0; l < rounds; l++)
             {
                 _device.DispatchIndirect(_solver, errorKernel, _solverArguments, 0);
                 _device.Dispatch(_solver, _solveFinal, 1, 1, 1);
@@ -599,6 +634,7 @@ namespace SphFluid.Simulation
             _clampHits.SetData(new uint[1]);
             _warmStart.SetData(new Vector2[ParticleCount]);
             _solverState.SetData(new uint[16]);
+            _solveRounds[DensitySolveSlot] = _solveRounds[DivergenceSolveSlot] = _scene.Settings.MaxSolverIterations;
             ComputeForces();
             // The first frame plans with the acceleration the first force pass computed, not gravity alone.
             ReadMotion(out float firstSpeed, out float firstAcceleration);
@@ -725,6 +761,7 @@ namespace SphFluid.Simulation
             if (request.HasError) return;
             request.GetData(_motionRow);
             _timeStep.ReportMotion(_motionRow[0].X, _motionRow[0].Y);
+            ReportSolveIterations(_motionRow[1]);
         }
 
         /// <summary>Reads max |v| and max |a| now (blocking) and feeds the time-step controller.</summary>
@@ -734,6 +771,7 @@ namespace SphFluid.Simulation
             _device.Dispatch(_diagnostics, _motionPartial, _reductionGroups, 1, 1);
             _device.Dispatch(_diagnostics, _motionFinal, 1, 1, 1);
             _motionTotals.GetData(_motionRow);
+            ReportSolveIterations(_motionRow[1]);
             maxSpeed = _motionRow[0].X;
             maxAcceleration = _motionRow[0].Y;
         }
@@ -754,7 +792,7 @@ namespace SphFluid.Simulation
             _shifts = _device.CreateBuffer("FluidSimulation.Shifts", n, 16);
             _obstacles = _device.CreateBuffer("FluidSimulation.Obstacles", FluidSceneDescription.MaxObstacles, SphereObstacleData.Stride);
             _motionPartials = _device.CreateBuffer("FluidSimulation.MotionPartials", _reductionGroups, 16);
-            _motionTotals = _device.CreateBuffer("FluidSimulation.MotionTotals", 1, 16);
+            _motionTotals = _device.CreateBuffer("FluidSimulation.MotionTotals", 2, 16);
             _diagnosticsPartials = _device.CreateBuffer("FluidSimulation.DiagnosticsPartials", _reductionGroups * (2 + _phases.Count), 16);
             _diagnosticsTotals = _device.CreateBuffer("FluidSimulation.DiagnosticsTotals", 3 + _phases.Count, 16);
             int particleGroups = ComputeDispatch.GroupsFor(n, ParticleThreads);
@@ -1014,7 +1052,7 @@ namespace SphFluid.Simulation
             public readonly int WorldToContainer, ContainerToWorld, ContainerCenter, ContainerClampExtent, ContainerHalfSize, ContainerVelocity, ContainerAngularVelocity;
             public readonly int BoundaryRest, BoundaryPlaced, BoundaryParticles, BoundaryPressures, BoundaryCellStart, BoundaryCellCount, BoundaryCount, ClampHits;
             public readonly int DivergenceFreeFactors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
-            public readonly int SolveSlot, SolveTolerance;
+            public readonly int SolveSlot, SolveTolerance, SolveRounds;
 
             public ShaderIds(IComputeDevice d)
             {
@@ -1062,6 +1100,7 @@ namespace SphFluid.Simulation
                 DivergenceRates = d.PropertyId("_DivergenceRates");
                 SolveSlot = d.PropertyId("_SolveSlot");
                 SolveTolerance = d.PropertyId("_SolveTolerance");
+                SolveRounds = d.PropertyId("_SolveRounds");
                 CohesionCoefficient = d.PropertyId("_CohesionCoefficient");
                 Stiffness = d.PropertyId("_Stiffness");
                 Gamma = d.PropertyId("_Gamma");
