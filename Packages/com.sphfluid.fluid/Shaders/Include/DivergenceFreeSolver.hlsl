@@ -26,6 +26,12 @@
 
 #define WARM_START_FRACTION 0.5
 
+// A particle with fewer neighbours (fluid and wall particles within H) than this is left out of the divergence-free
+// solve, as SPlisHSPlasH does for "particle deficiency": at a support of 2 spacings a full neighbourhood holds about
+// 33, and a spray particle's few pairs give a Jacobi step with no neighbours to share it, which overshoots (a dam
+// break's splash at the far wall diverged within 0.1 s without this).
+#define DIVERGENCE_MIN_NEIGHBOURS 20u
+
 // Wall contact. The solves correct compression only, so a particle that is under-dense (at a free surface, or left
 // behind by neighbours moving away) feels nothing from a wall it moves into: its own D delta_i / Dt can be negative
 // while its wall part, sum_b omega_b (v_i - v_b) . gradW_ib, is positive. For such a particle the divergence-free

@@ -420,12 +420,19 @@ namespace SphFluid.Reference
             return factors;
         }
 
+        /// <summary>Fewer neighbours than this leave a particle out of the divergence-free solve (DivergenceFreeSolver.hlsl).</summary>
+        public const int DivergenceMinNeighbours = 20;
+
         /// <summary>D delta_i / Dt of every particle for the velocities <paramref name="v"/> (walls at their own).</summary>
-        public double[] NumberDensityRates(Particle[] particles, Double3[] v)
+        public double[] NumberDensityRates(Particle[] particles, Double3[] v) => NumberDensityRates(particles, v, out _);
+
+        /// <summary>D delta_i / Dt, and each particle's fluid and wall neighbours within H.</summary>
+        public double[] NumberDensityRates(Particle[] particles, Double3[] v, out int[] neighbours)
         {
             int n = particles.Length;
             var walls = PlacedBoundary();
             var rates = new double[n];
+            neighbours = new int[n];
             for (int i = 0; i < n; i++)
             {
                 var xi = new Double3(particles[i].Position);
@@ -437,6 +444,7 @@ namespace SphFluid.Reference
                     double r = rij.Length();
                     if (r >= _h) continue;
                     rate += Double3.Dot(v[i] - v[j], PairGradient(rij, r, particles[i].Id, particles[j].Id));
+                    neighbours[i]++;
                 }
                 foreach (var wall in walls)
                 {
@@ -444,6 +452,7 @@ namespace SphFluid.Reference
                     double r = rib.Length();
                     if (r >= _h) continue;
                     rate += wall.Weight * Double3.Dot(v[i] - new Double3(wall.Velocity), PairGradient(rib, r, 1, 0));
+                    neighbours[i]++;
                 }
                 rates[i] = rate;
             }
@@ -554,10 +563,11 @@ namespace SphFluid.Reference
             divergenceStiffness = new double[n];
             for (int l = 0; l < iterations; l++)
             {
-                var rates = NumberDensityRates(moved, v);
+                var rates = NumberDensityRates(moved, v, out var neighbours);
                 for (int i = 0; i < n; i++)
                 {
-                    q[i] = Math.Max(rates[i], 0.0) * factors[i] / dt;
+                    double rate = neighbours[i] >= DivergenceMinNeighbours ? rates[i] : 0.0;
+                    q[i] = Math.Max(rate, 0.0) * factors[i] / dt;
                     divergenceStiffness[i] += q[i];
                 }
                 ApplyStiffness(moved, v, q, dt);
