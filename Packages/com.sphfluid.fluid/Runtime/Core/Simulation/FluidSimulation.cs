@@ -841,7 +841,7 @@ namespace SphFluid.Simulation
                 _device.SetBuffer(_solver, k, _ids.SolverArguments, _solverArguments);
                 _device.SetBuffer(_solver, k, _ids.DivergenceRates, _divergenceRates);
             }
-            foreach (int k in new[] { _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal })
+            foreach (int k in _diagnosticsKernels)
             {
                 _device.SetBuffer(_diagnostics, k, _ids.Phases, _phaseBuffer);
                 _device.SetBuffer(_diagnostics, k, _ids.Densities, _densities);
@@ -933,7 +933,7 @@ namespace SphFluid.Simulation
         {
             var s = _scene.Settings;
             double h = s.SmoothingRadius;
-            foreach (var program in new[] { _solver, _diagnostics })
+            foreach (var program in _programs)
             {
                 _device.SetInt(program, _ids.ParticleCount, ParticleCount);
                 _device.SetFloat(program, _ids.ParticleSpacing, s.ParticleSpacing);
