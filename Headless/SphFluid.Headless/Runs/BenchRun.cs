@@ -52,14 +52,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         var targets = options.Particles.Count > 0 ? options.Particles.Select(n => (int?)n).ToList() : new List<int?> { null };
         var descriptions = targets.Select(target => Scaled(scene, target)).ToList();
         var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name + "-bench"), "--out", "bench");
-        IComputeDevice device = Device;
-        IDisposable owned = null;
-        if (device == null)
-        {
-            var opened = DeviceFactory.Open(scene.ProjectRoot, options.DeviceName, "bench");
-            device = opened;
-            owned = opened;
-        }
+        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "bench", out IDisposable owned);
         try
         {
             stdout.WriteLine($"bench: {scene.Path} on {device.DeviceName}; {options.Warmup} warm-up + {options.Steps} timed sub-steps per row, one submit each");

@@ -1,4 +1,6 @@
+using System;
 using System.IO;
+using SphFluid.Compute;
 using SphFluid.Headless.Cli;
 using SphFluid.Vulkan;
 
@@ -9,6 +11,17 @@ public static class DeviceFactory
 {
     /// <exception cref="VulkanUnavailableException">No Vulkan driver.</exception>
     /// <exception cref="UsageException">No adapter's name contains <paramref name="deviceName"/> (the --device argument).</exception>
+    /// <summary>The device a run was given (tests share theirs; the run must not dispose it), else a new one that the
+    /// caller disposes through <paramref name="owned"/>.</summary>
+    public static IComputeDevice GivenOrOpen(IComputeDevice given, string projectRoot, string deviceName, string command, out IDisposable owned)
+    {
+        owned = null;
+        if (given != null) return given;
+        var opened = Open(projectRoot, deviceName, command);
+        owned = opened;
+        return opened;
+    }
+
     public static VulkanComputeDevice Open(string projectRoot, string deviceName, string command)
     {
         var options = new VulkanComputeOptions

@@ -42,14 +42,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
 
         var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name), "--out", "simulate");
 
-        IComputeDevice device = Device;
-        IDisposable owned = null;
-        if (device == null)
-        {
-            var opened = DeviceFactory.Open(scene.ProjectRoot, options.DeviceName, "simulate");
-            device = opened;
-            owned = opened;
-        }
+        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "simulate", out IDisposable owned);
         try
         {
             using var simulation = new FluidSimulation(device, description);
