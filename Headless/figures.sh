@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Makes every picture the README shows: simulates each shipped scene headlessly (lavapipe unless a
 # driver is chosen) and copies one chosen frame of each, plus the oil-and-water layering figure and
-# run summaries, into Headless/figures/. About 6 minutes on 2 CPU cores.
+# run summaries and the dam-break accuracy-for-time study, into Headless/figures/. About 10 minutes on 2 CPU cores.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 scenes="$root/Assets/FluidDemo/Scenes"
@@ -26,3 +26,12 @@ run DamBreak 0005 --seconds 1.5 --frames-every 0.1
 run Splash 0003 --seconds 1.2 --frames-every 0.1
 run RotatingContainer 0012 --seconds 3
 run SphereWake 0010 --seconds 4
+
+# The accuracy-for-time study of the dam break (README "What accuracy costs in time"): both solvers, two
+# resolutions, two WCSPH stiffnesses, three DFSPH tolerances, 0.5 s each.
+dotnet "$root/Headless/SphFluid.Headless/bin/Release/net10.0/sphfluid.dll" study "$scenes/DamBreak.unity" \
+    --seconds 0.5 --particles-scales 0.5 1 --cfl 0.3 --out "$out/DamBreak-study" >"$out/DamBreak-study.log" 2>&1 \
+    || { echo "figures: study failed, see $out/DamBreak-study.log" >&2; exit 1; }
+cp "$out/DamBreak-study/study.md" "$figures/DamBreak-study.md"
+cp "$out/DamBreak-study/study-pareto.png" "$figures/DamBreak-study-pareto.png"
+echo "figures: study -> Headless/figures/DamBreak-study.md, DamBreak-study-pareto.png"

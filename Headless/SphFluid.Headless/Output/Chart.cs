@@ -26,6 +26,9 @@ public sealed class Chart
     /// <summary>The legend's corner, chosen by each chart where its data leaves room.</summary>
     public Alignment LegendCorner { get; set; } = Alignment.UpperRight;
 
+    /// <summary>Puts the legend below the axes instead: for scattered data, where no corner is sure to be empty.</summary>
+    public bool LegendBelow { get; set; }
+
     public Chart(string title, string xLabel, string yLabel)
     {
         LoadFont();
@@ -39,7 +42,8 @@ public sealed class Chart
     /// recorded as the run's own files).</summary>
     public void Save(OutputFolder folder, string stem)
     {
-        Plot.ShowLegend(LegendCorner);
+        if (LegendBelow) Plot.ShowLegend(Edge.Bottom);
+        else Plot.ShowLegend(LegendCorner);
         Plot.SavePng(folder.PathOf(stem + ".png"), Width, Height);
         Plot.SaveSvg(folder.PathOf(stem + ".svg"), Width, Height);
     }

@@ -39,6 +39,7 @@ public static class StudyParetoChart
                 LabelFormatter = v => Math.Pow(10, v).ToString("G3", System.Globalization.CultureInfo.InvariantCulture),
             };
         chart.Plot.Axes.Margins(0.15, 0.15);
+        chart.LegendBelow = true; // the points can fall in any corner
         return chart;
     }
 }
