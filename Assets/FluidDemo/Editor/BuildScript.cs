@@ -9,7 +9,7 @@ namespace SphFluid.Demo.Editor
     /// <summary>
     /// Builds the Windows 64-bit player of the scenes enabled in the build settings.
     /// Command line (no -nographics needed; -quit is fine here, unlike -runTests):
-    /// <c>Unity -batchmode -quit -projectPath . -buildTarget Win64 -executeMethod SphFluid.Editor.BuildScript.BuildWindows64 [-outputPath Builds/Win64/SphFluid.exe] -logFile -</c>
+    /// <c>Unity -batchmode -quit -projectPath . -buildTarget Win64 -executeMethod SphFluid.Demo.Editor.BuildScript.BuildWindows64 [-outputPath Builds/Win64/SphFluid.exe] -logFile -</c>
     /// </summary>
     public static class BuildScript
     {
