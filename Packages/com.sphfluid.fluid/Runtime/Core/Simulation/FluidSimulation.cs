@@ -323,15 +323,11 @@ namespace SphFluid.Simulation
         /// <summary>One WCSPH Velocity Verlet sub-step: kick-drift, re-sort, forces, kick.</summary>
         void VerletSubstep()
         {
-            _device.BeginSample(PassNames.HalfStep);
-            _device.DispatchThreads(_solver, _halfStep, ParticleCount);
-            _device.EndSample(PassNames.HalfStep);
+            SolverPass(PassNames.HalfStep, _halfStep);
 
             SortAndComputeForces();
 
-            _device.BeginSample(PassNames.FullStep);
-            _device.DispatchThreads(_solver, _fullStep, ParticleCount);
-            _device.EndSample(PassNames.FullStep);
+            SolverPass(PassNames.FullStep, _fullStep);
 
             if (Plan.Shifting)
                 Shift();
@@ -341,12 +337,8 @@ namespace SphFluid.Simulation
         /// applied in a second pass so that no particle moves while its neighbours still read it.</summary>
         void Shift()
         {
-            _device.BeginSample(PassNames.ParticleShift);
-            _device.DispatchThreads(_solver, _particleShift, ParticleCount);
-            _device.EndSample(PassNames.ParticleShift);
-            _device.BeginSample(PassNames.ApplyShift);
-            _device.DispatchThreads(_solver, _applyShift, ParticleCount);
-            _device.EndSample(PassNames.ApplyShift);
+            SolverPass(PassNames.ParticleShift, _particleShift);
+            SolverPass(PassNames.ApplyShift, _applyShift);
         }
 
         /// <summary>One DFSPH sub-step (Bender &amp; Koschier 2017, Algorithm 1): non-pressure forces, predicted velocity,
@@ -354,27 +346,16 @@ namespace SphFluid.Simulation
         void DivergenceFreeSubstep()
         {
             var s = _scene.Settings;
-            if (Plan.SurfaceTension)
-            {
-                _device.BeginSample(PassNames.Normals);
-                _device.DispatchThreads(_solver, _normals, ParticleCount);
-                _device.EndSample(PassNames.Normals);
-            }
-            _device.BeginSample(PassNames.NonPressureForces);
-            _device.DispatchThreads(_solver, _nonPressureForces, ParticleCount);
-            _device.EndSample(PassNames.NonPressureForces);
+            if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _normals);
+            SolverPass(PassNames.NonPressureForces, _nonPressureForces);
 
-            _device.BeginSample(PassNames.PredictVelocity);
-            _device.DispatchThreads(_solver, _predictVelocity, ParticleCount);
-            _device.EndSample(PassNames.PredictVelocity);
+            SolverPass(PassNames.PredictVelocity, _predictVelocity);
 
             _device.BeginSample(PassNames.DensitySolve);
             Solve(DensitySolveSlot, _densitySolveError, 0.01f * s.DensityTolerance);
             _device.EndSample(PassNames.DensitySolve);
 
-            _device.BeginSample(PassNames.Drift);
-            _device.DispatchThreads(_solver, _drift, ParticleCount);
-            _device.EndSample(PassNames.Drift);
+            SolverPass(PassNames.Drift, _drift);
 
             SortAndComputeForces(false);
 
@@ -450,33 +431,29 @@ namespace SphFluid.Simulation
 
             if (_divergenceFree)
             {
-                _device.BeginSample(PassNames.DensityFactor);
-                _device.DispatchThreads(_solver, _densityFactor, ParticleCount);
-                _device.EndSample(PassNames.DensityFactor);
+                SolverPass(PassNames.DensityFactor, _densityFactor);
                 if (!withForces) return;
                 if (Plan.SurfaceTension) _device.DispatchThreads(_solver, _normals, ParticleCount);
                 _device.DispatchThreads(_solver, _nonPressureForces, ParticleCount);
                 return;
             }
 
-            _device.BeginSample(PassNames.DensityPressure);
-            _device.DispatchThreads(_solver, _densityPressure, ParticleCount);
-            _device.EndSample(PassNames.DensityPressure);
+            SolverPass(PassNames.DensityPressure, _densityPressure);
 
-            _device.BeginSample(PassNames.WallPressure);
-            _device.DispatchThreads(_solver, _wallPressure, _boundaryCount);
-            _device.EndSample(PassNames.WallPressure);
+            SolverPass(PassNames.WallPressure, _wallPressure, _boundaryCount);
 
-            if (Plan.SurfaceTension)
-            {
-                _device.BeginSample(PassNames.Normals);
-                _device.DispatchThreads(_solver, _normals, ParticleCount);
-                _device.EndSample(PassNames.Normals);
-            }
+            if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _normals);
 
-            _device.BeginSample(PassNames.Forces);
-            _device.DispatchThreads(_solver, _forces, ParticleCount);
-            _device.EndSample(PassNames.Forces);
+            SolverPass(PassNames.Forces, _forces);
+        }
+
+        /// <summary>One timed solver pass: the kernel over <paramref name="threads"/> items (default: every particle),
+        /// inside its GPU timing range.</summary>
+        void SolverPass(string pass, int kernel, int threads = -1)
+        {
+            _device.BeginSample(pass);
+            _device.DispatchThreads(_solver, kernel, threads < 0 ? ParticleCount : threads);
+            _device.EndSample(pass);
         }
 
         /// <summary>Re-sorts and recomputes density, pressure and accelerations for the current particles
