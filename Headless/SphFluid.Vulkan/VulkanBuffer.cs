@@ -26,6 +26,9 @@ public sealed unsafe class VulkanBuffer : IComputeBuffer
     public long SizeInBytes => (long)Count * Stride;
     public bool IsDisposed { get; private set; }
 
+    /// <summary>A constant buffer (<see cref="VulkanComputeDevice.CreateConstantBuffer"/>): bound as a cbuffer, never as a structured buffer.</summary>
+    internal bool IsConstant { get; init; }
+
     internal VulkanBuffer(VulkanComputeDevice device, string name, int count, int stride)
     {
         _device = device;

@@ -246,6 +246,8 @@ public sealed unsafe partial class VulkanComputeDevice
         p.CheckKernel(kernel);
         string name = PropertyName(propertyId);
         var b = AsBuffer(buffer, $"SetBuffer '{name}' on kernel '{p.KernelName(kernel)}'");
+        if (b.IsConstant)
+            throw new ComputeException($"SetBuffer '{name}' on kernel '{p.KernelName(kernel)}': buffer '{b.Name}' is a constant buffer; bind it with SetConstantBuffer");
         var variant = p.Variant(kernel);
         int index = Array.IndexOf(variant.StorageBufferIds, propertyId);
         if (index >= 0) CheckStride(p, variant, variant.StorageBuffers[index], b);
@@ -320,6 +322,45 @@ public sealed unsafe partial class VulkanComputeDevice
         for (int i = 0; i < 16; i++) g.Words[i] = BitConverter.SingleToUInt32Bits(src[i]);
         g.Count = 16;
         g.IsMatrix = true;
+    }
+
+    public void SetConstantBuffer(IComputeProgram program, int propertyId, IComputeBuffer buffer)
+    {
+        ThrowIfDisposed();
+        var p = AsProgram(program, "SetConstantBuffer");
+        string name = PropertyName(propertyId);
+        var b = AsBuffer(buffer, $"SetConstantBuffer '{name}' on {p.Path}");
+        if (!b.IsConstant)
+            throw new ComputeException($"SetConstantBuffer '{name}' on {p.Path}: buffer '{b.Name}' is a structured buffer; make it with CreateConstantBuffer");
+        p.ConstantBuffers[propertyId] = b;
+    }
+
+    /// <summary>vkCmdUpdateBuffer between two barriers: the dispatches before it have read the old contents, the ones
+    /// after it read the new.</summary>
+    public void UpdateBuffer<T>(IComputeBuffer buffer, T[] data) where T : struct
+    {
+        ThrowIfDisposed();
+        var b = AsBuffer(buffer, "UpdateBuffer");
+        if (data == null) throw new ArgumentNullException(nameof(data), $"UpdateBuffer of '{b.Name}'");
+        var bytes = MemoryMarshal.AsBytes(data.AsSpan());
+        if (bytes.Length == 0) return;
+        if (bytes.Length > b.SizeInBytes)
+            throw new ArgumentOutOfRangeException(nameof(data), $"UpdateBuffer of '{b.Name}': {bytes.Length} bytes do not fit its {b.SizeInBytes}");
+        if (bytes.Length % 4 != 0 || bytes.Length > 65536)
+            throw new ComputeException($"UpdateBuffer of '{b.Name}': a recorded update takes a multiple of 4 bytes up to 65536 (was {bytes.Length}); use SetData for more");
+        var frame = BeginRecording();
+        b.LastUsedSerial = frame.Serial;
+        Barrier(frame.Cmd, PipelineStageFlags.ComputeShaderBit, AccessFlags.ShaderReadBit | AccessFlags.UniformReadBit,
+            PipelineStageFlags.TransferBit, AccessFlags.TransferWriteBit);
+        fixed (byte* source = bytes) _vk.CmdUpdateBuffer(frame.Cmd, b.Handle, 0, (ulong)bytes.Length, source);
+        Barrier(frame.Cmd, PipelineStageFlags.TransferBit, AccessFlags.TransferWriteBit,
+            PipelineStageFlags.ComputeShaderBit, AccessFlags.ShaderReadBit | AccessFlags.UniformReadBit);
+    }
+
+    void Barrier(CommandBuffer cmd, PipelineStageFlags fromStage, AccessFlags from, PipelineStageFlags toStage, AccessFlags to)
+    {
+        var barrier = new MemoryBarrier { SType = StructureType.MemoryBarrier, SrcAccessMask = from, DstAccessMask = to };
+        _vk.CmdPipelineBarrier(cmd, fromStage, toStage, 0, 1, &barrier, 0, null, 0, null);
     }
 
     public void SetKeyword(IComputeProgram program, string keyword, bool enabled)
@@ -438,6 +479,24 @@ public sealed unsafe partial class VulkanComputeDevice
         }
         foreach (var (block, members) in v.UniformBlocks)
         {
+            if (p.ConstantBuffers.TryGetValue(PropertyIdOf(block.Resource.Name), out var constants))
+            {
+                if (constants.IsDisposed)
+                    throw new ObjectDisposedException(constants.Name, $"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: constant buffer '{constants.Name}' bound to cbuffer '{block.Resource.Name}' was disposed");
+                if (constants.SizeInBytes < block.Size)
+                    throw new ComputeException($"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: cbuffer '{block.Resource.Name}' is {block.Size} bytes but constant buffer '{constants.Name}' holds {constants.SizeInBytes}");
+                constants.LastUsedSerial = frame.Serial;
+                infos[w] = new DescriptorBufferInfo(constants.Handle, 0, (ulong)constants.SizeInBytes);
+                writes[w] = new WriteDescriptorSet
+                {
+                    SType = StructureType.WriteDescriptorSet, DstSet = set, DstBinding = block.Resource.Binding, DescriptorCount = 1,
+                    DescriptorType = DescriptorType.UniformBuffer, PBufferInfo = &infos[w],
+                };
+                w++;
+                continue;
+            }
+            if (block.Resource.Name != "$Global" && !members.Any(m => p.Globals.ContainsKey(m.Id)))
+                throw new ComputeException($"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: cbuffer '{block.Resource.Name}' was never bound (SetConstantBuffer) and none of its members was set");
             var (buffer, offset, at) = AllocateUniform(frame, (ulong)Math.Max(16, block.Size));
             byte* ptr = (byte*)at;
             new Span<byte>(ptr, Math.Max(16, block.Size)).Clear();

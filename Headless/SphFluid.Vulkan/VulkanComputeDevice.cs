@@ -454,10 +454,26 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
         ulong size = (ulong)count * (ulong)stride;
         if (size > _limits.MaxStorageBufferRange)
             throw new ComputeException($"Compute buffer '{name}' ({count} x {stride} = {size} bytes) exceeds this device's storage buffer range of {_limits.MaxStorageBufferRange} bytes");
-        var buffer = new VulkanBuffer(this, name, count, stride);
         // Every buffer may hold indirect dispatch arguments (CreateArgumentsBuffer is a uint buffer like any other).
-        var (b, m, flags) = CreateRawBuffer(size, BufferUsageFlags.StorageBufferBit | BufferUsageFlags.TransferSrcBit | BufferUsageFlags.TransferDstBit
-                | BufferUsageFlags.IndirectBufferBit,
+        return NewBuffer(name, count, stride, BufferUsageFlags.StorageBufferBit | BufferUsageFlags.IndirectBufferBit, false);
+    }
+
+    public IComputeBuffer CreateConstantBuffer(string name, int bytes)
+    {
+        ThrowIfDisposed();
+        if (string.IsNullOrEmpty(name)) throw new ArgumentException("A constant buffer needs a name (it appears in every error about it)", nameof(name));
+        if (bytes <= 0 || bytes % 16 != 0 || bytes > 65536)
+            throw new ArgumentOutOfRangeException(nameof(bytes), bytes, $"Constant buffer '{name}': size must be a multiple of 16 in [16, 65536] bytes");
+        if ((uint)bytes > _limits.MaxUniformBufferRange)
+            throw new ComputeException($"Constant buffer '{name}' ({bytes} bytes) exceeds this device's uniform buffer range of {_limits.MaxUniformBufferRange} bytes");
+        return NewBuffer(name, 1, bytes, BufferUsageFlags.UniformBufferBit, true);
+    }
+
+    VulkanBuffer NewBuffer(string name, int count, int stride, BufferUsageFlags usage, bool constant)
+    {
+        ulong size = (ulong)count * (ulong)stride;
+        var buffer = new VulkanBuffer(this, name, count, stride) { IsConstant = constant };
+        var (b, m, flags) = CreateRawBuffer(size, usage | BufferUsageFlags.TransferSrcBit | BufferUsageFlags.TransferDstBit,
             MemoryPropertyFlags.DeviceLocalBit, MemoryPropertyFlags.DeviceLocalBit, MemoryPropertyFlags.HostVisibleBit, $"buffer '{name}'");
         buffer.Handle = b;
         buffer.Memory = m;

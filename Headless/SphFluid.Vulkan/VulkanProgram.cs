@@ -58,6 +58,8 @@ public sealed class VulkanProgram : IComputeProgram
     internal readonly HashSet<string> EnabledKeywords = new(StringComparer.Ordinal);
     internal readonly Dictionary<int, GlobalValue> Globals = new();
     internal readonly Dictionary<int, VulkanBuffer>[] Bindings;
+    /// <summary>Constant buffers bound by cbuffer name (SetConstantBuffer), for every kernel.</summary>
+    internal readonly Dictionary<int, VulkanBuffer> ConstantBuffers = new();
     internal readonly Dictionary<int, VulkanTexture>[] TextureBindings;
     readonly Dictionary<string, KernelVariant>[] _variants;
     string[] _currentDefines;

@@ -19,6 +19,9 @@ namespace SphFluid.Tests
         public string DeviceName => Inner.DeviceName;
         public virtual IComputeProgram LoadProgram(string name) => Inner.LoadProgram(name);
         public virtual IComputeBuffer CreateBuffer(string name, int count, int stride) => Inner.CreateBuffer(name, count, stride);
+        public virtual IComputeBuffer CreateConstantBuffer(string name, int bytes) => Inner.CreateConstantBuffer(name, bytes);
+        public void SetConstantBuffer(IComputeProgram program, int propertyId, IComputeBuffer buffer) => Inner.SetConstantBuffer(program, propertyId, Unwrap(buffer));
+        public virtual void UpdateBuffer<T>(IComputeBuffer buffer, T[] data) where T : struct => Inner.UpdateBuffer(Unwrap(buffer), data);
         public int PropertyId(string name) => Inner.PropertyId(name);
         public void SetBuffer(IComputeProgram program, int kernel, int propertyId, IComputeBuffer buffer) => Inner.SetBuffer(program, kernel, propertyId, Unwrap(buffer));
         public void SetInt(IComputeProgram program, int propertyId, int value) => Inner.SetInt(program, propertyId, value);

@@ -24,6 +24,9 @@ namespace SphFluid.Tests.Solver
 
         public IComputeProgram LoadProgram(string name) => new Program(name);
         public IComputeBuffer CreateBuffer(string name, int count, int stride) => new Buffer(name, count, stride);
+        public IComputeBuffer CreateConstantBuffer(string name, int bytes) => new Buffer(name, 1, bytes);
+        public void SetConstantBuffer(IComputeProgram program, int propertyId, IComputeBuffer buffer) { }
+        public void UpdateBuffer<T>(IComputeBuffer buffer, T[] data) where T : struct { }
 
         public int PropertyId(string name)
         {

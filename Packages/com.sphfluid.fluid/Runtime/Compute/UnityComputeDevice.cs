@@ -81,6 +81,37 @@ namespace SphFluid.Runtime
             return buffer;
         }
 
+        public IComputeBuffer CreateConstantBuffer(string name, int bytes)
+        {
+            ThrowIfDisposed();
+            if (bytes <= 0 || bytes % 16 != 0 || bytes > 65536)
+                throw new ArgumentOutOfRangeException(nameof(bytes), bytes, $"Constant buffer '{name}': size must be a multiple of 16 in [16, 65536] bytes");
+            var buffer = new UnityComputeBuffer(this, name, 1, bytes, ComputeBufferType.Constant);
+            _buffers.Add(buffer);
+            LiveBufferTotal++;
+            return buffer;
+        }
+
+        public void SetConstantBuffer(IComputeProgram program, int propertyId, IComputeBuffer buffer)
+        {
+            Record();
+            UnityComputeBuffer unityBuffer = Live(buffer, program);
+            _commands.SetComputeConstantBufferParam(ShaderOf(program), propertyId, unityBuffer.Buffer, 0, unityBuffer.Stride);
+        }
+
+        public void UpdateBuffer<T>(IComputeBuffer buffer, T[] data) where T : struct
+        {
+            Record();
+            if (data == null) throw new ArgumentNullException(nameof(data), $"UpdateBuffer of '{buffer?.Name}'");
+            _commands.SetBufferData(Live(buffer, null).Buffer, data);
+        }
+
+        UnityComputeBuffer Live(IComputeBuffer buffer, IComputeProgram program)
+        {
+            if (buffer is UnityComputeBuffer unityBuffer && !unityBuffer.IsReleased) return unityBuffer;
+            throw new ComputeException($"Compute shader '{program?.Name}': buffer '{buffer?.Name}' is not a live buffer of this device");
+        }
+
         /// <summary>Runs pending work before a buffer it may bind is released; while the device itself is
         /// being disposed, pending work is dropped instead.</summary>
         internal void FlushBeforeRelease()
@@ -98,9 +129,7 @@ namespace SphFluid.Runtime
         public void SetBuffer(IComputeProgram program, int kernel, int propertyId, IComputeBuffer buffer)
         {
             Record();
-            if (!(buffer is UnityComputeBuffer unityBuffer) || unityBuffer.IsReleased)
-                throw new ComputeException($"Compute shader '{program?.Name}': buffer '{buffer?.Name}' is not a live buffer of this device");
-            _commands.SetComputeBufferParam(ShaderOf(program), kernel, propertyId, unityBuffer.Buffer);
+            _commands.SetComputeBufferParam(ShaderOf(program), kernel, propertyId, Live(buffer, program).Buffer);
         }
 
         public void SetInt(IComputeProgram program, int propertyId, int value)

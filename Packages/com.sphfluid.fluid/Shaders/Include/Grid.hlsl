@@ -14,13 +14,16 @@
 // (container centre c, rotation R, size S; one margin cell on every side). Positions outside the
 // grid clamp into its border cells, so every particle, even a NaN one, has a valid cell.
 //
-// Set by SphFluid.Sorting.CellGrid.SetOn. The cell sort (ParticleSort.compute) provides _CellStart /
+// The solver reads the grid from its constant buffer (FluidConstants.hlsl, included first); the cell sort sets
+// its own copy (SphFluid.Sorting.CellGrid.SetOn), declared here. The cell sort (ParticleSort.compute) provides _CellStart /
 // _CellCount per linear cell; the neighbour loops themselves are in SphNeighbourhood.hlsl, which visits
 // the 27 cells around a particle as 9 contiguous x-rows of the sorted buffer.
 
+#ifndef SPHFLUID_GRID_DECLARED
 float4x4 _WorldToGrid; // world -> grid units (column vectors, translation in the last column)
 uint3 _GridDims;       // cells per local axis, margin included
 uint _GridCellCount;   // _GridDims.x * _GridDims.y * _GridDims.z
+#endif
 
 // The cell holding world position worldPos. Clamps in float first (so huge coordinates cannot
 // overflow the int conversion) and again in int (so a NaN, whose conversion is undefined, still lands

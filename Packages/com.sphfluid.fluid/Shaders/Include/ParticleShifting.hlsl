@@ -1,6 +1,8 @@
 #ifndef SPHFLUID_PARTICLE_SHIFTING_INCLUDED
 #define SPHFLUID_PARTICLE_SHIFTING_INCLUDED
 
+#include "FluidConstants.hlsl"
+
 #include "SphKernels.hlsl"
 
 // Particle shifting (Lind, Xu, Stansby & Rogers 2012, "Incompressible smoothed particle hydrodynamics for
@@ -37,7 +39,7 @@
 #define SHIFTING_SURFACE_DIVERGENCE 2.8
 #define SHIFTING_MAX_FRACTION 0.05
 
-float _ShiftingCoefficient; // A h, m (A dimensionless, h = H / 2)
+// Reads _ShiftingCoefficient = A h, m (A dimensionless, h = H / 2), from FluidConstants.hlsl.
 
 // One neighbour's share of C and gradC: (V_j W, V_j gradW).
 float4 ConcentrationPair(float volumeJ, float weight, float3 gradient)

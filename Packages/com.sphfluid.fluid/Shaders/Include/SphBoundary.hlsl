@@ -1,6 +1,8 @@
 #ifndef SPHFLUID_SPH_BOUNDARY_INCLUDED
 #define SPHFLUID_SPH_BOUNDARY_INCLUDED
 
+#include "FluidConstants.hlsl"
+
 #include "SphKernels.hlsl"
 #include "BoundaryParticle.hlsl"
 
@@ -38,15 +40,8 @@
 // Container = box with centre c, rotation R, size S, linear velocity V and angular velocity w (world).
 // A particle's container-local position is q = R^T (x - c).
 
-float4x4 _WorldToContainer;        // q = mul(_WorldToContainer, float4(x, 1)).xyz = R^T (x - c)
-float4x4 _ContainerToWorld;        // x = mul(_ContainerToWorld, float4(q, 1)).xyz = R q + c
-float3 _ContainerCenter;           // c, m
-float3 _ContainerClampExtent;      // Hc = S/2 - s/100, m: the clamp (no particle centre beyond)
-float3 _ContainerHalfSize;         // S/2, m: the walls' inner faces
-float3 _ContainerVelocity;         // V, m/s
-float3 _ContainerAngularVelocity;  // w, rad/s
-float _ParticleSpacing;            // s, m
-float _WallFriction;               // 0 free slip, 1 no slip
+// The container's transforms, extents and motion, the spacing, the wall friction and the obstacle count are in
+// FluidConstants.hlsl.
 
 struct SphereObstacle
 {
@@ -56,8 +51,7 @@ struct SphereObstacle
     float padding;
 };
 
-StructuredBuffer<SphereObstacle> _Obstacles;
-uint _ObstacleCount;
+StructuredBuffer<SphereObstacle> _Obstacles; // the first _ObstacleCount are live
 
 float3 ContainerLocal(float3 x)
 {

@@ -1,6 +1,8 @@
 #ifndef SPHFLUID_SPH_DENSITY_PRESSURE_INCLUDED
 #define SPHFLUID_SPH_DENSITY_PRESSURE_INCLUDED
 
+#include "FluidConstants.hlsl"
+
 // Density and pressure of the multi-phase density-contrast formulation
 // (Solenthaler & Pajarola 2008, "Density contrast SPH interfaces", SCA 2008, eqs. 4-5):
 //   number density   delta_i = sum_j Ws(r_ij)        (Spiky kernel, see SphKernels.hlsl for why; self
@@ -17,8 +19,7 @@
 // Stored per particle (float4 _Densities): x = rho, y = p, z = delta, w = p / delta^2 (the pressure
 // term of the force, so the force loop reads it instead of dividing per pair).
 
-float _Stiffness; // k, Pa
-float _Gamma;     // Tait exponent
+// Reads _Stiffness (k, Pa) and _Gamma (FluidConstants.hlsl).
 
 float TaitPressure(float density, float restDensity)
 {

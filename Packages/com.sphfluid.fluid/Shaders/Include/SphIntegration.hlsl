@@ -1,6 +1,8 @@
 #ifndef SPHFLUID_SPH_INTEGRATION_INCLUDED
 #define SPHFLUID_SPH_INTEGRATION_INCLUDED
 
+#include "FluidConstants.hlsl"
+
 // Velocity Verlet (kick-drift-kick; Verlet 1967, Swope et al. 1982), split around the force pass:
 //   half step:  v_{n+1/2} = v_n + a_n dt/2 ;  x_{n+1} = x_n + v_{n+1/2} dt     (then clamp)
 //   forces:     a_{n+1} = a(x_{n+1}, v_{n+1/2})                                (after the re-sort)
@@ -8,8 +10,7 @@
 // Second order and time-reversible for position-only forces; the velocity-dependent terms
 // (viscosity, XSPH, wall damping) use the half-step velocity. Before the first step the forces are
 // computed once so that a_0 is valid.
-float _TimeStep;        // dt of this sub-step, s
-float _VelocityDamping; // 1/s, 0 = none
+// Reads _TimeStep and _VelocityDamping (FluidConstants.hlsl).
 
 void KickDrift(inout float3 x, inout float3 v, float3 a)
 {

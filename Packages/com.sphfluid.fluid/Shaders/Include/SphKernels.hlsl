@@ -1,6 +1,8 @@
 #ifndef SPHFLUID_SPH_KERNELS_INCLUDED
 #define SPHFLUID_SPH_KERNELS_INCLUDED
 
+#include "FluidConstants.hlsl"
+
 // ONE smoothing kernel for every sum of the solver: the cubic B-spline of Monaghan & Lattanzio 1985
 // ("A refined particle method for astrophysical problems", A&A 149), in the support-radius form used by
 // Ihmsen et al. 2014 ("SPH fluids in computer graphics", Eurographics STAR). With support H (= the
@@ -18,10 +20,7 @@
 // SmoothingKernels.LatticeGradientReproduction (C#) prints the figure for any support.
 // The coefficients are computed once in double precision on the CPU (FluidSimulation) and uploaded.
 
-float _SmoothingRadius;   // H, the support radius, m
-float _SmoothingRadius2;  // H^2, m^2
-float _KernelCoefficient; // sigma = 8 / (pi H^3), 1/m^3
-float _GradientCoefficient; // sigma / H = 8 / (pi H^4), 1/m^4
+// Reads _SmoothingRadius, _SmoothingRadius2, _KernelCoefficient and _GradientCoefficient (FluidConstants.hlsl).
 
 float KernelShape(float q)
 {

@@ -1,6 +1,7 @@
 #ifndef SPHFLUID_SPH_NEIGHBOURHOOD_INCLUDED
 #define SPHFLUID_SPH_NEIGHBOURHOOD_INCLUDED
 
+#include "FluidConstants.hlsl" // first: the grid lives in the constant buffer
 #include "Grid.hlsl"
 
 // The 27-cell neighbour search over cell-sorted particles (uniform grid of cell size H, Green 2008; Ihmsen

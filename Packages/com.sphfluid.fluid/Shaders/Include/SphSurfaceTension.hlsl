@@ -1,6 +1,8 @@
 #ifndef SPHFLUID_SPH_SURFACE_TENSION_INCLUDED
 #define SPHFLUID_SPH_SURFACE_TENSION_INCLUDED
 
+#include "FluidConstants.hlsl"
+
 #include "SphKernels.hlsl"
 
 // Surface and interface tension of Akinci, Akinci & Teschner 2013, "Versatile surface tension and
@@ -16,7 +18,7 @@
 // Deviation from the notes (documented): the normal is also summed over the SAME phase only, i.e. it
 // is the gradient of the phase's own colour field, so a particle at an interface between two phases
 // gets a normal (and the curvature term acts there); for one phase this is exactly Akinci's normal.
-float _CohesionCoefficient; // 32 / (pi h^9)
+// Reads _CohesionCoefficient = 32 / (pi H^9) (FluidConstants.hlsl).
 
 float Cohesion(float r)
 {

@@ -1,6 +1,8 @@
 #ifndef SPHFLUID_SPH_VISCOSITY_INCLUDED
 #define SPHFLUID_SPH_VISCOSITY_INCLUDED
 
+#include "FluidConstants.hlsl"
+
 #include "SphKernels.hlsl"
 
 // Physical (Newtonian) viscosity in the form of Morris, Fox & Zhu 1997 ("Modeling low Reynolds number
@@ -32,8 +34,8 @@ float3 ViscosityForcePair(float mixedViscosity, float3 velocityI, float3 velocit
 //   F_i^av = sum_j alpha c h rho_ij V_i V_j min(0, v_ij . r_ij) / (r_ij^2 + 0.01 H^2) gradW_ij
 // (gradW_ij points from i towards j; with v_ij . r_ij < 0 the pair is pushed apart: antisymmetric and
 // momentum-conserving.) _ArtificialViscosity = alpha c h (m^2/s), precomputed.
-float _ArtificialViscosity;
-float _WallArtificialViscosity; // alpha_w c h for the contact damping against boundary particles (SphBoundary.hlsl)
+// Reads _ArtificialViscosity and _WallArtificialViscosity, alpha_w c h for the contact damping against boundary
+// particles (SphBoundary.hlsl), from FluidConstants.hlsl.
 
 float3 ArtificialViscosityForcePair(float3 velocityI, float3 velocityJ, float3 rij, float r2, float3 gradient,
                                     float meanDensity, float volumeIJ)

@@ -1,6 +1,8 @@
 #ifndef SPHFLUID_SPH_XSPH_INCLUDED
 #define SPHFLUID_SPH_XSPH_INCLUDED
 
+#include "FluidConstants.hlsl"
+
 #include "SphKernels.hlsl"
 
 // XSPH velocity correction (Monaghan 1989, "On the problem of penetration in particle methods",
@@ -9,7 +11,7 @@
 //   dv_i = epsilon sum_j (2 / (delta_i + delta_j)) (v_j - v_i) W(r_ij),   epsilon in [0, 1]
 // Applied at the end of the full step (v += dv): particles move more coherently with their neighbours,
 // which damps the particle-scale noise of weakly compressible SPH without a large viscosity.
-float _XsphEpsilon;
+// Reads _XsphEpsilon (FluidConstants.hlsl).
 
 float3 XsphPair(float3 velocityI, float3 velocityJ, float r2, float numberDensityI, float numberDensityJ)
 {

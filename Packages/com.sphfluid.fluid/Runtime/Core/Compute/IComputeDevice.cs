@@ -29,6 +29,20 @@ namespace SphFluid.Compute
         /// <summary>A structured buffer of <paramref name="count"/> elements of <paramref name="stride"/> bytes.</summary>
         IComputeBuffer CreateBuffer(string name, int count, int stride);
 
+        /// <summary>A constant buffer of <paramref name="bytes"/> bytes (a multiple of 16) that holds one HLSL <c>cbuffer</c>'s
+        /// values, laid out by HLSL's packing rules (Unity: a <c>ComputeBuffer</c> of type Constant). Bind it with
+        /// <see cref="SetConstantBuffer"/> and fill it with <see cref="UpdateBuffer{T}"/>.</summary>
+        IComputeBuffer CreateConstantBuffer(string name, int bytes);
+
+        /// <summary>Binds <paramref name="buffer"/> (from <see cref="CreateConstantBuffer"/>) as the <c>cbuffer</c> named by
+        /// <paramref name="propertyId"/> for every kernel of the program (Unity: <c>CommandBuffer.SetComputeConstantBufferParam</c>).</summary>
+        void SetConstantBuffer(IComputeProgram program, int propertyId, IComputeBuffer buffer);
+
+        /// <summary>Records an upload of the whole of <paramref name="data"/> to the start of <paramref name="buffer"/>, run in order
+        /// with the dispatches around it: those recorded before it read the old contents, those after it the new
+        /// (Unity: <c>CommandBuffer.SetBufferData</c>). The data is copied when the call is recorded, so the array may be reused.</summary>
+        void UpdateBuffer<T>(IComputeBuffer buffer, T[] data) where T : struct;
+
         /// <summary>The integer id of a shader property name (Unity's <c>Shader.PropertyToID</c>).
         /// Look ids up once and keep them.</summary>
         int PropertyId(string name);

@@ -41,7 +41,7 @@ namespace SphFluid.Simulation
         readonly TimeStepController _timeStep;
         readonly IComputeProgram _solver, _diagnostics;
         readonly int _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep;
-        readonly int _densityFactor, _nonPressureForces, _predictVelocity, _beginSolve, _densitySolveError, _divergenceSolveError,
+        readonly int _densityFactor, _nonPressureForces, _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError,
             _solveFinal, _applyStiffness, _drift, _divergenceRate;
         readonly bool _divergenceFree;
         readonly int _particleShift, _applyShift;
@@ -55,6 +55,10 @@ namespace SphFluid.Simulation
         IComputeBuffer _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits;
         IComputeBuffer _boundaryRest, _boundaryPlaced, _boundarySorted, _boundaryPressures;
         IComputeBuffer _factors, _solverStiffness, _warmStart, _solverPartials, _solverState, _solverArguments, _divergenceRates;
+        IComputeBuffer _constantsBuffer;
+        // The constant buffer's contents (Include/FluidConstants.hlsl); an array of one so that the upload allocates nothing.
+        readonly FluidConstants[] _constants = new FluidConstants[1];
+        bool _constantsChanged = true;
         ParticleSorter _sorter, _boundarySorter;
         CellGrid _grid;
         bool _containerChanged = true;
@@ -107,7 +111,8 @@ namespace SphFluid.Simulation
             _densityFactor = _solver.FindKernel("DensityFactor");
             _nonPressureForces = _solver.FindKernel("NonPressureForces");
             _predictVelocity = _solver.FindKernel("PredictVelocity");
-            _beginSolve = _solver.FindKernel("BeginSolve");
+            _beginDensitySolve = _solver.FindKernel("BeginDensitySolve");
+            _beginDivergenceSolve = _solver.FindKernel("BeginDivergenceSolve");
             _densitySolveError = _solver.FindKernel("DensitySolveError");
             _divergenceSolveError = _solver.FindKernel("DivergenceSolveError");
             _solveFinal = _solver.FindKernel("SolveFinal");
@@ -120,7 +125,7 @@ namespace SphFluid.Simulation
             _solverKernels = new[]
             {
                 _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep, _densityFactor, _nonPressureForces,
-                _predictVelocity, _beginSolve, _densitySolveError, _divergenceSolveError, _solveFinal, _applyStiffness, _drift, _divergenceRate,
+                _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError, _solveFinal, _applyStiffness, _drift, _divergenceRate,
                 _particleShift, _applyShift,
             };
             _motionPartial = _diagnostics.FindKernel("MotionPartial");
@@ -135,7 +140,7 @@ namespace SphFluid.Simulation
             {
                 CreateBuffers();
                 CreateBoundary();
-                UploadConstants();
+                WriteConstants();
                 UploadObstacles();
                 Reset();
             }
@@ -297,9 +302,10 @@ namespace SphFluid.Simulation
             if (Plan.UploadContainerTransform)
             {
                 _device.BeginSample(PassNames.UploadContainer);
-                UploadContainer();
+                WriteContainer();
                 _device.EndSample(PassNames.UploadContainer);
             }
+            PushConstants();
             if (_boundaryMoved)
             {
                 _device.BeginSample(PassNames.PlaceBoundary);
@@ -313,7 +319,12 @@ namespace SphFluid.Simulation
         /// <summary>One sub-step of the chosen pressure solver.</summary>
         void Substep(float dt)
         {
-            _device.SetFloat(_solver, _ids.TimeStep, dt);
+            if (_constants[0].TimeStep != dt)
+            {
+                _constants[0].TimeStep = dt;
+                _constantsChanged = true;
+            }
+            PushConstants(); // once per frame: its sub-steps share one dt
             if (_divergenceFree)
                 DivergenceFreeSubstep();
             else
@@ -345,14 +356,13 @@ namespace SphFluid.Simulation
         /// constant-density solve, drift, re-sort, density and factor, divergence-free solve.</summary>
         void DivergenceFreeSubstep()
         {
-            var s = _scene.Settings;
             if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _normals);
             SolverPass(PassNames.NonPressureForces, _nonPressureForces);
 
             SolverPass(PassNames.PredictVelocity, _predictVelocity);
 
             _device.BeginSample(PassNames.DensitySolve);
-            Solve(DensitySolveSlot, _densitySolveError, 0.01f * s.DensityTolerance);
+            Solve(DensitySolveSlot, _beginDensitySolve, _densitySolveError);
             _device.EndSample(PassNames.DensitySolve);
 
             SolverPass(PassNames.Drift, _drift);
@@ -360,11 +370,12 @@ namespace SphFluid.Simulation
             SortAndComputeForces(false);
 
             _device.BeginSample(PassNames.DivergenceSolve);
-            Solve(DivergenceSolveSlot, _divergenceSolveError, 0.01f * s.DivergenceTolerance);
+            Solve(DivergenceSolveSlot, _beginDivergenceSolve, _divergenceSolveError);
             _device.EndSample(PassNames.DivergenceSolve);
         }
 
         const int DensitySolveSlot = 0, DivergenceSolveSlot = 1;
+        const int SolverStateWords = 17; // two solve slots of 8 words and the open solve's slot (FluidSolver.compute)
 
         /// <summary>Rounds (error pass, SolveFinal, correction) recorded for each DFSPH solve of the next sub-steps:
         /// [0] constant density, [1] divergence-free. At most MaxSolverIterations; see <see cref="SolveBudget"/>.</summary>
@@ -394,6 +405,17 @@ namespace SphFluid.Simulation
             int max = _scene.Settings.MaxSolverIterations;
             _solveRounds[DensitySolveSlot] = SolveBudget(_solveRounds[DensitySolveSlot], (int)Math.Round(solves.X), (int)Math.Round(solves.Y), max);
             _solveRounds[DivergenceSolveSlot] = SolveBudget(_solveRounds[DivergenceSolveSlot], (int)Math.Round(solves.Z), (int)Math.Round(solves.W), max);
+            WriteSolveRounds();
+        }
+
+        void WriteSolveRounds()
+        {
+            ref FluidConstants c = ref _constants[0];
+            uint density = (uint)_solveRounds[DensitySolveSlot], divergence = (uint)_solveRounds[DivergenceSolveSlot];
+            if (c.DensitySolveRounds == density && c.DivergenceSolveRounds == divergence) return;
+            c.DensitySolveRounds = density;
+            c.DivergenceSolveRounds = divergence;
+            _constantsChanged = true;
         }
 
         /// <summary>
@@ -403,13 +425,10 @@ namespace SphFluid.Simulation
         /// so the rounds recorded beyond convergence cost the GPU an empty dispatch each; the budget keeps their number
         /// (and their recording) near what the solves have been using.
         /// </summary>
-        void Solve(int slot, int errorKernel, float tolerance)
+        void Solve(int slot, int beginKernel, int errorKernel)
         {
             int rounds = _solveRounds[slot];
-            _device.SetInt(_solver, _ids.SolveSlot, slot);
-            _device.SetFloat(_solver, _ids.SolveTolerance, tolerance);
-            _device.SetInt(_solver, _ids.SolveRounds, rounds);
-            _device.Dispatch(_solver, _beginSolve, 1, 1, 1);
+            _device.Dispatch(_solver, beginKernel, 1, 1, 1);
             _device.DispatchThreads(_solver, _applyStiffness, ParticleCount);
             for (int l = 0; l < rounds; l++)
             {
@@ -514,7 +533,7 @@ namespace SphFluid.Simulation
                 CreateBoundary();
             }
             if (old.Friction != container.Friction)
-                UploadConstants();
+                WriteConstants();
         }
 
         /// <summary>Replaces the sphere obstacles (any count up to <see cref="FluidSceneDescription.MaxObstacles"/>).
@@ -610,8 +629,9 @@ namespace SphFluid.Simulation
             _particles.SetData(_spawn);
             _clampHits.SetData(new uint[1]);
             _warmStart.SetData(new Vector2[ParticleCount]);
-            _solverState.SetData(new uint[16]);
+            _solverState.SetData(new uint[SolverStateWords]);
             _solveRounds[DensitySolveSlot] = _solveRounds[DivergenceSolveSlot] = _scene.Settings.MaxSolverIterations;
+            WriteSolveRounds();
             ComputeForces();
             // The first frame plans with the acceleration the first force pass computed, not gravity alone.
             ReadMotion(out float firstSpeed, out float firstAcceleration);
@@ -659,6 +679,7 @@ namespace SphFluid.Simulation
 
         void DispatchDiagnostics()
         {
+            PushConstants();
             _device.BeginSample(PassNames.Diagnostics);
             _device.DispatchThreads(_solver, _divergenceRate, ParticleCount);
             _device.Dispatch(_diagnostics, _diagnosticsPartial, _reductionGroups, 1, 1);
@@ -745,6 +766,7 @@ namespace SphFluid.Simulation
         public void ReadMotion(out float maxSpeed, out float maxAcceleration)
         {
             ThrowIfDisposed();
+            PushConstants();
             _device.Dispatch(_diagnostics, _motionPartial, _reductionGroups, 1, 1);
             _device.Dispatch(_diagnostics, _motionFinal, 1, 1, 1);
             _motionTotals.GetData(_motionRow);
@@ -777,18 +799,21 @@ namespace SphFluid.Simulation
             _solverStiffness = _device.CreateBuffer("FluidSimulation.SolverStiffness", n, 4);
             _warmStart = _device.CreateBuffer("FluidSimulation.WarmStart", n, 8);
             _solverPartials = _device.CreateBuffer("FluidSimulation.SolverPartials", particleGroups, 4);
-            _solverState = _device.CreateBuffer("FluidSimulation.SolverState", 16, 4);
+            _solverState = _device.CreateBuffer("FluidSimulation.SolverState", SolverStateWords, 4);
             _solverArguments = _device.CreateArgumentsBuffer("FluidSimulation.SolverArguments", 3);
             _divergenceRates = _device.CreateBuffer("FluidSimulation.DivergenceRates", n, 4);
             _factors.SetData(new float[n]);
             _solverStiffness.SetData(new float[n]);
             _warmStart.SetData(new Vector2[n]);
             _solverPartials.SetData(new float[particleGroups]);
-            _solverState.SetData(new uint[16]);
+            _solverState.SetData(new uint[SolverStateWords]);
             _solverArguments.SetData(new uint[] { (uint)particleGroups, 1u, 1u });
             _divergenceRates.SetData(new float[n]);
             _clampHits = _device.CreateBuffer("FluidSimulation.ClampHits", 1, 4);
             _clampHits.SetData(new uint[1]);
+            _constantsBuffer = _device.CreateConstantBuffer("FluidSimulation.Constants", FluidConstants.Bytes);
+            foreach (var program in _programs)
+                _device.SetConstantBuffer(program, _ids.FluidConstants, _constantsBuffer);
 
             var zero = new Vector4[n];
             _accelerations.SetData(zero);
@@ -857,7 +882,8 @@ namespace SphFluid.Simulation
                 _device.SetBuffer(_solver, k, _ids.BoundaryCellStart, _boundarySorter.CellStart);
                 _device.SetBuffer(_solver, k, _ids.BoundaryCellCount, _boundarySorter.CellCount);
             }
-            _device.SetInt(_solver, _ids.BoundaryCount, _boundaryCount);
+            _constants[0].BoundaryCount = (uint)_boundaryCount;
+            _constantsChanged = true;
             _boundaryMoved = true;
         }
 
@@ -905,59 +931,66 @@ namespace SphFluid.Simulation
                 _device.SetBuffer(_diagnostics, k, _ids.Particles, _particles);
         }
 
-        /// <summary>Values fixed for the simulation's lifetime: counts, kernel coefficients, material constants.</summary>
-        void UploadConstants()
+        /// <summary>Values fixed for the simulation's lifetime (counts, kernel coefficients, material constants) and the wall
+        /// friction, into the constants the next <see cref="PushConstants"/> uploads.</summary>
+        void WriteConstants()
         {
             var s = _scene.Settings;
             double h = s.SmoothingRadius;
-            foreach (var program in _programs)
-            {
-                _device.SetInt(program, _ids.ParticleCount, ParticleCount);
-                _device.SetFloat(program, _ids.ParticleSpacing, s.ParticleSpacing);
-            }
-            _device.SetInt(_diagnostics, _ids.PhaseCount, _phases.Count);
-            _device.SetInt(_diagnostics, _ids.ReductionGroupCount, _reductionGroups);
-
-            _device.SetFloat(_solver, _ids.SmoothingRadius, (float)h);
-            _device.SetFloat(_solver, _ids.SmoothingRadius2, (float)(h * h));
-            _device.SetFloat(_solver, _ids.KernelCoefficient, (float)(8.0 / (Math.PI * h * h * h)));
-            _device.SetFloat(_solver, _ids.GradientCoefficient, (float)(8.0 / (Math.PI * h * h * h * h)));
-            _device.SetFloat(_solver, _ids.ArtificialViscosity, (float)(s.ArtificialViscosity * _timeStep.SpeedOfSound * 0.5 * h));
-            _device.SetFloat(_solver, _ids.WallArtificialViscosity, (float)(WallContactDamping * _timeStep.SpeedOfSound * 0.5 * h));
-            _device.SetFloat(_solver, _ids.WallFriction, _scene.Container.Friction == WallFriction.NoSlip ? 1f : 0f);
-            _device.SetFloat(_solver, _ids.CohesionCoefficient, (float)(32.0 / (Math.PI * Math.Pow(h, 9))));
-            _device.SetFloat(_solver, _ids.Stiffness, s.Stiffness);
-            _device.SetFloat(_solver, _ids.Gamma, s.Gamma);
-            _device.SetVector(_solver, _ids.Gravity, new Vector4(s.Gravity, 0f));
-            _device.SetFloat(_solver, _ids.XsphEpsilon, s.XsphEpsilon);
-            _device.SetFloat(_solver, _ids.ShiftingCoefficient, (float)(s.ParticleShifting * 0.5 * h));
-            _device.SetFloat(_solver, _ids.VelocityDamping, s.VelocityDamping);
-            _device.SetFloat(_solver, _ids.TimeStep, 0f);
+            ref FluidConstants c = ref _constants[0];
+            c.ParticleCount = (uint)ParticleCount;
+            c.PhaseCount = (uint)_phases.Count;
+            c.ReductionGroupCount = (uint)_reductionGroups;
+            c.ParticleSpacing = s.ParticleSpacing;
+            c.SmoothingRadius = (float)h;
+            c.SmoothingRadius2 = (float)(h * h);
+            c.KernelCoefficient = (float)(8.0 / (Math.PI * h * h * h));
+            c.GradientCoefficient = (float)(8.0 / (Math.PI * h * h * h * h));
+            c.ArtificialViscosity = (float)(s.ArtificialViscosity * _timeStep.SpeedOfSound * 0.5 * h);
+            c.WallArtificialViscosity = (float)(WallContactDamping * _timeStep.SpeedOfSound * 0.5 * h);
+            c.WallFriction = _scene.Container.Friction == WallFriction.NoSlip ? 1f : 0f;
+            c.CohesionCoefficient = (float)(32.0 / (Math.PI * Math.Pow(h, 9)));
+            c.Stiffness = s.Stiffness;
+            c.Gamma = s.Gamma;
+            c.Gravity = s.Gravity;
+            c.XsphEpsilon = s.XsphEpsilon;
+            c.ShiftingCoefficient = (float)(s.ParticleShifting * 0.5 * h);
+            c.VelocityDamping = s.VelocityDamping;
+            c.DensitySolveTolerance = 0.01f * s.DensityTolerance;
+            c.DivergenceSolveTolerance = 0.01f * s.DivergenceTolerance;
+            _constantsChanged = true;
         }
 
-        /// <summary>The container's transform and motion, and the grid built on it, to both programs.</summary>
-        void UploadContainer()
+        /// <summary>The container's transform and motion, and the grid built on it, into the constants.</summary>
+        void WriteContainer()
         {
-            var c = _scene.Container;
-            var rotation = Quaternion.Normalize(c.Rotation);
-            Matrix4x4 worldToContainer = Matrix4x4.Transpose(
-                Matrix4x4.CreateTranslation(-c.Position) * Matrix4x4.CreateFromQuaternion(Quaternion.Conjugate(rotation)));
-            Matrix4x4 containerToWorld = Matrix4x4.Transpose(
-                Matrix4x4.CreateFromQuaternion(rotation) * Matrix4x4.CreateTranslation(c.Position));
-            var clampExtent = c.Size * 0.5f - new Vector3(ClampInset * _scene.Settings.ParticleSpacing);
-            foreach (var program in _programs)
-            {
-                _device.SetMatrix(program, _ids.WorldToContainer, worldToContainer);
-                _device.SetMatrix(program, _ids.ContainerToWorld, containerToWorld);
-                _device.SetVector(program, _ids.ContainerCenter, new Vector4(c.Position, 0f));
-                _device.SetVector(program, _ids.ContainerClampExtent, new Vector4(clampExtent, 0f));
-                _device.SetVector(program, _ids.ContainerHalfSize, new Vector4(c.Size * 0.5f, 0f));
-                _device.SetVector(program, _ids.ContainerVelocity, new Vector4(c.Velocity, 0f));
-                _device.SetVector(program, _ids.ContainerAngularVelocity, new Vector4(c.AngularVelocity, 0f));
-            }
-            _grid.SetOn(_device, _solver);
+            var container = _scene.Container;
+            var rotation = Quaternion.Normalize(container.Rotation);
+            ref FluidConstants c = ref _constants[0];
+            c.WorldToContainer = Matrix4x4.Transpose(
+                Matrix4x4.CreateTranslation(-container.Position) * Matrix4x4.CreateFromQuaternion(Quaternion.Conjugate(rotation)));
+            c.ContainerToWorld = Matrix4x4.Transpose(
+                Matrix4x4.CreateFromQuaternion(rotation) * Matrix4x4.CreateTranslation(container.Position));
+            c.ContainerCenter = container.Position;
+            c.ContainerClampExtent = container.Size * 0.5f - new Vector3(ClampInset * _scene.Settings.ParticleSpacing);
+            c.ContainerHalfSize = container.Size * 0.5f;
+            c.ContainerVelocity = container.Velocity;
+            c.ContainerAngularVelocity = container.AngularVelocity;
+            c.WorldToGrid = _grid.WorldToGrid;
+            c.GridDims = new UInt3((uint)_grid.DimX, (uint)_grid.DimY, (uint)_grid.DimZ);
+            c.GridCellCount = (uint)_grid.CellCount;
+            _constantsChanged = true;
             _containerChanged = false;
             _boundaryMoved = true;
+        }
+
+        /// <summary>Records the constants' upload when a value changed since the last one: the dispatches recorded after it
+        /// read the new values, those before it the old.</summary>
+        void PushConstants()
+        {
+            if (!_constantsChanged) return;
+            _device.UpdateBuffer(_constantsBuffer, _constants);
+            _constantsChanged = false;
         }
 
         void UploadObstacles()
@@ -968,8 +1001,8 @@ namespace SphFluid.Simulation
                 rows[i] = new SphereObstacleData(_scene.Obstacles[i]);
             if (count == 0) rows[0] = default;
             _obstacles.SetData(rows, 0, 0, Math.Max(count, 1));
-            foreach (var program in _programs)
-                _device.SetInt(program, _ids.ObstacleCount, count);
+            _constants[0].ObstacleCount = (uint)count;
+            _constantsChanged = true;
             _boundaryMoved = true;
         }
 
@@ -1002,9 +1035,9 @@ namespace SphFluid.Simulation
             _diagnosticsReadback = null;
             foreach (var buffer in new[] { _particles, _particlesOther, _phaseBuffer, _densities, _normalsBuffer, _accelerations,
                          _xsph, _shifts, _obstacles, _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits,
-                         _factors, _solverStiffness, _warmStart, _solverPartials, _solverState, _solverArguments, _divergenceRates })
+                         _factors, _solverStiffness, _warmStart, _solverPartials, _solverState, _solverArguments, _divergenceRates, _constantsBuffer })
                 buffer?.Dispose();
-            _factors = _solverStiffness = _warmStart = _solverPartials = _solverState = _solverArguments = _divergenceRates = null;
+            _factors = _solverStiffness = _warmStart = _solverPartials = _solverState = _solverArguments = _divergenceRates = _constantsBuffer = null;
             _particles = _particlesOther = _phaseBuffer = _densities = _normalsBuffer = _accelerations = null;
             _xsph = _shifts = _obstacles = _motionPartials = _motionTotals = _diagnosticsPartials = _diagnosticsTotals = _clampHits = null;
             ReleaseBoundary();
@@ -1020,19 +1053,15 @@ namespace SphFluid.Simulation
         /// <summary>Property ids, looked up once.</summary>
         sealed class ShaderIds
         {
+            public readonly int FluidConstants;
             public readonly int Particles, Phases, Densities, Normals, Accelerations, XsphCorrections, Shifts, Obstacles, CellStart, CellCount;
-            public readonly int ShiftingCoefficient;
             public readonly int MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
-            public readonly int ParticleCount, PhaseCount, ReductionGroupCount, ObstacleCount, TimeStep;
-            public readonly int SmoothingRadius, SmoothingRadius2, KernelCoefficient, GradientCoefficient, CohesionCoefficient;
-            public readonly int Stiffness, Gamma, Gravity, XsphEpsilon, VelocityDamping, ParticleSpacing, WallFriction, ArtificialViscosity, WallArtificialViscosity;
-            public readonly int WorldToContainer, ContainerToWorld, ContainerCenter, ContainerClampExtent, ContainerHalfSize, ContainerVelocity, ContainerAngularVelocity;
-            public readonly int BoundaryRest, BoundaryPlaced, BoundaryParticles, BoundaryPressures, BoundaryCellStart, BoundaryCellCount, BoundaryCount, ClampHits;
+            public readonly int BoundaryRest, BoundaryPlaced, BoundaryParticles, BoundaryPressures, BoundaryCellStart, BoundaryCellCount, ClampHits;
             public readonly int DivergenceFreeFactors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
-            public readonly int SolveSlot, SolveTolerance, SolveRounds;
 
             public ShaderIds(IComputeDevice d)
             {
+                FluidConstants = d.PropertyId("FluidConstants");
                 Particles = d.PropertyId("_Particles");
                 Phases = d.PropertyId("_Phases");
                 Densities = d.PropertyId("_Densities");
@@ -1040,7 +1069,6 @@ namespace SphFluid.Simulation
                 Accelerations = d.PropertyId("_Accelerations");
                 XsphCorrections = d.PropertyId("_XsphCorrections");
                 Shifts = d.PropertyId("_Shifts");
-                ShiftingCoefficient = d.PropertyId("_ShiftingCoefficient");
                 Obstacles = d.PropertyId("_Obstacles");
                 CellStart = d.PropertyId(ParticleSorter.CellStartProperty);
                 CellCount = d.PropertyId(ParticleSorter.CellCountProperty);
@@ -1048,25 +1076,12 @@ namespace SphFluid.Simulation
                 MotionTotals = d.PropertyId("_MotionTotals");
                 DiagnosticsPartials = d.PropertyId("_DiagnosticsPartials");
                 DiagnosticsTotals = d.PropertyId("_DiagnosticsTotals");
-                ParticleCount = d.PropertyId("_ParticleCount");
-                PhaseCount = d.PropertyId("_PhaseCount");
-                ReductionGroupCount = d.PropertyId("_ReductionGroupCount");
-                ObstacleCount = d.PropertyId("_ObstacleCount");
-                TimeStep = d.PropertyId("_TimeStep");
-                SmoothingRadius = d.PropertyId("_SmoothingRadius");
-                SmoothingRadius2 = d.PropertyId("_SmoothingRadius2");
-                KernelCoefficient = d.PropertyId("_KernelCoefficient");
-                GradientCoefficient = d.PropertyId("_GradientCoefficient");
-                WallFriction = d.PropertyId("_WallFriction");
-                ArtificialViscosity = d.PropertyId("_ArtificialViscosity");
-                WallArtificialViscosity = d.PropertyId("_WallArtificialViscosity");
                 BoundaryRest = d.PropertyId("_BoundaryRest");
                 BoundaryPlaced = d.PropertyId("_BoundaryPlaced");
                 BoundaryParticles = d.PropertyId("_BoundaryParticles");
                 BoundaryPressures = d.PropertyId("_BoundaryPressures");
                 BoundaryCellStart = d.PropertyId("_BoundaryCellStart");
                 BoundaryCellCount = d.PropertyId("_BoundaryCellCount");
-                BoundaryCount = d.PropertyId("_BoundaryCount");
                 ClampHits = d.PropertyId("_ClampHits");
                 DivergenceFreeFactors = d.PropertyId("_DivergenceFreeFactors");
                 SolverStiffness = d.PropertyId("_SolverStiffness");
@@ -1075,23 +1090,6 @@ namespace SphFluid.Simulation
                 SolverState = d.PropertyId("_SolverState");
                 SolverArguments = d.PropertyId("_SolverArguments");
                 DivergenceRates = d.PropertyId("_DivergenceRates");
-                SolveSlot = d.PropertyId("_SolveSlot");
-                SolveTolerance = d.PropertyId("_SolveTolerance");
-                SolveRounds = d.PropertyId("_SolveRounds");
-                CohesionCoefficient = d.PropertyId("_CohesionCoefficient");
-                Stiffness = d.PropertyId("_Stiffness");
-                Gamma = d.PropertyId("_Gamma");
-                Gravity = d.PropertyId("_Gravity");
-                XsphEpsilon = d.PropertyId("_XsphEpsilon");
-                VelocityDamping = d.PropertyId("_VelocityDamping");
-                ParticleSpacing = d.PropertyId("_ParticleSpacing");
-                WorldToContainer = d.PropertyId("_WorldToContainer");
-                ContainerToWorld = d.PropertyId("_ContainerToWorld");
-                ContainerCenter = d.PropertyId("_ContainerCenter");
-                ContainerHalfSize = d.PropertyId("_ContainerHalfSize");
-                ContainerClampExtent = d.PropertyId("_ContainerClampExtent");
-                ContainerVelocity = d.PropertyId("_ContainerVelocity");
-                ContainerAngularVelocity = d.PropertyId("_ContainerAngularVelocity");
             }
         }
     }
