@@ -346,228 +346,59 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
         Check(_vk.CreateFence(_device, &fenceInfo, null, out _immediateFence), "vkCreateFence");
     }
 
-    // ---------------------------------------------------------------- memory
+    // ---------------------------------------------------------------- teardown
 
-    uint FindMemoryType(uint typeBits, MemoryPropertyFlags required, MemoryPropertyFlags preferred, MemoryPropertyFlags avoided)
+    public void Dispose()
     {
-        int best = -1, bestScore = int.MinValue;
-        for (int i = 0; i < _memory.MemoryTypeCount; i++)
+        if (_disposed) return;
+        try
         {
-            if ((typeBits & (1u << i)) == 0) continue;
-            var flags = _memory.MemoryTypes[i].PropertyFlags;
-            if ((flags & required) != required) continue;
-            int score = ((flags & preferred) == preferred ? 2 : 0) - ((flags & avoided) != 0 ? 1 : 0);
-            if (score > bestScore) { best = i; bestScore = score; }
+            if (_device.Handle != 0)
+            {
+                if (_recording != null)
+                {
+                    _vk.EndCommandBuffer(_recording.Cmd);
+                    _recording = null;
+                }
+                _vk.DeviceWaitIdle(_device);
+                foreach (var f in _frames) if (f != null && f.InFlight) WaitFrame(f);
+            }
         }
-        if (best < 0) throw new ComputeException($"No Vulkan memory type with {required} for this buffer");
-        return (uint)best;
-    }
-
-    (VkBuffer, DeviceMemory, MemoryPropertyFlags) CreateRawBuffer(ulong size, BufferUsageFlags usage, MemoryPropertyFlags required, MemoryPropertyFlags preferred, MemoryPropertyFlags avoided, string what)
-    {
-        var info = new BufferCreateInfo { SType = StructureType.BufferCreateInfo, Size = size, Usage = usage, SharingMode = SharingMode.Exclusive };
-        VkBuffer buffer;
-        Check(_vk.CreateBuffer(_device, &info, null, &buffer), $"vkCreateBuffer ({what}, {size} bytes)");
-        _vk.GetBufferMemoryRequirements(_device, buffer, out var req);
-        uint type = FindMemoryType(req.MemoryTypeBits, required, preferred, avoided);
-        var alloc = new MemoryAllocateInfo { SType = StructureType.MemoryAllocateInfo, AllocationSize = req.Size, MemoryTypeIndex = type };
-        DeviceMemory memory;
-        var r = _vk.AllocateMemory(_device, &alloc, null, &memory);
-        if (r != Result.Success)
+        finally
         {
-            _vk.DestroyBuffer(_device, buffer, null);
-            throw new ComputeException($"Out of GPU memory allocating {what} ({size} bytes): {r}");
+            _disposed = true;
+            DestroyEverything();
         }
-        Check(_vk.BindBufferMemory(_device, buffer, memory, 0), "vkBindBufferMemory");
-        return (buffer, memory, _memory.MemoryTypes[(int)type].PropertyFlags);
     }
 
-    void EnsureStaging(ulong size)
+    void DestroyEverything()
     {
-        if (_stagingSize >= size) return;
-        if (_staging.Handle != 0)
+        if (_device.Handle != 0)
         {
-            _vk.DestroyBuffer(_device, _staging, null);
-            _vk.FreeMemory(_device, _stagingMemory, null);
-            _staging = default;
+            foreach (var b in _liveBuffers.ToList()) DestroyBuffer(b);
+            _deferredRelease.Clear();
+            DestroyAllTextures();
+            foreach (var v in _variantCache.Values) DestroyVariant(v);
+            _variantCache.Clear();
+            for (int i = 0; i < _frames.Length; i++) { DestroyFrame(_frames[i]); _frames[i] = null; }
+            if (_staging.Handle != 0)
+            {
+                _vk.DestroyBuffer(_device, _staging, null);
+                _vk.FreeMemory(_device, _stagingMemory, null);
+                _staging = default;
+            }
+            if (_immediateFence.Handle != 0) _vk.DestroyFence(_device, _immediateFence, null);
+            if (_immediatePool.Handle != 0) _vk.DestroyCommandPool(_device, _immediatePool, null);
+            _vk.DestroyDevice(_device, null);
+            _device = default;
         }
-        ulong newSize = Math.Max(size, Math.Max(_stagingSize * 2, 1UL << 20));
-        var (b, m, _) = CreateRawBuffer(newSize, BufferUsageFlags.TransferSrcBit | BufferUsageFlags.TransferDstBit,
-            MemoryPropertyFlags.HostVisibleBit | MemoryPropertyFlags.HostCoherentBit, MemoryPropertyFlags.HostCachedBit, 0, "staging buffer");
-        _staging = b;
-        _stagingMemory = m;
-        void* p;
-        Check(_vk.MapMemory(_device, m, 0, Vk.WholeSize, 0, &p), "vkMapMemory (staging)");
-        _stagingMapped = (byte*)p;
-        _stagingSize = newSize;
-    }
-
-    /// <summary>Records and runs a one-off command buffer, waiting for it (uploads, read-backs, clears).</summary>
-    void Immediate(Action<CommandBuffer> record)
-    {
-        Check(_vk.ResetCommandBuffer(_immediateCmd, 0), "vkResetCommandBuffer");
-        var begin = new CommandBufferBeginInfo { SType = StructureType.CommandBufferBeginInfo, Flags = CommandBufferUsageFlags.OneTimeSubmitBit };
-        Check(_vk.BeginCommandBuffer(_immediateCmd, &begin), "vkBeginCommandBuffer");
-        FullBarrier(_immediateCmd);
-        record(_immediateCmd);
-        FullBarrier(_immediateCmd);
-        Check(_vk.EndCommandBuffer(_immediateCmd), "vkEndCommandBuffer");
-        var cmd = _immediateCmd;
-        var submit = new SubmitInfo { SType = StructureType.SubmitInfo, CommandBufferCount = 1, PCommandBuffers = &cmd };
-        var fence = _immediateFence;
-        Check(_vk.ResetFences(_device, 1, &fence), "vkResetFences");
-        Check(_vk.QueueSubmit(_queue, 1, &submit, fence), "vkQueueSubmit");
-        SubmitCount++;
-        Check(_vk.WaitForFences(_device, 1, &fence, true, ulong.MaxValue), "vkWaitForFences");
-    }
-
-    /// <summary>Orders everything before against everything after on the queue: compute, transfers and host reads.</summary>
-    void FullBarrier(CommandBuffer cmd)
-    {
-        var barrier = new MemoryBarrier
+        DestroyMessenger();
+        if (_instance.Handle != 0)
         {
-            SType = StructureType.MemoryBarrier,
-            SrcAccessMask = AccessFlags.ShaderWriteBit | AccessFlags.TransferWriteBit | AccessFlags.ShaderReadBit | AccessFlags.TransferReadBit,
-            DstAccessMask = AccessFlags.ShaderReadBit | AccessFlags.ShaderWriteBit | AccessFlags.TransferReadBit | AccessFlags.TransferWriteBit | AccessFlags.HostReadBit | AccessFlags.UniformReadBit
-                | AccessFlags.IndirectCommandReadBit,
-        };
-        _vk.CmdPipelineBarrier(cmd, PipelineStageFlags.ComputeShaderBit | PipelineStageFlags.TransferBit,
-            PipelineStageFlags.ComputeShaderBit | PipelineStageFlags.TransferBit | PipelineStageFlags.HostBit | PipelineStageFlags.DrawIndirectBit,
-            0, 1, &barrier, 0, null, 0, null);
-    }
-
-    // ---------------------------------------------------------------- buffers
-
-    public IComputeBuffer CreateArgumentsBuffer(string name, int count)
-    {
-        if (count < 3) throw new ArgumentOutOfRangeException(nameof(count), count, $"Arguments buffer '{name}': count must be >= 3 (x, y, z groups)");
-        return CreateBuffer(name, count, 4);
-    }
-
-    public IComputeBuffer CreateBuffer(string name, int count, int stride)
-    {
-        ThrowIfDisposed();
-        if (string.IsNullOrEmpty(name)) throw new ArgumentException("A compute buffer needs a name (it appears in every error about it)", nameof(name));
-        if (count <= 0) throw new ArgumentOutOfRangeException(nameof(count), count, $"Compute buffer '{name}': count must be > 0");
-        if (stride <= 0 || stride % 4 != 0 || stride > 2048)
-            throw new ArgumentOutOfRangeException(nameof(stride), stride, $"Compute buffer '{name}': stride must be a multiple of 4 in [4, 2048] bytes");
-        ulong size = (ulong)count * (ulong)stride;
-        if (size > _limits.MaxStorageBufferRange)
-            throw new ComputeException($"Compute buffer '{name}' ({count} x {stride} = {size} bytes) exceeds this device's storage buffer range of {_limits.MaxStorageBufferRange} bytes");
-        // Every buffer may hold indirect dispatch arguments (CreateArgumentsBuffer is a uint buffer like any other).
-        return NewBuffer(name, count, stride, BufferUsageFlags.StorageBufferBit | BufferUsageFlags.IndirectBufferBit, false);
-    }
-
-    public IComputeBuffer CreateConstantBuffer(string name, int bytes)
-    {
-        ThrowIfDisposed();
-        if (string.IsNullOrEmpty(name)) throw new ArgumentException("A constant buffer needs a name (it appears in every error about it)", nameof(name));
-        if (bytes <= 0 || bytes % 16 != 0 || bytes > 65536)
-            throw new ArgumentOutOfRangeException(nameof(bytes), bytes, $"Constant buffer '{name}': size must be a multiple of 16 in [16, 65536] bytes");
-        if ((uint)bytes > _limits.MaxUniformBufferRange)
-            throw new ComputeException($"Constant buffer '{name}' ({bytes} bytes) exceeds this device's uniform buffer range of {_limits.MaxUniformBufferRange} bytes");
-        return NewBuffer(name, 1, bytes, BufferUsageFlags.UniformBufferBit, true);
-    }
-
-    VulkanBuffer NewBuffer(string name, int count, int stride, BufferUsageFlags usage, bool constant)
-    {
-        ulong size = (ulong)count * (ulong)stride;
-        var buffer = new VulkanBuffer(this, name, count, stride) { IsConstant = constant };
-        var (b, m, flags) = CreateRawBuffer(size, usage | BufferUsageFlags.TransferSrcBit | BufferUsageFlags.TransferDstBit,
-            MemoryPropertyFlags.DeviceLocalBit, MemoryPropertyFlags.DeviceLocalBit, MemoryPropertyFlags.HostVisibleBit, $"buffer '{name}'");
-        buffer.Handle = b;
-        buffer.Memory = m;
-        const MemoryPropertyFlags mappable = MemoryPropertyFlags.HostVisibleBit | MemoryPropertyFlags.HostCoherentBit;
-        if ((flags & mappable) == mappable && _options.MapDeviceBuffers)
-        {
-            void* p;
-            Check(_vk.MapMemory(_device, m, 0, Vk.WholeSize, 0, &p), "vkMapMemory");
-            buffer.Mapped = (byte*)p;
-            new Span<byte>(p, checked((int)Math.Min(size, int.MaxValue))).Clear();
-            if (size > int.MaxValue) new Span<byte>((byte*)p + int.MaxValue, (int)(size - int.MaxValue)).Clear();
+            _vk.DestroyInstance(_instance, null);
+            _instance = default;
         }
-        else
-        {
-            Immediate(cmd => _vk.CmdFillBuffer(cmd, b, 0, Vk.WholeSize, 0));
-        }
-        _liveBuffers.Add(buffer);
-        return buffer;
-    }
-
-    internal void Upload(VulkanBuffer buffer, long byteOffset, ReadOnlySpan<byte> data)
-    {
-        ThrowIfDisposed();
-        WaitIdle();
-        if (buffer.Mapped != null)
-        {
-            data.CopyTo(new Span<byte>(buffer.Mapped + byteOffset, data.Length));
-            return;
-        }
-        EnsureStaging((ulong)data.Length);
-        data.CopyTo(new Span<byte>(_stagingMapped, data.Length));
-        var region = new BufferCopy(0, (ulong)byteOffset, (ulong)data.Length);
-        Immediate(cmd => _vk.CmdCopyBuffer(cmd, _staging, buffer.Handle, 1, in region));
-    }
-
-    internal void Download(VulkanBuffer buffer, long byteOffset, Span<byte> data)
-    {
-        ThrowIfDisposed();
-        WaitIdle();
-        if (buffer.Mapped != null)
-        {
-            new ReadOnlySpan<byte>(buffer.Mapped + byteOffset, data.Length).CopyTo(data);
-            return;
-        }
-        EnsureStaging((ulong)data.Length);
-        var region = new BufferCopy((ulong)byteOffset, 0, (ulong)data.Length);
-        Immediate(cmd => _vk.CmdCopyBuffer(cmd, buffer.Handle, _staging, 1, in region));
-        new ReadOnlySpan<byte>(_stagingMapped, data.Length).CopyTo(data);
-    }
-
-    internal void Release(VulkanBuffer buffer)
-    {
-        if (_disposed || !_liveBuffers.Contains(buffer)) return;
-        if (buffer.LastUsedSerial > _completedSerial) _deferredRelease.Add(buffer);
-        else DestroyBuffer(buffer);
-    }
-
-    void DestroyBuffer(VulkanBuffer buffer)
-    {
-        if (!_liveBuffers.Remove(buffer)) return;
-        if (buffer.Mapped != null) _vk.UnmapMemory(_device, buffer.Memory);
-        _vk.DestroyBuffer(_device, buffer.Handle, null);
-        _vk.FreeMemory(_device, buffer.Memory, null);
-        buffer.Mapped = null;
-        buffer.Handle = default;
-        buffer.Memory = default;
-    }
-
-    void ReleaseDeferred()
-    {
-        for (int i = _deferredRelease.Count - 1; i >= 0; i--)
-        {
-            if (_deferredRelease[i].LastUsedSerial > _completedSerial) continue;
-            DestroyBuffer(_deferredRelease[i]);
-            _deferredRelease.RemoveAt(i);
-        }
-        ReleaseDeferredTextures();
-    }
-
-    public IReadbackRequest RequestReadback(IComputeBuffer buffer)
-    {
-        var b = AsBuffer(buffer, "RequestReadback");
-        var data = new byte[b.SizeInBytes];
-        Download(b, 0, data);
-        return new VulkanReadbackRequest(b.Name, data);
-    }
-
-    VulkanBuffer AsBuffer(IComputeBuffer buffer, string what)
-    {
-        if (buffer == null) throw new ArgumentNullException(nameof(buffer), $"{what}: buffer is null");
-        if (buffer is not VulkanBuffer b || !ReferenceEquals(b.Device, this))
-            throw new ComputeException($"{what}: buffer '{buffer.Name}' was not created by this Vulkan device");
-        b.ThrowIfDisposed();
-        return b;
+        FreeSelfHandle();
     }
 
     void ThrowIfDisposed()

@@ -12,18 +12,15 @@ namespace SphFluid.Simulation
     /// is <see cref="Step"/>; one sub-step is <see cref="Substep"/>.
     /// </summary>
     /// <remarks>
-    /// Buffers: two particle buffers (the sort writes the other one and they swap: <see cref="Particles"/> is
-    /// always the cell-sorted current state), per-particle density/pressure, normals, accelerations and XSPH
-    /// corrections (indexed like the current particles), the phase table, the obstacles, the sorter's
-    /// CellStart/CellCount, the boundary particles (rest frame, placed, cell-sorted, with their own sorter),
-    /// the clamp-hit counter, and the reduction partials and totals.
+    /// Concerns kept elsewhere: the GPU buffers and their bindings in <see cref="SolverBuffers"/>, the constants in
+    /// <see cref="FluidConstants"/> (recorded as one upload when they change), the motion and diagnostics read-backs in
+    /// FluidSimulation.Readbacks.cs, and the container and obstacle updates in FluidSimulation.SceneUpdates.cs.
     /// </remarks>
-    public sealed class FluidSimulation : IDisposable
+    public sealed partial class FluidSimulation : IDisposable
     {
         public const string SolverProgramName = "FluidSolver";
         public const string DiagnosticsProgramName = "FluidDiagnostics";
         const int ReductionThreads = 256; // REDUCTION_THREADS in Include/SphTimeStep.hlsl
-        const uint ParticleThreads = 128; // PARTICLE_THREADS in FluidSolver.compute
 
         /// <summary>alpha_w of the contact damping against boundary particles (SphBoundary.hlsl): Monaghan's artificial
         /// viscosity on the velocity into the wall only. 0.5 brought the clamp hits of a turning container and a driven
@@ -48,18 +45,11 @@ namespace SphFluid.Simulation
         readonly int[] _solverKernels;
         readonly int _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal;
         readonly int _reductionGroups;
-        readonly ShaderIds _ids;
 
-        IComputeBuffer _particles, _particlesOther;
-        IComputeBuffer _phaseBuffer, _densities, _normalsBuffer, _accelerations, _xsph, _obstacles, _shifts;
-        IComputeBuffer _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits;
-        IComputeBuffer _boundaryRest, _boundaryPlaced, _boundarySorted, _boundaryPressures;
-        IComputeBuffer _factors, _solverStiffness, _warmStart, _solverPartials, _solverState, _solverArguments, _divergenceRates;
-        IComputeBuffer _constantsBuffer;
+        SolverBuffers _buffers;
         // The constant buffer's contents (Include/FluidConstants.hlsl); an array of one so that the upload allocates nothing.
         readonly FluidConstants[] _constants = new FluidConstants[1];
         bool _constantsChanged = true;
-        ParticleSorter _sorter, _boundarySorter;
         CellGrid _grid;
         bool _containerChanged = true;
         bool _boundaryMoved = true;
@@ -69,7 +59,6 @@ namespace SphFluid.Simulation
         readonly Vector4[] _motionRow = new Vector4[2]; // [0] vmax, amax; [1] the DFSPH solves' iterations (SolveBudget)
         readonly int[] _solveRounds = new int[2];       // rounds recorded per solve, by solve slot (SolveBudget)
         // Kept for the simulation's lifetime so that a steady frame makes no garbage (Unity's GC stalls show as hitches).
-        readonly IComputeProgram[] _programs;
         readonly int[] _diagnosticsKernels;
         readonly SphereObstacleData[] _obstacleRows = new SphereObstacleData[FluidSceneDescription.MaxObstacles];
         readonly Vector4[] _diagnosticsRows;
@@ -97,7 +86,6 @@ namespace SphFluid.Simulation
             ParticleCount = _spawn.Length;
             _timeStep = TimeStepController.ForScene(_scene);
             _reductionGroups = (ParticleCount + ReductionThreads - 1) / ReductionThreads;
-            _ids = new ShaderIds(device);
 
             _solver = device.LoadProgram(SolverProgramName);
             _diagnostics = device.LoadProgram(DiagnosticsProgramName);
@@ -132,13 +120,14 @@ namespace SphFluid.Simulation
             _motionFinal = _diagnostics.FindKernel("MotionFinal");
             _diagnosticsPartial = _diagnostics.FindKernel("DiagnosticsPartial");
             _diagnosticsFinal = _diagnostics.FindKernel("DiagnosticsFinal");
-            _programs = new[] { _solver, _diagnostics };
             _diagnosticsKernels = new[] { _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal };
             _diagnosticsRows = new Vector4[3 + _phases.Count];
 
             try
             {
-                CreateBuffers();
+                _buffers = new SolverBuffers(device, _solver, _solverKernels, _diagnostics, _diagnosticsKernels, ParticleCount, _phaseTable,
+                    _reductionGroups, device.PropertyId("FluidConstants"));
+                RebuildGrid();
                 CreateBoundary();
                 WriteConstants();
                 UploadObstacles();
@@ -156,32 +145,32 @@ namespace SphFluid.Simulation
 
         /// <summary>The particles (<see cref="Particle"/>), sorted by grid cell. Shader name <c>_Particles</c>.
         /// The buffer object alternates between two after every sort: fetch it each frame.</summary>
-        public IComputeBuffer Particles => _particles;
+        public IComputeBuffer Particles => _buffers.Particles;
 
         /// <summary>The phase table (<see cref="PhaseProperties"/>), indexed by <see cref="Particle.Phase"/>. Shader name <c>_Phases</c>.</summary>
-        public IComputeBuffer PhaseTable => _phaseBuffer;
+        public IComputeBuffer PhaseTable => _buffers.Phases;
 
         /// <summary>Per particle (same order as <see cref="Particles"/>): rho, p, delta, p / delta^2.</summary>
-        public IComputeBuffer Densities => _densities;
+        public IComputeBuffer Densities => _buffers.Densities;
 
         /// <summary>Per particle: acceleration (xyz) of the last force pass, m/s^2.</summary>
-        public IComputeBuffer Accelerations => _accelerations;
+        public IComputeBuffer Accelerations => _buffers.Accelerations;
 
         /// <summary>Per particle: colour-field normal (xyz) when surface tension is on.</summary>
-        public IComputeBuffer Normals => _normalsBuffer;
+        public IComputeBuffer Normals => _buffers.Normals;
 
         /// <summary>Per particle: XSPH velocity correction (xyz) when XSPH is on, m/s.</summary>
-        public IComputeBuffer XsphCorrections => _xsph;
+        public IComputeBuffer XsphCorrections => _buffers.XsphCorrections;
 
         /// <summary>DFSPH, by particle id (not sorted): float2 of the q the last constant-density (x) and divergence-free (y)
         /// solves applied in total, the next sub-step's warm start (DivergenceFreeSolver.hlsl).</summary>
-        public IComputeBuffer WarmStart => _warmStart;
+        public IComputeBuffer WarmStart => _buffers.WarmStart;
 
         /// <summary>Per particle: the particle shift (xyz) of the last sub-step when shifting is on, m (ParticleShifting.hlsl).</summary>
-        public IComputeBuffer Shifts => _shifts;
+        public IComputeBuffer Shifts => _buffers.Shifts;
 
         /// <summary>The boundary particles (<see cref="BoundaryParticle"/>) in world space, sorted by grid cell.</summary>
-        public IComputeBuffer BoundaryParticles => _boundarySorted;
+        public IComputeBuffer BoundaryParticles => _buffers.BoundarySorted;
 
         /// <summary>Number of boundary particles (container walls and obstacles).</summary>
         public int BoundaryCount => _boundaryCount;
@@ -310,7 +299,7 @@ namespace SphFluid.Simulation
             {
                 _device.BeginSample(PassNames.PlaceBoundary);
                 _device.DispatchThreads(_solver, _placeBoundary, _boundaryCount);
-                _boundarySorter.Sort(_grid, _boundaryPlaced, _boundarySorted, _boundaryCount);
+                _buffers.BoundarySorter.Sort(_grid, _buffers.BoundaryPlaced, _buffers.BoundarySorted, _boundaryCount);
                 _device.EndSample(PassNames.PlaceBoundary);
                 _boundaryMoved = false;
             }
@@ -375,7 +364,6 @@ namespace SphFluid.Simulation
         }
 
         const int DensitySolveSlot = 0, DivergenceSolveSlot = 1;
-        const int SolverStateWords = 17; // two solve slots of 8 words and the open solve's slot (FluidSolver.compute)
 
         /// <summary>Rounds (error pass, SolveFinal, correction) recorded for each DFSPH solve of the next sub-steps:
         /// [0] constant density, [1] divergence-free. At most MaxSolverIterations; see <see cref="SolveBudget"/>.</summary>
@@ -432,9 +420,9 @@ namespace SphFluid.Simulation
             _device.DispatchThreads(_solver, _applyStiffness, ParticleCount);
             for (int l = 0; l < rounds; l++)
             {
-                _device.DispatchIndirect(_solver, errorKernel, _solverArguments, 0);
+                _device.DispatchIndirect(_solver, errorKernel, _buffers.SolverArguments, 0);
                 _device.Dispatch(_solver, _solveFinal, 1, 1, 1);
-                _device.DispatchIndirect(_solver, _applyStiffness, _solverArguments, 0);
+                _device.DispatchIndirect(_solver, _applyStiffness, _buffers.SolverArguments, 0);
             }
         }
 
@@ -444,8 +432,8 @@ namespace SphFluid.Simulation
         void SortAndComputeForces(bool withForces = true)
         {
             _device.BeginSample(PassNames.Sort);
-            _sorter.Sort(_grid, _particles, _particlesOther, ParticleCount);
-            SwapParticleBuffers();
+            _buffers.Sorter.Sort(_grid, _buffers.Particles, _buffers.ParticlesOther, ParticleCount);
+            _buffers.SwapParticles();
             _device.EndSample(PassNames.Sort);
 
             if (_divergenceFree)
@@ -492,125 +480,8 @@ namespace SphFluid.Simulation
             if (particles == null) throw new ArgumentNullException(nameof(particles));
             if (particles.Length != ParticleCount)
                 throw new ArgumentException($"FluidSimulation: SetParticles needs exactly {ParticleCount} particles (was {particles.Length})", nameof(particles));
-            _particles.SetData(particles);
+            _buffers.Particles.SetData(particles);
             ComputeForces();
-        }
-
-        /// <summary>Moves (or resizes) the container; its transform is uploaded before the next step.
-        /// Callers push the container every frame, so an unchanged one returns before anything is copied or
-        /// validated (it was validated when it was set).</summary>
-        public void UpdateContainer(ContainerDescription container)
-        {
-            ThrowIfDisposed();
-            if (container == null) throw new ArgumentNullException(nameof(container));
-            var old = _scene.Container;
-            if (old.SamePlacement(container) && old.Velocity == container.Velocity && old.AngularVelocity == container.AngularVelocity
-                && old.Friction == container.Friction)
-                return;
-            // The container's rules read only the settings (its least size), so the probe holds nothing else;
-            // probe and list are kept because a turning container changes every frame.
-            _containerProbe.Settings = _scene.Settings;
-            _containerProbe.Container = container;
-            _containerErrors.Clear();
-            _containerProbe.ValidateContainer(_containerErrors);
-            _containerProbe.Container = null;
-            if (_containerErrors.Count > 0) throw new ArgumentException(Join(_containerErrors));
-            if (old.Size == container.Size && old.Friction == container.Friction)
-            {
-                // Only placement and motion differ: copied into the simulation's own description, not cloned.
-                old.Position = container.Position;
-                old.Rotation = container.Rotation;
-                old.Velocity = container.Velocity;
-                old.AngularVelocity = container.AngularVelocity;
-                _containerChanged = true;
-                return;
-            }
-            _scene.Container = container.Clone();
-            _containerChanged = true;
-            if (old.Size != container.Size)
-            {
-                RebuildGrid();
-                CreateBoundary();
-            }
-            if (old.Friction != container.Friction)
-                WriteConstants();
-        }
-
-        /// <summary>Replaces the sphere obstacles (any count up to <see cref="FluidSceneDescription.MaxObstacles"/>).
-        /// Callers push the obstacles every frame, so the same spheres as now return before anything is copied,
-        /// validated or uploaded.</summary>
-        public void UpdateObstacles(IReadOnlyList<SphereObstacleDescription> obstacles)
-        {
-            ThrowIfDisposed();
-            int count = obstacles == null ? 0 : obstacles.Count;
-            var current = _scene.Obstacles;
-            bool same = current.Count == count;
-            for (int i = 0; same && i < count; i++)
-            {
-                SphereObstacleDescription now = current[i], next = obstacles[i];
-                same = next != null && now.Name == next.Name && now.Center == next.Center && now.Radius == next.Radius
-                       && now.Velocity == next.Velocity;
-            }
-            if (same) return;
-            if (MovedOnly(obstacles, count)) return;
-
-            var list = new List<SphereObstacleDescription>(count);
-            for (int i = 0; i < count; i++) list.Add(obstacles[i]?.Clone());
-            // The obstacles' rules read nothing else of the scene, so the probe holds only them.
-            var probe = new FluidSceneDescription { Obstacles = list };
-            var errors = new List<string>();
-            foreach (var e in probe.Validate())
-                if (e.Field.StartsWith("Obstacles", StringComparison.Ordinal)) errors.Add(e.Message);
-            if (errors.Count > 0) throw new ArgumentException(string.Join("\n", errors));
-            bool reshaped = !SameShapes(_scene.Obstacles, list);
-            _scene.Obstacles = list;
-            UploadObstacles();
-            if (reshaped) CreateBoundary();
-        }
-
-        /// <summary>The same spheres (count, names, radii) at new centres or speeds, as a driven sphere is every frame:
-        /// checked with the sphere rules under names made once, and copied into the simulation's own descriptions, so
-        /// that nothing is allocated. False when more than that changed (the caller then replaces the list).</summary>
-        bool MovedOnly(IReadOnlyList<SphereObstacleDescription> obstacles, int count)
-        {
-            var current = _scene.Obstacles;
-            if (current.Count != count) return false;
-            for (int i = 0; i < count; i++)
-            {
-                SphereObstacleDescription now = current[i], next = obstacles[i];
-                if (next == null || now.Name != next.Name || now.Radius != next.Radius) return false;
-            }
-            if (_obstacleNamesFor != current)
-            {
-                _obstacleNames = new string[count, 2];
-                for (int i = 0; i < count; i++)
-                {
-                    _obstacleNames[i, 0] = FluidSceneDescription.ObstacleOwner(current[i]);
-                    _obstacleNames[i, 1] = FluidSceneDescription.ObstaclePath(i);
-                }
-                _obstacleNamesFor = current;
-            }
-            _obstacleErrors.Clear();
-            for (int i = 0; i < count; i++)
-                FluidSceneDescription.ValidateObstacle(_obstacleErrors, obstacles[i], _obstacleNames[i, 0], _obstacleNames[i, 1]);
-            if (_obstacleErrors.Count > 0) throw new ArgumentException(Join(_obstacleErrors));
-            for (int i = 0; i < count; i++)
-            {
-                current[i].Center = obstacles[i].Center;
-                current[i].Velocity = obstacles[i].Velocity;
-            }
-            UploadObstacles();
-            return true;
-        }
-
-        /// <summary>Same count and radii: the boundary particles only move with the spheres.</summary>
-        static bool SameShapes(IReadOnlyList<SphereObstacleDescription> a, IReadOnlyList<SphereObstacleDescription> b)
-        {
-            int na = a == null ? 0 : a.Count, nb = b == null ? 0 : b.Count;
-            if (na != nb) return false;
-            for (int i = 0; i < na; i++)
-                if (a[i].Radius != b[i].Radius) return false;
-            return true;
         }
 
         /// <summary>Respawns every particle as at construction and computes the first forces.</summary>
@@ -626,10 +497,8 @@ namespace SphFluid.Simulation
             _motionReadback = null;
             _diagnosticsReadback = null;
             LatestDiagnostics = null;
-            _particles.SetData(_spawn);
-            _clampHits.SetData(new uint[1]);
-            _warmStart.SetData(new Vector2[ParticleCount]);
-            _solverState.SetData(new uint[SolverStateWords]);
+            _buffers.Particles.SetData(_spawn);
+            _buffers.ClearForRespawn();
             _solveRounds[DensitySolveSlot] = _solveRounds[DivergenceSolveSlot] = _scene.Settings.MaxSolverIterations;
             WriteSolveRounds();
             ComputeForces();
@@ -638,262 +507,18 @@ namespace SphFluid.Simulation
             _timeStep.ReportMotion(firstSpeed, firstAcceleration);
         }
 
-        // ---------------------------------------------------------------- diagnostics
-
-        /// <summary>Latest diagnostics read back asynchronously (after <see cref="RequestDiagnostics"/>);
-        /// null until one arrives, possibly a frame stale (see <see cref="DiagnosticsReport.SimulatedTime"/>).
-        /// The simulation refills this one report in place when a newer read-back arrives (a report a frame would
-        /// be garbage a frame): read its figures now, or use <see cref="ReadDiagnostics"/> for a report to keep.</summary>
-        public DiagnosticsReport LatestDiagnostics
-        {
-            get
-            {
-                PollDiagnostics();
-                return _latestDiagnostics;
-            }
-            private set => _latestDiagnostics = value;
-        }
-
-        /// <summary>Records the diagnostics reductions and starts their asynchronous read-back
-        /// (ignored while the previous one is still in flight).</summary>
-        public void RequestDiagnostics()
-        {
-            ThrowIfDisposed();
-            PollDiagnostics();
-            if (_diagnosticsReadback != null) return;
-            DispatchDiagnostics();
-            _diagnosticsReadback = _device.RequestReadback(_diagnosticsTotals);
-            _diagnosticsRequestTime = SimulatedTime;
-            _device.Submit();
-        }
-
-        /// <summary>Blocking diagnostics of the current state (tools and tests).</summary>
-        public DiagnosticsReport ReadDiagnostics()
-        {
-            ThrowIfDisposed();
-            DispatchDiagnostics();
-            var rows = new Vector4[3 + _phases.Count];
-            _diagnosticsTotals.GetData(rows);
-            return ToReport(rows, SimulatedTime);
-        }
-
-        void DispatchDiagnostics()
-        {
-            PushConstants();
-            _device.BeginSample(PassNames.Diagnostics);
-            _device.DispatchThreads(_solver, _divergenceRate, ParticleCount);
-            _device.Dispatch(_diagnostics, _diagnosticsPartial, _reductionGroups, 1, 1);
-            _device.Dispatch(_diagnostics, _diagnosticsFinal, 1, 1, 1);
-            _device.EndSample(PassNames.Diagnostics);
-        }
-
-        void PollDiagnostics()
-        {
-            if (_diagnosticsReadback == null || !_diagnosticsReadback.IsDone) return;
-            var request = _diagnosticsReadback;
-            _diagnosticsReadback = null;
-            if (request.HasError) return;
-            request.GetData(_diagnosticsRows);
-            if (_diagnosticsReport == null)
-            {
-                _diagnosticsPhases = NewPhaseRows();
-                _diagnosticsReport = new DiagnosticsReport(0, 0, 0f, 0, 0, _diagnosticsPhases, 0);
-            }
-            Refill(_diagnosticsReport, _diagnosticsPhases, _diagnosticsRows, _diagnosticsRequestTime);
-            _latestDiagnostics = _diagnosticsReport;
-        }
-
-        PhaseDiagnostics[] NewPhaseRows()
-        {
-            var phases = new PhaseDiagnostics[_phases.Count];
-            for (int k = 0; k < phases.Length; k++)
-                phases[k] = new PhaseDiagnostics(_phases[k].Name, 0, 0f, 0f);
-            return phases;
-        }
-
-        DiagnosticsReport ToReport(Vector4[] rows, double time)
-        {
-            var phases = NewPhaseRows();
-            var report = new DiagnosticsReport(0, 0, 0f, 0, 0, phases, time);
-            Refill(report, phases, rows, time);
-            return report;
-        }
-
-        /// <summary>Rows of DiagnosticsFinal: [0] KE, vmax, NaN count, outside count; [1 + k] phase k's count,
-        /// mean and max compression; [1 + phases] clamp hits; [2 + phases] mean |D delta / Dt| / delta0 (1/s) and the
-        /// DFSPH solves' mean corrections per solve.</summary>
-        void Refill(DiagnosticsReport report, PhaseDiagnostics[] phases, Vector4[] rows, double time)
-        {
-            double mass = 0;
-            for (int k = 0; k < phases.Length; k++)
-            {
-                Vector4 row = rows[1 + k];
-                int count = (int)Math.Round(row.X);
-                mass += (double)count * _phaseTable[k].ParticleMass;
-                phases[k].Refill(count, row.Y, row.Z);
-            }
-            report.Refill(mass, rows[0].X, rows[0].Y, (int)Math.Round(rows[0].Z), (int)Math.Round(rows[0].W), time,
-                (int)Math.Round(rows[1 + _phases.Count].X));
-            Vector4 solves = rows[2 + _phases.Count];
-            report.DivergenceError = 100f * solves.X;
-            report.DensitySolveIterations = solves.Y;
-            report.DivergenceSolveIterations = solves.Z;
-            report.PressureSolver = _scene.Settings.PressureSolver;
-        }
-
-        void RequestMotion()
-        {
-            if (_motionReadback != null) return; // one in flight: the controller plans with the older figures meanwhile
-            _device.BeginSample(PassNames.MotionReduction);
-            _device.Dispatch(_diagnostics, _motionPartial, _reductionGroups, 1, 1);
-            _device.Dispatch(_diagnostics, _motionFinal, 1, 1, 1);
-            _device.EndSample(PassNames.MotionReduction);
-            _motionReadback = _device.RequestReadback(_motionTotals);
-        }
-
-        void PollMotion()
-        {
-            if (_motionReadback == null || !_motionReadback.IsDone) return;
-            var request = _motionReadback;
-            _motionReadback = null;
-            if (request.HasError) return;
-            request.GetData(_motionRow);
-            _timeStep.ReportMotion(_motionRow[0].X, _motionRow[0].Y);
-            ReportSolveIterations(_motionRow[1]);
-        }
-
-        /// <summary>Reads max |v| and max |a| now (blocking) and feeds the time-step controller.</summary>
-        public void ReadMotion(out float maxSpeed, out float maxAcceleration)
-        {
-            ThrowIfDisposed();
-            PushConstants();
-            _device.Dispatch(_diagnostics, _motionPartial, _reductionGroups, 1, 1);
-            _device.Dispatch(_diagnostics, _motionFinal, 1, 1, 1);
-            _motionTotals.GetData(_motionRow);
-            ReportSolveIterations(_motionRow[1]);
-            maxSpeed = _motionRow[0].X;
-            maxAcceleration = _motionRow[0].Y;
-        }
-
         // ---------------------------------------------------------------- set-up
 
-        void CreateBuffers()
-        {
-            int n = ParticleCount;
-            _particles = _device.CreateBuffer("FluidSimulation.Particles", n, Particle.Stride);
-            _particlesOther = _device.CreateBuffer("FluidSimulation.ParticlesSorted", n, Particle.Stride);
-            _phaseBuffer = _device.CreateBuffer("FluidSimulation.Phases", _phaseTable.Length, PhaseProperties.Stride);
-            _phaseBuffer.SetData(_phaseTable);
-            _densities = _device.CreateBuffer("FluidSimulation.Densities", n, 16);
-            _normalsBuffer = _device.CreateBuffer("FluidSimulation.Normals", n, 16);
-            _accelerations = _device.CreateBuffer("FluidSimulation.Accelerations", n, 16);
-            _xsph = _device.CreateBuffer("FluidSimulation.XsphCorrections", n, 16);
-            _shifts = _device.CreateBuffer("FluidSimulation.Shifts", n, 16);
-            _obstacles = _device.CreateBuffer("FluidSimulation.Obstacles", FluidSceneDescription.MaxObstacles, SphereObstacleData.Stride);
-            _motionPartials = _device.CreateBuffer("FluidSimulation.MotionPartials", _reductionGroups, 16);
-            _motionTotals = _device.CreateBuffer("FluidSimulation.MotionTotals", 2, 16);
-            _diagnosticsPartials = _device.CreateBuffer("FluidSimulation.DiagnosticsPartials", _reductionGroups * (2 + _phases.Count), 16);
-            _diagnosticsTotals = _device.CreateBuffer("FluidSimulation.DiagnosticsTotals", 3 + _phases.Count, 16);
-            int particleGroups = ComputeDispatch.GroupsFor(n, ParticleThreads);
-            _factors = _device.CreateBuffer("FluidSimulation.DivergenceFreeFactors", n, 4);
-            _solverStiffness = _device.CreateBuffer("FluidSimulation.SolverStiffness", n, 4);
-            _warmStart = _device.CreateBuffer("FluidSimulation.WarmStart", n, 8);
-            _solverPartials = _device.CreateBuffer("FluidSimulation.SolverPartials", particleGroups, 4);
-            _solverState = _device.CreateBuffer("FluidSimulation.SolverState", SolverStateWords, 4);
-            _solverArguments = _device.CreateArgumentsBuffer("FluidSimulation.SolverArguments", 3);
-            _divergenceRates = _device.CreateBuffer("FluidSimulation.DivergenceRates", n, 4);
-            _factors.SetData(new float[n]);
-            _solverStiffness.SetData(new float[n]);
-            _warmStart.SetData(new Vector2[n]);
-            _solverPartials.SetData(new float[particleGroups]);
-            _solverState.SetData(new uint[SolverStateWords]);
-            _solverArguments.SetData(new uint[] { (uint)particleGroups, 1u, 1u });
-            _divergenceRates.SetData(new float[n]);
-            _clampHits = _device.CreateBuffer("FluidSimulation.ClampHits", 1, 4);
-            _clampHits.SetData(new uint[1]);
-            _constantsBuffer = _device.CreateConstantBuffer("FluidSimulation.Constants", FluidConstants.Bytes);
-            foreach (var program in _programs)
-                _device.SetConstantBuffer(program, _ids.FluidConstants, _constantsBuffer);
-
-            var zero = new Vector4[n];
-            _accelerations.SetData(zero);
-            _xsph.SetData(zero);
-            _shifts.SetData(zero);
-            _normalsBuffer.SetData(zero);
-            _densities.SetData(zero);
-
-            RebuildGrid();
-            BindParticleBuffers();
-
-            foreach (int k in _solverKernels)
-            {
-                _device.SetBuffer(_solver, k, _ids.ClampHits, _clampHits);
-                _device.SetBuffer(_solver, k, _ids.Phases, _phaseBuffer);
-                _device.SetBuffer(_solver, k, _ids.Densities, _densities);
-                _device.SetBuffer(_solver, k, _ids.Normals, _normalsBuffer);
-                _device.SetBuffer(_solver, k, _ids.Accelerations, _accelerations);
-                _device.SetBuffer(_solver, k, _ids.XsphCorrections, _xsph);
-                _device.SetBuffer(_solver, k, _ids.Shifts, _shifts);
-                _device.SetBuffer(_solver, k, _ids.Obstacles, _obstacles);
-                _device.SetBuffer(_solver, k, _ids.DivergenceFreeFactors, _factors);
-                _device.SetBuffer(_solver, k, _ids.SolverStiffness, _solverStiffness);
-                _device.SetBuffer(_solver, k, _ids.WarmStart, _warmStart);
-                _device.SetBuffer(_solver, k, _ids.SolverPartials, _solverPartials);
-                _device.SetBuffer(_solver, k, _ids.SolverState, _solverState);
-                _device.SetBuffer(_solver, k, _ids.SolverArguments, _solverArguments);
-                _device.SetBuffer(_solver, k, _ids.DivergenceRates, _divergenceRates);
-            }
-            foreach (int k in _diagnosticsKernels)
-            {
-                _device.SetBuffer(_diagnostics, k, _ids.Phases, _phaseBuffer);
-                _device.SetBuffer(_diagnostics, k, _ids.Densities, _densities);
-                _device.SetBuffer(_diagnostics, k, _ids.Accelerations, _accelerations);
-                _device.SetBuffer(_diagnostics, k, _ids.MotionPartials, _motionPartials);
-                _device.SetBuffer(_diagnostics, k, _ids.MotionTotals, _motionTotals);
-                _device.SetBuffer(_diagnostics, k, _ids.DiagnosticsPartials, _diagnosticsPartials);
-                _device.SetBuffer(_diagnostics, k, _ids.DiagnosticsTotals, _diagnosticsTotals);
-                _device.SetBuffer(_diagnostics, k, _ids.Obstacles, _obstacles);
-                _device.SetBuffer(_diagnostics, k, _ids.ClampHits, _clampHits);
-                _device.SetBuffer(_diagnostics, k, _ids.DivergenceRates, _divergenceRates);
-                _device.SetBuffer(_diagnostics, k, _ids.SolverState, _solverState);
-            }
-        }
-
-        /// <summary>Samples the walls and obstacles (BoundarySampling) into new boundary buffers and a sorter for
-        /// them; they are placed in the world and sorted before the next sub-step.</summary>
+        /// <summary>Samples the walls and obstacles (BoundarySampling) into new boundary buffers; they are placed in the
+        /// world and sorted before the next sub-step.</summary>
         void CreateBoundary()
         {
-            ReleaseBoundary();
             var rest = BoundarySampling.Sample(_scene);
             _boundaryCount = rest.Length;
-            _boundaryRest = _device.CreateBuffer("FluidSimulation.BoundaryRest", _boundaryCount, BoundaryParticle.Stride);
-            _boundaryRest.SetData(rest);
-            _boundaryPlaced = _device.CreateBuffer("FluidSimulation.BoundaryPlaced", _boundaryCount, BoundaryParticle.Stride);
-            _boundarySorted = _device.CreateBuffer("FluidSimulation.BoundarySorted", _boundaryCount, BoundaryParticle.Stride);
-            _boundaryPressures = _device.CreateBuffer("FluidSimulation.BoundaryPressures", _boundaryCount, 4);
-            _boundaryPressures.SetData(new float[_boundaryCount]);
-            _boundarySorter = new ParticleSorter(_device, _boundaryCount, _grid.CellCount);
-            foreach (int k in _solverKernels)
-            {
-                _device.SetBuffer(_solver, k, _ids.BoundaryRest, _boundaryRest);
-                _device.SetBuffer(_solver, k, _ids.BoundaryPlaced, _boundaryPlaced);
-                _device.SetBuffer(_solver, k, _ids.BoundaryParticles, _boundarySorted);
-                _device.SetBuffer(_solver, k, _ids.BoundaryPressures, _boundaryPressures);
-                _device.SetBuffer(_solver, k, _ids.BoundaryCellStart, _boundarySorter.CellStart);
-                _device.SetBuffer(_solver, k, _ids.BoundaryCellCount, _boundarySorter.CellCount);
-            }
+            _buffers.MakeBoundary(rest, _grid.CellCount);
             _constants[0].BoundaryCount = (uint)_boundaryCount;
             _constantsChanged = true;
             _boundaryMoved = true;
-        }
-
-        void ReleaseBoundary()
-        {
-            foreach (var buffer in new[] { _boundaryRest, _boundaryPlaced, _boundarySorted, _boundaryPressures })
-                buffer?.Dispose();
-            _boundaryRest = _boundaryPlaced = _boundarySorted = _boundaryPressures = null;
-            _boundarySorter?.Dispose();
-            _boundarySorter = null;
         }
 
         /// <summary>A new grid for the container's size (and a larger sorter if it needs more cells).</summary>
@@ -901,34 +526,8 @@ namespace SphFluid.Simulation
         {
             var c = _scene.Container;
             _grid = new CellGrid(c.Position, c.Rotation, c.Size, _scene.Settings.SmoothingRadius);
-            if (_sorter == null || _grid.CellCount > _sorter.MaxCellCount)
-            {
-                _sorter?.Dispose();
-                _sorter = null;
-                _sorter = new ParticleSorter(_device, ParticleCount, _grid.CellCount);
-                foreach (int k in _solverKernels)
-                {
-                    _device.SetBuffer(_solver, k, _ids.CellStart, _sorter.CellStart);
-                    _device.SetBuffer(_solver, k, _ids.CellCount, _sorter.CellCount);
-                }
-            }
+            _buffers.MakeSorter(_grid.CellCount);
             _containerChanged = true;
-        }
-
-        void SwapParticleBuffers()
-        {
-            var t = _particles;
-            _particles = _particlesOther;
-            _particlesOther = t;
-            BindParticleBuffers();
-        }
-
-        void BindParticleBuffers()
-        {
-            foreach (int k in _solverKernels)
-                _device.SetBuffer(_solver, k, _ids.Particles, _particles);
-            foreach (int k in _diagnosticsKernels)
-                _device.SetBuffer(_diagnostics, k, _ids.Particles, _particles);
         }
 
         /// <summary>Values fixed for the simulation's lifetime (counts, kernel coefficients, material constants) and the wall
@@ -989,21 +588,8 @@ namespace SphFluid.Simulation
         void PushConstants()
         {
             if (!_constantsChanged) return;
-            _device.UpdateBuffer(_constantsBuffer, _constants);
+            _device.UpdateBuffer(_buffers.Constants, _constants);
             _constantsChanged = false;
-        }
-
-        void UploadObstacles()
-        {
-            var rows = _obstacleRows;
-            int count = _scene.Obstacles == null ? 0 : _scene.Obstacles.Count;
-            for (int i = 0; i < count; i++)
-                rows[i] = new SphereObstacleData(_scene.Obstacles[i]);
-            if (count == 0) rows[0] = default;
-            _obstacles.SetData(rows, 0, 0, Math.Max(count, 1));
-            _constants[0].ObstacleCount = (uint)count;
-            _constantsChanged = true;
-            _boundaryMoved = true;
         }
 
         static FluidSceneDescription CopyOf(FluidSceneDescription scene)
@@ -1020,77 +606,18 @@ namespace SphFluid.Simulation
             };
         }
 
-        static string Join(List<ValidationError> errors)
-        {
-            var messages = new string[errors.Count];
-            for (int i = 0; i < messages.Length; i++) messages[i] = errors[i].Message;
-            return string.Join("\n", messages);
-        }
-
         public void Dispose()
         {
             if (_disposed) return;
             _disposed = true;
             _motionReadback = null;
             _diagnosticsReadback = null;
-            foreach (var buffer in new[] { _particles, _particlesOther, _phaseBuffer, _densities, _normalsBuffer, _accelerations,
-                         _xsph, _shifts, _obstacles, _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits,
-                         _factors, _solverStiffness, _warmStart, _solverPartials, _solverState, _solverArguments, _divergenceRates, _constantsBuffer })
-                buffer?.Dispose();
-            _factors = _solverStiffness = _warmStart = _solverPartials = _solverState = _solverArguments = _divergenceRates = _constantsBuffer = null;
-            _particles = _particlesOther = _phaseBuffer = _densities = _normalsBuffer = _accelerations = null;
-            _xsph = _shifts = _obstacles = _motionPartials = _motionTotals = _diagnosticsPartials = _diagnosticsTotals = _clampHits = null;
-            ReleaseBoundary();
-            _sorter?.Dispose();
-            _sorter = null;
+            _buffers?.Dispose();
         }
 
         void ThrowIfDisposed()
         {
             if (_disposed) throw new ObjectDisposedException(nameof(FluidSimulation));
-        }
-
-        /// <summary>Property ids, looked up once.</summary>
-        sealed class ShaderIds
-        {
-            public readonly int FluidConstants;
-            public readonly int Particles, Phases, Densities, Normals, Accelerations, XsphCorrections, Shifts, Obstacles, CellStart, CellCount;
-            public readonly int MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
-            public readonly int BoundaryRest, BoundaryPlaced, BoundaryParticles, BoundaryPressures, BoundaryCellStart, BoundaryCellCount, ClampHits;
-            public readonly int DivergenceFreeFactors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
-
-            public ShaderIds(IComputeDevice d)
-            {
-                FluidConstants = d.PropertyId("FluidConstants");
-                Particles = d.PropertyId("_Particles");
-                Phases = d.PropertyId("_Phases");
-                Densities = d.PropertyId("_Densities");
-                Normals = d.PropertyId("_Normals");
-                Accelerations = d.PropertyId("_Accelerations");
-                XsphCorrections = d.PropertyId("_XsphCorrections");
-                Shifts = d.PropertyId("_Shifts");
-                Obstacles = d.PropertyId("_Obstacles");
-                CellStart = d.PropertyId(ParticleSorter.CellStartProperty);
-                CellCount = d.PropertyId(ParticleSorter.CellCountProperty);
-                MotionPartials = d.PropertyId("_MotionPartials");
-                MotionTotals = d.PropertyId("_MotionTotals");
-                DiagnosticsPartials = d.PropertyId("_DiagnosticsPartials");
-                DiagnosticsTotals = d.PropertyId("_DiagnosticsTotals");
-                BoundaryRest = d.PropertyId("_BoundaryRest");
-                BoundaryPlaced = d.PropertyId("_BoundaryPlaced");
-                BoundaryParticles = d.PropertyId("_BoundaryParticles");
-                BoundaryPressures = d.PropertyId("_BoundaryPressures");
-                BoundaryCellStart = d.PropertyId("_BoundaryCellStart");
-                BoundaryCellCount = d.PropertyId("_BoundaryCellCount");
-                ClampHits = d.PropertyId("_ClampHits");
-                DivergenceFreeFactors = d.PropertyId("_DivergenceFreeFactors");
-                SolverStiffness = d.PropertyId("_SolverStiffness");
-                WarmStart = d.PropertyId("_WarmStart");
-                SolverPartials = d.PropertyId("_SolverPartials");
-                SolverState = d.PropertyId("_SolverState");
-                SolverArguments = d.PropertyId("_SolverArguments");
-                DivergenceRates = d.PropertyId("_DivergenceRates");
-            }
         }
     }
 }

@@ -1,0 +1,87 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Numerics;
+using System.Runtime.InteropServices;
+using System.Threading.Tasks;
+using Silk.NET.Core.Native;
+using Silk.NET.Vulkan;
+using SphFluid.Compute;
+using VkBuffer = Silk.NET.Vulkan.Buffer;
+
+namespace SphFluid.Vulkan;
+
+/// <summary>GPU timing: timestamp queries around dispatches and named sample ranges, read when a submit's fence has signalled.</summary>
+public sealed unsafe partial class VulkanComputeDevice
+{
+    uint AllocateQuery(Frame f, uint count)
+    {
+        // Keep a pair inside one pool.
+        uint inPool = f.QueriesUsed % QueriesPerPool;
+        if (inPool + count > QueriesPerPool) f.QueriesUsed += QueriesPerPool - inPool;
+        uint first = f.QueriesUsed;
+        for (uint q = first; q < first + count; q++)
+        {
+            if (q % QueriesPerPool != 0) continue;
+            int poolIndex = (int)(q / QueriesPerPool);
+            if (poolIndex == f.QueryPools.Count)
+            {
+                var info = new QueryPoolCreateInfo { SType = StructureType.QueryPoolCreateInfo, QueryType = QueryType.Timestamp, QueryCount = QueriesPerPool };
+                Check(_vk.CreateQueryPool(_device, &info, null, out var pool), "vkCreateQueryPool");
+                f.QueryPools.Add(pool);
+            }
+            _vk.CmdResetQueryPool(f.Cmd, f.QueryPools[poolIndex], 0, QueriesPerPool);
+        }
+        f.QueriesUsed = first + count;
+        return first;
+    }
+
+    void WriteTimestamp(Frame f, uint query) =>
+        _vk.CmdWriteTimestamp(f.Cmd, PipelineStageFlags.ComputeShaderBit, f.QueryPools[(int)(query / QueriesPerPool)], query % QueriesPerPool);
+
+    public void BeginSample(string name)
+    {
+        ThrowIfDisposed();
+        if (name == null) throw new ArgumentNullException(nameof(name));
+        if (!_canTime) return;
+        var f = BeginRecording();
+        uint q = AllocateQuery(f, 1);
+        WriteTimestamp(f, q);
+        _openSamples[name] = q;
+    }
+
+    public void EndSample(string name)
+    {
+        ThrowIfDisposed();
+        if (name == null) throw new ArgumentNullException(nameof(name));
+        if (!_canTime) return;
+        if (_recording == null || !_openSamples.Remove(name, out uint begin))
+            throw new ComputeException($"EndSample('{name}') without a matching BeginSample('{name}') since the last Submit");
+        var f = _recording;
+        uint end = AllocateQuery(f, 1);
+        WriteTimestamp(f, end);
+        f.Samples.Add((name, begin, end));
+        _sampleSerial[name] = f.Serial;
+    }
+
+    /// <summary>Every dispatch timed since the last call (with <see cref="AccumulateDispatchTimings"/> on),
+    /// in submission order; waits for submitted work first.</summary>
+    public IReadOnlyList<(string Kernel, double Milliseconds)> TakeDispatchTimings()
+    {
+        ThrowIfDisposed();
+        WaitForSerial(_submittedSerial);
+        var result = _accumulatedTimings.ToArray();
+        _accumulatedTimings.Clear();
+        return result;
+    }
+
+    public bool TryGetSampleMilliseconds(string name, out double milliseconds)
+    {
+        ThrowIfDisposed();
+        milliseconds = 0;
+        if (name == null || !_canTime) return false;
+        if (_sampleSerial.TryGetValue(name, out ulong serial) && serial <= _submittedSerial && serial > _completedSerial) WaitForSerial(serial);
+        return _sampleResults.TryGetValue(name, out milliseconds);
+    }
+}

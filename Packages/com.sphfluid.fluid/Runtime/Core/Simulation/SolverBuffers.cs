@@ -1,0 +1,258 @@
+using System;
+using System.Numerics;
+using SphFluid.Compute;
+using SphFluid.Sorting;
+
+namespace SphFluid.Simulation
+{
+    /// <summary>
+    /// The GPU buffers of one <see cref="FluidSimulation"/> and, in one static table, the shader property each one is
+    /// bound to and which program reads it. The simulation only says when a group of bindings changed (the particle
+    /// buffers swap after every sort, the boundary and the cell lists are made again when the container is resized or an
+    /// obstacle is reshaped); binding walks the table and allocates nothing.
+    /// </summary>
+    /// <remarks>
+    /// Two particle buffers: the sort writes the other one and they swap, so <see cref="Particles"/> is always the
+    /// cell-sorted current state. Per particle (indexed like the current particles): density and pressure, normals,
+    /// accelerations, XSPH corrections and shifts; the DFSPH factor, stiffness and (by particle id) warm start. Then the
+    /// phase table, the obstacles, the fluid's and the boundary's CellStart/CellCount, the boundary particles (rest frame,
+    /// placed, cell-sorted) and their pressures, the clamp-hit counter, the reductions' partials and totals, the solver
+    /// state and its indirect arguments, and the constant buffer (Include/FluidConstants.hlsl).
+    /// </remarks>
+    sealed class SolverBuffers : IDisposable
+    {
+        /// <summary>Words of the solver state: two solve slots of 8 words and the open solve's slot (FluidSolver.compute).</summary>
+        public const int SolverStateWords = 17;
+        const uint ParticleThreads = 128; // PARTICLE_THREADS in FluidSolver.compute
+
+        /// <summary>When a binding must be made again.</summary>
+        public enum Group
+        {
+            /// <summary>Once, when the buffers are made.</summary>
+            Fixed,
+            /// <summary>After every sort (the particle buffers swap).</summary>
+            Particles,
+            /// <summary>When the boundary is sampled again (container resized, obstacle reshaped).</summary>
+            Boundary,
+            /// <summary>When the fluid's sorter is made again for a larger grid.</summary>
+            Cells,
+        }
+
+        [Flags]
+        enum Readers
+        {
+            Solver = 1,
+            Diagnostics = 2,
+            Both = Solver | Diagnostics,
+        }
+
+        readonly struct Binding
+        {
+            public readonly string Property;
+            public readonly Func<SolverBuffers, IComputeBuffer> Buffer;
+            public readonly Readers Readers;
+            public readonly Group Group;
+
+            public Binding(string property, Func<SolverBuffers, IComputeBuffer> buffer, Readers readers, Group group)
+            {
+                Property = property;
+                Buffer = buffer;
+                Readers = readers;
+                Group = group;
+            }
+        }
+
+        static readonly Binding[] Table =
+        {
+            new Binding("_Particles", b => b.Particles, Readers.Both, Group.Particles),
+            new Binding("_Phases", b => b.Phases, Readers.Both, Group.Fixed),
+            new Binding("_Densities", b => b.Densities, Readers.Both, Group.Fixed),
+            new Binding("_Normals", b => b.Normals, Readers.Solver, Group.Fixed),
+            new Binding("_Accelerations", b => b.Accelerations, Readers.Both, Group.Fixed),
+            new Binding("_XsphCorrections", b => b.XsphCorrections, Readers.Solver, Group.Fixed),
+            new Binding("_Shifts", b => b.Shifts, Readers.Solver, Group.Fixed),
+            new Binding("_Obstacles", b => b.Obstacles, Readers.Both, Group.Fixed),
+            new Binding("_ClampHits", b => b.ClampHits, Readers.Both, Group.Fixed),
+            new Binding("_DivergenceFreeFactors", b => b.Factors, Readers.Solver, Group.Fixed),
+            new Binding("_SolverStiffness", b => b.SolverStiffness, Readers.Solver, Group.Fixed),
+            new Binding("_WarmStart", b => b.WarmStart, Readers.Solver, Group.Fixed),
+            new Binding("_SolverPartials", b => b.SolverPartials, Readers.Solver, Group.Fixed),
+            new Binding("_SolverState", b => b.SolverState, Readers.Both, Group.Fixed),
+            new Binding("_SolverArguments", b => b.SolverArguments, Readers.Solver, Group.Fixed),
+            new Binding("_DivergenceRates", b => b.DivergenceRates, Readers.Both, Group.Fixed),
+            new Binding("_MotionPartials", b => b.MotionPartials, Readers.Diagnostics, Group.Fixed),
+            new Binding("_MotionTotals", b => b.MotionTotals, Readers.Diagnostics, Group.Fixed),
+            new Binding("_DiagnosticsPartials", b => b.DiagnosticsPartials, Readers.Diagnostics, Group.Fixed),
+            new Binding("_DiagnosticsTotals", b => b.DiagnosticsTotals, Readers.Diagnostics, Group.Fixed),
+            new Binding("_BoundaryRest", b => b.BoundaryRest, Readers.Solver, Group.Boundary),
+            new Binding("_BoundaryPlaced", b => b.BoundaryPlaced, Readers.Solver, Group.Boundary),
+            new Binding("_BoundaryParticles", b => b.BoundarySorted, Readers.Solver, Group.Boundary),
+            new Binding("_BoundaryPressures", b => b.BoundaryPressures, Readers.Solver, Group.Boundary),
+            new Binding("_BoundaryCellStart", b => b.BoundarySorter.CellStart, Readers.Solver, Group.Boundary),
+            new Binding("_BoundaryCellCount", b => b.BoundarySorter.CellCount, Readers.Solver, Group.Boundary),
+            new Binding(ParticleSorter.CellStartProperty, b => b.Sorter.CellStart, Readers.Solver, Group.Cells),
+            new Binding(ParticleSorter.CellCountProperty, b => b.Sorter.CellCount, Readers.Solver, Group.Cells),
+        };
+
+        readonly IComputeDevice _device;
+        readonly IComputeProgram _solver, _diagnostics;
+        readonly int[] _solverKernels, _diagnosticsKernels;
+        readonly int[] _ids = new int[Table.Length];
+        readonly int _particleCount;
+
+        public IComputeBuffer Particles, ParticlesOther;
+        public IComputeBuffer Phases, Densities, Normals, Accelerations, XsphCorrections, Shifts, Obstacles, ClampHits;
+        public IComputeBuffer Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
+        public IComputeBuffer MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
+        public IComputeBuffer BoundaryRest, BoundaryPlaced, BoundarySorted, BoundaryPressures;
+        public IComputeBuffer Constants;
+        public ParticleSorter Sorter, BoundarySorter;
+
+        /// <summary>Makes every per-particle, solver and reduction buffer (zeroed), the phase table and the constant
+        /// buffer, and binds them; the boundary and the sorters come with <see cref="MakeBoundary"/> and
+        /// <see cref="MakeSorter"/>.</summary>
+        public SolverBuffers(IComputeDevice device, IComputeProgram solver, int[] solverKernels, IComputeProgram diagnostics,
+            int[] diagnosticsKernels, int particleCount, PhaseProperties[] phaseTable, int reductionGroups, int fluidConstantsId)
+        {
+            _device = device;
+            _solver = solver;
+            _diagnostics = diagnostics;
+            _solverKernels = solverKernels;
+            _diagnosticsKernels = diagnosticsKernels;
+            _particleCount = particleCount;
+            for (int i = 0; i < Table.Length; i++) _ids[i] = device.PropertyId(Table[i].Property);
+            try
+            {
+                Make(phaseTable, reductionGroups, fluidConstantsId);
+            }
+            catch
+            {
+                Dispose();
+                throw;
+            }
+        }
+
+        void Make(PhaseProperties[] phaseTable, int reductionGroups, int fluidConstantsId)
+        {
+            var device = _device;
+            int n = _particleCount;
+            Particles = device.CreateBuffer("FluidSimulation.Particles", n, Particle.Stride);
+            ParticlesOther = device.CreateBuffer("FluidSimulation.ParticlesSorted", n, Particle.Stride);
+            Phases = device.CreateBuffer("FluidSimulation.Phases", phaseTable.Length, PhaseProperties.Stride);
+            Phases.SetData(phaseTable);
+            Densities = Zeroed("FluidSimulation.Densities", n, 16);
+            Normals = Zeroed("FluidSimulation.Normals", n, 16);
+            Accelerations = Zeroed("FluidSimulation.Accelerations", n, 16);
+            XsphCorrections = Zeroed("FluidSimulation.XsphCorrections", n, 16);
+            Shifts = Zeroed("FluidSimulation.Shifts", n, 16);
+            Obstacles = device.CreateBuffer("FluidSimulation.Obstacles", FluidSceneDescription.MaxObstacles, SphereObstacleData.Stride);
+            ClampHits = Zeroed("FluidSimulation.ClampHits", 1, 4);
+            int particleGroups = ComputeDispatch.GroupsFor(n, ParticleThreads);
+            Factors = Zeroed("FluidSimulation.DivergenceFreeFactors", n, 4);
+            SolverStiffness = Zeroed("FluidSimulation.SolverStiffness", n, 4);
+            WarmStart = Zeroed("FluidSimulation.WarmStart", n, 8);
+            SolverPartials = Zeroed("FluidSimulation.SolverPartials", particleGroups, 4);
+            SolverState = Zeroed("FluidSimulation.SolverState", SolverStateWords, 4);
+            SolverArguments = device.CreateArgumentsBuffer("FluidSimulation.SolverArguments", 3);
+            SolverArguments.SetData(new uint[] { (uint)particleGroups, 1u, 1u });
+            DivergenceRates = Zeroed("FluidSimulation.DivergenceRates", n, 4);
+            int phases = phaseTable.Length;
+            MotionPartials = device.CreateBuffer("FluidSimulation.MotionPartials", reductionGroups, 16);
+            MotionTotals = device.CreateBuffer("FluidSimulation.MotionTotals", 2, 16);
+            DiagnosticsPartials = device.CreateBuffer("FluidSimulation.DiagnosticsPartials", reductionGroups * (2 + phases), 16);
+            DiagnosticsTotals = device.CreateBuffer("FluidSimulation.DiagnosticsTotals", 3 + phases, 16);
+            Constants = device.CreateConstantBuffer("FluidSimulation.Constants", FluidConstants.Bytes);
+            device.SetConstantBuffer(_solver, fluidConstantsId, Constants);
+            device.SetConstantBuffer(_diagnostics, fluidConstantsId, Constants);
+            Bind(Group.Fixed);
+            Bind(Group.Particles);
+        }
+
+        IComputeBuffer Zeroed(string name, int count, int stride)
+        {
+            var buffer = _device.CreateBuffer(name, count, stride);
+            buffer.SetData(new byte[count * stride]);
+            return buffer;
+        }
+
+        /// <summary>Binds every buffer of the group to every kernel of the programs that read it.</summary>
+        public void Bind(Group group)
+        {
+            for (int i = 0; i < Table.Length; i++)
+            {
+                if (Table[i].Group != group) continue;
+                var buffer = Table[i].Buffer(this);
+                if ((Table[i].Readers & Readers.Solver) != 0)
+                    foreach (int k in _solverKernels) _device.SetBuffer(_solver, k, _ids[i], buffer);
+                if ((Table[i].Readers & Readers.Diagnostics) != 0)
+                    foreach (int k in _diagnosticsKernels) _device.SetBuffer(_diagnostics, k, _ids[i], buffer);
+            }
+        }
+
+        /// <summary>After a sort wrote <see cref="ParticlesOther"/>: it becomes the current state.</summary>
+        public void SwapParticles()
+        {
+            var t = Particles;
+            Particles = ParticlesOther;
+            ParticlesOther = t;
+            Bind(Group.Particles);
+        }
+
+        /// <summary>New boundary buffers for these boundary particles (in their owners' frames) and a sorter for them.</summary>
+        public void MakeBoundary(BoundaryParticle[] rest, int cellCount)
+        {
+            ReleaseBoundary();
+            int count = rest.Length;
+            BoundaryRest = _device.CreateBuffer("FluidSimulation.BoundaryRest", count, BoundaryParticle.Stride);
+            BoundaryRest.SetData(rest);
+            BoundaryPlaced = _device.CreateBuffer("FluidSimulation.BoundaryPlaced", count, BoundaryParticle.Stride);
+            BoundarySorted = _device.CreateBuffer("FluidSimulation.BoundarySorted", count, BoundaryParticle.Stride);
+            BoundaryPressures = Zeroed("FluidSimulation.BoundaryPressures", count, 4);
+            BoundarySorter = new ParticleSorter(_device, count, cellCount);
+            Bind(Group.Boundary);
+        }
+
+        /// <summary>A fluid sorter for a grid of <paramref name="cellCount"/> cells, unless the current one holds it.</summary>
+        public void MakeSorter(int cellCount)
+        {
+            if (Sorter != null && cellCount <= Sorter.MaxCellCount) return;
+            Sorter?.Dispose();
+            Sorter = null;
+            Sorter = new ParticleSorter(_device, _particleCount, cellCount);
+            Bind(Group.Cells);
+        }
+
+        /// <summary>Zeroes what a respawn must not inherit: the clamp hits, the warm start and the solver state.</summary>
+        public void ClearForRespawn()
+        {
+            ClampHits.SetData(new uint[1]);
+            WarmStart.SetData(new Vector2[_particleCount]);
+            SolverState.SetData(new uint[SolverStateWords]);
+        }
+
+        void ReleaseBoundary()
+        {
+            BoundaryRest?.Dispose();
+            BoundaryPlaced?.Dispose();
+            BoundarySorted?.Dispose();
+            BoundaryPressures?.Dispose();
+            BoundarySorter?.Dispose();
+            BoundaryRest = BoundaryPlaced = BoundarySorted = BoundaryPressures = null;
+            BoundarySorter = null;
+        }
+
+        public void Dispose()
+        {
+            foreach (var buffer in new[] { Particles, ParticlesOther, Phases, Densities, Normals, Accelerations, XsphCorrections, Shifts,
+                         Obstacles, ClampHits, Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments,
+                         DivergenceRates, MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals, Constants })
+                buffer?.Dispose();
+            Particles = ParticlesOther = Phases = Densities = Normals = Accelerations = XsphCorrections = Shifts = null;
+            Obstacles = ClampHits = Factors = SolverStiffness = WarmStart = SolverPartials = SolverState = SolverArguments = null;
+            DivergenceRates = MotionPartials = MotionTotals = DiagnosticsPartials = DiagnosticsTotals = Constants = null;
+            ReleaseBoundary();
+            Sorter?.Dispose();
+            Sorter = null;
+        }
+    }
+}
