@@ -23,7 +23,7 @@ public sealed class ComputeSource
     public IReadOnlyList<KernelDeclaration> Kernels { get; }
 
     /// <summary>One list per <c>multi_compile</c> line; <c>null</c> stands for the "off" variant (<c>_</c> or <c>__</c>).</summary>
-    public IReadOnlyList<IReadOnlyList<string>> KeywordSets { get; }
+    public IReadOnlyList<IReadOnlyList<string?>> KeywordSets { get; }
 
     /// <summary>Every keyword the file declares, in declaration order.</summary>
     public IReadOnlyList<string> Keywords { get; }
@@ -40,7 +40,7 @@ public sealed class ComputeSource
     static readonly Regex DefineWord = new(@"^[A-Za-z_][A-Za-z0-9_]*(=\S+)?$");
     static readonly Regex PragmaRegex = new(@"^\s*#\s*pragma\s+(kernel|multi_compile|multi_compile_local|shader_feature|shader_feature_local)\b([^\r\n]*)", RegexOptions.Multiline);
 
-    ComputeSource(string path, string text, List<KernelDeclaration> kernels, List<IReadOnlyList<string>> sets, List<(string, string)> files,
+    ComputeSource(string path, string text, List<KernelDeclaration> kernels, List<IReadOnlyList<string?>> sets, List<(string, string)> files,
         Dictionary<(string, string), string> includes)
     {
         ResolvedIncludes = includes;
@@ -48,7 +48,7 @@ public sealed class ComputeSource
         Text = text;
         Kernels = kernels;
         KeywordSets = sets;
-        Keywords = sets.SelectMany(s => s).Where(k => k != null).Distinct().ToList();
+        Keywords = sets.SelectMany(s => s).OfType<string>().Distinct().ToList();
         Files = files;
     }
 
@@ -57,15 +57,15 @@ public sealed class ComputeSource
         string text = File.ReadAllText(path);
         string code = StripComments(text);
         var kernels = new List<KernelDeclaration>();
-        var sets = new List<IReadOnlyList<string>>();
+        var sets = new List<IReadOnlyList<string?>>();
         foreach (Match m in PragmaRegex.Matches(code))
         {
-            var tokens = m.Groups[2].Value.Split((char[])null, StringSplitOptions.RemoveEmptyEntries);
+            var tokens = m.Groups[2].Value.Split((char[]?)null, StringSplitOptions.RemoveEmptyEntries);
             if (m.Groups[1].Value == "kernel")
             {
                 // Unity reads the pragma up to a ';' and ignores the rest, so "#pragma kernel K;" names K.
                 string declaration = m.Groups[2].Value.Split(';')[0];
-                var words = declaration.Split((char[])null, StringSplitOptions.RemoveEmptyEntries);
+                var words = declaration.Split((char[]?)null, StringSplitOptions.RemoveEmptyEntries);
                 int line = code.Take(m.Index).Count(c => c == '\n') + 1;
                 if (words.Length == 0)
                     throw new ComputeException($"{path}:{line}: #pragma kernel needs a kernel name (#pragma kernel Name [DEFINE or DEFINE=value ...])");
@@ -80,7 +80,7 @@ public sealed class ComputeSource
             {
                 // shader_feature without an explicit off variant implies one, as in Unity.
                 bool feature = m.Groups[1].Value.StartsWith("shader_feature", StringComparison.Ordinal);
-                var set = tokens.Select(t => t.Trim('_').Length == 0 ? null : t).ToList();
+                var set = tokens.Select(t => t.Trim('_').Length == 0 ? null : (string?)t).ToList();
                 if (feature && set.Count == 1 && set[0] != null) set.Insert(0, null);
                 if (set.Count > 0) sets.Add(set);
             }
@@ -95,7 +95,7 @@ public sealed class ComputeSource
             files.Add((file, content));
             foreach (Match inc in IncludeRegex.Matches(StripComments(content)))
             {
-                string resolved = ResolveInclude(inc.Groups[1].Value, System.IO.Path.GetDirectoryName(file), includeDirs);
+                string? resolved = ResolveInclude(inc.Groups[1].Value, System.IO.Path.GetDirectoryName(file) ?? ".", includeDirs);
                 if (resolved == null) continue;
                 includes[(file, inc.Groups[1].Value)] = resolved;
                 Visit(resolved, File.ReadAllText(resolved));
@@ -105,7 +105,7 @@ public sealed class ComputeSource
         return new ComputeSource(System.IO.Path.GetFullPath(path), text, kernels, sets, files, includes);
     }
 
-    static string ResolveInclude(string name, string fromDir, IReadOnlyList<string> includeDirs)
+    static string? ResolveInclude(string name, string fromDir, IReadOnlyList<string> includeDirs)
     {
         foreach (var dir in new[] { fromDir }.Concat(includeDirs))
         {
@@ -129,7 +129,7 @@ public sealed class ComputeSource
         var result = new List<string>();
         foreach (var set in KeywordSets)
         {
-            string chosen = set.FirstOrDefault(k => k != null && enabled.Contains(k));
+            string? chosen = set.FirstOrDefault(k => k != null && enabled.Contains(k));
             if (chosen == null && !set.Contains(null)) chosen = set[0];
             if (chosen != null && !result.Contains(chosen)) result.Add(chosen);
         }

@@ -46,12 +46,12 @@ public sealed class GlslangSourceTree : IDisposable
                 string body = ConstGlobals.MakeSettable(text.TrimStart('\uFEFF'));
                 body = ComputeSource.IncludeRegex.Replace(body, m =>
                 {
-                    if (!source.ResolvedIncludes.TryGetValue((original, m.Groups[1].Value), out string target)) return m.Value;
+                    if (!source.ResolvedIncludes.TryGetValue((original, m.Groups[1].Value), out string? target)) return m.Value;
                     string relative = "../" + copies[target].Folder + "/" + Path.GetFileName(target);
                     return m.Value.Substring(0, m.Groups[1].Index - m.Index - 1) + "\"" + relative + "\"";
                 });
                 string copy = copies[original].Path;
-                Directory.CreateDirectory(Path.GetDirectoryName(copy));
+                Directory.CreateDirectory(Path.GetDirectoryName(copy)!); // copy is a file path under the tree's root
                 File.WriteAllText(copy, $"#line 1 \"{original.Replace('\\', '/').Replace("\"", "")}\"\n{body}", utf8);
             }
         }

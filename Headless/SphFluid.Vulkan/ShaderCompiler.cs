@@ -21,8 +21,8 @@ public sealed class ShaderCompiler
     // 2: sources prepared by GlslangSourceTree, structured buffers repacked by StructuredBufferPacking.
     const string CacheFormat = "sphfluid-spirv-2";
     int _compileCount;
-    readonly string _glslang;
-    readonly string _spirvVal;
+    readonly string? _glslang;
+    readonly string? _spirvVal;
     readonly Lazy<string> _toolFingerprint;
 
     /// <summary>Where compiled variants live: SPHFLUID_SHADER_CACHE, else $XDG_CACHE_HOME/sphfluid-spirv, else ~/.cache/sphfluid-spirv.</summary>
@@ -31,7 +31,7 @@ public sealed class ShaderCompiler
     /// <summary>How many times glslang has run in this process (cache misses).</summary>
     public int CompileCount => Volatile.Read(ref _compileCount);
 
-    public ShaderCompiler(string cacheDirectory = null)
+    public ShaderCompiler(string? cacheDirectory = null)
     {
         CacheDirectory = cacheDirectory ?? DefaultCacheDirectory();
         _glslang = FindTool("glslangValidator", "glslang-tools");
@@ -41,14 +41,14 @@ public sealed class ShaderCompiler
 
     public static string DefaultCacheDirectory()
     {
-        string env = Environment.GetEnvironmentVariable("SPHFLUID_SHADER_CACHE");
+        string? env = Environment.GetEnvironmentVariable("SPHFLUID_SHADER_CACHE");
         if (!string.IsNullOrEmpty(env)) return env;
-        string xdg = Environment.GetEnvironmentVariable("XDG_CACHE_HOME");
+        string? xdg = Environment.GetEnvironmentVariable("XDG_CACHE_HOME");
         if (!string.IsNullOrEmpty(xdg)) return Path.Combine(xdg, "sphfluid-spirv");
         return Path.Combine(Environment.GetFolderPath(Environment.SpecialFolder.UserProfile), ".cache", "sphfluid-spirv");
     }
 
-    static string FindTool(string name, string package)
+    static string? FindTool(string name, string package)
     {
         foreach (var dir in (Environment.GetEnvironmentVariable("PATH") ?? "").Split(Path.PathSeparator))
         {
@@ -59,7 +59,7 @@ public sealed class ShaderCompiler
         return null;
     }
 
-    static string Fingerprint(string tool)
+    static string Fingerprint(string? tool)
     {
         if (tool == null) return "missing";
         var info = new FileInfo(tool);
@@ -76,7 +76,7 @@ public sealed class ShaderCompiler
         var sb = new StringBuilder();
         sb.Append(CacheFormat).Append('\n').Append(_toolFingerprint.Value).Append('\n');
         sb.Append(string.Join(" ", Arguments(kernel, defines))).Append('\n');
-        string root = Path.GetDirectoryName(source.Path);
+        string root = Path.GetDirectoryName(source.Path) ?? ".";
         foreach (var (path, text) in source.Files)
             sb.Append(Path.GetRelativePath(root, path)).Append('\n').Append(text.Length).Append('\n').Append(text).Append('\n');
         return Convert.ToHexString(SHA256.HashData(Encoding.UTF8.GetBytes(sb.ToString()))).ToLowerInvariant();
@@ -196,7 +196,7 @@ public sealed class ShaderCompiler
     {
         var psi = new ProcessStartInfo(exe) { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
         foreach (var a in args) psi.ArgumentList.Add(a);
-        using var p = Process.Start(psi);
+        using var p = Process.Start(psi) ?? throw new ComputeException($"{exe} could not be started");
         var stderr = p.StandardError.ReadToEndAsync();
         string stdout = p.StandardOutput.ReadToEnd();
         p.WaitForExit();

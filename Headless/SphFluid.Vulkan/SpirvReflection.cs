@@ -40,7 +40,7 @@ public sealed class SpirvReflection
     /// <summary>The <c>$Global</c> block's members by name; empty when the kernel reads no global.</summary>
     public IReadOnlyDictionary<string, SpirvGlobal> Globals { get; private init; } = new Dictionary<string, SpirvGlobal>();
     public int GlobalBlockSize { get; private init; }
-    public SpirvResource GlobalBlock { get; private init; }
+    public SpirvResource? GlobalBlock { get; private init; }
     /// <summary>Every uniform block, <c>$Global</c> included; globals set by name may live in any of them.</summary>
     public IReadOnlyList<SpirvUniformBlock> UniformBlocks { get; private init; } = Array.Empty<SpirvUniformBlock>();
     /// <summary>Bound resources the backend cannot provide (texture arrays, cube maps, multisampled textures, typed
@@ -109,7 +109,7 @@ public sealed class SpirvReflection
         var globals = new Dictionary<string, SpirvGlobal>();
         var blocks = new List<SpirvUniformBlock>();
         int globalSize = 0;
-        SpirvResource globalBlock = null;
+        SpirvResource? globalBlock = null;
 
         int SizeOf(uint typeId, uint parent, uint member)
         {

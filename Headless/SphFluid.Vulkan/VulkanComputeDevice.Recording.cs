@@ -50,7 +50,7 @@ public sealed unsafe partial class VulkanComputeDevice
         Record(program, kernel, 1, 1, 1, args, (ulong)byteOffset);
     }
 
-    void Record(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ, VulkanBuffer indirect, ulong indirectOffset)
+    void Record(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ, VulkanBuffer? indirect, ulong indirectOffset)
     {
         ThrowIfDisposed();
         var p = AsProgram(program, "Dispatch");

@@ -74,8 +74,8 @@ public sealed unsafe partial class VulkanComputeDevice
         {
             if (user == null || data == null) return false;
             if (GCHandle.FromIntPtr((IntPtr)user).Target is not VulkanComputeDevice device) return false;
-            string id = data->PMessageIdName == null ? "" : SilkMarshal.PtrToString((nint)data->PMessageIdName);
-            string text = data->PMessage == null ? "" : SilkMarshal.PtrToString((nint)data->PMessage);
+            string? id = data->PMessageIdName == null ? "" : SilkMarshal.PtrToString((nint)data->PMessageIdName);
+            string? text = data->PMessage == null ? "" : SilkMarshal.PtrToString((nint)data->PMessage);
             // The loader reports drivers skipped by VK_LOADER_DRIVERS_SELECT as warnings: choices, not faults.
             bool error = (severity & DebugUtilsMessageSeverityFlagsEXT.ErrorBitExt) != 0;
             if (!error && id == "Loader Message") return false;

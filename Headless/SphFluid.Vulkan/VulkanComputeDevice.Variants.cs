@@ -86,7 +86,7 @@ public sealed unsafe partial class VulkanComputeDevice
 
     /// <summary>Why this device cannot run a kernel variant that compiled, or null. Such a kernel fails alone, at its
     /// first dispatch, so the other kernels of its program stay usable (as a texture kernel beside buffer kernels).</summary>
-    string WhyUnrunnable(SpirvReflection reflection, uint[] words)
+    string? WhyUnrunnable(SpirvReflection reflection, uint[] words)
     {
         if (reflection.UnsupportedResources.Count > 0)
             return $"it binds {string.Join(", ", reflection.UnsupportedResources.Select(r => $"'{r.Name}' ({r.HlslType})"))}; " +

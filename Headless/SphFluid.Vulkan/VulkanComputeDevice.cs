@@ -17,7 +17,7 @@ namespace SphFluid.Vulkan;
 /// <summary>Vulkan could not be set up here (no loader, no driver, no compute-capable device).</summary>
 public sealed class VulkanUnavailableException : Exception
 {
-    public VulkanUnavailableException(string message, Exception inner = null) : base(message, inner) { }
+    public VulkanUnavailableException(string message, Exception? inner = null) : base(message, inner) { }
 }
 
 /// <summary>
@@ -51,7 +51,7 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
 
     readonly Frame[] _frames = new Frame[FrameCount];
     int _nextFrame;
-    Frame _recording;
+    Frame? _recording;
     ulong _submittedSerial, _completedSerial;
 
     CommandPool _immediatePool;
@@ -90,7 +90,7 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
     /// <summary>Number of Vulkan queue submissions (frames plus uploads/read-backs through staging).</summary>
     public long SubmitCount { get; private set; }
 
-    public VulkanComputeDevice(VulkanComputeOptions options = null)
+    public VulkanComputeDevice(VulkanComputeOptions? options = null)
     {
         _options = options ?? new VulkanComputeOptions();
         ShaderDirectories = _options.ShaderDirectories.Select(Path.GetFullPath).ToList();
@@ -109,7 +109,7 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
             ValidationEnabled = _options.Validation;
             CreateInstance();
             SelectPhysicalDevice(out var props, out var timestampBits);
-            DeviceName = SilkMarshal.PtrToString((nint)props.DeviceName);
+            DeviceName = SilkMarshal.PtrToString((nint)props.DeviceName) ?? "unnamed Vulkan device";
             DeviceType = props.DeviceType.ToString();
             ApiVersion = $"{props.ApiVersion >> 22}.{(props.ApiVersion >> 12) & 0x3FF}.{props.ApiVersion & 0xFFF}";
             _limits = props.Limits;
@@ -251,11 +251,11 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
                 if (best < 0 || (families[best].TimestampValidBits == 0 && families[i].TimestampValidBits > 0)) best = i;
             }
             if (best < 0) continue;
-            candidates.Add((dev, props, (uint)best, families[best].TimestampValidBits, SilkMarshal.PtrToString((nint)props.DeviceName)));
+            candidates.Add((dev, props, (uint)best, families[best].TimestampValidBits, SilkMarshal.PtrToString((nint)props.DeviceName) ?? ""));
         }
         if (candidates.Count == 0) throw new VulkanUnavailableException("No Vulkan device has a compute queue");
 
-        string wanted = _options.DeviceName;
+        string? wanted = _options.DeviceName;
         IEnumerable<(PhysicalDevice dev, PhysicalDeviceProperties props, uint family, uint tsBits, string name)> pool = candidates;
         if (!string.IsNullOrWhiteSpace(wanted))
         {
@@ -380,7 +380,8 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
             DestroyAllTextures();
             foreach (var v in _variantCache.Values) DestroyVariant(v);
             _variantCache.Clear();
-            for (int i = 0; i < _frames.Length; i++) { DestroyFrame(_frames[i]); _frames[i] = null; }
+            foreach (var frame in _frames) DestroyFrame(frame);
+            Array.Clear(_frames);
             if (_staging.Handle != 0)
             {
                 _vk.DestroyBuffer(_device, _staging, null);

@@ -15,7 +15,7 @@ public sealed class VulkanComputeOptions
 
     /// <summary>Case-insensitive substring of the adapter name to use; default from SPHFLUID_VULKAN_DEVICE,
     /// else the best type (discrete &gt; integrated &gt; virtual &gt; CPU).</summary>
-    public string DeviceName { get; set; } = Environment.GetEnvironmentVariable("SPHFLUID_VULKAN_DEVICE");
+    public string? DeviceName { get; set; } = Environment.GetEnvironmentVariable("SPHFLUID_VULKAN_DEVICE");
 
     /// <summary>Enables VK_LAYER_KHRONOS_validation and collects its messages in
     /// <see cref="VulkanComputeDevice.ValidationMessages"/>. Fails if the layer is not installed.</summary>
@@ -38,5 +38,5 @@ public sealed class VulkanComputeOptions
     public bool MapDeviceBuffers { get; set; } = Environment.GetEnvironmentVariable("SPHFLUID_VULKAN_MAP_BUFFERS") != "0";
 
     /// <summary>Where compiled SPIR-V is cached; default <see cref="ShaderCompiler.DefaultCacheDirectory"/>.</summary>
-    public string ShaderCacheDirectory { get; set; }
+    public string? ShaderCacheDirectory { get; set; }
 }

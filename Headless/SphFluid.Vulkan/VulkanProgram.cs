@@ -19,7 +19,7 @@ public sealed class KernelVariant
     internal Pipeline Pipeline;
     internal bool Created;
     /// <summary>Why this device cannot run the variant (it fails at dispatch), or null.</summary>
-    internal string Unsupported;
+    internal string? Unsupported;
     /// <summary>Property ids of the storage buffers, parallel to <see cref="StorageBuffers"/>.</summary>
     internal int[] StorageBufferIds = Array.Empty<int>();
     internal SpirvResource[] StorageBuffers = Array.Empty<SpirvResource>();
@@ -62,7 +62,7 @@ public sealed class VulkanProgram : IComputeProgram
     internal readonly Dictionary<int, VulkanBuffer> ConstantBuffers = new();
     internal readonly Dictionary<int, VulkanTexture>[] TextureBindings;
     readonly Dictionary<string, KernelVariant>[] _variants;
-    string[] _currentDefines;
+    string[] _currentDefines = Array.Empty<string>();
     string _currentDefinesKey = "";
 
     public string Name { get; }
