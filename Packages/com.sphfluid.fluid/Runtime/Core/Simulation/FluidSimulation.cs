@@ -27,6 +27,12 @@ namespace SphFluid.Simulation
         /// sphere to zero without slowing a dam-break front along the floor.</summary>
         public const float WallContactDamping = 0.5f;
 
+        /// <summary>The constant-density solve stops when the density it predicts (delta + dt D delta / Dt, first order in dt)
+        /// is within this fraction of the tolerance, so that the density measured after the drift, which the prediction
+        /// misses by its second-order part, is within the tolerance itself: at 1.0 a settled tank measured 0.1047 % at a
+        /// 0.1 % tolerance, at 0.9 it measures 0.089 % for one more iteration per sub-step (DivergenceFreeTankTests).</summary>
+        public const float DensityPredictionMargin = 0.9f;
+
         /// <summary>The last-resort clamp surface lies this many particle spacings inside the walls (SphBoundary.hlsl).</summary>
         public const float ClampInset = 0.01f;
 
@@ -555,7 +561,7 @@ namespace SphFluid.Simulation
             c.XsphEpsilon = s.XsphEpsilon;
             c.ShiftingCoefficient = (float)(s.ParticleShifting * 0.5 * h);
             c.VelocityDamping = s.VelocityDamping;
-            c.DensitySolveTolerance = 0.01f * s.DensityTolerance;
+            c.DensitySolveTolerance = DensityPredictionMargin * 0.01f * s.DensityTolerance;
             c.DivergenceSolveTolerance = 0.01f * s.DivergenceTolerance;
             _constantsChanged = true;
         }
