@@ -1,11 +1,4 @@
 using System;
-using System.Collections.Generic;
-using System.IO;
-using System.Linq;
-using System.Numerics;
-using System.Runtime.InteropServices;
-using System.Threading.Tasks;
-using Silk.NET.Core.Native;
 using Silk.NET.Vulkan;
 using SphFluid.Compute;
 using VkBuffer = Silk.NET.Vulkan.Buffer;

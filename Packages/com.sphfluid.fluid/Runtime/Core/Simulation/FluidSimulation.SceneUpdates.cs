@@ -1,7 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Numerics;
-using SphFluid.Compute;
 
 namespace SphFluid.Simulation
 {
