@@ -30,6 +30,9 @@ namespace SphFluid.Simulation
         /// sphere to zero without slowing a dam-break front along the floor.</summary>
         public const float WallContactDamping = 0.5f;
 
+        /// <summary>xi of delta-SPH's diffusive term (SphDensityDiffusion.hlsl): 0.1, the value Antuono et al. 2010 use throughout.</summary>
+        public const double DensityDiffusionXi = 0.1;
+
         /// <summary>The last-resort clamp surface lies this many particle spacings inside the walls (SphBoundary.hlsl).</summary>
         public const float ClampInset = 0.01f;
 
@@ -45,6 +48,9 @@ namespace SphFluid.Simulation
             _solveFinal, _applyStiffness, _drift, _divergenceRate;
         readonly bool _divergenceFree;
         readonly int _particleShift, _applyShift;
+        readonly int _densityRate, _continuityDensity; // delta-SPH (SphDensityDiffusion.hlsl)
+        readonly bool _deltaSph;
+        readonly float[] _spawnNumberDensities;
         readonly int[] _solverKernels;
         readonly int _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal;
         readonly int _reductionGroups;
@@ -55,6 +61,7 @@ namespace SphFluid.Simulation
         IComputeBuffer _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits;
         IComputeBuffer _boundaryRest, _boundaryPlaced, _boundarySorted, _boundaryPressures;
         IComputeBuffer _factors, _solverStiffness, _warmStart, _solverPartials, _solverState, _solverArguments, _divergenceRates;
+        IComputeBuffer _numberDensities, _numberDensitiesHalf, _densityRates; // delta-SPH
         ParticleSorter _sorter, _boundarySorter;
         CellGrid _grid;
         bool _containerChanged = true;
@@ -89,7 +96,8 @@ namespace SphFluid.Simulation
             _scene = CopyOf(scene);
             _phases = _scene.Phases();
             _phaseTable = _scene.BuildPhaseTable();
-            _spawn = SpawnLayout.Generate(_scene);
+            _spawn = SpawnLayout.Generate(_scene, out double[] spawnPressures);
+            _spawnNumberDensities = HydrostaticNumberDensities(_spawn, spawnPressures);
             ParticleCount = _spawn.Length;
             _timeStep = TimeStepController.ForScene(_scene);
             _reductionGroups = (ParticleCount + ReductionThreads - 1) / ReductionThreads;
@@ -117,11 +125,14 @@ namespace SphFluid.Simulation
             _divergenceFree = _scene.Settings.PressureSolver == PressureSolver.Dfsph;
             _particleShift = _solver.FindKernel("ParticleShift");
             _applyShift = _solver.FindKernel("ApplyShift");
+            _densityRate = _solver.FindKernel("DensityRate");
+            _continuityDensity = _solver.FindKernel("ContinuityDensity");
+            _deltaSph = !_divergenceFree && _scene.Settings.WcsphDensity == WcsphDensity.DeltaSph;
             _solverKernels = new[]
             {
                 _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep, _densityFactor, _nonPressureForces,
                 _predictVelocity, _beginSolve, _densitySolveError, _divergenceSolveError, _solveFinal, _applyStiffness, _drift, _divergenceRate,
-                _particleShift, _applyShift,
+                _particleShift, _applyShift, _densityRate, _continuityDensity,
             };
             _motionPartial = _diagnostics.FindKernel("MotionPartial");
             _motionFinal = _diagnostics.FindKernel("MotionFinal");
@@ -171,6 +182,14 @@ namespace SphFluid.Simulation
         /// <summary>DFSPH, by particle id (not sorted): float2 of the q the last constant-density (x) and divergence-free (y)
         /// solves applied in total, the next sub-step's warm start (DivergenceFreeSolver.hlsl).</summary>
         public IComputeBuffer WarmStart => _warmStart;
+
+        /// <summary>delta-SPH (WcsphDensity.DeltaSph), by particle id (not sorted): the number density each particle carries, 1/m^3
+        /// (SphDensityDiffusion.hlsl). Written before <see cref="ComputeForces"/>, it is the state the forces see.</summary>
+        public IComputeBuffer NumberDensities => _numberDensities;
+
+        /// <summary>delta-SPH, per particle (same order as <see cref="Particles"/>): float2 of the continuity and the diffusion
+        /// term of D delta / Dt at the last sub-step's start (at the current state after <see cref="ComputeForces"/>), 1/(m^3 s).</summary>
+        public IComputeBuffer DensityRates => _densityRates;
 
         /// <summary>Per particle: the particle shift (xyz) of the last sub-step when shifting is on, m (ParticleShifting.hlsl).</summary>
         public IComputeBuffer Shifts => _shifts;
@@ -323,6 +342,8 @@ namespace SphFluid.Simulation
         /// <summary>One WCSPH Velocity Verlet sub-step: kick-drift, re-sort, forces, kick.</summary>
         void VerletSubstep()
         {
+            if (_deltaSph) SolverPass(PassNames.DensityRate, _densityRate);
+
             SolverPass(PassNames.HalfStep, _halfStep);
 
             SortAndComputeForces();
@@ -438,7 +459,7 @@ namespace SphFluid.Simulation
                 return;
             }
 
-            SolverPass(PassNames.DensityPressure, _densityPressure);
+            SolverPass(PassNames.DensityPressure, _deltaSph ? _continuityDensity : _densityPressure);
 
             SolverPass(PassNames.WallPressure, _wallPressure, _boundaryCount);
 
@@ -462,6 +483,16 @@ namespace SphFluid.Simulation
         {
             ThrowIfDisposed();
             BeginFrame();
+            if (_deltaSph)
+            {
+                // delta-SPH outside a step: dt = 0 keeps the carried delta; DensityRate runs on the sorted state for its rates.
+                _device.SetFloat(_solver, _ids.TimeStep, 0f);
+                _device.BeginSample(PassNames.Sort);
+                _sorter.Sort(_grid, _particles, _particlesOther, ParticleCount);
+                SwapParticleBuffers();
+                _device.EndSample(PassNames.Sort);
+                SolverPass(PassNames.DensityRate, _densityRate);
+            }
             SortAndComputeForces();
             _device.Submit();
         }
@@ -608,6 +639,7 @@ namespace SphFluid.Simulation
             _diagnosticsReadback = null;
             LatestDiagnostics = null;
             _particles.SetData(_spawn);
+            _numberDensities.SetData(_spawnNumberDensities);
             _clampHits.SetData(new uint[1]);
             _warmStart.SetData(new Vector2[ParticleCount]);
             _solverState.SetData(new uint[16]);
@@ -780,6 +812,12 @@ namespace SphFluid.Simulation
             _solverState = _device.CreateBuffer("FluidSimulation.SolverState", 16, 4);
             _solverArguments = _device.CreateArgumentsBuffer("FluidSimulation.SolverArguments", 3);
             _divergenceRates = _device.CreateBuffer("FluidSimulation.DivergenceRates", n, 4);
+            _numberDensities = _device.CreateBuffer("FluidSimulation.NumberDensities", n, 4);
+            _numberDensitiesHalf = _device.CreateBuffer("FluidSimulation.NumberDensitiesHalf", n, 4);
+            _densityRates = _device.CreateBuffer("FluidSimulation.DensityRates", n, 8);
+            _numberDensities.SetData(_spawnNumberDensities);
+            _numberDensitiesHalf.SetData(_spawnNumberDensities);
+            _densityRates.SetData(new Vector2[n]);
             _factors.SetData(new float[n]);
             _solverStiffness.SetData(new float[n]);
             _warmStart.SetData(new Vector2[n]);
@@ -817,6 +855,9 @@ namespace SphFluid.Simulation
                 _device.SetBuffer(_solver, k, _ids.SolverState, _solverState);
                 _device.SetBuffer(_solver, k, _ids.SolverArguments, _solverArguments);
                 _device.SetBuffer(_solver, k, _ids.DivergenceRates, _divergenceRates);
+                _device.SetBuffer(_solver, k, _ids.NumberDensities, _numberDensities);
+                _device.SetBuffer(_solver, k, _ids.NumberDensitiesHalf, _numberDensitiesHalf);
+                _device.SetBuffer(_solver, k, _ids.DensityRates, _densityRates);
             }
             foreach (int k in _diagnosticsKernels)
             {
@@ -932,6 +973,8 @@ namespace SphFluid.Simulation
             _device.SetFloat(_solver, _ids.XsphEpsilon, s.XsphEpsilon);
             _device.SetFloat(_solver, _ids.ShiftingCoefficient, (float)(s.ParticleShifting * 0.5 * h));
             _device.SetFloat(_solver, _ids.VelocityDamping, s.VelocityDamping);
+            _device.SetFloat(_solver, _ids.DensityDiffusion, (float)(DensityDiffusionXi * 0.5 * h * _timeStep.SpeedOfSound));
+            _device.SetFloat(_solver, _ids.HydrostaticCompliance, (float)(1.0 / ((double)s.Gamma * s.Stiffness)));
             _device.SetFloat(_solver, _ids.TimeStep, 0f);
         }
 
@@ -973,6 +1016,22 @@ namespace SphFluid.Simulation
             _boundaryMoved = true;
         }
 
+        /// <summary>delta-SPH's starting number densities by particle id: delta0 (1 + p / k)^(1 / gamma) of each particle's phase at
+        /// the hydrostatic pressure it was spawned under (HydrostaticSpawn), so the Tait pressure starts exactly hydrostatic
+        /// whatever the spawn jitter did to the kernel sums.</summary>
+        float[] HydrostaticNumberDensities(Particle[] spawn, double[] pressures)
+        {
+            var s = _scene.Settings;
+            var result = new float[spawn.Length];
+            foreach (var p in spawn)
+            {
+                var phase = _phaseTable[p.Phase];
+                double restNumberDensity = (double)phase.RestDensity / phase.ParticleMass;
+                result[p.Id] = (float)(restNumberDensity * Math.Pow(1.0 + pressures[p.Id] / s.Stiffness, 1.0 / s.Gamma));
+            }
+            return result;
+        }
+
         static FluidSceneDescription CopyOf(FluidSceneDescription scene)
         {
             var obstacles = new List<SphereObstacleDescription>();
@@ -1002,8 +1061,10 @@ namespace SphFluid.Simulation
             _diagnosticsReadback = null;
             foreach (var buffer in new[] { _particles, _particlesOther, _phaseBuffer, _densities, _normalsBuffer, _accelerations,
                          _xsph, _shifts, _obstacles, _motionPartials, _motionTotals, _diagnosticsPartials, _diagnosticsTotals, _clampHits,
-                         _factors, _solverStiffness, _warmStart, _solverPartials, _solverState, _solverArguments, _divergenceRates })
+                         _factors, _solverStiffness, _warmStart, _solverPartials, _solverState, _solverArguments, _divergenceRates,
+                         _numberDensities, _numberDensitiesHalf, _densityRates })
                 buffer?.Dispose();
+            _numberDensities = _numberDensitiesHalf = _densityRates = null;
             _factors = _solverStiffness = _warmStart = _solverPartials = _solverState = _solverArguments = _divergenceRates = null;
             _particles = _particlesOther = _phaseBuffer = _densities = _normalsBuffer = _accelerations = null;
             _xsph = _shifts = _obstacles = _motionPartials = _motionTotals = _diagnosticsPartials = _diagnosticsTotals = _clampHits = null;
@@ -1030,6 +1091,7 @@ namespace SphFluid.Simulation
             public readonly int BoundaryRest, BoundaryPlaced, BoundaryParticles, BoundaryPressures, BoundaryCellStart, BoundaryCellCount, BoundaryCount, ClampHits;
             public readonly int DivergenceFreeFactors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
             public readonly int SolveSlot, SolveTolerance, SolveRounds;
+            public readonly int NumberDensities, NumberDensitiesHalf, DensityRates, DensityDiffusion, HydrostaticCompliance;
 
             public ShaderIds(IComputeDevice d)
             {
@@ -1078,6 +1140,11 @@ namespace SphFluid.Simulation
                 SolveSlot = d.PropertyId("_SolveSlot");
                 SolveTolerance = d.PropertyId("_SolveTolerance");
                 SolveRounds = d.PropertyId("_SolveRounds");
+                NumberDensities = d.PropertyId("_NumberDensities");
+                NumberDensitiesHalf = d.PropertyId("_NumberDensitiesHalf");
+                DensityRates = d.PropertyId("_DensityRates");
+                DensityDiffusion = d.PropertyId("_DensityDiffusion");
+                HydrostaticCompliance = d.PropertyId("_HydrostaticCompliance");
                 CohesionCoefficient = d.PropertyId("_CohesionCoefficient");
                 Stiffness = d.PropertyId("_Stiffness");
                 Gamma = d.PropertyId("_Gamma");
