@@ -10,18 +10,25 @@ namespace SphFluid.Tests.Physics
     /// A tank of water at rest (the physics issue's case: a 0.4 x 0.3 x 0.2 m water box filling the footprint of its
     /// container, default solver settings) must stay at rest: its column keeps its height, the pressure grows with
     /// depth as rho0 g, and the walls hold it without the last-resort clamp. With penalty walls and the Spiky density
-    /// it lost 14 % of its height and its pressure gradient was 32 % too steep. One 2-second run, several measures.
+    /// it lost 14 % of its height and its pressure gradient was 32 % too steep. One 2-second run, several measures, for
+    /// each WCSPH density (summation, and delta-SPH's carried density: SphDensityDiffusion.hlsl).
     /// </summary>
+    [TestFixture(WcsphDensity.Summation)]
+    [TestFixture(WcsphDensity.DeltaSph)]
     public sealed class RestingTankTests
     {
+        readonly WcsphDensity _density;
+
+        public RestingTankTests(WcsphDensity density) => _density = density;
+
         const float Spacing = 0.025f, Floor = -0.2f, BoxHeight = 0.3f;
         const double RhoG = 1000.0 * 9.81;
         double _spawned, _height, _gradient, _maxSpeedLastSecond;
         DiagnosticsReport _report;
 
-        public static FluidSceneDescription Tank(float spacing)
+        public static FluidSceneDescription Tank(float spacing, WcsphDensity density = WcsphDensity.Summation)
         {
-            var settings = new FluidSettings { ParticleSpacing = spacing, SmoothingRadius = 2f * spacing, MaxSubsteps = 200 };
+            var settings = new FluidSettings { ParticleSpacing = spacing, SmoothingRadius = 2f * spacing, MaxSubsteps = 200, WcsphDensity = density };
             var container = new Vector3(0.4f, 0.4f, 0.2f);
             var water = new Vector3(0.4f, 0.3f, 0.2f);
             var box = SolverScenes.Box("Water", SolverScenes.Water(viscosity: 0.001f), new Vector3(0f, -0.5f * container.Y + 0.5f * water.Y, 0f), water);
@@ -31,7 +38,7 @@ namespace SphFluid.Tests.Physics
         [OneTimeSetUp]
         public void RunTwoSeconds()
         {
-            using var sim = new FluidSimulation(GpuTestDevice.Shared, Tank(Spacing));
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, Tank(Spacing, _density));
             var particles = new Particle[sim.ParticleCount];
             var densities = new Vector4[sim.ParticleCount];
             sim.Particles.GetData(particles);
@@ -49,7 +56,7 @@ namespace SphFluid.Tests.Physics
             _height = TankMeasures.ColumnHeight(particles, Floor);
             double surface = Floor + _height;
             _gradient = TankMeasures.PressureGradient(particles, densities, Floor + 1.5 * Spacing, surface - 2.5 * Spacing);
-            TestContext.Progress.WriteLine($"resting tank, N={sim.ParticleCount}, {sim.BoundaryCount} boundary particles: column {_height:F4} m at 2 s, " +
+            TestContext.Progress.WriteLine($"resting tank ({_density}), N={sim.ParticleCount}, {sim.BoundaryCount} boundary particles: column {_height:F4} m at 2 s, " +
                 $"{_spawned:F4} m spawned ({100 * (_height / _spawned - 1):F2} %; spawn vs box {100 * (_spawned / BoxHeight - 1):F2} %), " +
                 $"dp/dy {_gradient:F0} Pa/m (rho0 g {RhoG:F0}: {100 * (-_gradient / RhoG - 1):F2} %), max speed 1-2 s {1000 * _maxSpeedLastSecond:F1} mm/s; {_report}");
         }
@@ -76,7 +83,10 @@ namespace SphFluid.Tests.Physics
         [Test, Ignore("Not met yet: the issue asks below 5 mm/s; measured 38 mm/s between 1 and 2 s (34 mm/s at 2 s) at spacing 0.025 m. " +
                       "Tried and measured: particle shifting (ParticleShifting 2: 65 mm/s; 6: worse), no spawn jitter (45 mm/s), 1 s at " +
                       "damping 10/s or 2 s at 30/s before t = 0 (still 20-50 mm/s spikes beside the walls), artificial viscosity 0.1 (38 mm/s). " +
-                      "The remaining motion is particle-scale pressure noise that even 30/s damping holds only at 13 mm/s.")]
+                      "The remaining motion is particle-scale pressure noise that even 30/s damping holds only at 13 mm/s. " +
+                      "delta-SPH (WcsphDensity = DeltaSph, started hydrostatic): 42 mm/s (12 mm/s at 2 s; rms 2.3 mm/s), 20 mm/s with " +
+                      "artificial viscosity 0.1; without jitter the cubic lattice rearranges from 0.4 s on (80 mm/s): the motion is the " +
+                      "lattice settling under pressure, not density noise.")]
         public void TheFluidComesToRestBelowFiveMillimetresPerSecond() =>
             Assert.That(_maxSpeedLastSecond, Is.LessThan(0.005));
     }

@@ -18,7 +18,7 @@ namespace SphFluid.Tests.Solver
         const double Tolerance = 1e-4;
 
         /// <summary>A compressed, noisy blob (spacing 0.85 s, random velocities), partly pushed into the walls.</summary>
-        static FluidSceneDescription RandomScene(bool multiphase, bool tension, bool xsph, bool obstacle)
+        internal static FluidSceneDescription RandomScene(bool multiphase, bool tension, bool xsph, bool obstacle)
         {
             var settings = SolverScenes.Coarse(0.02f);
             settings.XsphEpsilon = xsph ? 0.3f : 0f;
@@ -43,7 +43,7 @@ namespace SphFluid.Tests.Solver
             return scene;
         }
 
-        static Particle[] RandomParticles(FluidSceneDescription scene, int count, ulong seed)
+        internal static Particle[] RandomParticles(FluidSceneDescription scene, int count, ulong seed)
         {
             var rng = new SolverScenes.Rng(seed);
             var spawn = SpawnLayout.Generate(scene);

@@ -53,6 +53,9 @@ cbuffer FluidConstants
     float _DivergenceSolveTolerance;        // DivergenceFreeSolver: average divergence error that ends the solve, 1/s
     uint _DensitySolveRounds;               // DivergenceFreeSolver: rounds recorded for the constant-density solve
     uint _DivergenceSolveRounds;            // DivergenceFreeSolver: rounds recorded for the divergence-free solve
+
+    float _DensityDiffusion;                // SphDensityDiffusion: xi h c0, m^2/s
+    float _HydrostaticCompliance;           // SphDensityDiffusion: 1 / (gamma k), 1/Pa
 };
 
 // Grid.hlsl reads its three values from here instead of declaring its own.

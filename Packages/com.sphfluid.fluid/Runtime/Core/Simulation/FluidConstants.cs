@@ -16,7 +16,7 @@ namespace SphFluid.Simulation
     [StructLayout(LayoutKind.Sequential, Size = Bytes)]
     public struct FluidConstants
     {
-        /// <summary>The cbuffer's size: its last 16-byte row is not full, and HLSL rounds up to whole rows.</summary>
+        /// <summary>The cbuffer's size in bytes, whole 16-byte rows (HLSL rounds a part row up).</summary>
         public const int Bytes = 384;
 
         public Matrix4x4 WorldToContainer;
@@ -57,5 +57,8 @@ namespace SphFluid.Simulation
         public float DivergenceSolveTolerance;
         public uint DensitySolveRounds;
         public uint DivergenceSolveRounds;
+
+        public float DensityDiffusion;
+        public float HydrostaticCompliance;
     }
 }

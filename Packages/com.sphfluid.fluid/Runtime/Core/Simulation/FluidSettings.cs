@@ -51,6 +51,9 @@ namespace SphFluid.Simulation
         [Setting(Pressure, 1, 10, "", "WCSPH: Tait exponent gamma (7 for water).")]
         public float Gamma = 7f;
 
+        [Setting(Pressure, 0, 1, "", "WCSPH: how each particle's density is found: 0 = Summation (the kernel sum over its neighbours, every sub-step), 1 = DeltaSph (carried by the particle, integrated with the continuity equation plus delta-SPH density diffusion, started hydrostatic).")]
+        public WcsphDensity WcsphDensity = WcsphDensity.Summation;
+
         // A fall along the container's diagonal must also stay below the speed of sound (SpeedOfSoundRule).
         [Setting(Forces, 0, 1000, "m/s^2", "Gravitational acceleration, in world space.")]
         public SettingVector Gravity = new Vector3(0f, -9.81f, 0f);

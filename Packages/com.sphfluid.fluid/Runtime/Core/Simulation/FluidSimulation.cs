@@ -33,6 +33,9 @@ namespace SphFluid.Simulation
         /// 0.1 % tolerance, at 0.9 it measures 0.089 % for one more iteration per sub-step (DivergenceFreeTankTests).</summary>
         public const float DensityPredictionMargin = 0.9f;
 
+        /// <summary>xi of delta-SPH's diffusive term (SphDensityDiffusion.hlsl): 0.1, the value Antuono et al. 2010 use throughout.</summary>
+        public const double DensityDiffusionXi = 0.1;
+
         /// <summary>The last-resort clamp surface lies this many particle spacings inside the walls (SphBoundary.hlsl).</summary>
         public const float ClampInset = 0.01f;
 
@@ -48,6 +51,9 @@ namespace SphFluid.Simulation
             _solveFinal, _applyStiffness, _drift, _divergenceRate;
         readonly bool _divergenceFree;
         readonly int _particleShift, _applyShift;
+        readonly int _densityRate, _continuityDensity; // delta-SPH (SphDensityDiffusion.hlsl)
+        readonly bool _deltaSph;
+        readonly float[] _spawnNumberDensities;
         readonly int[] _solverKernels;
         readonly int _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal;
         readonly int _reductionGroups;
@@ -88,7 +94,8 @@ namespace SphFluid.Simulation
             _scene = CopyOf(scene);
             _phases = _scene.Phases();
             _phaseTable = _scene.BuildPhaseTable();
-            _spawn = SpawnLayout.Generate(_scene);
+            _spawn = SpawnLayout.Generate(_scene, out double[] spawnPressures);
+            _spawnNumberDensities = HydrostaticNumberDensities(_spawn, spawnPressures);
             ParticleCount = _spawn.Length;
             _timeStep = TimeStepController.ForScene(_scene);
             _reductionGroups = (ParticleCount + ReductionThreads - 1) / ReductionThreads;
@@ -116,11 +123,14 @@ namespace SphFluid.Simulation
             _divergenceFree = _scene.Settings.PressureSolver == PressureSolver.Dfsph;
             _particleShift = _solver.FindKernel("ParticleShift");
             _applyShift = _solver.FindKernel("ApplyShift");
+            _densityRate = _solver.FindKernel("DensityRate");
+            _continuityDensity = _solver.FindKernel("ContinuityDensity");
+            _deltaSph = !_divergenceFree && _scene.Settings.WcsphDensity == WcsphDensity.DeltaSph;
             _solverKernels = new[]
             {
                 _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep, _densityFactor, _nonPressureForces,
                 _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError, _solveFinal, _applyStiffness, _drift, _divergenceRate,
-                _particleShift, _applyShift,
+                _particleShift, _applyShift, _densityRate, _continuityDensity,
             };
             _motionPartial = _diagnostics.FindKernel("MotionPartial");
             _motionFinal = _diagnostics.FindKernel("MotionFinal");
@@ -132,7 +142,7 @@ namespace SphFluid.Simulation
             try
             {
                 _buffers = new SolverBuffers(device, _solver, _solverKernels, _diagnostics, _diagnosticsKernels, ParticleCount, _phaseTable,
-                    _reductionGroups, device.PropertyId("FluidConstants"));
+                    _reductionGroups, device.PropertyId("FluidConstants"), _spawnNumberDensities);
                 RebuildGrid();
                 CreateBoundary();
                 WriteConstants();
@@ -171,6 +181,14 @@ namespace SphFluid.Simulation
         /// <summary>DFSPH, by particle id (not sorted): float2 of the q the last constant-density (x) and divergence-free (y)
         /// solves applied in total, the next sub-step's warm start (DivergenceFreeSolver.hlsl).</summary>
         public IComputeBuffer WarmStart => _buffers.WarmStart;
+
+        /// <summary>delta-SPH (WcsphDensity.DeltaSph), by particle id (not sorted): the number density each particle carries, 1/m^3
+        /// (SphDensityDiffusion.hlsl). Written before <see cref="ComputeForces"/>, it is the state the forces see.</summary>
+        public IComputeBuffer NumberDensities => _buffers.NumberDensities;
+
+        /// <summary>delta-SPH, per particle (same order as <see cref="Particles"/>): float2 of the continuity and the diffusion
+        /// term of D delta / Dt at the last sub-step's start (at the current state after <see cref="ComputeForces"/>), 1/(m^3 s).</summary>
+        public IComputeBuffer DensityRates => _buffers.DensityRates;
 
         /// <summary>Per particle: the particle shift (xyz) of the last sub-step when shifting is on, m (ParticleShifting.hlsl).</summary>
         public IComputeBuffer Shifts => _buffers.Shifts;
@@ -222,7 +240,7 @@ namespace SphFluid.Simulation
         /// <summary>Names of the GPU timing ranges a frame may record (device.TryGetSampleMilliseconds).</summary>
         public static IReadOnlyList<string> SampleNames { get; } = new[]
         {
-            PassNames.UploadContainer, PassNames.PlaceBoundary, PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals,
+            PassNames.UploadContainer, PassNames.PlaceBoundary, PassNames.DensityRate, PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals,
             PassNames.Forces, PassNames.FullStep, PassNames.NonPressureForces, PassNames.PredictVelocity, PassNames.DensitySolve, PassNames.Drift,
             PassNames.DensityFactor, PassNames.DivergenceSolve, PassNames.ParticleShift, PassNames.ApplyShift, PassNames.MotionReduction, PassNames.Diagnostics,
         };
@@ -314,21 +332,28 @@ namespace SphFluid.Simulation
         /// <summary>One sub-step of the chosen pressure solver.</summary>
         void Substep(float dt)
         {
-            if (_constants[0].TimeStep != dt)
-            {
-                _constants[0].TimeStep = dt;
-                _constantsChanged = true;
-            }
-            PushConstants(); // once per frame: its sub-steps share one dt
+            SetTimeStep(dt); // once per frame: its sub-steps share one dt
             if (_divergenceFree)
                 DivergenceFreeSubstep();
             else
                 VerletSubstep();
         }
 
+        void SetTimeStep(float dt)
+        {
+            if (_constants[0].TimeStep != dt)
+            {
+                _constants[0].TimeStep = dt;
+                _constantsChanged = true;
+            }
+            PushConstants();
+        }
+
         /// <summary>One WCSPH Velocity Verlet sub-step: kick-drift, re-sort, forces, kick.</summary>
         void VerletSubstep()
         {
+            if (_deltaSph) SolverPass(PassNames.DensityRate, _densityRate);
+
             SolverPass(PassNames.HalfStep, _halfStep);
 
             SortAndComputeForces();
@@ -451,7 +476,7 @@ namespace SphFluid.Simulation
                 return;
             }
 
-            SolverPass(PassNames.DensityPressure, _densityPressure);
+            SolverPass(PassNames.DensityPressure, _deltaSph ? _continuityDensity : _densityPressure);
 
             SolverPass(PassNames.WallPressure, _wallPressure, _boundaryCount);
 
@@ -475,6 +500,16 @@ namespace SphFluid.Simulation
         {
             ThrowIfDisposed();
             BeginFrame();
+            if (_deltaSph)
+            {
+                // delta-SPH outside a step: dt = 0 keeps the carried delta; DensityRate runs on the sorted state for its rates.
+                SetTimeStep(0f);
+                _device.BeginSample(PassNames.Sort);
+                _buffers.Sorter.Sort(_grid, _buffers.Particles, _buffers.ParticlesOther, ParticleCount);
+                _buffers.SwapParticles();
+                _device.EndSample(PassNames.Sort);
+                SolverPass(PassNames.DensityRate, _densityRate);
+            }
             SortAndComputeForces();
             _device.Submit();
         }
@@ -504,6 +539,7 @@ namespace SphFluid.Simulation
             _diagnosticsReadback = null;
             LatestDiagnostics = null;
             _buffers.Particles.SetData(_spawn);
+            _buffers.NumberDensities.SetData(_spawnNumberDensities);
             _buffers.ClearForRespawn();
             _solveRounds[DensitySolveSlot] = _solveRounds[DivergenceSolveSlot] = _scene.Settings.MaxSolverIterations;
             WriteSolveRounds();
@@ -561,6 +597,8 @@ namespace SphFluid.Simulation
             c.XsphEpsilon = s.XsphEpsilon;
             c.ShiftingCoefficient = (float)(s.ParticleShifting * 0.5 * h);
             c.VelocityDamping = s.VelocityDamping;
+            c.DensityDiffusion = (float)(DensityDiffusionXi * 0.5 * h * _timeStep.SpeedOfSound);
+            c.HydrostaticCompliance = (float)(1.0 / ((double)s.Gamma * s.Stiffness));
             c.DensitySolveTolerance = DensityPredictionMargin * 0.01f * s.DensityTolerance;
             c.DivergenceSolveTolerance = 0.01f * s.DivergenceTolerance;
             _constantsChanged = true;
@@ -596,6 +634,22 @@ namespace SphFluid.Simulation
             if (!_constantsChanged) return;
             _device.UpdateBuffer(_buffers.Constants, _constants);
             _constantsChanged = false;
+        }
+
+        /// <summary>delta-SPH's starting number densities by particle id: delta0 (1 + p / k)^(1 / gamma) of each particle's phase at
+        /// the hydrostatic pressure it was spawned under (HydrostaticSpawn), so the Tait pressure starts exactly hydrostatic
+        /// whatever the spawn jitter did to the kernel sums.</summary>
+        float[] HydrostaticNumberDensities(Particle[] spawn, double[] pressures)
+        {
+            var s = _scene.Settings;
+            var result = new float[spawn.Length];
+            foreach (var p in spawn)
+            {
+                var phase = _phaseTable[p.Phase];
+                double restNumberDensity = (double)phase.RestDensity / phase.ParticleMass;
+                result[p.Id] = (float)(restNumberDensity * Math.Pow(1.0 + pressures[p.Id] / s.Stiffness, 1.0 / s.Gamma));
+            }
+            return result;
         }
 
         static FluidSceneDescription CopyOf(FluidSceneDescription scene)

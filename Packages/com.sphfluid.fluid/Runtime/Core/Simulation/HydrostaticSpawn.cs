@@ -26,7 +26,11 @@ namespace SphFluid.Simulation
         const int Steps = 64;
 
         /// <summary>Lowers <paramref name="particles"/> (spawned from <paramref name="scene"/>'s boxes) into hydrostatic equilibrium.</summary>
-        public static void Apply(FluidSceneDescription scene, Particle[] particles)
+        public static void Apply(FluidSceneDescription scene, Particle[] particles) => Apply(scene, particles, null);
+
+        /// <summary>As <see cref="Apply(FluidSceneDescription, Particle[])"/>, and writes into <paramref name="pressures"/> (when given,
+        /// indexed like the particles) the pressure p each particle was lowered for, Pa: the weight of the spawned fluid above it.</summary>
+        public static void Apply(FluidSceneDescription scene, Particle[] particles, double[] pressures)
         {
             var settings = scene.Settings;
             float g = settings.Gravity.Length();
@@ -36,19 +40,23 @@ namespace SphFluid.Simulation
             for (int i = 0; i < particles.Length; i++)
             {
                 var x = particles[i].Position;
-                double drop = Drop(boxes, x, up, g, settings.Stiffness, settings.Gamma);
+                double drop = Drop(boxes, x, up, g, settings.Stiffness, settings.Gamma, out double pressure);
+                if (pressures != null) pressures[i] = pressure;
                 particles[i].Position = x - up * (float)drop;
             }
         }
 
         /// <summary>How far the particle at <paramref name="x"/> moves down: the compression of the fluid below it.</summary>
-        static double Drop(List<SpawnBoxDescription> boxes, Vector3 x, Vector3 up, float g, float stiffness, float gamma)
+        static double Drop(List<SpawnBoxDescription> boxes, Vector3 x, Vector3 up, float g, float stiffness, float gamma, out double pressureHere)
         {
             // The vertical line x + t up: each box occupies one interval [enter, exit] of t.
             var spans = new List<(double Enter, double Exit, double Density)>();
             foreach (var box in boxes)
                 if (Crossing(box, x, up, out double enter, out double exit))
                     spans.Add((enter, exit, box.Phase.RestDensity));
+            pressureHere = 0.0;
+            foreach (var span in spans)
+                pressureHere += span.Density * g * Math.Max(0.0, span.Exit - Math.Max(span.Enter, 0.0));
             double drop = 0.0;
             foreach (var span in spans)
             {

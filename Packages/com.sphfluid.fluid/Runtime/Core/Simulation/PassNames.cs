@@ -5,6 +5,7 @@ namespace SphFluid.Simulation
     {
         public const string UploadContainer = "UploadContainer";
         public const string PlaceBoundary = "PlaceBoundary";
+        public const string DensityRate = "DensityRate";
         public const string HalfStep = "HalfStep";
         public const string Sort = "Sort";
         public const string DensityPressure = "DensityPressure";

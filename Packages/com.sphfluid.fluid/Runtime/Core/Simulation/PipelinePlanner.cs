@@ -14,12 +14,13 @@ namespace SphFluid.Simulation
             int obstacles = scene.Obstacles == null ? 0 : scene.Obstacles.Count;
             var settings = scene.Settings;
             bool shifting = settings.ParticleShifting > 0f;
+            bool deltaSph = settings.WcsphDensity == WcsphDensity.DeltaSph;
             if (forced == null)
                 return new SimulationPlan(phases.Count, obstacles, tension, settings.XsphEpsilon > 0f,
-                    settings.VelocityDamping > 0f, containerMoved, settings.PressureSolver, shifting: shifting);
+                    settings.VelocityDamping > 0f, containerMoved, settings.PressureSolver, shifting: shifting, deltaSph: deltaSph);
             return new SimulationPlan(phases.Count, obstacles, tension || forced.SurfaceTension, settings.XsphEpsilon > 0f || forced.Xsph,
                 settings.VelocityDamping > 0f, containerMoved || forced.ContainerMoving, settings.PressureSolver, forced.Multiphase, forced.Obstacles,
-                shifting);
+                shifting, deltaSph);
         }
     }
 }

@@ -31,6 +31,10 @@ namespace SphFluid.Simulation
         /// <summary>ParticleShifting &gt; 0: the shift passes run after every sub-step.</summary>
         public bool Shifting { get; }
 
+        /// <summary>WCSPH with WcsphDensity = DeltaSph: the number density is carried and integrated (SphDensityDiffusion.hlsl),
+        /// with the DensityRate pass before the half step.</summary>
+        public bool DeltaSph { get; }
+
         /// <summary>VelocityDamping &gt; 0.</summary>
         public bool Damping { get; }
 
@@ -49,11 +53,14 @@ namespace SphFluid.Simulation
         /// <param name="forceMultiphase">Run the MULTIPHASE variant for one phase (<see cref="PlanOverrides"/>).</param>
         /// <param name="forceObstacles">Run the OBSTACLES variant without spheres (<see cref="PlanOverrides"/>).</param>
         /// <param name="shifting">Run the particle-shifting passes after each WCSPH sub-step (ParticleShifting &gt; 0).</param>
+        /// <param name="deltaSph">WCSPH carries the number density (WcsphDensity = DeltaSph).</param>
         public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform,
-            PressureSolver pressureSolver = PressureSolver.Wcsph, bool forceMultiphase = false, bool forceObstacles = false, bool shifting = false)
+            PressureSolver pressureSolver = PressureSolver.Wcsph, bool forceMultiphase = false, bool forceObstacles = false, bool shifting = false,
+            bool deltaSph = false)
         {
             PressureSolver = pressureSolver;
             Shifting = shifting && pressureSolver == PressureSolver.Wcsph;
+            DeltaSph = deltaSph && pressureSolver == PressureSolver.Wcsph;
             PhaseCount = phaseCount;
             ObstacleCount = obstacleCount;
             Multiphase = phaseCount > 1 || forceMultiphase;
@@ -85,6 +92,7 @@ namespace SphFluid.Simulation
             }
             else
             {
+                if (DeltaSph) passes.Add(PassNames.DensityRate);
                 passes.Add(PassNames.HalfStep);
                 passes.Add(PassNames.Sort);
                 passes.Add(PassNames.DensityPressure);

@@ -80,6 +80,9 @@ namespace SphFluid.Simulation
             new Binding("_SolverState", b => b.SolverState, Readers.Both, Group.Fixed),
             new Binding("_SolverArguments", b => b.SolverArguments, Readers.Solver, Group.Fixed),
             new Binding("_DivergenceRates", b => b.DivergenceRates, Readers.Both, Group.Fixed),
+            new Binding("_NumberDensities", b => b.NumberDensities, Readers.Solver, Group.Fixed),
+            new Binding("_NumberDensitiesHalf", b => b.NumberDensitiesHalf, Readers.Solver, Group.Fixed),
+            new Binding("_DensityRates", b => b.DensityRates, Readers.Solver, Group.Fixed),
             new Binding("_MotionPartials", b => b.MotionPartials, Readers.Diagnostics, Group.Fixed),
             new Binding("_MotionTotals", b => b.MotionTotals, Readers.Diagnostics, Group.Fixed),
             new Binding("_DiagnosticsPartials", b => b.DiagnosticsPartials, Readers.Diagnostics, Group.Fixed),
@@ -103,6 +106,7 @@ namespace SphFluid.Simulation
         public IComputeBuffer Particles, ParticlesOther;
         public IComputeBuffer Phases, Densities, Normals, Accelerations, XsphCorrections, Shifts, Obstacles, ClampHits;
         public IComputeBuffer Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
+        public IComputeBuffer NumberDensities, NumberDensitiesHalf, DensityRates; // delta-SPH (SphDensityDiffusion.hlsl)
         public IComputeBuffer MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
         public IComputeBuffer BoundaryRest, BoundaryPlaced, BoundarySorted, BoundaryPressures;
         public IComputeBuffer Constants;
@@ -112,7 +116,8 @@ namespace SphFluid.Simulation
         /// buffer, and binds them; the boundary and the sorters come with <see cref="MakeBoundary"/> and
         /// <see cref="MakeSorter"/>.</summary>
         public SolverBuffers(IComputeDevice device, IComputeProgram solver, int[] solverKernels, IComputeProgram diagnostics,
-            int[] diagnosticsKernels, int particleCount, PhaseProperties[] phaseTable, int reductionGroups, int fluidConstantsId)
+            int[] diagnosticsKernels, int particleCount, PhaseProperties[] phaseTable, int reductionGroups, int fluidConstantsId,
+            float[] spawnNumberDensities)
         {
             _device = device;
             _solver = solver;
@@ -123,7 +128,7 @@ namespace SphFluid.Simulation
             for (int i = 0; i < Table.Length; i++) _ids[i] = device.PropertyId(Table[i].Property);
             try
             {
-                Make(phaseTable, reductionGroups, fluidConstantsId);
+                Make(phaseTable, reductionGroups, fluidConstantsId, spawnNumberDensities);
             }
             catch
             {
@@ -132,7 +137,7 @@ namespace SphFluid.Simulation
             }
         }
 
-        void Make(PhaseProperties[] phaseTable, int reductionGroups, int fluidConstantsId)
+        void Make(PhaseProperties[] phaseTable, int reductionGroups, int fluidConstantsId, float[] spawnNumberDensities)
         {
             var device = _device;
             int n = _particleCount;
@@ -156,6 +161,11 @@ namespace SphFluid.Simulation
             SolverArguments = device.CreateArgumentsBuffer("FluidSimulation.SolverArguments", 3);
             SolverArguments.SetData(new uint[] { (uint)particleGroups, 1u, 1u });
             DivergenceRates = Zeroed("FluidSimulation.DivergenceRates", n, 4);
+            NumberDensities = device.CreateBuffer("FluidSimulation.NumberDensities", n, 4);
+            NumberDensities.SetData(spawnNumberDensities);
+            NumberDensitiesHalf = device.CreateBuffer("FluidSimulation.NumberDensitiesHalf", n, 4);
+            NumberDensitiesHalf.SetData(spawnNumberDensities);
+            DensityRates = Zeroed("FluidSimulation.DensityRates", n, 8);
             int phases = phaseTable.Length;
             MotionPartials = device.CreateBuffer("FluidSimulation.MotionPartials", reductionGroups, 16);
             MotionTotals = device.CreateBuffer("FluidSimulation.MotionTotals", 2, 16);
@@ -245,10 +255,12 @@ namespace SphFluid.Simulation
         {
             foreach (var buffer in new[] { Particles, ParticlesOther, Phases, Densities, Normals, Accelerations, XsphCorrections, Shifts,
                          Obstacles, ClampHits, Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments,
-                         DivergenceRates, MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals, Constants })
+                         DivergenceRates, NumberDensities, NumberDensitiesHalf, DensityRates, MotionPartials, MotionTotals, DiagnosticsPartials,
+                         DiagnosticsTotals, Constants })
                 buffer?.Dispose();
             Particles = ParticlesOther = Phases = Densities = Normals = Accelerations = XsphCorrections = Shifts = null;
             Obstacles = ClampHits = Factors = SolverStiffness = WarmStart = SolverPartials = SolverState = SolverArguments = null;
+            NumberDensities = NumberDensitiesHalf = DensityRates = null;
             DivergenceRates = MotionPartials = MotionTotals = DiagnosticsPartials = DiagnosticsTotals = Constants = null;
             ReleaseBoundary();
             Sorter?.Dispose();

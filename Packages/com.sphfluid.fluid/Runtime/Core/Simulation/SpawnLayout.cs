@@ -81,7 +81,11 @@ namespace SphFluid.Simulation
         /// inside a sphere obstacle (closer than half a spacing to its surface) are not spawned: the sphere
         /// displaces that fluid, as it would if it were lowered into it, instead of overlapping its boundary particles.
         /// Throws <see cref="ArgumentException"/> with every validation message if the scene is invalid.</summary>
-        public static Particle[] Generate(FluidSceneDescription scene)
+        public static Particle[] Generate(FluidSceneDescription scene) => Generate(scene, out _);
+
+        /// <summary>As <see cref="Generate(FluidSceneDescription)"/>, with the hydrostatic pressure each particle was spawned
+        /// under, Pa, by particle id (<see cref="HydrostaticSpawn"/>).</summary>
+        public static Particle[] Generate(FluidSceneDescription scene, out double[] pressures)
         {
             scene.ThrowIfInvalid();
             var particles = new Particle[TotalCount(scene)];
@@ -93,7 +97,8 @@ namespace SphFluid.Simulation
                 next = Fill(scene, box, phase, particles, next);
             }
             if (next < particles.Length) Array.Resize(ref particles, next);
-            HydrostaticSpawn.Apply(scene, particles);
+            pressures = new double[particles.Length];
+            HydrostaticSpawn.Apply(scene, particles, pressures);
             return particles;
         }
 
