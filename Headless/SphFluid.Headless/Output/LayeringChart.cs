@@ -22,7 +22,7 @@ public static class LayeringChart
             double[] heights = samples.Select(s => s.Phases[k].MeanHeight).ToArray();
             var line = chart.Plot.Add.Scatter(times, heights);
             line.LegendText = $"{phases[k].Name} mean height (rho0 {phases[k].RestDensity:G4} kg/m^3)";
-            var c = phases[k].Color;
+            System.Numerics.Vector4 c = phases[k].Color;
             line.Color = new ScottPlot.Color(Channel(c.X), Channel(c.Y), Channel(c.Z));
             line.LineWidth = 2;
             line.MarkerSize = 4;

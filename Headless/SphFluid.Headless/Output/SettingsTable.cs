@@ -17,14 +17,17 @@ public static class SettingsTable
         object defaults = Activator.CreateInstance(settingsType);
         var table = new StringBuilder();
         table.Append("| group | field | unit | range | default | meaning |\n|---|---|---|---|---|---|\n");
-        foreach (var setting in SettingRules.Declared(settingsType))
+        foreach (var setting in SettingRules.DeclaredPaths(settingsType))
         {
             var d = setting.Declaration;
+            var type = setting.Field.FieldType;
             string range = string.IsNullOrEmpty(d.Unit) ? d.RangeText : d.RangeText[..^(d.Unit.Length + 1)];
-            if (setting.Field.FieldType == typeof(SettingVector)) range = "magnitude in " + range;
-            if (setting.Field.FieldType.IsEnum)
-                range = string.Join(", ", Enum.GetValues(setting.Field.FieldType).Cast<object>().Select(v => $"{Convert.ToInt64(v, CultureInfo.InvariantCulture)} = {v}"));
-            table.Append($"| {d.Group} | `{setting.Field.Name}` | {d.Unit} | {range} | {Value(setting.Field.GetValue(defaults))} | {d.Tooltip} |\n");
+            if (type == typeof(SettingVector)) range = "magnitude in " + range;
+            else if (type == typeof(SettingColor)) range = "each channel in " + range;
+            else if (type == typeof(string)) range = "length in " + range;
+            else if (type.IsEnum)
+                range = string.Join(", ", Enum.GetValues(type).Cast<object>().Select(v => $"{Convert.ToInt64(v, CultureInfo.InvariantCulture)} = {v}"));
+            table.Append($"| {d.Group} | `{setting.Path}` | {d.Unit} | {range} | {Value(setting.GetValue(defaults))} | {d.Tooltip} |\n");
         }
         return table.ToString();
     }
@@ -34,6 +37,7 @@ public static class SettingsTable
         float f => Number(f),
         int i => i.ToString(CultureInfo.InvariantCulture),
         SettingVector v => $"({Number(v.x)}, {Number(v.y)}, {Number(v.z)})",
+        SettingColor c => $"({Number(c.r)}, {Number(c.g)}, {Number(c.b)}, {Number(c.a)})",
         Enum e => $"{Convert.ToInt64(e, CultureInfo.InvariantCulture)} ({e})",
         _ => Convert.ToString(value, CultureInfo.InvariantCulture),
     };

@@ -3,7 +3,8 @@ using System.Numerics;
 
 namespace SphFluid.Headless.Scenes;
 
-/// <summary>The sRGB transfer curve (IEC 61966-2-1), as Unity's <c>Color.linear</c> applies it to inspector colours.</summary>
+/// <summary>The sRGB transfer curve (IEC 61966-2-1), as Unity's <c>Color.linear</c> applies it to inspector colours: a
+/// scene stores a phase colour linear (PhaseDescription.Color), converted from the sRGB the inspector picks.</summary>
 public static class ColorSpace
 {
     public static float SrgbToLinear(float c) =>

@@ -170,7 +170,7 @@ public static class SceneLoader
 
         Vector4 Color(UnityGameObject go, UnityDocument mb, string component, string field, Vector4 fallback)
         {
-            var node = mb.Root[field];
+            var node = mb.Root.At(field);
             if (node == null) return fallback;
             try { return mb.Root.GetColor(field); }
             catch (FormatException) { throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be a colour {{r, g, b, a}} (was '{node}')"); }
@@ -221,20 +221,13 @@ public static class SceneLoader
                     path, mb.Root[field]?.Line ?? mb.Line, Where(go, component, field), min, max, unit, v));
         }
 
-        /// <summary>Each channel of a SpawnBox colour is a fraction, as Unity's colour picker writes it.</summary>
-        Vector4 UnitColor(UnityGameObject go, UnityDocument mb, string component, string field, Vector4 fallback)
+        string Text(UnityGameObject go, UnityDocument mb, string component, string field, string fallback)
         {
-            var c = Color(go, mb, component, field, fallback);
-            float[] channels = { c.X, c.Y, c.Z, c.W };
-            string[] names = { "r", "g", "b", "a" };
-            for (int i = 0; i < 4; i++)
-                if (!(channels[i] >= 0f && channels[i] <= 1f))
-                    throw new SceneException(string.Format(CultureInfo.InvariantCulture, "{0}:{1}: {2}.{3} must be in [0, 1] (was {4})",
-                        path, mb.Root[field]?.Line ?? mb.Line, Where(go, component, field), names[i], channels[i]));
-            return c;
+            var node = mb.Root.At(field);
+            if (node == null) return fallback;
+            if (node.IsScalar) return node.Value;
+            throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be text (was '{node}')");
         }
-
-        string Text(UnityDocument mb, string field, string fallback) => mb.Root[field] is { IsScalar: true } n ? n.Value : fallback;
 
         /// <summary>The compute shaders Unity would run: those the package's resources asset names, which must be the
         /// programs the headless pipeline loads by name (a renamed or re-pointed shader fails here, not mid-run).</summary>
@@ -261,23 +254,25 @@ public static class SceneLoader
         /// <summary>The simulator's <c>settings</c>, field by declared field (<see cref="SettingRules"/>).</summary>
         FluidSettings ReadSettings() => ReadDeclared<FluidSettings>(_simulatorGo, _simulator, RuntimeScripts.Fluid, RuntimeScripts.Settings);
 
-        /// <summary>A component's serialized settings object, field by declared field: the names, types and defaults
-        /// are the core class's own, so a new setting needs no line here. A missing field keeps its default, as in
-        /// Unity.</summary>
+        /// <summary>A component's serialized settings object, field by declared field, through the declared blocks it
+        /// holds (<see cref="SettingRules.DeclaredPaths"/>): the names, types and defaults are the core class's own, so
+        /// a new setting needs no line here. A missing field keeps its default, as in Unity.</summary>
         T ReadDeclared<T>(UnityGameObject go, UnityDocument mb, string component, string prefix) where T : new()
         {
             var values = new T();
-            foreach (var declared in SettingRules.Declared(typeof(T)))
+            foreach (var declared in SettingRules.DeclaredPaths(typeof(T)))
             {
-                var field = declared.Field;
-                string key = prefix + "." + field.Name;
-                object value = field.GetValue(values);
-                if (field.FieldType == typeof(float)) value = Float(go, mb, component, key, (float)value);
-                else if (field.FieldType == typeof(int)) value = Int(go, mb, component, key, (int)value);
-                else if (field.FieldType == typeof(SettingVector)) value = (SettingVector)Vector(go, mb, component, key, (SettingVector)value);
-                else if (field.FieldType.IsEnum) value = Enum.ToObject(field.FieldType, Int(go, mb, component, key, Convert.ToInt32(value)));
-                else throw new NotSupportedException($"{typeof(T).Name}.{field.Name}: no scene reading for {field.FieldType.Name}");
-                field.SetValue(values, value);
+                var type = declared.Field.FieldType;
+                string key = prefix + "." + declared.Path;
+                object value = declared.GetValue(values);
+                if (type == typeof(float)) value = Float(go, mb, component, key, (float)value);
+                else if (type == typeof(int)) value = Int(go, mb, component, key, (int)value);
+                else if (type == typeof(string)) value = Text(go, mb, component, key, (string)value);
+                else if (type == typeof(SettingVector)) value = (SettingVector)Vector(go, mb, component, key, (SettingVector)value);
+                else if (type == typeof(SettingColor)) value = (SettingColor)Color(go, mb, component, key, (SettingColor)value);
+                else if (type.IsEnum) value = Enum.ToObject(type, Int(go, mb, component, key, Convert.ToInt32(value)));
+                else throw new NotSupportedException($"{typeof(T).Name}.{declared.Path}: no scene reading for {type.Name}");
+                declared.SetValue(values, value);
             }
             return values;
         }
@@ -316,27 +311,17 @@ public static class SceneLoader
             return container;
         }
 
+        /// <summary>The box's declared values (its phase among them) from its serialized block; the placement from its
+        /// GameObject, as SpawnBox.Describe takes it.</summary>
         SpawnBoxDescription ReadSpawnBox(UnityGameObject go, UnityDocument mb)
         {
-            const string c = RuntimeScripts.SpawnBox;
-            var d = new PhaseDescription();
-            var phase = new PhaseDescription(Text(mb, "phaseName", d.Name), Float(go, mb, c, "restDensity", d.RestDensity), Float(go, mb, c, "viscosity", d.Viscosity))
-            {
-                ParticleMass = Float(go, mb, c, "particleMass", 0f),
-                SurfaceTension = Float(go, mb, c, "surfaceTension", 0f),
-                Color = ColorSpace.SrgbToLinear(UnitColor(go, mb, c, "color", new Vector4(0.2f, 0.45f, 0.9f, 0.8f))),
-                FresnelF0 = Float(go, mb, c, "fresnelF0", d.FresnelF0),
-                Absorption = Float(go, mb, c, "absorption", d.Absorption),
-            };
+            var box = ReadDeclared<SpawnBoxDescription>(go, mb, RuntimeScripts.SpawnBox, RuntimeScripts.Spawn);
             var w = go.World;
-            var box = new SpawnBoxDescription();
-            return new SpawnBoxDescription(go.Name, phase, w.Position, Abs(w.Scale))
-            {
-                Rotation = w.Rotation,
-                InitialVelocity = Vector(go, mb, c, "initialVelocity", Vector3.Zero),
-                Jitter = Float(go, mb, c, "jitter", box.Jitter),
-                Seed = Int(go, mb, c, "seed", box.Seed),
-            };
+            box.Name = go.Name;
+            box.Center = w.Position;
+            box.Rotation = w.Rotation;
+            box.Size = Abs(w.Scale);
+            return box;
         }
 
         SphereObstacleDescription ReadObstacle(UnityGameObject go, UnityDocument mb)
@@ -396,9 +381,13 @@ public static class SceneLoader
                 return $"GameObject '{_containerGo.Name}', {TransformField(member) ?? RuntimeScripts.FluidContainer}: {error.Message}";
             if (TryIndex(head, "SpawnBoxes", out int b) && b < _boxes.Count)
             {
-                var go = _boxes[b].Go;
-                string field = TransformField(member) ?? (member == "Name" ? "SpawnBox.phaseName" : member == "Phase" ? "SpawnBox.phaseName" : "SpawnBox." + CamelCase(member));
-                return $"GameObject '{go.Name}', {field}: {error.Message}";
+                var (go, mb) = _boxes[b];
+                if (parts.Length == 2 && TransformField(member) is { } placement)
+                    return $"GameObject '{go.Name}', {placement}: {error.Message}";
+                // The core's path below the box is the serialized one: SpawnBoxes[0].Phase.RestDensity is spawn.Phase.RestDensity.
+                string key = RuntimeScripts.Spawn + "." + string.Join(".", parts.Skip(1));
+                int line = mb.Root.At(key)?.Line ?? mb.Line;
+                return $"line {line}: {Where(go, RuntimeScripts.SpawnBox, key)}: {error.Message}";
             }
             if (TryIndex(head, "Obstacles", out int o) && o < _obstacles.Count)
                 return $"GameObject '{_obstacles[o].Go.Name}', {TransformField(member) ?? "SphereObstacle." + CamelCase(member)}: {error.Message}";

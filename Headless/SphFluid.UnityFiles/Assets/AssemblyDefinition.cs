@@ -9,9 +9,9 @@ namespace SphFluid.UnityFiles.Assets;
 /// <summary>An <c>.asmdef</c> (JSON, parsed strictly: no comments, no trailing commas, as Unity's JsonUtility expects).</summary>
 public sealed class AssemblyDefinition
 {
-    public string Path { get; init; }
-    public string Name { get; init; }
-    public string RootNamespace { get; init; }
+    public string Path { get; init; } = "";
+    public string? Name { get; init; }
+    public string? RootNamespace { get; init; }
     /// <summary>Assembly names or <c>GUID:&lt;asmdef meta guid&gt;</c> entries.</summary>
     public IReadOnlyList<string> References { get; init; } = Array.Empty<string>();
     public IReadOnlyList<string> IncludePlatforms { get; init; } = Array.Empty<string>();
@@ -31,7 +31,7 @@ public sealed class AssemblyDefinition
 
     public static AssemblyDefinition Load(string path) => Parse(File.ReadAllText(path), path);
 
-    public static AssemblyDefinition Parse(string json, string path = null)
+    public static AssemblyDefinition Parse(string json, string path)
     {
         using var doc = JsonDocument.Parse(json, new JsonDocumentOptions { AllowTrailingCommas = false, CommentHandling = JsonCommentHandling.Disallow });
         var root = doc.RootElement;
@@ -53,18 +53,19 @@ public sealed class AssemblyDefinition
         };
     }
 
-    static string String(JsonElement root, string name) =>
+    static string? String(JsonElement root, string name) =>
         root.TryGetProperty(name, out var v) && v.ValueKind == JsonValueKind.String ? v.GetString() : null;
 
     static bool Bool(JsonElement root, string name, bool fallback) =>
         root.TryGetProperty(name, out var v) && (v.ValueKind == JsonValueKind.True || v.ValueKind == JsonValueKind.False) ? v.GetBoolean() : fallback;
 
-    static IReadOnlyList<string> Strings(JsonElement root, string name, string path)
+    static IReadOnlyList<string> Strings(JsonElement root, string name, string? path)
     {
         if (!root.TryGetProperty(name, out var v)) return Array.Empty<string>();
         if (v.ValueKind != JsonValueKind.Array) throw new FormatException($"{path}: '{name}' must be an array of strings");
-        return v.EnumerateArray().Select(e => e.ValueKind == JsonValueKind.String ? e.GetString()
-            : throw new FormatException($"{path}: '{name}' must be an array of strings")).ToList();
+        // GetString is null only for a JSON null, which the kind test refuses.
+        return v.EnumerateArray().Select(e => (e.ValueKind == JsonValueKind.String ? e.GetString() : null)
+            ?? throw new FormatException($"{path}: '{name}' must be an array of strings")).ToList();
     }
 
     public override string ToString() => $"asmdef '{Name}' ({Path})";

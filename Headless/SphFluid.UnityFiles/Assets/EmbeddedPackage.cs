@@ -17,15 +17,15 @@ public sealed class EmbeddedPackage
     static readonly Regex VersionPattern = new(@"^\d+\.\d+\.\d+(-[0-9A-Za-z.-]+)?$", RegexOptions.CultureInvariant);
     static readonly Regex UnityPattern = new(@"^\d{4}\.\d+$", RegexOptions.CultureInvariant);
 
-    public string Path { get; init; }
-    public string Name { get; init; }
-    public string Version { get; init; }
-    public string Unity { get; init; }
-    public IReadOnlyDictionary<string, string> Dependencies { get; init; }
+    public string? Path { get; init; }
+    public string? Name { get; init; }
+    public string? Version { get; init; }
+    public string? Unity { get; init; }
+    public IReadOnlyDictionary<string, string> Dependencies { get; init; } = new Dictionary<string, string>();
 
     public static EmbeddedPackage Load(string path) => Parse(File.ReadAllText(path), path);
 
-    public static EmbeddedPackage Parse(string json, string path = null)
+    public static EmbeddedPackage Parse(string json, string? path = null)
     {
         using var doc = JsonDocument.Parse(json);
         var root = doc.RootElement;
@@ -35,8 +35,8 @@ public sealed class EmbeddedPackage
         {
             if (d.ValueKind != JsonValueKind.Object) throw new FormatException("\"dependencies\" must be an object");
             foreach (var p in d.EnumerateObject())
-                deps[p.Name] = p.Value.ValueKind == JsonValueKind.String ? p.Value.GetString()
-                    : throw new FormatException($"version of dependency '{p.Name}' must be a string");
+                deps[p.Name] = (p.Value.ValueKind == JsonValueKind.String ? p.Value.GetString() : null)
+                    ?? throw new FormatException($"version of dependency '{p.Name}' must be a string");
         }
         return new EmbeddedPackage
         {
@@ -61,6 +61,6 @@ public sealed class EmbeddedPackage
             yield return $"\"unity\" must be a Unity release such as 2022.3 (was '{Unity}')";
     }
 
-    static string Text(JsonElement root, string field) =>
+    static string? Text(JsonElement root, string field) =>
         root.TryGetProperty(field, out var v) && v.ValueKind == JsonValueKind.String ? v.GetString() : null;
 }

@@ -4,10 +4,10 @@ using SphFluid.UnityFiles.Yaml;
 namespace SphFluid.UnityFiles.Assets;
 
 /// <summary><c>ProjectSettings/ProjectVersion.txt</c>: the editor version the project is for.</summary>
-public sealed record ProjectVersion(string EditorVersion, string EditorVersionWithRevision)
+public sealed record ProjectVersion(string? EditorVersion, string? EditorVersionWithRevision)
 {
     /// <summary>"2022.3" from "2022.3.62f2".</summary>
-    public string Stream
+    public string? Stream
     {
         get
         {

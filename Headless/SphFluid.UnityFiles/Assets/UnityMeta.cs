@@ -1,3 +1,4 @@
+using System.Diagnostics.CodeAnalysis;
 using System.IO;
 using System.Linq;
 using System.Text.RegularExpressions;
@@ -27,28 +28,28 @@ public sealed partial class UnityMeta
     public string MetaPath { get; }
     /// <summary>Path of the asset the .meta describes (the .meta path without its extension).</summary>
     public string AssetPath => MetaPath.EndsWith(".meta", System.StringComparison.Ordinal) ? MetaPath[..^5] : MetaPath;
-    public string Guid { get; }
-    public string FileFormatVersion { get; }
+    public string? Guid { get; }
+    public string? FileFormatVersion { get; }
     public bool IsFolder { get; }
     /// <summary>The importer block's key, e.g. <c>MonoImporter</c>, <c>ComputeShaderImporter</c>, <c>NativeFormatImporter</c>.</summary>
-    public string ImporterType { get; }
-    public UnityYamlNode Importer { get; }
+    public string? ImporterType { get; }
+    public UnityYamlNode? Importer { get; }
     public UnityYamlNode Root { get; }
 
     /// <summary>For NativeFormatImporter assets: the main object's fileID (<c>mainObjectFileID</c>), else null.</summary>
     public long? MainObjectFileId => Importer != null && Importer.TryGetLong("mainObjectFileID", out var id) ? id : null;
 
     /// <summary>For ScriptedImporter assets (e.g. .inputactions): the importer script reference.</summary>
-    public UnityReference ImporterScript => Importer?.GetReference("script");
+    public UnityReference? ImporterScript => Importer?.GetReference("script");
 
-    public static bool IsValidGuid(string guid) => guid != null && GuidFormat().IsMatch(guid);
+    public static bool IsValidGuid([NotNullWhen(true)] string? guid) => guid != null && GuidFormat().IsMatch(guid);
 
     public static UnityMeta Load(string metaPath) => Parse(File.ReadAllText(metaPath), metaPath);
 
     public static UnityMeta Parse(string text, string metaPath) => new(metaPath, UnityYamlParser.ParseBlock(text, metaPath));
 
     /// <summary>Reads just the guid of an asset's .meta (<paramref name="assetPath"/> without ".meta"); null if absent.</summary>
-    public static string GuidOf(string assetPath)
+    public static string? GuidOf(string assetPath)
     {
         var meta = assetPath + ".meta";
         return File.Exists(meta) ? Load(meta).Guid : null;

@@ -25,7 +25,7 @@ public sealed class UnityProject
         if (!Directory.Exists(assets)) throw new DirectoryNotFoundException($"'{Root}' has no Assets/ folder");
         foreach (var meta in AssetRoots(assets).SelectMany(r => Directory.EnumerateFiles(r, "*.meta", SearchOption.AllDirectories)))
         {
-            string guid;
+            string? guid;
             try { guid = UnityMeta.Load(meta).Guid; }
             catch (FormatException) { continue; }
             if (guid == null) continue;
@@ -52,13 +52,13 @@ public sealed class UnityProject
     public static UnityProject Find(string start) => new(Integrity.AssetIntegrity.FindProjectRoot(start));
 
     /// <summary>"Assets/…" path of the asset with <paramref name="guid"/>, or null.</summary>
-    public string AssetPathOf(string guid) => guid != null && _pathByGuid.TryGetValue(guid, out var p) ? p : null;
+    public string? AssetPathOf(string? guid) => guid != null && _pathByGuid.TryGetValue(guid, out var p) ? p : null;
 
     /// <summary>"Assets/…" path a reference points at (null for null, local and built-in references).</summary>
-    public string AssetPathOf(UnityReference reference) => reference == null || !reference.IsExternal ? null : AssetPathOf(reference.Guid);
+    public string? AssetPathOf(UnityReference? reference) => reference == null || !reference.IsExternal ? null : AssetPathOf(reference.Guid);
 
     /// <summary>Guid of an asset given as "Assets/…" (or absolute) path, or null.</summary>
-    public string GuidOf(string assetPath) => _guidByPath.TryGetValue(ToProjectPath(assetPath), out var g) ? g : null;
+    public string? GuidOf(string assetPath) => _guidByPath.TryGetValue(ToProjectPath(assetPath), out var g) ? g : null;
 
     /// <summary>Guid of the script file <c>&lt;className&gt;.cs</c> (Unity binds MonoBehaviours by file name); throws when absent or ambiguous.</summary>
     public string ScriptGuid(string className)
@@ -72,7 +72,7 @@ public sealed class UnityProject
 
     /// <summary>Project path of the asset named <paramref name="fileName"/> directly in a Resources folder (where
     /// Resources.Load finds it), or null; the first in path order when several exist.</summary>
-    public string AssetPathOfResource(string fileName) => _guidByPath.Keys
+    public string? AssetPathOfResource(string fileName) => _guidByPath.Keys
         .Where(p => p.EndsWith("/Resources/" + fileName, StringComparison.Ordinal))
         .OrderBy(p => p, StringComparer.Ordinal).FirstOrDefault();
 
@@ -91,7 +91,7 @@ public sealed class UnityProject
             var file = Path.Combine(Root, "ProjectSettings", "EditorBuildSettings.asset");
             if (!File.Exists(file)) return Array.Empty<string>();
             var scenes = UnityYamlFile.Load(file).Documents.FirstOrDefault()?.Root["m_Scenes"];
-            return scenes?.Items.Where(s => s.GetBool("enabled", true)).Select(s => s.GetString("path")).ToList() ?? new List<string>();
+            return scenes?.Items.Where(s => s.GetBool("enabled", true)).Select(s => s.GetString("path")).OfType<string>().ToList() ?? new List<string>();
         }
     }
 

@@ -26,11 +26,12 @@ public sealed partial class AssetIntegrity
                 ReportAt(file, $"asmdef JSON does not parse: {e.Message}");
             }
         }
-        foreach (var group in _asmdefs.GroupBy(a => a.Name, StringComparer.Ordinal).Where(g => g.Count() > 1))
+        // Only named asmdefs are kept (above), so Name ?? "" never groups an unnamed one.
+        foreach (var group in _asmdefs.GroupBy(a => a.Name ?? "", StringComparer.Ordinal).Where(g => g.Count() > 1))
             foreach (var a in group.Skip(1))
                 ReportAt(a.Path, $"assembly name '{a.Name}' is also used by '{Rel(group.First().Path)}'");
 
-        var byName = _asmdefs.GroupBy(a => a.Name, StringComparer.Ordinal).ToDictionary(g => g.Key, g => g.First(), StringComparer.Ordinal);
+        var byName = _asmdefs.GroupBy(a => a.Name ?? "", StringComparer.Ordinal).ToDictionary(g => g.Key, g => g.First(), StringComparer.Ordinal);
         var byGuid = new Dictionary<string, AssemblyDefinition>(StringComparer.Ordinal);
         foreach (var a in _asmdefs)
             if (_metaByAsset.TryGetValue(a.Path, out var meta) && meta.Guid != null) byGuid[meta.Guid] = a;
@@ -43,12 +44,12 @@ public sealed partial class AssetIntegrity
         var referenced = new List<string>();
         foreach (var reference in a.References)
         {
-            string name;
-            AssemblyDefinition target = null;
+            string? name;
+            AssemblyDefinition? target = null;
             if (reference.StartsWith("GUID:", StringComparison.Ordinal))
             {
                 var guid = reference[5..];
-                if (byGuid.TryGetValue(guid, out target)) name = target.Name;
+                if (byGuid.TryGetValue(guid, out target)) name = target.Name ?? guid; // only named asmdefs are kept
                 else if (!UnityKnownIds.PackageAssemblyGuids.TryGetValue(guid, out name))
                 {
                     ReportAt(a.Path, $"reference '{reference}' matches no asmdef .meta in the project and no known package assembly");
@@ -99,7 +100,7 @@ public sealed partial class AssetIntegrity
     }
 
     /// <summary>The asmdef that compiles <paramref name="csFile"/>: the nearest one in its folder or above, within the asset root.</summary>
-    AssemblyDefinition AssemblyOf(string csFile)
+    AssemblyDefinition? AssemblyOf(string csFile)
     {
         for (var dir = Path.GetDirectoryName(csFile); dir != null && dir.Length >= _root.Length; dir = Path.GetDirectoryName(dir))
         {

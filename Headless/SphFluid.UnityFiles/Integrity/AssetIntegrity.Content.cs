@@ -36,7 +36,7 @@ public sealed partial class AssetIntegrity
         }
         var included = new HashSet<string>(_sceneReferencedGuids, StringComparer.Ordinal);
         foreach (var (material, shaderGuid) in _materialShaders)
-            if (_metaByAsset.TryGetValue(material, out var meta) && _sceneReferencedGuids.Contains(meta.Guid)) included.Add(shaderGuid);
+            if (_metaByAsset.TryGetValue(material, out var meta) && meta.Guid != null && _sceneReferencedGuids.Contains(meta.Guid)) included.Add(shaderGuid);
         foreach (var guid in AlwaysIncludedShaderGuids()) included.Add(guid);
 
         foreach (var cs in _assetFiles.Where(f => Extension(f) == ".cs"))
@@ -60,7 +60,7 @@ public sealed partial class AssetIntegrity
         try
         {
             var list = UnityYamlFile.Load(file).Documents.FirstOrDefault()?.Root["m_AlwaysIncludedShaders"];
-            return list?.Items.Select(i => i.GetReference("")?.Guid).Where(g => g != null).ToList() ?? new List<string>();
+            return list?.Items.Select(i => i.GetReference("")?.Guid).OfType<string>().ToList() ?? new List<string>();
         }
         catch (FormatException) { return Array.Empty<string>(); }
     }
@@ -93,10 +93,14 @@ public sealed partial class AssetIntegrity
             try
             {
                 var root = UnityYamlFile.Load(file).Documents.FirstOrDefault()?.Root;
-                foreach (var t in root?["tags"]?.Items ?? Array.Empty<UnityYamlNode>()) tags.Add(t.Value);
+                foreach (var t in root?["tags"]?.Items ?? Array.Empty<UnityYamlNode>())
+                    if (t.IsScalar) tags.Add(t.Value);
                 var items = root?["layers"]?.Items ?? Array.Empty<UnityYamlNode>();
                 for (int i = 0; i < items.Count; i++)
-                    if (!string.IsNullOrEmpty(items[i].Value)) layers[i] = items[i].Value;
+                {
+                    string? layer = items[i].Value;
+                    if (!string.IsNullOrEmpty(layer)) layers[i] = layer;
+                }
             }
             catch (FormatException) { } // reported by CheckSettingsFile
         }
@@ -157,7 +161,7 @@ public sealed partial class AssetIntegrity
         else if (!ids.Add(id)) ReportAt(file, $"{what} reuses id {id}");
     }
 
-    static string Text(JsonElement e, string name) =>
+    static string? Text(JsonElement e, string name) =>
         e.ValueKind == JsonValueKind.Object && e.TryGetProperty(name, out var v) && v.ValueKind == JsonValueKind.String ? v.GetString() : null;
 
     static IEnumerable<JsonElement> Elements(JsonElement e, string name) =>

@@ -15,10 +15,11 @@ public sealed partial class AssetIntegrity
     [GeneratedRegex(@"//[^\n]*|/\*.*?\*/", RegexOptions.Singleline)]
     private static partial Regex Comments();
 
-    sealed record ScriptClass(string Name, bool IsAbstract, bool IsStatic, bool IsGeneric, string Base, string File);
+    sealed record ScriptClass(string Name, bool IsAbstract, bool IsStatic, bool IsGeneric, string? Base, string File);
 
-    Dictionary<string, List<ScriptClass>> _classes;
-    readonly Dictionary<string, string> _scriptVerdicts = new(StringComparer.Ordinal);
+    Dictionary<string, List<ScriptClass>>? _classes;
+    /// <summary>Why a script is not a usable MonoBehaviour, or null when it is, by .cs file.</summary>
+    readonly Dictionary<string, string?> _scriptVerdicts = new(StringComparer.Ordinal);
 
     /// <summary>Every MonoBehaviour's <c>m_Script</c> names a .cs whose file name is a concrete MonoBehaviour/ScriptableObject class in it.</summary>
     void CheckScripts(string file, UnityYamlFile yaml)
@@ -105,12 +106,12 @@ public sealed partial class AssetIntegrity
     }
 
     /// <summary>Null when the script is fine, else why Unity cannot bind it.</summary>
-    string ScriptVerdict(string csFile)
+    string? ScriptVerdict(string csFile)
     {
         if (_scriptVerdicts.TryGetValue(csFile, out var cached)) return cached;
         var className = Path.GetFileNameWithoutExtension(csFile);
         var own = ReadClasses(csFile).Where(c => c.Name == className).ToList();
-        string verdict = null;
+        string? verdict = null;
         if (own.Count == 0) verdict = $"declares no class named '{className}' (the class name must equal the file name)";
         else
         {
@@ -125,7 +126,7 @@ public sealed partial class AssetIntegrity
         return verdict;
     }
 
-    string BaseChainVerdict(ScriptClass c)
+    string? BaseChainVerdict(ScriptClass c)
     {
         var seen = new HashSet<string>();
         var current = c;
@@ -141,7 +142,7 @@ public sealed partial class AssetIntegrity
         }
     }
 
-    ScriptClass DeclarationWithBase(string name) =>
+    ScriptClass? DeclarationWithBase(string name) =>
         Classes().TryGetValue(name, out var list) ? list.FirstOrDefault(c => c.Base != null) : null;
 
     Dictionary<string, List<ScriptClass>> Classes()
@@ -165,7 +166,7 @@ public sealed partial class AssetIntegrity
         foreach (Match m in ClassDeclaration().Matches(text))
         {
             var mods = m.Groups["mods"].Value;
-            string firstBase = null;
+            string? firstBase = null;
             if (m.Groups["bases"].Success)
             {
                 var b = m.Groups["bases"].Value.Split(',')[0].Trim();

@@ -32,7 +32,7 @@ public sealed partial class AssetIntegrity
         }
         foreach (var package in RequiredPackages.Where(p => !_manifest.Has(p)))
             Report(path, $"does not name {package}");
-        var embedded = CheckEmbeddedPackages();
+        var embedded = CheckEmbeddedPackages(_manifest);
         foreach (var t in _manifest.Testables.Where(t => !_manifest.Has(t) && !embedded.Contains(t)))
             Report(path, $"testable '{t}' is neither a dependency nor an embedded package");
         foreach (var (name, version) in _manifest.Dependencies)
@@ -47,7 +47,7 @@ public sealed partial class AssetIntegrity
     /// project's editor satisfies, and dependencies the manifest resolves at the same version (so a project that adds
     /// the package by git URL gets what this one tests with). Returns the embedded packages' names.
     /// </summary>
-    HashSet<string> CheckEmbeddedPackages()
+    HashSet<string> CheckEmbeddedPackages(PackageManifest manifest)
     {
         var names = new HashSet<string>(StringComparer.Ordinal);
         var packages = Abs("Packages");
@@ -70,7 +70,7 @@ public sealed partial class AssetIntegrity
                 Report(rel, $"\"unity\" {package.Unity} is newer than the project's editor {stream}");
             foreach (var (dependency, version) in package.Dependencies)
             {
-                var resolved = _manifest.VersionOf(dependency);
+                var resolved = manifest.VersionOf(dependency);
                 if (resolved == null) Report(rel, $"dependency '{dependency}' is not in Packages/manifest.json");
                 else if (resolved != version) Report(rel, $"dependency '{dependency}' {version} differs from Packages/manifest.json's {resolved}");
             }
@@ -78,7 +78,7 @@ public sealed partial class AssetIntegrity
         return names;
     }
 
-    ProjectVersion TryProjectVersion()
+    ProjectVersion? TryProjectVersion()
     {
         var file = Abs("ProjectSettings/ProjectVersion.txt");
         try { return File.Exists(file) ? ProjectVersion.Load(file) : null; }

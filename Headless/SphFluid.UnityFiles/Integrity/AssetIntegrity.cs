@@ -21,7 +21,7 @@ public sealed partial class AssetIntegrity
     readonly List<string> _metaFiles = new();
     readonly Dictionary<string, UnityMeta> _metaByAsset = new(StringComparer.Ordinal);
     readonly Dictionary<string, string> _assetByGuid = new(StringComparer.Ordinal);
-    PackageManifest _manifest;
+    PackageManifest? _manifest;
 
     AssetIntegrity(string root) => _root = Path.GetFullPath(root);
 

@@ -27,12 +27,12 @@ public sealed class UnityGameObject
     public IEnumerable<UnityDocument> Components =>
         Document.Root["m_Component"]?.Items
             .Select(i => _scene.File.Find(i.GetReference("component")))
-            .Where(d => d != null) ?? Enumerable.Empty<UnityDocument>();
+            .OfType<UnityDocument>() ?? Enumerable.Empty<UnityDocument>();
 
-    /// <summary>The Transform (or RectTransform) component.</summary>
-    public UnityDocument Transform => Components.FirstOrDefault(c => UnityScene.IsTransform(c));
+    /// <summary>The Transform (or RectTransform) component, or null.</summary>
+    public UnityDocument? Transform => Components.FirstOrDefault(c => UnityScene.IsTransform(c));
 
-    public UnityDocument Component(string typeName) => Components.FirstOrDefault(c => c.TypeName == typeName);
+    public UnityDocument? Component(string typeName) => Components.FirstOrDefault(c => c.TypeName == typeName);
 
     public IEnumerable<UnityDocument> ComponentsOfType(string typeName) => Components.Where(c => c.TypeName == typeName);
 
@@ -40,7 +40,7 @@ public sealed class UnityGameObject
     public IEnumerable<UnityDocument> Behaviours(string scriptGuid) =>
         Components.Where(c => c.TypeName == "MonoBehaviour" && c.ScriptGuid == scriptGuid);
 
-    public UnityGameObject Parent
+    public UnityGameObject? Parent
     {
         get
         {
@@ -53,16 +53,16 @@ public sealed class UnityGameObject
     public IEnumerable<UnityGameObject> Children =>
         Transform?.Root["m_Children"]?.Items
             .Select(i => _scene.File.Find(i.GetReference("")))
-            .Where(d => d != null)
+            .OfType<UnityDocument>()
             .Select(d => _scene.GameObjectOf(d))
-            .Where(g => g != null) ?? Enumerable.Empty<UnityGameObject>();
+            .OfType<UnityGameObject>() ?? Enumerable.Empty<UnityGameObject>();
 
     public Vector3 LocalPosition => Transform?.Root.GetVector3("m_LocalPosition", Vector3.Zero) ?? Vector3.Zero;
-    public Quaternion LocalRotation => Transform?.Root["m_LocalRotation"] != null ? Transform.Root.GetQuaternion("m_LocalRotation") : Quaternion.Identity;
+    public Quaternion LocalRotation => Transform is { } t && t.Root["m_LocalRotation"] != null ? t.Root.GetQuaternion("m_LocalRotation") : Quaternion.Identity;
     public Vector3 LocalScale => Transform?.Root.GetVector3("m_LocalScale", Vector3.One) ?? Vector3.One;
 
     /// <summary>World pose composed through every parent.</summary>
-    public WorldTransform World => Transform == null ? WorldTransform.Identity : _scene.WorldTransformOf(Transform);
+    public WorldTransform World => Transform is { } t ? _scene.WorldTransformOf(t) : WorldTransform.Identity;
 
     /// <summary>
     /// This object, its parent, its parent's parent... up to the root. Stops before an object comes round again, so a
@@ -73,7 +73,7 @@ public sealed class UnityGameObject
         get
         {
             var seen = new HashSet<long>();
-            for (var g = this; g != null && seen.Add(g.FileId); g = g.Parent) yield return g;
+            for (UnityGameObject? g = this; g != null && seen.Add(g.FileId); g = g.Parent) yield return g;
         }
     }
 

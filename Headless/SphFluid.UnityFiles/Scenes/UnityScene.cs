@@ -32,28 +32,28 @@ public sealed class UnityScene
     }
 
     public UnityYamlFile File { get; }
-    public string Path => File.Path;
+    public string? Path => File.Path;
     public string Name => System.IO.Path.GetFileNameWithoutExtension(File.Path ?? "");
 
     public static UnityScene Load(string path) => new(UnityYamlFile.Load(path));
 
-    public static UnityScene Parse(string text, string path = null) => new(UnityYamlFile.Parse(text, path));
+    public static UnityScene Parse(string text, string? path = null) => new(UnityYamlFile.Parse(text, path));
 
     public IEnumerable<UnityGameObject> GameObjects => _gameObjects.Values;
 
-    public UnityGameObject GameObject(long fileId) => _gameObjects.TryGetValue(fileId, out var g) ? g : null;
+    public UnityGameObject? GameObject(long fileId) => _gameObjects.TryGetValue(fileId, out var g) ? g : null;
 
     /// <summary>The first GameObject named <paramref name="name"/>, or null.</summary>
-    public UnityGameObject FindGameObject(string name) => _gameObjects.Values.FirstOrDefault(g => g.Name == name);
+    public UnityGameObject? FindGameObject(string name) => _gameObjects.Values.FirstOrDefault(g => g.Name == name);
 
     /// <summary>The GameObject owning a component document (via its <c>m_GameObject</c>).</summary>
-    public UnityGameObject GameObjectOf(UnityDocument component) =>
+    public UnityGameObject? GameObjectOf(UnityDocument? component) =>
         component == null ? null
         : component.ClassId == GameObjectClassId ? GameObject(component.FileId)
         : GameObject(component.GameObject?.FileId ?? 0);
 
     /// <summary>Every MonoBehaviour document, or those whose <c>m_Script</c> guid is <paramref name="scriptGuid"/>.</summary>
-    public IEnumerable<UnityDocument> Behaviours(string scriptGuid = null) =>
+    public IEnumerable<UnityDocument> Behaviours(string? scriptGuid = null) =>
         File.Documents.Where(d => d.ClassId == MonoBehaviourClassId && !d.IsStripped && (scriptGuid == null || d.ScriptGuid == scriptGuid));
 
     public IEnumerable<UnityDocument> Transforms => File.Documents.Where(d => IsTransform(d) && !d.IsStripped);
@@ -63,7 +63,7 @@ public sealed class UnityScene
         Transforms.Where(t => t.Root.GetReference("m_Father") is not { IsNull: false });
 
     /// <summary>The fileIDs listed by the <c>SceneRoots</c> document (2022.2+), or null when the file has none.</summary>
-    public IReadOnlyList<long> SceneRoots
+    public IReadOnlyList<long>? SceneRoots
     {
         get
         {
@@ -134,7 +134,7 @@ public sealed class UnityScene
         return parent;
     }
 
-    UnityDocument Father(UnityDocument transform)
+    UnityDocument? Father(UnityDocument transform)
     {
         var father = File.Find(transform.Root.GetReference("m_Father"));
         return father != null && IsTransform(father) ? father : null;

@@ -12,7 +12,7 @@ public sealed class UnityYamlFile
 
     readonly Dictionary<long, UnityDocument> _byFileId = new();
 
-    public UnityYamlFile(string path, IReadOnlyList<string> headers, IReadOnlyList<UnityDocument> documents)
+    public UnityYamlFile(string? path, IReadOnlyList<string> headers, IReadOnlyList<UnityDocument> documents)
     {
         Path = path;
         Headers = headers;
@@ -22,7 +22,8 @@ public sealed class UnityYamlFile
             else DuplicateFileIds.Add(d.FileId);
     }
 
-    public string Path { get; }
+    /// <summary>The file, or null for text parsed without one.</summary>
+    public string? Path { get; }
     public IReadOnlyList<string> Headers { get; }
     public IReadOnlyList<UnityDocument> Documents { get; }
     /// <summary>Anchors (<c>&amp;N</c>) used by more than one document; Unity requires them unique.</summary>
@@ -34,11 +35,11 @@ public sealed class UnityYamlFile
     /// <summary>Reads and parses a file; only a regular file of at most <see cref="UnityTextFile.MaxBytes"/> is read.</summary>
     public static UnityYamlFile Load(string path) => UnityYamlParser.ParseFile(UnityTextFile.Read(path), path);
 
-    public static UnityYamlFile Parse(string text, string path = null) => UnityYamlParser.ParseFile(text, path);
+    public static UnityYamlFile Parse(string text, string? path = null) => UnityYamlParser.ParseFile(text, path);
 
-    public UnityDocument Find(long fileId) => _byFileId.TryGetValue(fileId, out var d) ? d : null;
+    public UnityDocument? Find(long fileId) => _byFileId.TryGetValue(fileId, out var d) ? d : null;
 
-    public UnityDocument Find(UnityReference reference) =>
+    public UnityDocument? Find(UnityReference? reference) =>
         reference != null && reference.IsLocal ? Find(reference.FileId) : null;
 
     public IEnumerable<UnityDocument> OfType(string typeName) => Documents.Where(d => d.TypeName == typeName);

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Diagnostics.CodeAnalysis;
 using System.Globalization;
 using System.Linq;
 using System.Numerics;
@@ -17,13 +18,13 @@ public sealed class UnityYamlNode
     static readonly IReadOnlyList<KeyValuePair<string, UnityYamlNode>> NoEntries = Array.Empty<KeyValuePair<string, UnityYamlNode>>();
     static readonly IReadOnlyList<UnityYamlNode> NoItems = Array.Empty<UnityYamlNode>();
 
-    readonly List<KeyValuePair<string, UnityYamlNode>> _entries;
+    readonly List<KeyValuePair<string, UnityYamlNode>>? _entries;
     // Keys are looked up by name on every read and checked for duplicates on every add: a list scan would make
     // a mapping of n keys cost n^2 to build.
-    readonly Dictionary<string, UnityYamlNode> _byKey;
-    readonly List<UnityYamlNode> _items;
+    readonly Dictionary<string, UnityYamlNode>? _byKey;
+    readonly List<UnityYamlNode>? _items;
 
-    UnityYamlNode(UnityYamlNodeKind kind, string value, bool quoted, int line)
+    UnityYamlNode(UnityYamlNodeKind kind, string? value, bool quoted, int line)
     {
         Kind = kind;
         Value = value;
@@ -39,13 +40,16 @@ public sealed class UnityYamlNode
 
     public UnityYamlNodeKind Kind { get; }
     /// <summary>Scalar text after unquoting; empty for an empty value (<c>key: </c>); null for mappings and sequences.</summary>
-    public string Value { get; }
+    public string? Value { get; }
     public bool IsQuoted { get; }
     /// <summary>1-based line in the source file where the node starts (0 if unknown).</summary>
     public int Line { get; }
 
+    [MemberNotNullWhen(true, nameof(Value))]
     public bool IsScalar => Kind == UnityYamlNodeKind.Scalar;
+    [MemberNotNullWhen(true, nameof(_entries), nameof(_byKey))]
     public bool IsMapping => Kind == UnityYamlNodeKind.Mapping;
+    [MemberNotNullWhen(true, nameof(_items))]
     public bool IsSequence => Kind == UnityYamlNodeKind.Sequence;
     /// <summary>True for <c>key: </c> with nothing after it.</summary>
     public bool IsEmpty => IsScalar && Value.Length == 0 && !IsQuoted;
@@ -54,21 +58,26 @@ public sealed class UnityYamlNode
     public IReadOnlyList<UnityYamlNode> Items => _items ?? NoItems;
     public IEnumerable<string> Keys => Entries.Select(e => e.Key);
 
-    public static UnityYamlNode Scalar(string value, bool quoted = false, int line = 0) => new(UnityYamlNodeKind.Scalar, value ?? "", quoted, line);
+    public static UnityYamlNode Scalar(string? value, bool quoted = false, int line = 0) => new(UnityYamlNodeKind.Scalar, value ?? "", quoted, line);
     public static UnityYamlNode Mapping(int line = 0) => new(UnityYamlNodeKind.Mapping, null, false, line);
     public static UnityYamlNode Sequence(int line = 0) => new(UnityYamlNodeKind.Sequence, null, false, line);
 
     internal bool TryAdd(string key, UnityYamlNode value)
     {
+        if (!IsMapping) throw new InvalidOperationException($"a {Kind} node (line {Line}) holds no keys");
         if (!_byKey.TryAdd(key, value)) return false;
         _entries.Add(new(key, value));
         return true;
     }
 
-    internal void Add(UnityYamlNode item) => _items.Add(item);
+    internal void Add(UnityYamlNode item)
+    {
+        if (!IsSequence) throw new InvalidOperationException($"a {Kind} node (line {Line}) holds no items");
+        _items.Add(item);
+    }
 
     /// <summary>The child under <paramref name="key"/> of a mapping, or null.</summary>
-    public UnityYamlNode this[string key]
+    public UnityYamlNode? this[string? key]
     {
         get
         {
@@ -78,16 +87,16 @@ public sealed class UnityYamlNode
     }
 
     /// <summary>The item at <paramref name="index"/> of a sequence, or null.</summary>
-    public UnityYamlNode this[int index] => _items != null && index >= 0 && index < _items.Count ? _items[index] : null;
+    public UnityYamlNode? this[int index] => _items != null && index >= 0 && index < _items.Count ? _items[index] : null;
 
     /// <summary>
     /// Follows a dotted path: <c>"m_Shadows.m_Type"</c>, <c>"m_Component[0].component"</c>, <c>"phases[1].RestDensity"</c>.
     /// Returns null when any step is missing.
     /// </summary>
-    public UnityYamlNode At(string path)
+    public UnityYamlNode? At(string? path)
     {
         if (string.IsNullOrEmpty(path)) return this;
-        UnityYamlNode node = this;
+        UnityYamlNode? node = this;
         foreach (var part in path.Split('.'))
         {
             var name = part;
@@ -100,7 +109,7 @@ public sealed class UnityYamlNode
                 indices.Insert(0, i);
                 name = name[..open];
             }
-            if (name.Length > 0) node = node[name];
+            if (name.Length > 0) node = node?[name];
             foreach (var i in indices) node = node?[i];
             if (node == null) return null;
         }
@@ -109,7 +118,8 @@ public sealed class UnityYamlNode
 
     public bool Has(string path) => At(path) != null;
 
-    public string GetString(string path, string fallback = null)
+    [return: NotNullIfNotNull(nameof(fallback))]
+    public string? GetString(string path, string? fallback = null)
     {
         var n = At(path);
         return n != null && n.IsScalar ? n.Value : fallback;
@@ -193,7 +203,7 @@ public sealed class UnityYamlNode
     }
 
     /// <summary>Reads <c>{fileID: N, guid: G, type: T}</c>; null when the path is missing or is not a reference.</summary>
-    public UnityReference GetReference(string path) => UnityReference.TryFrom(At(path), out var r) ? r : null;
+    public UnityReference? GetReference(string path) => UnityReference.TryFrom(At(path), out var r) ? r : null;
 
     /// <summary>True when this node is a <c>{fileID: ...}</c> reference.</summary>
     public bool IsReference => IsMapping && this["fileID"] is { IsScalar: true };
@@ -222,7 +232,7 @@ public sealed class UnityYamlNode
             foreach (var x in Items[i].References(prefix + "[" + i.ToString(CultureInfo.InvariantCulture) + "]")) yield return x;
     }
 
-    public static bool TryParseNumber(string text, out double value)
+    public static bool TryParseNumber(string? text, out double value)
     {
         switch (text)
         {
@@ -245,7 +255,7 @@ public sealed class UnityYamlNode
 
     public override string ToString() => Kind switch
     {
-        UnityYamlNodeKind.Scalar => Value,
+        UnityYamlNodeKind.Scalar => Value ?? "",
         UnityYamlNodeKind.Mapping => "{" + string.Join(", ", Entries.Select(e => e.Key + ": " + e.Value)) + "}",
         _ => "[" + string.Join(", ", Items) + "]",
     };

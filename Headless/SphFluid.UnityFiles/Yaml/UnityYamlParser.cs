@@ -27,7 +27,7 @@ public static partial class UnityYamlParser
     private static partial Regex DocumentHeader();
 
     /// <summary>Parses a Unity serialized file (.unity, .prefab, .mat, .asset, ProjectSettings/*.asset).</summary>
-    public static UnityYamlFile ParseFile(string text, string path = null)
+    public static UnityYamlFile ParseFile(string text, string? path = null)
     {
         // The whole file goes through one YamlDotNet parser as a plain multi-document stream: each Unity header
         // becomes a bare '---' on the same line (so line numbers stay the file's) and is read here instead.
@@ -73,17 +73,17 @@ public static partial class UnityYamlParser
     }
 
     /// <summary>Parses plain block YAML with no document markers (.meta files, ProjectVersion.txt).</summary>
-    public static UnityYamlNode ParseBlock(string text, string path = null)
+    public static UnityYamlNode ParseBlock(string text, string? path = null)
     {
         var lines = new LineCursor(text);
         while (lines.Next()) CheckIndentation(lines.Current, lines.Number, path);
         var roots = Parse(text, path, 1);
-        var root = roots.Count > 0 && roots[0] != null ? roots[0] : UnityYamlNode.Mapping(1);
+        var root = (roots.Count > 0 ? roots[0] : null) ?? UnityYamlNode.Mapping(1);
         if (!root.IsMapping) throw new UnityYamlException(path, root.Line, "a document must be a mapping");
         return root;
     }
 
-    static (int ClassId, long FileId, bool Stripped, int Line) ReadHeader(string header, int line, string path)
+    static (int ClassId, long FileId, bool Stripped, int Line) ReadHeader(string header, int line, string? path)
     {
         var m = DocumentHeader().Match(header);
         if (!m.Success) throw new UnityYamlException(path, line, $"document header '{Shorten(header)}' is not '--- !u!<classId> &<fileId>'");
@@ -95,7 +95,7 @@ public static partial class UnityYamlParser
 
     /// <summary>YAML forbids tabs in indentation; YamlDotNet reports them at the enclosing node, so they are found here
     /// to name the very line.</summary>
-    static void CheckIndentation(ReadOnlySpan<char> line, int number, string path)
+    static void CheckIndentation(ReadOnlySpan<char> line, int number, string? path)
     {
         int i = 0;
         while (i < line.Length && line[i] == ' ') i++;
@@ -105,13 +105,14 @@ public static partial class UnityYamlParser
 
     /// <summary>The root node of each YAML document in <paramref name="yaml"/> (null for an empty one); more than
     /// <paramref name="expected"/> documents is an error.</summary>
-    static List<UnityYamlNode> Parse(string yaml, string path, int expected)
+    static List<UnityYamlNode?> Parse(string yaml, string? path, int expected)
     {
         var builder = new TreeBuilder(path, expected);
         var parser = new Parser(new StringReader(yaml));
         try
         {
-            while (parser.MoveNext()) builder.Accept(parser.Current);
+            while (parser.MoveNext())
+                if (parser.Current is { } e) builder.Accept(e);
         }
         catch (YamlException e)
         {
@@ -129,7 +130,7 @@ public static partial class UnityYamlParser
     static string Shorten(string s) => s.Length <= 60 ? s : s[..57] + "...";
 
     /// <summary>Builds <see cref="UnityYamlNode"/>s from parser events with an explicit stack.</summary>
-    sealed class TreeBuilder(string path, int expectedDocuments)
+    sealed class TreeBuilder(string? path, int expectedDocuments)
     {
         readonly Stack<Open> _open = new();
         bool _rootSet;
@@ -139,11 +140,12 @@ public static partial class UnityYamlParser
         {
             public UnityYamlNode Node { get; } = node;
             public bool Flow { get; } = flow;
-            public string Key { get; set; }
+            public string? Key { get; set; }
             public int KeyLine { get; set; }
         }
 
-        public List<UnityYamlNode> Roots { get; } = new();
+        /// <summary>The root of each document so far; null for an empty one.</summary>
+        public List<UnityYamlNode?> Roots { get; } = new();
 
         static int Line(ParsingEvent e) => (int)Math.Min(int.MaxValue, e.Start.Line);
 
@@ -245,8 +247,8 @@ public static partial class UnityYamlParser
                 (message.Contains("end of stream", StringComparison.Ordinal) || message.Contains("document indicator", StringComparison.Ordinal) ||
                  message.Contains("wrong indentation", StringComparison.Ordinal)))
             {
-                var owner = _open.Count > 0 && _open.Peek().Key != null ? _open.Peek() : null;
-                string what = owner == null ? "a quoted value" : $"the value of '{Shorten(owner.Key)}' (line {owner.KeyLine})";
+                string? key = _open.Count > 0 ? _open.Peek().Key : null;
+                string what = key == null ? "a quoted value" : $"the value of '{Shorten(key)}' (line {_open.Peek().KeyLine})";
                 return Error(line, $"unclosed quoted string: {what} has no closing quote before this line ({message.TrimEnd('.')})");
             }
             if (message.Contains("found invalid mapping", StringComparison.Ordinal) || message.Contains("did not find expected key", StringComparison.Ordinal))

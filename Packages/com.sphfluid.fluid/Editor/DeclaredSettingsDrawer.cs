@@ -5,12 +5,15 @@ using UnityEngine;
 namespace SphFluid.Editor
 {
     /// <summary>
-    /// Draws a core settings object (<see cref="FluidSettings"/>, the <see cref="ContainerSpin"/> and
-    /// <see cref="SphereDrive"/> laws) from its declarations: a header per group, each field with its tooltip, unit and
-    /// range, clamped to that range like Unity's own Range attribute. The core cannot carry Unity's attributes (it is
-    /// engine-free), so this drawer is how the inspector reads the one declaration.
+    /// Draws a core settings object (<see cref="FluidSettings"/>, a SpawnBox's <see cref="SpawnBoxDescription"/> with its
+    /// <see cref="PhaseDescription"/> block, the <see cref="ContainerSpin"/> and <see cref="SphereDrive"/> laws) from its
+    /// declarations: a header per group, each field with its tooltip, unit and range, clamped to that range like Unity's
+    /// own Range attribute. The core cannot carry Unity's attributes (it is engine-free), so this drawer is how the
+    /// inspector reads the one declaration.
     /// </summary>
     [CustomPropertyDrawer(typeof(FluidSettings))]
+    [CustomPropertyDrawer(typeof(SpawnBoxDescription))]
+    [CustomPropertyDrawer(typeof(PhaseDescription))]
     [CustomPropertyDrawer(typeof(ContainerSpin))]
     [CustomPropertyDrawer(typeof(SphereDrive))]
     public sealed class DeclaredSettingsDrawer : PropertyDrawer
@@ -23,14 +26,14 @@ namespace SphFluid.Editor
         {
             float height = 0f;
             string group = null;
-            foreach (DeclaredSetting setting in SettingRules.Declared(fieldInfo.FieldType))
+            foreach (SettingPath setting in SettingRules.DeclaredPaths(fieldInfo.FieldType))
             {
                 if (setting.Declaration.Group != group)
                 {
                     group = setting.Declaration.Group;
                     height += Line + Gap;
                 }
-                SerializedProperty field = property.FindPropertyRelative(setting.Field.Name);
+                SerializedProperty field = property.FindPropertyRelative(setting.Path);
                 if (field != null) height += EditorGUI.GetPropertyHeight(field, GUIContent.none, true) + Gap;
             }
             return height;
@@ -40,7 +43,7 @@ namespace SphFluid.Editor
         {
             var row = new Rect(position.x, position.y, position.width, Line);
             string group = null;
-            foreach (DeclaredSetting setting in SettingRules.Declared(fieldInfo.FieldType))
+            foreach (SettingPath setting in SettingRules.DeclaredPaths(fieldInfo.FieldType))
             {
                 SettingAttribute declaration = setting.Declaration;
                 if (declaration.Group != group)
@@ -50,7 +53,7 @@ namespace SphFluid.Editor
                     EditorGUI.LabelField(row, group, EditorStyles.boldLabel);
                     row.y += Line + Gap;
                 }
-                SerializedProperty field = property.FindPropertyRelative(setting.Field.Name);
+                SerializedProperty field = property.FindPropertyRelative(setting.Path);
                 if (field == null) continue;
                 var content = new GUIContent(ObjectNames.NicifyVariableName(setting.Field.Name),
                     declaration.Tooltip + " Range " + declaration.RangeText + ".");

@@ -11,71 +11,29 @@ namespace SphFluid.Runtime
     /// </summary>
     public sealed class SpawnBox : MonoBehaviour
     {
-        /// <summary>The core's defaults are the inspector's defaults (one source of truth).</summary>
-        static readonly SpawnBoxDescription CoreDefaults = new SpawnBoxDescription();
+        [SerializeField, Tooltip("The box's liquid and lattice; each value's default, range, unit and meaning are declared once, in the core's PhaseDescription and SpawnBoxDescription.")]
+        SpawnBoxDescription spawn = new SpawnBoxDescription();
 
-        [Header("Phase")]
-        [SerializeField, Tooltip("Phase name; boxes with the same name are one liquid and must agree on every value below.")]
-        string phaseName = CoreDefaults.Phase.Name;
+        /// <summary>The inspector's values, for scripts (the placement comes from the Transform, see <see cref="Describe"/>).</summary>
+        public SpawnBoxDescription Spawn => spawn;
 
-        [SerializeField, Min(1f), Tooltip("Rest density rho0, kg/m^3, in [1, 100000] (water 1000, oil 900).")]
-        float restDensity = CoreDefaults.Phase.RestDensity;
+        public string PhaseName => spawn.Phase != null ? spawn.Phase.Name : "";
 
-        [SerializeField, Min(0f), Tooltip("Dynamic viscosity mu, Pa s, in [0, 1000] (water 0.001; the simulation needs more, e.g. 0.5).")]
-        float viscosity = CoreDefaults.Phase.Viscosity;
+        /// <summary>The phase colour as the inspector shows it (sRGB); the core stores it linear.</summary>
+        public Color Color => spawn.Phase != null ? spawn.Phase.Color.ToInspectorColor() : Color.white;
 
-        [SerializeField, Min(0f), Tooltip("Mass of one particle, kg; 0 = derived so that the spawn lattice sits exactly at rest density.")]
-        float particleMass = CoreDefaults.Phase.ParticleMass;
+        public PhaseDescription DescribePhase() => spawn.Phase?.Clone();
 
-        [SerializeField, Range(0f, 10f), Tooltip("Surface tension coefficient gamma, N/m, in [0, 10]; 0 = off (water 0.072).")]
-        float surfaceTension = CoreDefaults.Phase.SurfaceTension;
-
-        [Header("Look")]
-        [SerializeField, Tooltip("Tint and opacity (sRGB as shown here; the phase table stores it linear).")]
-        Color color = new Color(0.2f, 0.45f, 0.9f, 0.8f);
-
-        [SerializeField, Range(0f, 1f), Tooltip("Schlick reflectance at normal incidence, ((n - 1) / (n + 1))^2: water 0.02, oil 0.035.")]
-        float fresnelF0 = CoreDefaults.Phase.FresnelF0;
-
-        [SerializeField, Min(0f), Tooltip("Beer-Lambert absorption coefficient of the tint, 1/m, in [0, 10000].")]
-        float absorption = CoreDefaults.Phase.Absorption;
-
-        [Header("Spawn")]
-        [SerializeField, Tooltip("Velocity every particle starts with, m/s, world space.")]
-        Vector3 initialVelocity = Vector3.zero;
-
-        [SerializeField, Range(0f, 0.5f), Tooltip("Random offset of each lattice point, in particle spacings, [0, 0.5].")]
-        float jitter = CoreDefaults.Jitter;
-
-        [SerializeField, Tooltip("Seed of the jitter: the same seed spawns the same particles.")]
-        int seed = CoreDefaults.Seed;
-
-        public string PhaseName => phaseName;
-
-        public Color Color => color;
-
-        public PhaseDescription DescribePhase()
-        {
-            return new PhaseDescription(phaseName, restDensity, viscosity)
-            {
-                ParticleMass = particleMass,
-                SurfaceTension = surfaceTension,
-                Color = color.linear.ToNumerics(),
-                FresnelF0 = fresnelF0,
-                Absorption = absorption,
-            };
-        }
-
+        /// <summary>A copy of the declared values with the placement of this Transform and the GameObject's name.</summary>
         public SpawnBoxDescription Describe()
         {
             Transform t = transform;
-            return new SpawnBoxDescription(name, DescribePhase(), t.position.ToNumerics(), FluidContainer.Abs(t.lossyScale).ToNumerics())
-            {
-                Rotation = t.rotation.ToNumerics(),
-                InitialVelocity = initialVelocity.ToNumerics(),
-                Jitter = jitter,
-                Seed = seed,
-            };
+            SpawnBoxDescription box = spawn.Clone();
+            box.Name = name;
+            box.Center = t.position.ToNumerics();
+            box.Rotation = t.rotation.ToNumerics();
+            box.Size = FluidContainer.Abs(t.lossyScale).ToNumerics();
+            return box;
         }
 
         /// <summary>The core's refusals of this box and its phase (size and placement are checked at start).</summary>
@@ -88,15 +46,16 @@ namespace SphFluid.Runtime
 
         void OnDrawGizmos()
         {
+            Color shown = Color;
             Gizmos.matrix = Matrix4x4.TRS(transform.position, transform.rotation, FluidContainer.Abs(transform.lossyScale));
-            Gizmos.color = new Color(color.r, color.g, color.b, 1f);
+            Gizmos.color = new Color(shown.r, shown.g, shown.b, 1f);
             Gizmos.DrawWireCube(Vector3.zero, Vector3.one);
             Gizmos.matrix = Matrix4x4.identity;
 #if UNITY_EDITOR
             Fluid simulator = FindFirstObjectByType<Fluid>();
             FluidSettings settings = simulator != null ? simulator.DescribeSettings() : new FluidSettings();
             UnityEditor.Handles.color = Gizmos.color;
-            UnityEditor.Handles.Label(transform.position, $"{phaseName}: {ParticleCount(settings)} particles");
+            UnityEditor.Handles.Label(transform.position, $"{PhaseName}: {ParticleCount(settings)} particles");
 #endif
         }
     }

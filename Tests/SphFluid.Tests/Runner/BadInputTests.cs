@@ -137,16 +137,16 @@ namespace SphFluid.Tests.Runner
         public void ATwoMegabyteSceneWithAnUnclosedQuoteEndsInALocatedError()
         {
             string text = File.ReadAllText(RunnerPaths.Scene(Default));
-            int at = text.IndexOf("phaseName: Oil\n", StringComparison.Ordinal);
+            int at = text.IndexOf("      Name: Oil\n", StringComparison.Ordinal);
             int line = text.Take(at).Count(c => c == '\n') + 1;
-            var big = new StringBuilder(text.Length + 2_100_000).Append(text, 0, at).Append("phaseName: \"Oil\n");
+            var big = new StringBuilder(text.Length + 2_100_000).Append(text, 0, at).Append("      Name: \"Oil\n");
             for (int i = 0; big.Length < 2_000_000; i++) big.Append("    more words ").Append(i).Append('\n');
             string path = Write(big.ToString());
 
             var run = Simulate(path);
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"unclosed quoted string: the value of 'phaseName' (line {line}) has no closing quote"));
+            Assert.That(run.Stderr, Does.Contain($"unclosed quoted string: the value of 'Name' (line {line}) has no closing quote"));
             Assert.That(run.Stderr, Does.Contain(path + ":"));
         }
 
@@ -155,10 +155,10 @@ namespace SphFluid.Tests.Runner
         [Test]
         public void FlowCollectionsNestedThirtyThousandDeepAreRefusedAtTheDepthLimit()
         {
-            var deep = new StringBuilder("phaseName: ");
+            var deep = new StringBuilder("Name: ");
             for (int i = 0; i < 30000; i++) deep.Append("{a: ");
             deep.Append('1').Append('}', 30000);
-            string path = Write(EditDocument("--- !u!114 &287989891", "phaseName: Oil", deep.ToString(), out int line));
+            string path = Write(EditDocument("--- !u!114 &287989891", "Name: Oil", deep.ToString(), out int line));
 
             var run = Simulate(path);
 
@@ -257,7 +257,7 @@ namespace SphFluid.Tests.Runner
         [TestCase("\"\\U7FFFFFFF\"", "invalid Unicode character escape code")]
         public void ABadEscapeNamesTheFileAndLine(string value, string reason)
         {
-            string path = Write(EditDocument("--- !u!114 &287989891", "phaseName: Oil", "phaseName: " + value, out int line));
+            string path = Write(EditDocument("--- !u!114 &287989891", "Name: Oil", "Name: " + value, out int line));
 
             var run = Simulate(path);
 
@@ -270,7 +270,6 @@ namespace SphFluid.Tests.Runner
 
         [TestCase("--- !u!114 &1249553504", "particleRadiusScale: 1.2", "particleRadiusScale: 5", "Fluid.particleRadiusScale must be in [0.25, 3] half spacings (was 5)")]
         [TestCase("--- !u!114 &1249553504", "maxFrameTime: 0.0333333", "maxFrameTime: 0", "Fluid.maxFrameTime must be in [0.001, 0.1] s (was 0)")]
-        [TestCase("--- !u!114 &287989891", "color: {r: 0.95,", "color: {r: 2,", "SpawnBox.color.r must be in [0, 1] (was 2)")]
         public void InspectorRangesTheRunnerUsedToSkipAreChecked(string header, string find, string replace, string message)
         {
             string path = Write(EditDocument(header, find, replace, out int line));
@@ -280,6 +279,18 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject '"));
             Assert.That(run.Stderr, Does.Contain(message));
+        }
+
+        [Test]
+        public void AColourChannelBeyondOneIsRefusedAtItsLineWithTheRange()
+        {
+            string path = Write(EditDocument("--- !u!114 &287989891", "r: 0.8900054", "r: 2", out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain(path + ": the fluid scene is invalid"));
+            Assert.That(run.Stderr, Does.Contain($"line {line}: GameObject 'Oil', SpawnBox.spawn.Phase.Color.r: SpawnBox 'Oil': Color.r must be in [0, 1] (was 2)"));
         }
 
         [Test]

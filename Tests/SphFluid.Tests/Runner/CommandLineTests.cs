@@ -94,10 +94,10 @@ namespace SphFluid.Tests.Runner
         [Test]
         public void ABadSceneValueGivesExitCodeThree()
         {
-            string path = RunnerPaths.EditedScene("PlayModeTest", "restDensity: 1000", "restDensity: -3");
+            string path = RunnerPaths.EditedScene("PlayModeTest", "RestDensity: 1000", "RestDensity: -3");
             int code = Run(out _, out string err, "simulate", path, "--seconds", "0.01");
             Assert.That(code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(err, Does.Contain("SpawnBox.restDensity"));
+            Assert.That(err, Does.Contain("SpawnBox.spawn.Phase.RestDensity"));
         }
 
         [Test]

@@ -1,3 +1,5 @@
+using System;
+using System.IO;
 using System.Linq;
 using NUnit.Framework;
 using SphFluid.Headless.Scenes;
@@ -40,12 +42,14 @@ namespace SphFluid.Tests.Runner
         }
 
         [Test]
-        public void ColoursAreReadAsSrgbAndStoredLinearAsUnityDoes()
+        public void ColoursAreStoredLinearAsConvertedFromTheInspectorsSrgb()
         {
             var d = SceneLoader.Load(RunnerPaths.Scene("OilAndWater"), RunnerPaths.Project).Description;
-            // Water's inspector colour is (0.25, 0.55, 0.95): sRGB 0.25 is linear 0.0508.
-            Assert.That(d.Phases()[0].Color.X, Is.EqualTo(0.0508f).Within(1e-3f));
-            Assert.That(d.Phases()[0].Color.W, Is.EqualTo(0.8f).Within(1e-6f));
+            // Water's inspector colour is (0.25, 0.55, 0.95): sRGB 0.25 is linear 0.0508, which the scene stores.
+            Assert.That(d.Phases()[0].Color.r, Is.EqualTo(0.0508f).Within(1e-3f));
+            Assert.That(d.Phases()[0].Color.r, Is.EqualTo(ColorSpace.SrgbToLinear(0.25f)).Within(1e-6f));
+            Assert.That(d.Phases()[0].Color.b, Is.EqualTo(ColorSpace.SrgbToLinear(0.95f)).Within(1e-6f));
+            Assert.That(d.Phases()[0].Color.a, Is.EqualTo(0.8f).Within(1e-6f));
         }
 
         [Test]
@@ -69,11 +73,13 @@ namespace SphFluid.Tests.Runner
         [Test]
         public void AFieldOutOfRangeIsReportedWithItsGameObjectComponentAndField()
         {
-            string path = RunnerPaths.EditedScene("PlayModeTest", "restDensity: 1000", "restDensity: -3");
+            string path = RunnerPaths.EditedScene("PlayModeTest", "RestDensity: 1000", "RestDensity: -3");
+            int line = File.ReadAllLines(path).ToList().FindIndex(l => l.EndsWith("RestDensity: -3", StringComparison.Ordinal)) + 1;
 
             var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
 
-            Assert.That(error.Message, Does.Contain("GameObject 'Water', SpawnBox.restDensity"));
+            Assert.That(error.Message, Does.StartWith(path + ": "));
+            Assert.That(error.Message, Does.Contain($"line {line}: GameObject 'Water', SpawnBox.spawn.Phase.RestDensity"));
             Assert.That(error.Message, Does.Contain("RestDensity must be in [1, 100000] kg/m^3 (was -3)"));
         }
 

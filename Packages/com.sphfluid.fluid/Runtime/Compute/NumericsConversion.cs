@@ -2,6 +2,7 @@ using NVector3 = System.Numerics.Vector3;
 using NVector4 = System.Numerics.Vector4;
 using NQuaternion = System.Numerics.Quaternion;
 using NMatrix4x4 = System.Numerics.Matrix4x4;
+using SphFluid.Simulation;
 
 namespace SphFluid.Runtime
 {
@@ -16,6 +17,18 @@ namespace SphFluid.Runtime
         public static NVector4 ToNumerics(this UnityEngine.Vector4 v) => new NVector4(v.x, v.y, v.z, v.w);
 
         public static NVector4 ToNumerics(this UnityEngine.Color c) => new NVector4(c.r, c.g, c.b, c.a);
+
+        /// <summary>A colour as the inspector picks it (sRGB, like every UnityEngine.Color field) to the core's linear
+        /// value: Unity's own transfer curve (Color.linear), alpha unchanged.</summary>
+        public static SettingColor ToLinearSetting(this UnityEngine.Color srgb)
+        {
+            UnityEngine.Color linear = srgb.linear;
+            return new SettingColor(linear.r, linear.g, linear.b, linear.a);
+        }
+
+        /// <summary>The core's linear colour as the inspector shows it (sRGB, Color.gamma), alpha unchanged.</summary>
+        public static UnityEngine.Color ToInspectorColor(this SettingColor linear) =>
+            new UnityEngine.Color(linear.r, linear.g, linear.b, linear.a).gamma;
 
         public static NQuaternion ToNumerics(this UnityEngine.Quaternion q) => new NQuaternion(q.x, q.y, q.z, q.w);
 

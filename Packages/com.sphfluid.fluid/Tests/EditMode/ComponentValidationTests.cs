@@ -48,7 +48,7 @@ namespace SphFluid.Tests.EditMode
         public void SpawnBoxRefusesNegativeRestDensityNamingBoxFieldAndRange()
         {
             SpawnBox box = Add<SpawnBox>("Water");
-            SerializedFields.Set(box, "restDensity", -3f);
+            box.Spawn.Phase.RestDensity = -3f;
             IReadOnlyList<ValidationError> errors = box.ValidationErrors();
             Assert.That(errors.Count, Is.EqualTo(1), Messages(errors));
             Assert.That(errors[0].Message, Is.EqualTo("SpawnBox 'Water': RestDensity must be in [1, 100000] kg/m^3 (was -3)"));
@@ -59,12 +59,12 @@ namespace SphFluid.Tests.EditMode
         public void SpawnBoxRefusesEveryPhaseFieldOutOfRange()
         {
             SpawnBox box = Add<SpawnBox>("Oil");
-            SerializedFields.Set(box, "viscosity", -1f);
-            SerializedFields.Set(box, "surfaceTension", 11f);
-            SerializedFields.Set(box, "fresnelF0", 2f);
-            SerializedFields.Set(box, "absorption", -0.5f);
-            SerializedFields.Set(box, "jitter", 0.7f);
-            SerializedFields.Set(box, "phaseName", "");
+            box.Spawn.Phase.Viscosity = -1f;
+            box.Spawn.Phase.SurfaceTension = 11f;
+            box.Spawn.Phase.FresnelF0 = 2f;
+            box.Spawn.Phase.Absorption = -0.5f;
+            box.Spawn.Jitter = 0.7f;
+            box.Spawn.Phase.Name = "";
             string messages = Messages(box.ValidationErrors());
             Assert.That(messages, Does.Contain("Viscosity must be in [0, 1000] Pa s (was -1)"));
             Assert.That(messages, Does.Contain("SurfaceTension must be in [0, 10] N/m (was 11)"));
@@ -78,7 +78,7 @@ namespace SphFluid.Tests.EditMode
         public void SpawnBoxOnValidateLogsTheCoreMessage()
         {
             SpawnBox box = Add<SpawnBox>("Water");
-            SerializedFields.Set(box, "viscosity", -1f);
+            box.Spawn.Phase.Viscosity = -1f;
             LogAssert.Expect(LogType.Error, new Regex(@"SpawnBox 'Water': Viscosity must be in \[0, 1000\] Pa s \(was -1\)"));
             SerializedFields.InvokeOnValidate(box);
         }
@@ -89,13 +89,17 @@ namespace SphFluid.Tests.EditMode
             SpawnBox box = Add<SpawnBox>("Water");
             box.transform.position = new Vector3(0.1f, 0.2f, 0.3f);
             box.transform.localScale = new Vector3(0.2f, -0.1f, 0.4f);
-            SerializedFields.Set(box, "color", new Color(0.5f, 0.5f, 0.5f, 0.25f));
+            // As the inspector's colour drawer stores a pick: sRGB in, linear kept.
+            box.Spawn.Phase.Color = new Color(0.5f, 0.5f, 0.5f, 0.25f).ToLinearSetting();
             SpawnBoxDescription d = box.Describe();
             Assert.That(d.Name, Is.EqualTo("Water"));
             Assert.That(d.Center.Y, Is.EqualTo(0.2f).Within(1e-6f));
             Assert.That(d.Size.Y, Is.EqualTo(0.1f).Within(1e-6f), "negative scale is a mirrored box of the same size");
-            Assert.That(d.Phase.Color.X, Is.EqualTo(new Color(0.5f, 0.5f, 0.5f).linear.r).Within(1e-6f));
-            Assert.That(d.Phase.Color.W, Is.EqualTo(0.25f).Within(1e-6f));
+            Assert.That(d.Phase.Color.r, Is.EqualTo(new Color(0.5f, 0.5f, 0.5f).linear.r).Within(1e-6f));
+            Assert.That(d.Phase.Color.a, Is.EqualTo(0.25f).Within(1e-6f));
+            Assert.That(box.Color.r, Is.EqualTo(0.5f).Within(1e-4f), "the inspector shows the pick again");
+            d.Phase.Viscosity = 7f;
+            Assert.That(box.Spawn.Phase.Viscosity, Is.Not.EqualTo(7f), "the description is a copy");
         }
 
         [Test]
@@ -119,6 +123,14 @@ namespace SphFluid.Tests.EditMode
             var serialized = new UnityEditor.SerializedObject(Add<Fluid>("Fluid"));
             foreach (DeclaredSetting declared in SettingRules.Declared(typeof(FluidSettings)))
                 Assert.That(serialized.FindProperty("settings." + declared.Field.Name), Is.Not.Null, declared.Field.Name);
+        }
+
+        [Test]
+        public void UnitySerializesEveryDeclaredSpawnBoxValue()
+        {
+            var serialized = new UnityEditor.SerializedObject(Add<SpawnBox>("Water"));
+            foreach (SettingPath declared in SettingRules.DeclaredPaths(typeof(SpawnBoxDescription)))
+                Assert.That(serialized.FindProperty("spawn." + declared.Path), Is.Not.Null, declared.Path);
         }
 
         [Test]

@@ -62,7 +62,7 @@ namespace SphFluid.Simulation
                     Viscosity = p.Viscosity,
                     ParticleMass = p.ParticleMass > 0f ? p.ParticleMass : (float)DerivedParticleMass.Of(this, p),
                     SurfaceTension = p.SurfaceTension,
-                    Color = p.Color,
+                    Color = p.Color, // linear, as declared
                     FresnelF0 = p.FresnelF0,
                     Absorption = p.Absorption,
                 };
@@ -167,8 +167,7 @@ namespace SphFluid.Simulation
                 }
                 ValidationRules.Finite(errors, owner, path, nameof(SpawnBoxDescription.Center), box.Center, 1e6f, "m");
                 ValidationRules.Rotation(errors, owner, path, nameof(SpawnBoxDescription.Rotation), box.Rotation);
-                ValidationRules.Finite(errors, owner, path, nameof(SpawnBoxDescription.InitialVelocity), box.InitialVelocity, 1000f, "m/s");
-                ValidationRules.InRange(errors, owner, path, nameof(SpawnBoxDescription.Jitter), box.Jitter, 0f, SpawnBoxDescription.MaxJitter, "particle spacings");
+                SettingRules.ValidateAll(box, errors, owner, path);
                 if (!settingsOk) continue;
 
                 float s = Settings.ParticleSpacing;
@@ -203,15 +202,7 @@ namespace SphFluid.Simulation
                 errors.Add(new ValidationError(path.TrimEnd('.'), $"{owner}: Phase must be set (was null)"));
                 return;
             }
-            if (string.IsNullOrEmpty(phase.Name))
-                errors.Add(new ValidationError(path + "Name", $"{owner}: phase Name must be non-empty (was empty)"));
-            ValidationRules.InRange(errors, owner, path, nameof(PhaseDescription.RestDensity), phase.RestDensity,
-                PhaseDescription.MinRestDensity, PhaseDescription.MaxRestDensity, "kg/m^3");
-            ValidationRules.InRange(errors, owner, path, nameof(PhaseDescription.Viscosity), phase.Viscosity, 0f, PhaseDescription.MaxViscosity, "Pa s");
-            ValidationRules.InRange(errors, owner, path, nameof(PhaseDescription.ParticleMass), phase.ParticleMass, 0f, 1e6f, "kg (0 = derived)");
-            ValidationRules.InRange(errors, owner, path, nameof(PhaseDescription.SurfaceTension), phase.SurfaceTension, 0f, PhaseDescription.MaxSurfaceTension, "N/m");
-            ValidationRules.InRange(errors, owner, path, nameof(PhaseDescription.FresnelF0), phase.FresnelF0, 0f, 1f, "");
-            ValidationRules.InRange(errors, owner, path, nameof(PhaseDescription.Absorption), phase.Absorption, 0f, PhaseDescription.MaxAbsorption, "1/m");
+            SettingRules.ValidateAll(phase, errors, owner, path);
         }
 
         void ValidateObstacles(List<ValidationError> errors)

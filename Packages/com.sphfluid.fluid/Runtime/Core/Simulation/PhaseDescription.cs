@@ -1,42 +1,45 @@
-using System.Numerics;
+using System;
 
 namespace SphFluid.Simulation
 {
     /// <summary>
-    /// What one liquid is, as the scene describes it. Spawn boxes that name the same phase share one
-    /// row of the GPU phase table (<see cref="PhaseProperties"/>).
+    /// What one liquid is, as the scene describes it. Spawn boxes that name the same phase share one row of the GPU phase
+    /// table (<see cref="PhaseProperties"/>). Each value is declared once, like <see cref="FluidSettings"/>: the field's
+    /// initializer is its default and its <see cref="SettingAttribute"/> its range, unit, group and tooltip. Unity
+    /// serializes the class inside the SpawnBox component (through <see cref="SpawnBoxDescription.Phase"/>); the editor
+    /// drawer, the validation, the headless scene reader and the README's table read the declarations.
     /// </summary>
+    [Serializable]
     public sealed class PhaseDescription
     {
-        public const float MinRestDensity = 1f, MaxRestDensity = 100000f;
-        public const float MaxViscosity = 1000f;
-        public const float MaxSurfaceTension = 10f;
-        public const float MaxAbsorption = 10000f;
+        const string Liquid = "Phase", Look = "Look";
 
-        /// <summary>Phase name; boxes with the same name share one phase.</summary>
-        public string Name { get; set; } = "Water";
+        [Setting(Liquid, 1, 256, "", "Phase name; boxes with the same name are one liquid and must agree on every phase value. Names must differ by more than letter case.")]
+        public string Name = "Water";
 
-        /// <summary>Rest density rho0, kg/m^3, in [1, 100000].</summary>
-        public float RestDensity { get; set; } = 1000f;
+        [Setting(Liquid, 1, 100000, "kg/m^3", "Rest density rho0 (water 1000, oil 900).")]
+        public float RestDensity = 1000f;
 
-        /// <summary>Dynamic viscosity mu, Pa·s, in [0, 1000].</summary>
-        public float Viscosity { get; set; } = 0.001f;
+        [Setting(Liquid, 0, 1000, "Pa s", "Dynamic viscosity mu (water 0.001; the simulation needs more, e.g. 0.05).")]
+        public float Viscosity = 0.001f;
 
-        /// <summary>Mass of one particle, kg; 0 = derived so that the spawn lattice sits exactly at rest density.
-        /// Otherwise within a factor (1 + gamma / 2)^(1 / gamma) of the derived mass (<see cref="ParticleMassRule"/>).</summary>
-        public float ParticleMass { get; set; }
+        // The scene narrows an explicit mass further (ParticleMassRule).
+        [Setting(Liquid, 0, 1e6, "kg", "Mass of one particle; 0 = derived so that the spawn lattice sits exactly at rest density. An explicit mass must lie within a factor (1 + gamma/2)^(1/gamma) of the derived one.")]
+        public float ParticleMass;
 
-        /// <summary>Surface tension coefficient gamma, N/m, in [0, 10]; 0 = none.</summary>
-        public float SurfaceTension { get; set; }
+        [Setting(Liquid, 0, 10, "N/m", "Surface tension coefficient gamma; 0 = off (water 0.072).")]
+        public float SurfaceTension;
 
-        /// <summary>Linear RGBA tint for rendering and snapshots.</summary>
-        public Vector4 Color { get; set; } = new Vector4(0.2f, 0.45f, 0.9f, 0.8f);
+        // Linear, as the phase table and the shaders use it. Unity's inspector shows and picks sRGB, as for any colour,
+        // and converts at its edge (the package's SettingColor drawer applies Color.linear / Color.gamma).
+        [Setting(Look, 0, 1, "", "Tint and opacity, stored as linear RGBA (the inspector shows and picks it as sRGB).")]
+        public SettingColor Color = new SettingColor(0.2f, 0.45f, 0.9f, 0.8f);
 
-        /// <summary>Schlick reflectance at normal incidence, in [0, 1].</summary>
-        public float FresnelF0 { get; set; } = 0.02f;
+        [Setting(Look, 0, 1, "", "Schlick reflectance at normal incidence, ((n - 1) / (n + 1))^2: water 0.02, oil 0.035.")]
+        public float FresnelF0 = 0.02f;
 
-        /// <summary>Beer-Lambert absorption coefficient, 1/m, in [0, 10000].</summary>
-        public float Absorption { get; set; } = 2f;
+        [Setting(Look, 0, 10000, "1/m", "Beer-Lambert absorption coefficient of the tint.")]
+        public float Absorption = 2f;
 
         public PhaseDescription() { }
 
@@ -49,13 +52,14 @@ namespace SphFluid.Simulation
 
         public PhaseDescription Clone() => (PhaseDescription)MemberwiseClone();
 
-        /// <summary>Same physical and optical definition (used to detect conflicting boxes of one phase).</summary>
+        /// <summary>Same physical and optical definition, every declared value equal (used to detect conflicting boxes
+        /// of one phase).</summary>
         public bool SameDefinition(PhaseDescription other)
         {
-            return other != null && Name == other.Name && RestDensity == other.RestDensity
-                && Viscosity == other.Viscosity && ParticleMass == other.ParticleMass
-                && SurfaceTension == other.SurfaceTension && Color == other.Color
-                && FresnelF0 == other.FresnelF0 && Absorption == other.Absorption;
+            if (other == null) return false;
+            foreach (var declared in SettingRules.Declared(typeof(PhaseDescription)))
+                if (!Equals(declared.Field.GetValue(this), declared.Field.GetValue(other))) return false;
+            return true;
         }
 
         public override string ToString() =>

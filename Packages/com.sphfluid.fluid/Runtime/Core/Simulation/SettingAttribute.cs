@@ -24,10 +24,12 @@ namespace SphFluid.Simulation
         /// <summary>Inspector header the setting is listed under.</summary>
         public string Group { get; }
 
-        /// <summary>Smallest allowed value (of the magnitude, for a vector).</summary>
+        /// <summary>Smallest allowed value (of the magnitude, for a vector; of each channel, for a colour; of the length,
+        /// for a text).</summary>
         public double Min { get; }
 
-        /// <summary>Largest allowed value (of the magnitude, for a vector).</summary>
+        /// <summary>Largest allowed value (of the magnitude, for a vector; of each channel, for a colour; of the length,
+        /// for a text).</summary>
         public double Max { get; }
 
         /// <summary>The minimum itself is refused: the range is (Min, Max].</summary>
@@ -49,8 +51,10 @@ namespace SphFluid.Simulation
             }
         }
 
-        // Whole bounds as the whole-number messages write them (16777216, not 1.67772E+07); others as the float messages.
+        // Whole bounds written whole (16777216, not 1.67772E+07), and the int limits of an "any whole number" range
+        // too; larger ones as the float messages write them (1E+09). The validation's messages quote this text.
         static string Bound(double v) =>
-            Math.Abs(v) < 1e8 && Math.Floor(v) == v ? ((long)v).ToString(System.Globalization.CultureInfo.InvariantCulture) : ValidationRules.Format(v);
+            Math.Floor(v) == v && (Math.Abs(v) < 1e8 || v == int.MinValue || v == int.MaxValue)
+                ? ((long)v).ToString(System.Globalization.CultureInfo.InvariantCulture) : ValidationRules.Format(v);
     }
 }

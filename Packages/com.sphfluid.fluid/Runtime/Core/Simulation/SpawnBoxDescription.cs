@@ -1,16 +1,34 @@
+using System;
 using System.Numerics;
 
 namespace SphFluid.Simulation
 {
-    /// <summary>A box filled with one phase on a regular lattice at start (and on reset). Boxes may touch but not
-    /// overlap (<see cref="SpawnOverlapRule"/>).</summary>
+    /// <summary>
+    /// A box filled with one phase on a regular lattice at start (and on reset). Boxes may touch but not overlap
+    /// (<see cref="SpawnOverlapRule"/>). The spawn values and the <see cref="Phase"/> block are declared once
+    /// (<see cref="SettingAttribute"/>) and serialized by Unity inside the SpawnBox component; the placement (name, centre,
+    /// rotation, size) is not a setting: Unity and the headless reader take it from the box's GameObject and Transform.
+    /// </summary>
+    [Serializable]
     public sealed class SpawnBoxDescription
     {
-        public const float MaxJitter = 0.5f;
+        const string Spawn = "Spawn";
+
+        /// <summary>The liquid this box holds: a declared block, listed by the inspector, the scene reader and the README
+        /// under "Phase." (<see cref="SettingRules.DeclaredPaths"/>).</summary>
+        public PhaseDescription Phase = new PhaseDescription();
+
+        // SpeedOfSoundRule narrows it for the scene.
+        [Setting(Spawn, 0, 1000, "m/s", "Velocity every particle starts with, world space. With WCSPH it must stay below the speed of sound, with the scene's other speeds.")]
+        public SettingVector InitialVelocity;
+
+        [Setting(Spawn, 0, 0.5, "particle spacings", "Random offset of each lattice point, as a fraction of the spacing.")]
+        public float Jitter = 0.05f;
+
+        [Setting(Spawn, int.MinValue, int.MaxValue, "", "Seed of the deterministic jitter: the same seed spawns the same particles.")]
+        public int Seed = 1;
 
         public string Name { get; set; } = "SpawnBox";
-
-        public PhaseDescription Phase { get; set; } = new PhaseDescription();
 
         /// <summary>World-space centre, m.</summary>
         public Vector3 Center { get; set; }
@@ -20,16 +38,6 @@ namespace SphFluid.Simulation
         /// <summary>Edge lengths, m; each at least one particle spacing.</summary>
         public Vector3 Size { get; set; } = new Vector3(0.2f, 0.2f, 0.2f);
 
-        /// <summary>World-space velocity every particle starts with, m/s; with the scene's other speeds, below the
-        /// speed of sound (<see cref="SpeedOfSoundRule"/>).</summary>
-        public Vector3 InitialVelocity { get; set; }
-
-        /// <summary>Random offset of each lattice point, as a fraction of the spacing, in [0, 0.5].</summary>
-        public float Jitter { get; set; } = 0.05f;
-
-        /// <summary>Seed of the deterministic jitter: same seed, same particles.</summary>
-        public int Seed { get; set; } = 1;
-
         public SpawnBoxDescription() { }
 
         public SpawnBoxDescription(string name, PhaseDescription phase, Vector3 center, Vector3 size)
@@ -38,6 +46,14 @@ namespace SphFluid.Simulation
             Phase = phase;
             Center = center;
             Size = size;
+        }
+
+        /// <summary>A copy whose phase is a copy too, so that editing one does not edit the other.</summary>
+        public SpawnBoxDescription Clone()
+        {
+            var copy = (SpawnBoxDescription)MemberwiseClone();
+            copy.Phase = Phase?.Clone();
+            return copy;
         }
 
         public override string ToString() => $"SpawnBox '{Name}' ({Phase?.Name}) at {Center} size {Size}";

@@ -21,6 +21,10 @@ namespace SphFluid.Simulation
     /// </remarks>
     public static class SpawnLayout
     {
+        /// <summary>The declared bound of <see cref="SpawnBoxDescription.Jitter"/>: the lattice clamps to it as the
+        /// validation refuses beyond it.</summary>
+        static readonly float MaxJitter = (float)SettingRules.Of(typeof(SpawnBoxDescription), nameof(SpawnBoxDescription.Jitter)).Max;
+
         /// <summary>Lattice points along each box axis: floor or ceil of Size / s per axis, the combination whose cell
         /// volume V / (nx ny nz) is closest to s^3 (an exact multiple of s, within rounding, keeps Size / s).</summary>
         public static void CountPerAxis(FluidSettings settings, SpawnBoxDescription box, out int nx, out int ny, out int nz)
@@ -117,7 +121,7 @@ namespace SphFluid.Simulation
             var half = box.Size * 0.5f;
             var step = new Vector3(box.Size.X / nx, box.Size.Y / ny, box.Size.Z / nz);
             var rotation = Quaternion.Normalize(box.Rotation);
-            float jitter = Math.Max(0f, Math.Min(SpawnBoxDescription.MaxJitter, box.Jitter)) * s;
+            float jitter = Math.Max(0f, Math.Min(MaxJitter, box.Jitter)) * s;
             var random = new SplitMix64(unchecked((ulong)(uint)box.Seed * 0x9E3779B97F4A7C15UL + 0x632BE59BD9B4E019UL));
             for (int k = 0; k < nz; k++)
             for (int j = 0; j < ny; j++)
