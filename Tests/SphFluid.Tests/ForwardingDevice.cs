@@ -25,7 +25,7 @@ namespace SphFluid.Tests
         public int PropertyId(string name) => Inner.PropertyId(name);
         public void SetBuffer(IComputeProgram program, int kernel, int propertyId, IComputeBuffer buffer) => Inner.SetBuffer(program, kernel, propertyId, Unwrap(buffer));
         public void SetInt(IComputeProgram program, int propertyId, int value) => Inner.SetInt(program, propertyId, value);
-        public virtual void SetFloat(IComputeProgram program, int propertyId, float value) => Inner.SetFloat(program, propertyId, value);
+        public void SetFloat(IComputeProgram program, int propertyId, float value) => Inner.SetFloat(program, propertyId, value);
         public void SetInts(IComputeProgram program, int propertyId, params int[] values) => Inner.SetInts(program, propertyId, values);
         public void SetVector(IComputeProgram program, int propertyId, Vector4 value) => Inner.SetVector(program, propertyId, value);
         public void SetMatrix(IComputeProgram program, int propertyId, Matrix4x4 value) => Inner.SetMatrix(program, propertyId, value);

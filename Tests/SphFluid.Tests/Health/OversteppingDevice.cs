@@ -1,4 +1,5 @@
 using SphFluid.Compute;
+using SphFluid.Simulation;
 
 namespace SphFluid.Tests.Health
 {
@@ -9,17 +10,25 @@ namespace SphFluid.Tests.Health
     /// </summary>
     sealed class OversteppingDevice : ForwardingDevice
     {
-        readonly int _timeStepId;
-
         public OversteppingDevice(IComputeDevice inner, float factor) : base(inner)
         {
             Factor = factor;
-            _timeStepId = inner.PropertyId("_TimeStep");
         }
 
         public float Factor { get; }
 
-        public override void SetFloat(IComputeProgram program, int propertyId, float value) =>
-            Inner.SetFloat(program, propertyId, propertyId == _timeStepId ? value * Factor : value);
+        /// <summary>The solver's time step travels in its constant buffer (FluidConstants): each upload of it is
+        /// stretched on the way to the GPU, while the simulation keeps planning with the step it chose.</summary>
+        public override void UpdateBuffer<T>(IComputeBuffer buffer, T[] data)
+        {
+            if (data is FluidConstants[] constants)
+            {
+                var stretched = (FluidConstants[])constants.Clone();
+                stretched[0].TimeStep *= Factor;
+                Inner.UpdateBuffer(buffer, stretched);
+                return;
+            }
+            Inner.UpdateBuffer(buffer, data);
+        }
     }
 }

@@ -50,8 +50,11 @@ namespace SphFluid.Tests.Physics
 
         [Test, Ignore("Not met: measured layering 0.859 at 6 s (0.83 at 4 s, never 0.95) and 21.8 % of the floor layer still oil, " +
                       "52 clamp hits, 5 min of wall time on 2 cores; WCSPH reaches 0.95 at 4.0 s with 0 % oil on the floor. The oil rises " +
-                      "but the layer beside the floor stays mixed: DFSPH has no counterpart yet of WCSPH's wall contact damping for the " +
-                      "buoyant phase, and the solves correct compression only.")]
+                      "but the layer beside the floor stays mixed. Not the solver's stiffness: at half the particles and 4 s, 29.4 % of the " +
+                      "floor layer is oil at a 0.1 % tolerance and 27.3 % at 1 % (layering 0.78 both; simulate --solver dfsph " +
+                      "--particles-scale 0.5 --density-tolerance 1). Candidates: the wall term mirrors each particle's own q, which the " +
+                      "Jacobi step scales with its mass, so a light particle at the floor gets proportionally less wall support than the " +
+                      "buoyancy needs; a wall pressure extrapolated from the fluid (as WCSPH's WallPressure) would not.")]
         public void DefaultOilAndWater_LayersFullyWithin6Seconds_AndNoOilStaysOnTheFloor()
         {
             var scene = DivergenceFree("OilAndWater");
