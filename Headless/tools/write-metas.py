@@ -2,9 +2,15 @@
 """Writes the .meta file Unity would write for every file and folder under Assets/ and under each embedded
 package (Packages/<name>/ with a package.json; the package folder itself has none) that lacks one.
 
+Package samples (the "samples" entries of package.json, folders under Samples~) get them too: Unity never imports
+Samples~ in place, but Package Manager copies a sample with its .meta files, so the GUIDs its scene and assets
+reference must already be there. The sample folder itself gets none (Package Manager makes the folder it copies into),
+as in Unity's own packages.
+
 Each new .meta gets a fresh random GUID (uuid4, as Unity does); existing .meta files are never
 touched, so GUIDs stay stable. Run it after adding assets:  python3 Headless/tools/write-metas.py
 """
+import json
 import os
 import sys
 import uuid
@@ -67,6 +73,18 @@ def asset_roots(root):
     for name in sorted(os.listdir(packages)):
         folder = os.path.join(packages, name)
         if not hidden(name) and os.path.isfile(os.path.join(folder, "package.json")):
+            yield folder
+            for sample in sample_folders(folder):
+                yield sample
+
+
+def sample_folders(package):
+    with open(os.path.join(package, "package.json"), encoding="utf-8") as f:
+        samples = json.load(f).get("samples") or []
+    for sample in samples:
+        path = sample.get("path") or ""
+        folder = os.path.normpath(os.path.join(package, path))
+        if path.startswith("Samples~/") and ".." not in path.split("/") and os.path.isdir(folder):
             yield folder
 
 

@@ -22,6 +22,8 @@ public sealed class AssemblyDefinition
     public bool AutoReferenced { get; init; } = true;
     public IReadOnlyList<string> DefineConstraints { get; init; } = Array.Empty<string>();
     public bool NoEngineReferences { get; init; }
+    /// <summary>Symbols defined when a package (or "Unity") is present in a version range: how an assembly uses an optional package.</summary>
+    public IReadOnlyList<VersionDefine> VersionDefines { get; init; } = Array.Empty<VersionDefine>();
 
     /// <summary>Compiled for the editor only (<c>includePlatforms: ["Editor"]</c>).</summary>
     public bool IsEditorOnly => IncludePlatforms.Count == 1 && IncludePlatforms[0] == "Editor";
@@ -50,6 +52,7 @@ public sealed class AssemblyDefinition
             AutoReferenced = Bool(root, "autoReferenced", true),
             DefineConstraints = Strings(root, "defineConstraints", path),
             NoEngineReferences = Bool(root, "noEngineReferences", false),
+            VersionDefines = VersionDefineList(root, path),
         };
     }
 
@@ -68,5 +71,19 @@ public sealed class AssemblyDefinition
             ?? throw new FormatException($"{path}: '{name}' must be an array of strings")).ToList();
     }
 
+    static IReadOnlyList<VersionDefine> VersionDefineList(JsonElement root, string path)
+    {
+        if (!root.TryGetProperty("versionDefines", out var v)) return Array.Empty<VersionDefine>();
+        if (v.ValueKind != JsonValueKind.Array) throw new FormatException($"{path}: 'versionDefines' must be an array of {{name, expression, define}} objects");
+        return v.EnumerateArray().Select(e => e.ValueKind == JsonValueKind.Object
+                ? new VersionDefine(String(e, "name"), String(e, "expression"), String(e, "define"))
+                : throw new FormatException($"{path}: 'versionDefines' must be an array of {{name, expression, define}} objects"))
+            .ToList();
+    }
+
     public override string ToString() => $"asmdef '{Name}' ({Path})";
 }
+
+/// <summary>One <c>versionDefines</c> entry: <see cref="Define"/> is set when package <see cref="Name"/> (or "Unity") is
+/// present at a version inside <see cref="Expression"/> (Unity's range syntax; empty = any version).</summary>
+public sealed record VersionDefine(string? Name, string? Expression, string? Define);

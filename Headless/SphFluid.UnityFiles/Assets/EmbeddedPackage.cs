@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Linq;
 using System.Text.Json;
 using System.Text.RegularExpressions;
 
@@ -22,6 +23,11 @@ public sealed class EmbeddedPackage
     public string? Version { get; init; }
     public string? Unity { get; init; }
     public IReadOnlyDictionary<string, string> Dependencies { get; init; } = new Dictionary<string, string>();
+    /// <summary>The <c>"samples"</c> entries: what Package Manager offers to import, each a folder under <c>Samples~</c>.</summary>
+    public IReadOnlyList<PackageSample> Samples { get; init; } = Array.Empty<PackageSample>();
+
+    /// <summary>The folder Package Manager copies samples from; Unity never imports it in place (its name ends in '~').</summary>
+    public const string SamplesFolder = "Samples~";
 
     public static EmbeddedPackage Load(string path) => Parse(File.ReadAllText(path), path);
 
@@ -38,6 +44,16 @@ public sealed class EmbeddedPackage
                 deps[p.Name] = (p.Value.ValueKind == JsonValueKind.String ? p.Value.GetString() : null)
                     ?? throw new FormatException($"version of dependency '{p.Name}' must be a string");
         }
+        var samples = new List<PackageSample>();
+        if (root.TryGetProperty("samples", out var list))
+        {
+            if (list.ValueKind != JsonValueKind.Array) throw new FormatException("\"samples\" must be an array of {displayName, description, path} objects");
+            foreach (var sample in list.EnumerateArray())
+            {
+                if (sample.ValueKind != JsonValueKind.Object) throw new FormatException("\"samples\" must be an array of {displayName, description, path} objects");
+                samples.Add(new PackageSample(Text(sample, "displayName"), Text(sample, "description"), Text(sample, "path")));
+            }
+        }
         return new EmbeddedPackage
         {
             Path = path,
@@ -45,6 +61,7 @@ public sealed class EmbeddedPackage
             Version = Text(root, "version"),
             Unity = Text(root, "unity"),
             Dependencies = deps,
+            Samples = samples,
         };
     }
 
@@ -59,8 +76,26 @@ public sealed class EmbeddedPackage
             yield return $"\"version\" must be a semantic version such as 1.2.3 (was '{Version}')";
         if (Unity == null || !UnityPattern.IsMatch(Unity))
             yield return $"\"unity\" must be a Unity release such as 2022.3 (was '{Unity}')";
+        foreach (var sample in Samples)
+        {
+            if (string.IsNullOrWhiteSpace(sample.DisplayName))
+                yield return $"sample '{sample.Path}' has no \"displayName\" (Package Manager lists samples by it)";
+            if (!sample.IsUnderSamplesFolder)
+                yield return $"sample '{sample.DisplayName}' has \"path\" '{sample.Path}'; it must be a folder under {SamplesFolder}/ (Unity would import it in place)";
+        }
     }
 
     static string? Text(JsonElement root, string field) =>
         root.TryGetProperty(field, out var v) && v.ValueKind == JsonValueKind.String ? v.GetString() : null;
+}
+
+/// <summary>One entry of a package's <c>"samples"</c>: Package Manager copies <see cref="Path"/> (relative to the
+/// package) into <c>Assets/Samples/&lt;package&gt;/&lt;version&gt;/&lt;displayName&gt;</c> when asked, .meta files included.</summary>
+public sealed record PackageSample(string? DisplayName, string? Description, string? Path)
+{
+    /// <summary>A folder below <c>Samples~/</c>, written with forward slashes and without '..'.</summary>
+    [System.Diagnostics.CodeAnalysis.MemberNotNullWhen(true, nameof(Path))]
+    public bool IsUnderSamplesFolder =>
+        Path != null && Path.StartsWith(EmbeddedPackage.SamplesFolder + "/", StringComparison.Ordinal) &&
+        Path.Length > EmbeddedPackage.SamplesFolder.Length + 1 && !Path.Contains('\\') && !Path.Split('/').Contains("..");
 }

@@ -36,7 +36,11 @@ public sealed partial class AssetIntegrity
         foreach (var a in _asmdefs)
             if (_metaByAsset.TryGetValue(a.Path, out var meta) && meta.Guid != null) byGuid[meta.Guid] = a;
 
-        foreach (var a in _asmdefs) CheckAssembly(a, byName, byGuid);
+        foreach (var a in _asmdefs)
+        {
+            CheckAssembly(a, byName, byGuid);
+            CheckVersionDefines(a);
+        }
     }
 
     void CheckAssembly(AssemblyDefinition a, Dictionary<string, AssemblyDefinition> byName, Dictionary<string, AssemblyDefinition> byGuid)
@@ -73,6 +77,8 @@ public sealed partial class AssetIntegrity
             }
             if (!UnityKnownIds.PackageAssemblies.TryGetValue(name, out var package))
                 ReportAt(a.Path, $"reference '{reference}' resolves to no asmdef under Assets/ or an embedded package, nor a known package assembly");
+            else if (IsOptional(a, package))
+                continue; // Unity drops a reference to an absent assembly; the code behind the versionDefines symbol goes with it
             else if (_manifest != null && !_manifest.Has(package))
                 ReportAt(a.Path, $"reference '{name}' needs package {package} in Packages/manifest.json");
             else if (name == "Unity.InputSystem.TestFramework" && _manifest != null && !_manifest.Testables.Contains("com.unity.inputsystem"))
@@ -96,6 +102,27 @@ public sealed partial class AssetIntegrity
             foreach (var runner in new[] { "UnityEngine.TestRunner", "UnityEditor.TestRunner" }.Where(r => !referenced.Contains(r)))
                 ReportAt(a.Path, $"a test assembly references {runner}");
             if (a.AutoReferenced) ReportAt(a.Path, "a test assembly should have autoReferenced: false (nothing may depend on tests)");
+        }
+    }
+
+    /// <summary>
+    /// Whether <paramref name="a"/> uses <paramref name="package"/> only when present: the package (or one it brings,
+    /// such as URP's SRP Core) is named by one of the asmdef's versionDefines.
+    /// </summary>
+    static bool IsOptional(AssemblyDefinition a, string package) =>
+        a.VersionDefines.Any(v => v.Name == package ||
+            (v.Name != null && UnityKnownIds.PackageDependencies.TryGetValue(v.Name, out var brought) && brought.Contains(package)));
+
+    void CheckVersionDefines(AssemblyDefinition a)
+    {
+        foreach (var v in a.VersionDefines)
+        {
+            var where = $"versionDefines entry for '{v.Name}'";
+            if (string.IsNullOrWhiteSpace(v.Name)) ReportAt(a.Path, "a versionDefines entry has no \"name\" (a package name or \"Unity\")");
+            if (v.Define == null || !System.Text.RegularExpressions.Regex.IsMatch(v.Define, "^[A-Za-z_][A-Za-z0-9_]*$"))
+                ReportAt(a.Path, $"{where} defines '{v.Define}', which is no C# symbol");
+            if (v.Expression != null && v.Expression.Length > 0 && !System.Text.RegularExpressions.Regex.IsMatch(v.Expression, @"^\s*([\[(]\s*[0-9][0-9A-Za-z.\-]*\s*(,\s*[0-9][0-9A-Za-z.\-]*\s*)?[\])]|[0-9][0-9A-Za-z.\-]*|[\[(]\s*,\s*[0-9][0-9A-Za-z.\-]*\s*[\])]|[\[(]\s*[0-9][0-9A-Za-z.\-]*\s*,\s*[\])])\s*$"))
+                ReportAt(a.Path, $"{where} has expression '{v.Expression}', which is no version or version range (e.g. 14.0.0 or [14.0,15.0))");
         }
     }
 

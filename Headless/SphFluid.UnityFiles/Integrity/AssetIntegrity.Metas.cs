@@ -78,7 +78,7 @@ public sealed partial class AssetIntegrity
             Report(path, $"guid '{meta.Guid}' is not 32 lowercase hex digits");
         else if (meta.Guid.All(c => c == '0') || meta.Guid.Distinct().Count() <= 2)
             Report(path, $"guid '{meta.Guid}' is a pattern, not a random GUID");
-        else if (UnityKnownIds.ForeignGuids.Contains(meta.Guid))
+        else if (UnityKnownIds.ForeignGuids.Contains(meta.Guid) || UnityKnownIds.PackageObjectGuids.ContainsKey(meta.Guid))
             Report(path, $"guid '{meta.Guid}' belongs to a Unity package, template or the kit's examples; generate a fresh one");
         else if (_assetByGuid.TryGetValue(meta.Guid, out var owner))
             Report(path, $"duplicate guid {meta.Guid}: also used by '{Rel(owner)}.meta' (Unity reassigns one and breaks its references)");

@@ -82,7 +82,7 @@ public sealed partial class AssetIntegrity
                 if (r.IsBuiltin) continue;
                 if (UnityKnownIds.PackageObjectGuids.TryGetValue(r.Guid, out var packaged))
                 {
-                    if (_manifest != null && !_manifest.Has(packaged.Package))
+                    if (_manifest != null && !_manifest.Has(packaged.Package) && !InSample(file))
                         ReportAt(file, $"{where} uses {packaged.Name}, which needs {packaged.Package} in Packages/manifest.json");
                     continue;
                 }

@@ -74,8 +74,31 @@ public sealed partial class AssetIntegrity
                 if (resolved == null) Report(rel, $"dependency '{dependency}' is not in Packages/manifest.json");
                 else if (resolved != version) Report(rel, $"dependency '{dependency}' {version} differs from Packages/manifest.json's {resolved}");
             }
+            CheckSamples(dir, rel, package);
         }
         return names;
+    }
+
+    /// <summary>Every "samples" entry names a folder that exists, and every folder under Samples~ is offered by one:
+    /// Package Manager shows only declared samples, so an undeclared folder is dead weight in every install.</summary>
+    void CheckSamples(string packageFolder, string rel, EmbeddedPackage package)
+    {
+        var declared = new HashSet<string>(StringComparer.Ordinal);
+        foreach (var sample in package.Samples)
+        {
+            if (!sample.IsUnderSamplesFolder) continue;
+            var folder = Path.GetFullPath(Path.Combine(packageFolder, sample.Path));
+            declared.Add(folder);
+            if (!Directory.Exists(folder)) Report(rel, $"sample '{sample.DisplayName}' has \"path\" '{sample.Path}', which is no folder in the package");
+            else if (!Directory.EnumerateFileSystemEntries(folder).Any()) Report(rel, $"sample '{sample.DisplayName}' folder '{sample.Path}' is empty");
+        }
+        var samples = Path.Combine(packageFolder, EmbeddedPackage.SamplesFolder);
+        if (!Directory.Exists(samples)) return;
+        foreach (var folder in Directory.GetDirectories(samples).OrderBy(d => d, StringComparer.Ordinal))
+            if (!declared.Contains(Path.GetFullPath(folder)))
+                ReportAt(folder, "is under Samples~ but no \"samples\" entry of package.json names it (Package Manager would never offer it)");
+        if (File.Exists(samples + ".meta"))
+            ReportAt(samples + ".meta", "Samples~ is hidden from Unity, so it takes no .meta");
     }
 
     ProjectVersion? TryProjectVersion()

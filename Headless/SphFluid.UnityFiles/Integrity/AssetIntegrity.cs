@@ -109,13 +109,44 @@ public sealed partial class AssetIntegrity
 
     static string Extension(string path) => Path.GetExtension(path);
 
+    /// <summary>Assets/, each embedded package, and each sample the packages declare: a sample is checked as it will
+    /// be once Package Manager has copied it into a project (its folder gets no .meta; everything inside has one).</summary>
     IEnumerable<string> ScannedRoots()
     {
         yield return Abs("Assets");
-        var packages = Abs("Packages");
-        if (!Directory.Exists(packages)) yield break;
-        foreach (var dir in Directory.GetDirectories(packages).OrderBy(d => d, StringComparer.Ordinal))
-            if (!IsHiddenFromUnity(Path.GetFileName(dir)) && File.Exists(Path.Combine(dir, "package.json")))
-                yield return dir;
+        foreach (var package in EmbeddedPackageFolders())
+        {
+            yield return package;
+            foreach (var sample in DeclaredSampleFolders(package).Where(Directory.Exists))
+            {
+                _sampleRoots.Add(sample);
+                yield return sample;
+            }
+        }
     }
+
+    readonly List<string> _sampleRoots = new();
+
+    IEnumerable<string> EmbeddedPackageFolders()
+    {
+        var packages = Abs("Packages");
+        if (!Directory.Exists(packages)) return Enumerable.Empty<string>();
+        return Directory.GetDirectories(packages).OrderBy(d => d, StringComparer.Ordinal)
+            .Where(dir => !IsHiddenFromUnity(Path.GetFileName(dir)) && File.Exists(Path.Combine(dir, "package.json")));
+    }
+
+    /// <summary>Absolute folders of the package's "samples" entries that lie under Samples~ (a package.json that does
+    /// not parse, or a sample path outside Samples~, is reported by CheckEmbeddedPackages).</summary>
+    static IEnumerable<string> DeclaredSampleFolders(string packageFolder)
+    {
+        EmbeddedPackage package;
+        try { package = EmbeddedPackage.Load(Path.Combine(packageFolder, "package.json")); }
+        catch (Exception e) when (e is System.Text.Json.JsonException or FormatException) { return Enumerable.Empty<string>(); }
+        return package.Samples.Where(s => s.IsUnderSamplesFolder).Select(s => s.Path).OfType<string>()
+            .Select(path => Path.GetFullPath(Path.Combine(packageFolder, path))).Distinct(StringComparer.Ordinal).ToList();
+    }
+
+    /// <summary>A file of a package sample: it lands in other projects, so it may use packages this project lacks.</summary>
+    bool InSample(string absolutePath) =>
+        _sampleRoots.Any(root => absolutePath.StartsWith(root + Path.DirectorySeparatorChar, StringComparison.Ordinal));
 }

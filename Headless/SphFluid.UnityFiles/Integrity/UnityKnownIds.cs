@@ -48,6 +48,18 @@ public static class UnityKnownIds
         ["UnityEngine.UI"] = "com.unity.ugui",
         ["UnityEditor.UI"] = "com.unity.ugui",
         ["Unity.ugui"] = "com.unity.ugui",
+        ["Unity.RenderPipelines.Core.Runtime"] = "com.unity.render-pipelines.core",
+        ["Unity.RenderPipelines.Universal.Runtime"] = "com.unity.render-pipelines.universal",
+    };
+
+    /// <summary>Packages a package brings with it (its package.json dependencies; URP 14.0.7 as seen in
+    /// Unity-Technologies/Graphics, Packages/com.unity.render-pipelines.universal/package.json).</summary>
+    public static readonly IReadOnlyDictionary<string, IReadOnlySet<string>> PackageDependencies = new Dictionary<string, IReadOnlySet<string>>
+    {
+        ["com.unity.render-pipelines.universal"] = new HashSet<string>
+        {
+            "com.unity.render-pipelines.core", "com.unity.shadergraph", "com.unity.burst", "com.unity.mathematics",
+        },
     };
 
     /// <summary>asmdef GUIDs of package assemblies (for <c>"GUID:..."</c> references).</summary>
@@ -58,6 +70,9 @@ public static class UnityKnownIds
         ["dc04f38471c3a459fb4d31124ee9127d"] = "Unity.InputSystem.TestFramework",
         ["27619889b8ba8c24980f49ee34dbb44a"] = "UnityEngine.TestRunner",
         ["0acc523941302664db1f4e527237feb3"] = "UnityEditor.TestRunner",
+        // needle-mirror/com.unity.render-pipelines.core and .universal at 13.0.0, Runtime/*.asmdef.meta (unchanged in 14.x)
+        ["df380645f10b7bc4b97d4f5eb6303d95"] = "Unity.RenderPipelines.Core.Runtime",
+        ["15fc0a57446b3144c949da3e2b9737a9"] = "Unity.RenderPipelines.Universal.Runtime",
     };
 
     /// <summary>
@@ -77,7 +92,37 @@ public static class UnityKnownIds
         ["5f7201a12d95ffc409449d95f23cf332"] = ("Text", "com.unity.ugui"),
         ["fe87c0e1cc204ed48ad3b37840f39efc"] = ("Image", "com.unity.ugui"),
         ["4e29b1a8efbd4b44bb3f3716e73f07ff"] = ("Button", "com.unity.ugui"),
+        // URP: what a pipeline asset, its renderer data and a URP scene reference. A GUID is fixed once Unity writes
+        // the package's .meta, so these hold for every URP version that ships the file. From the .meta files of
+        // needle-mirror/com.unity.render-pipelines.universal at tag 13.0.0 unless marked:
+        ["bf2edee5c58d82540a51f03df9d42094"] = ("UniversalRenderPipelineAsset", Urp),
+        ["de640fe3d0db1804a85f9fc8f5cadab6"] = ("UniversalRendererData", Urp),
+        ["a79441f348de89743a2939f4d699eac1"] = ("UniversalAdditionalCameraData", Urp),
+        ["474bcb49853aa07438625e644c072ee6"] = ("UniversalAdditionalLightData", Urp),
+        ["41439944d30ece34e96484bdb6645b55"] = ("Runtime/Data/PostProcessData.asset", Urp),
+        ["60e1133243b97e347b653163a8c01b64"] = ("Runtime/Data/XRSystemData.asset", Urp),
+        ["c17132b1f77d20942aa75f8429c0f8bc"] = ("Shaders/Utils/Blit.shader", Urp),
+        ["d6dae50ee9e1bfa4db75f19f99355220"] = ("Shaders/Utils/CopyDepth.shader", Urp),
+        ["04c410c9937594faa893a11dceb85f7e"] = ("Shaders/Utils/Sampling.shader", Urp),
+        ["e9155b26e1bc55942a41e518703fe304"] = ("Shaders/Utils/StencilDeferred.shader", Urp),
+        ["e6e9a19c3678ded42a3bc431ebef7dbd"] = ("Shaders/Utils/FallbackError.shader", Urp),
+        ["5fd9a8feb75a4b5894c241777f519d4e"] = ("Shaders/Utils/MaterialError.shader", Urp),
+        ["93446b5c5339d4f00b85c159e1159b7c"] = ("Shaders/Utils/CoreBlit.shader", Urp),
+        ["d104b2fc1ca6445babb8e90b0758136b"] = ("Shaders/Utils/CoreBlitColorAndDepth.shader", Urp),
+        ["c56b7e0d4c7cb484e959caeeedae9bbf"] = ("Shaders/CameraMotionVectors.shader", Urp),
+        ["7b3ede40266cd49a395def176e1bc486"] = ("Shaders/ObjectMotionVectors.shader", Urp),
+        ["6cda457ac28612740adb23da5d39ea92"] = ("Shaders/PostProcessing/LensFlareDataDriven.shader", Urp),
+        ["cf852408f2e174538bcd9b7fda1c5ae7"] = ("Shaders/Debug/DebugReplacement.shader", Urp),
+        // Files added after 13.0.0, as Unity wrote them into URP's own sample settings (Unity-Technologies/Graphics,
+        // Samples~/URPPackageSamples/SharedAssets/Settings/PackageSamplesURPAsset.asset and SamplesForwardRenderer.asset):
+        ["573620ae32aec764abd4d728906d2587"] = ("Shaders/Debug/HDRDebugView.shader", Urp),
+        ["e3d24661c1e055f45a7560c033dbb837"] = ("Textures/BlueNoise64/L/LDR_LLL1_0.png", Urp),
+        ["f9ee4ed84c1d10c49aabb9b210b0fc44"] = ("Textures/BayerMatrix.png", Urp),
+        // As a Unity-written URP global settings asset names it (m_BlitHDROverlay), quoted in a public project's log:
+        ["a89bee29cffa951418fc1e2da94d1959"] = ("Shaders/Utils/BlitHDROverlay.shader", Urp),
     };
+
+    const string Urp = "com.unity.render-pipelines.universal";
 
     /// <summary>uGUI's input module for the legacy Input Manager: throws every frame when only the Input System is active.</summary>
     public const string StandaloneInputModule = "StandaloneInputModule";

@@ -426,9 +426,9 @@ namespace SphFluid.Runtime
             if (_universalMaterial == null)
             {
                 _universalMaterial = new Material(_resources.UniversalParticleShader) { name = particleMaterial.name + " (URP)", hideFlags = HideFlags.DontSave };
-                // Read by name: the project must compile without the URP package.
-                if (pipeline.GetType().GetProperty("supportsCameraOpaqueTexture")?.GetValue(pipeline) is bool opaque && !opaque)
-                    Debug.LogWarning($"Fluid '{name}': URP asset '{pipeline.name}' has Opaque Texture off; the liquid shows no scene behind it unless the camera turns it on (Rendering > Opaque Texture)", this);
+                string missing = UniversalOpaqueTexture.MissingReason(pipeline, Camera.main);
+                if (missing != null)
+                    Debug.LogWarning($"Fluid '{name}': {missing}; the liquid shows no scene behind it", this);
             }
             _universalMaterial.CopyPropertiesFromMaterial(particleMaterial); // inspector edits of the material carry over
             return _universalMaterial;

@@ -40,6 +40,61 @@ namespace SphFluid.Tests.Integrity
             project.Write($"Packages/{folder}/package.json.meta", "fileFormatVersion: 2\nguid: " + Guid.NewGuid().ToString("N") + "\nTextScriptImporter:\n  externalObjects: {}\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n");
         }
 
+        const string SamplePackage = "com.game.water";
+        const string SampleFolder = "Packages/com.game.water/Samples~/Pond";
+        const string SampleScene = SampleFolder + "/Pond.unity";
+        const string SampleAsset = SampleFolder + "/Settings/PondURP.asset";
+        const string UrpAssetScript = "bf2edee5c58d82540a51f03df9d42094";
+
+        /// <summary>
+        /// An embedded package with one sample under Samples~, as Package Manager offers it: the sample folder has no
+        /// .meta, everything in it has one; its scene uses the project's script, its URP asset uses URP's script, and
+        /// the project's manifest does not list URP (the sample lands in projects that have it).
+        /// </summary>
+        static void AddPackageWithSample(SyntheticProject project, string samplesJson = null)
+        {
+            samplesJson ??= "[ { \"displayName\": \"Pond\", \"description\": \"A pond.\", \"path\": \"Samples~/Pond\" } ]";
+            string json = "{\n  \"name\": \"" + SamplePackage + "\",\n  \"version\": \"1.0.0\",\n  \"unity\": \"2022.3\",\n  \"samples\": " + samplesJson + "\n}\n";
+            project.Write("Packages/" + SamplePackage + "/package.json", json);
+            project.Write("Packages/" + SamplePackage + "/package.json.meta", "fileFormatVersion: 2\nguid: " + Guid.NewGuid().ToString("N") + "\n" + TextImporter);
+            project.Write(SampleScene, project.Read(SyntheticProject.ScenePath));
+            project.Write(SampleScene + ".meta", "fileFormatVersion: 2\nguid: " + Guid.NewGuid().ToString("N") + "\n" + SyntheticProject.DefaultImporter);
+            project.Write(SampleFolder + "/Settings.meta", "fileFormatVersion: 2\nguid: " + Guid.NewGuid().ToString("N") + "\n" + SyntheticProject.FolderImporter);
+            project.Write(SampleAsset,
+                "%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n--- !u!114 &11400000\nMonoBehaviour:\n  m_ObjectHideFlags: 0\n  m_GameObject: {fileID: 0}\n" +
+                "  m_Enabled: 1\n  m_EditorHideFlags: 0\n  m_Script: {fileID: 11500000, guid: " + UrpAssetScript + ", type: 3}\n  m_Name: PondURP\n" +
+                "  m_EditorClassIdentifier: \n  k_AssetVersion: 11\n  m_RequireOpaqueTexture: 1\n");
+            project.Write(SampleAsset + ".meta", "fileFormatVersion: 2\nguid: " + Guid.NewGuid().ToString("N") + "\n" + AssetImporter);
+        }
+
+        const string TextImporter = "TextScriptImporter:\n  externalObjects: {}\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n";
+        const string AssetImporter = "NativeFormatImporter:\n  externalObjects: {}\n  mainObjectFileID: 11400000\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n";
+
+        [Test]
+        public void A_package_sample_is_checked_like_assets_and_may_use_a_package_the_project_lacks()
+        {
+            using (var project = new SyntheticProject())
+            {
+                AddPackageWithSample(project);
+                var problems = AssetIntegrity.Check(project.Root);
+                Assert.That(problems.Count, Is.Zero, AssetIntegrity.Describe(problems));
+            }
+        }
+
+        [Test]
+        public void A_runtime_asmdef_may_reference_an_optional_package_it_names_in_version_defines()
+        {
+            using (var project = new SyntheticProject())
+            {
+                project.Replace(SyntheticProject.RuntimeAsmdefPath, "\"Unity.InputSystem\"\n    ]",
+                    "\"Unity.InputSystem\",\n        \"Unity.RenderPipelines.Core.Runtime\",\n        \"Unity.RenderPipelines.Universal.Runtime\"\n    ],\n" +
+                    "    \"versionDefines\": [\n        {\n            \"name\": \"com.unity.render-pipelines.universal\",\n            \"expression\": \"14.0.0\",\n" +
+                    "            \"define\": \"GAME_URP\"\n        }\n    ]");
+                var problems = AssetIntegrity.Check(project.Root);
+                Assert.That(problems.Count, Is.Zero, AssetIntegrity.Describe(problems));
+            }
+        }
+
         const string ShaderImporter = "ShaderImporter:\n  externalObjects: {}\n  defaultTextures: []\n  nonModifiableTextures: []\n  preprocessorOverride: 0\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n";
 
         const string InputActionsImporter = "ScriptedImporter:\n  internalIDToNameTable: []\n  externalObjects: {}\n  serializedVersion: 2\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n" +
@@ -195,6 +250,65 @@ namespace SphFluid.Tests.Integrity
                 scene, "sets 'rtae'");
             yield return Case("legacy Input class with Input System only", p => p.Replace(script, "public float rate = 2f;", "public float rate = 2f;\n        bool Fire => Input.GetKey(KeyCode.Space);"),
                 script, "legacy Input Manager ('Input.GetKey')");
+            yield return Case("sample path that is no folder", p => AddPackageWithSample(p,
+                    "[ { \"displayName\": \"Pond\", \"path\": \"Samples~/Pond\" }, { \"displayName\": \"Lake\", \"path\": \"Samples~/Lake\" } ]"),
+                "Packages/com.game.water/package.json", "'Samples~/Lake', which is no folder in the package");
+            yield return Case("sample path outside Samples~", p => AddPackageWithSample(p,
+                    "[ { \"displayName\": \"Pond\", \"path\": \"Samples~/Pond\" }, { \"displayName\": \"Lake\", \"path\": \"Lake\" } ]"),
+                "Packages/com.game.water/package.json", "must be a folder under Samples~/");
+            yield return Case("sample without a display name", p => AddPackageWithSample(p, "[ { \"path\": \"Samples~/Pond\" } ]"),
+                "Packages/com.game.water/package.json", "has no \"displayName\"");
+            yield return Case("undeclared folder under Samples~", p =>
+                {
+                    AddPackageWithSample(p);
+                    p.Write("Packages/com.game.water/Samples~/Lake/Lake.unity", p.Read(SampleScene));
+                },
+                "Packages/com.game.water/Samples~/Lake", "no \"samples\" entry of package.json names it");
+            yield return Case("sample file without a meta", p =>
+                {
+                    AddPackageWithSample(p);
+                    p.Delete(SampleAsset + ".meta");
+                },
+                SampleAsset, "has no .meta");
+            yield return Case("sample scene with an unresolved guid", p =>
+                {
+                    AddPackageWithSample(p);
+                    p.Replace(SampleScene, p.GuidOf(script), Guid.NewGuid().ToString("N"));
+                },
+                SampleScene, "no .meta in the project has");
+            yield return Case("sample scene with a broken back-reference", p =>
+                {
+                    AddPackageWithSample(p);
+                    p.Replace(SampleScene, "SphereCollider:\n  m_GameObject: {fileID: 200}", "SphereCollider:\n  m_GameObject: {fileID: 100}");
+                },
+                SampleScene, "whose m_GameObject is");
+            yield return Case("sample YAML merge marker", p =>
+                {
+                    AddPackageWithSample(p);
+                    p.Replace(SampleAsset, "  m_RequireOpaqueTexture: 1\n", "<<<<<<< HEAD\n  m_RequireOpaqueTexture: 1\n");
+                },
+                SampleAsset, "Unity would refuse");
+            yield return Case("meta beside Samples~", p =>
+                {
+                    AddPackageWithSample(p);
+                    p.Write("Packages/com.game.water/Samples~.meta", "fileFormatVersion: 2\nguid: " + Guid.NewGuid().ToString("N") + "\n" + SyntheticProject.FolderImporter);
+                },
+                "Packages/com.game.water/Samples~.meta", "takes no .meta");
+            yield return Case("URP object used by an asset outside a sample without URP", p =>
+                    p.AddAsset("Assets/Game/PondURP.asset", "%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n--- !u!114 &11400000\nMonoBehaviour:\n" +
+                        "  m_Script: {fileID: 11500000, guid: " + UrpAssetScript + ", type: 3}\n  m_Name: PondURP\n", AssetImporter),
+                "Assets/Game/PondURP.asset", "needs com.unity.render-pipelines.universal");
+            yield return Case("URP assembly without URP or a version define", p =>
+                    p.Replace(SyntheticProject.RuntimeAsmdefPath, "\"Unity.InputSystem\"\n", "\"Unity.InputSystem\",\n        \"Unity.RenderPipelines.Universal.Runtime\"\n"),
+                SyntheticProject.RuntimeAsmdefPath, "needs package com.unity.render-pipelines.universal");
+            yield return Case("version define that is no symbol", p =>
+                    p.Replace(SyntheticProject.RuntimeAsmdefPath, "    ]\n}", "    ],\n    \"versionDefines\": [ { \"name\": \"com.unity.render-pipelines.universal\", \"expression\": \"14.0.0\", \"define\": \"GAME-URP\" } ]\n}"),
+                SyntheticProject.RuntimeAsmdefPath, "defines 'GAME-URP', which is no C# symbol");
+            yield return Case("version define with a malformed range", p =>
+                    p.Replace(SyntheticProject.RuntimeAsmdefPath, "    ]\n}", "    ],\n    \"versionDefines\": [ { \"name\": \"com.unity.render-pipelines.universal\", \"expression\": \"[14.0\", \"define\": \"GAME_URP\" } ]\n}"),
+                SyntheticProject.RuntimeAsmdefPath, "no version or version range");
+            yield return Case("project asset claiming a URP guid", p => p.Replace(script + ".meta", p.GuidOf(script), UrpAssetScript),
+                script + ".meta", "belongs to a Unity package");
             yield return Case("bin folder under Assets", p => Directory.CreateDirectory(p.Abs("Assets/Game/Runtime/bin")),
                 "Assets/Game/Runtime/bin", "build output folder");
             yield return Case("csproj under Assets", p => p.AddAsset("Assets/Game/Runtime/Game.csproj", "<Project />", SyntheticProject.DefaultImporter),

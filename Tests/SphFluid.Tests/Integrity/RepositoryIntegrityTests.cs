@@ -4,8 +4,11 @@ using System.Linq;
 using System.Reflection;
 using System.Xml.Linq;
 using NUnit.Framework;
+using SphFluid.Headless.Scenes;
 using SphFluid.UnityFiles.Assets;
 using SphFluid.UnityFiles.Integrity;
+using SphFluid.UnityFiles.Scenes;
+using SphFluid.UnityFiles.Yaml;
 
 namespace SphFluid.Tests.Integrity
 {
@@ -68,6 +71,85 @@ namespace SphFluid.Tests.Integrity
                         $"{Path.GetFileName(file)} references {reference}, which a project that adds only the package lacks");
             Assert.That(Name("Assets/FluidDemo/Scripts/SphFluid.Demo.asmdef"), Is.EqualTo("SphFluid.Demo"));
             Assert.That(Directory.GetFiles(At("Assets/FluidDemo/Scenes"), "*.unity"), Is.Not.Empty);
+        }
+
+        const string UrpSample = "Packages/com.sphfluid.fluid/Samples~/UniversalRenderPipeline";
+
+        [Test]
+        public void The_package_offers_a_urp_sample_that_the_built_in_demo_does_not_need()
+        {
+            var package = EmbeddedPackage.Load(At("Packages/com.sphfluid.fluid/package.json"));
+            Assert.That(package.Samples.Select(s => s.Path), Is.EqualTo(new[] { "Samples~/UniversalRenderPipeline" }));
+            Assert.That(package.Samples[0].DisplayName, Is.EqualTo("Universal Render Pipeline"));
+            Assert.That(package.Dependencies.Keys, Has.No.Member("com.unity.render-pipelines.universal"), "URP stays optional for the package");
+            Assert.That(PackageManifest.Load(At("Packages/manifest.json")).Has("com.unity.render-pipelines.universal"), Is.False,
+                "the Built-in demo project must not be forced onto URP");
+            Assert.That(File.ReadAllText(At(UrpSample + "/README.md")), Does.Contain("Graphics").And.Contain("Quality").And.Contain("FluidURP"),
+                "the sample says where its pipeline asset goes");
+        }
+
+        [Test]
+        public void The_urp_sample_asset_turns_on_the_opaque_texture_and_renders_with_its_own_renderer()
+        {
+            var asset = UnityYamlFile.Load(At(UrpSample + "/Settings/FluidURP.asset")).Documents.Single();
+            Assert.That(asset.ScriptGuid, Is.EqualTo("bf2edee5c58d82540a51f03df9d42094"), "UniversalRenderPipelineAsset");
+            Assert.That(asset.Root.GetInt("k_AssetVersion"), Is.EqualTo(11), "the asset version URP 14 writes");
+            Assert.That(asset.Root.GetInt("m_RequireOpaqueTexture"), Is.EqualTo(1), "the refraction reads _CameraOpaqueTexture");
+            var renderers = asset.Root["m_RendererDataList"].Items;
+            var renderer = renderers[asset.Root.GetInt("m_DefaultRendererIndex")].GetReference("");
+            Assert.That(renderer, Is.EqualTo(new UnityReference(11400000, UnityMeta.GuidOf(At(UrpSample + "/Settings/FluidURP_Renderer.asset")), 2)));
+            var rendererData = UnityYamlFile.Load(At(UrpSample + "/Settings/FluidURP_Renderer.asset")).Documents.Single();
+            Assert.That(rendererData.ScriptGuid, Is.EqualTo("de640fe3d0db1804a85f9fc8f5cadab6"), "UniversalRendererData");
+            Assert.That(rendererData.Root.GetInt("m_RenderingMode"), Is.Zero, "Forward");
+        }
+
+        [Test]
+        public void The_urp_sample_scene_holds_the_oil_and_water_fluid_and_only_package_scripts()
+        {
+            var project = new UnityProject(RepoRoot);
+            var scene = UnityScene.Load(At(UrpSample + "/OilAndWaterURP.unity"));
+            Assert.That(scene.Behaviours(project.ScriptGuid("Fluid")).Count(), Is.EqualTo(1));
+            Assert.That(scene.Behaviours(project.ScriptGuid("FluidContainer")).Count(), Is.EqualTo(1));
+            var phases = scene.Behaviours(project.ScriptGuid("SpawnBox")).Select(b => b.Root.GetString(RuntimeScripts.Spawn + ".Phase.Name")).OrderBy(n => n, StringComparer.Ordinal);
+            Assert.That(phases, Is.EqualTo(new[] { "Oil", "Water" }));
+            Assert.That(scene.FindGameObject("Main Camera"), Is.Not.Null);
+            Assert.That(scene.FindGameObject("Directional Light"), Is.Not.Null);
+            foreach (var behaviour in scene.Behaviours())
+                Assert.That(project.AssetPathOf(behaviour.ScriptGuid), Does.StartWith("Packages/com.sphfluid.fluid/Runtime/"),
+                    $"{behaviour}: an imported sample can use only what the package ships (the demo's scripts stay in Assets/)");
+        }
+
+        [Test]
+        public void The_runtime_assembly_uses_urp_only_when_the_project_has_it()
+        {
+            var runtime = AssemblyDefinition.Load(At("Packages/com.sphfluid.fluid/Runtime/SphFluid.Runtime.asmdef"));
+            Assert.That(runtime.VersionDefines, Is.EqualTo(new[] { new VersionDefine("com.unity.render-pipelines.universal", "14.0.0", "SPHFLUID_URP") }));
+            Assert.That(runtime.References, Does.Contain("Unity.RenderPipelines.Universal.Runtime").And.Contain("Unity.RenderPipelines.Core.Runtime"));
+            // A name outside the symbol's branch would break every project without URP.
+            var unguarded = Directory.GetFiles(At("Packages/com.sphfluid.fluid/Runtime"), "*.cs", SearchOption.AllDirectories)
+                .SelectMany(f => UrpLinesOutsideTheDefine(f).Select(line => $"{Path.GetRelativePath(RepoRoot, f)}:{line}"))
+                .ToList();
+            Assert.That(unguarded, Is.Empty, "URP names outside #if SPHFLUID_URP:\n  " + string.Join("\n  ", unguarded));
+            var urpCode = Directory.GetFiles(At("Packages/com.sphfluid.fluid/Runtime"), "*.cs", SearchOption.AllDirectories)
+                .Where(f => File.ReadAllText(f).Contains("#if SPHFLUID_URP", StringComparison.Ordinal)).Select(Path.GetFileName);
+            Assert.That(urpCode, Is.EqualTo(new[] { "UniversalOpaqueTexture.cs" }));
+        }
+
+        /// <summary>Line numbers that name URP's API where SPHFLUID_URP is not known to be defined.</summary>
+        static System.Collections.Generic.IEnumerable<int> UrpLinesOutsideTheDefine(string file)
+        {
+            var guarded = new System.Collections.Generic.Stack<bool>();
+            var lines = File.ReadAllLines(file);
+            for (int i = 0; i < lines.Length; i++)
+            {
+                var line = lines[i].Trim();
+                if (line.StartsWith("#if", StringComparison.Ordinal)) guarded.Push(line == "#if SPHFLUID_URP");
+                else if (line.StartsWith("#el", StringComparison.Ordinal) && guarded.Count > 0) { guarded.Pop(); guarded.Push(false); }
+                else if (line.StartsWith("#endif", StringComparison.Ordinal) && guarded.Count > 0) guarded.Pop();
+                else if (!guarded.Contains(true) && !line.StartsWith("//", StringComparison.Ordinal) &&
+                         System.Text.RegularExpressions.Regex.IsMatch(line, @"Rendering\.Universal|UniversalAdditional\w+Data|UniversalRenderPipeline\w*|CameraRenderType|CameraOverrideOption"))
+                    yield return i + 1;
+            }
         }
 
         [Test]

@@ -78,7 +78,7 @@ namespace SphFluid.Tests.Integrity
         [Test]
         public void EveryShippedSceneSerializesEveryDeclaredSettingInDeclarationOrder()
         {
-            foreach (string scene in Directory.GetFiles(Path.Combine(GpuTestDevice.RepoRoot, "Assets", "FluidDemo", "Scenes"), "*.unity"))
+            foreach (string scene in ShippedScenes.All())
             {
                 var lines = File.ReadAllLines(scene);
                 int at = Array.IndexOf(lines, "  " + RuntimeScripts.Settings + ":");

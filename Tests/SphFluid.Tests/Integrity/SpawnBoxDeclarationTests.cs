@@ -135,7 +135,7 @@ namespace SphFluid.Tests.Integrity
                 expected.Add(d.Path);
             }
             int boxes = 0;
-            foreach (string file in Directory.GetFiles(Path.Combine(GpuTestDevice.RepoRoot, "Assets", "FluidDemo", "Scenes"), "*.unity"))
+            foreach (string file in ShippedScenes.All())
             {
                 foreach (var box in UnityScene.Load(file).Behaviours(guid))
                 {
@@ -147,7 +147,7 @@ namespace SphFluid.Tests.Integrity
                     boxes++;
                 }
             }
-            Assert.That(boxes, Is.EqualTo(9), "the shipped scenes' spawn boxes");
+            Assert.That(boxes, Is.EqualTo(11), "the shipped scenes' spawn boxes: 9 in the demo, 2 in the URP sample");
         }
 
         [TestCaseSource(nameof(ReadablePaths))]
