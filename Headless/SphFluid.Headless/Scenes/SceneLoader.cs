@@ -63,9 +63,9 @@ public static class SceneLoader
         throw new SceneException($"{scenePath}: no Unity project (Assets/ + ProjectSettings/) found above the scene to resolve its script guids");
     }
 
-    /// <summary>One scene's reading. The Fluid is found first (without it there is nothing to read); the container is
-    /// found after the shaders, transforms and settings are checked, so a scene with several faults is refused for the
-    /// same one as before, and is handed on to what names it.</summary>
+    /// <summary>One scene's reading. The Fluid is found first (without it there is nothing to read); the container only
+    /// after the shaders, transforms and settings are checked, so that a scene with several faults is refused for the
+    /// first in that order, and its GameObject is then handed to what names it.</summary>
     sealed class Reader
     {
         readonly string path;
