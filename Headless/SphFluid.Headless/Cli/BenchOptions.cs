@@ -4,9 +4,9 @@ using System.CommandLine;
 namespace SphFluid.Headless.Cli;
 
 /// <summary>The arguments of <c>sphfluid bench</c>.</summary>
-public sealed class BenchOptions
+public sealed class BenchOptions(string scenePath)
 {
-    public string ScenePath { get; set; }
+    public string ScenePath { get; } = scenePath;
 
     /// <summary>Particle counts to measure (the spawn spacing is scaled to reach each); empty = the scene as it is.</summary>
     public List<int> Particles { get; } = new();
@@ -17,13 +17,14 @@ public sealed class BenchOptions
     /// <summary>Untimed sub-steps first (shader compilation, caches, the fluid leaving its lattice).</summary>
     public int Warmup { get; set; } = 5;
 
-    public string DeviceName { get; set; }
+    /// <summary>Case-insensitive substring of the Vulkan adapter name; null = SPHFLUID_VULKAN_DEVICE, else the best.</summary>
+    public string? DeviceName { get; set; }
 
     /// <summary>Leave out the planner-savings runs (one per effect the scene's plan leaves out).</summary>
     public bool SkipSavings { get; set; }
 
     /// <summary>Folder for the scaling chart; default Output/&lt;scene name&gt;-bench.</summary>
-    public string OutputDirectory { get; set; }
+    public string? OutputDirectory { get; set; }
 
     /// <summary>The pressure solver and tolerance given on the command line (default: the scene's).</summary>
     public SolverChoice Solver { get; set; } = new();
@@ -76,9 +77,11 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
 
     public BenchOptions Read(ParseResult r)
     {
-        var options = new BenchOptions
+        string? scene = r.GetValue(_scene);
+        if (string.IsNullOrWhiteSpace(scene))
+            throw new UsageException($"{Verb}: the scene file argument is missing (e.g. sphfluid bench Assets/FluidDemo/Scenes/DamBreak.unity)");
+        var options = new BenchOptions(scene)
         {
-            ScenePath = r.GetValue(_scene),
             Steps = r.GetValue(_steps),
             Warmup = r.GetValue(_warmup),
             DeviceName = r.GetValue(_device),
@@ -86,9 +89,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
             SkipSavings = r.GetValue(_skipSavings),
             Solver = _solver.Read(r),
         };
-        if (r.GetResult(_particles) != null) options.Particles.AddRange(r.GetValue(_particles));
-        if (string.IsNullOrWhiteSpace(options.ScenePath))
-            throw new UsageException($"{Verb}: the scene file argument is missing (e.g. sphfluid bench Assets/FluidDemo/Scenes/DamBreak.unity)");
+        if (OptionKinds.Given(r, _particles) is { } particles) options.Particles.AddRange(particles);
         return options;
     }
 }

@@ -80,6 +80,11 @@ public static class OptionKinds
         return option;
     }
 
+    /// <summary>The values of a list option, or null when it was not given (the library reads an absent list as an
+    /// empty one). A clean parse never leaves a given list without its values: an empty or bad one is refused first.</summary>
+    public static List<T>? Given<T>(ParseResult result, Option<List<T>> option) =>
+        result.GetResult(option) != null ? result.GetValue(option) : null;
+
     /// <summary>A switch: takes no value (<c>--quiet=yes</c> is refused before parsing, see <see cref="SphfluidCommandLine"/>).</summary>
     public static Option<bool> Flag(string name, string description) =>
         new(name) { Description = description, Arity = ArgumentArity.Zero };
@@ -97,7 +102,9 @@ public static class OptionKinds
         return scene;
     }
 
-    static T Guard<T>(ArgumentResult result, string command, string name, Func<string, T> parse)
+    /// <summary>Parses the option's last token; a refusal is recorded on the result (the parse then fails) and the
+    /// value returned with it is never read.</summary>
+    static T? Guard<T>(ArgumentResult result, string command, string name, Func<string, T> parse)
     {
         if (result.Tokens.Count == 0)
         {

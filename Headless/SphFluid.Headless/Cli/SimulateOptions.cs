@@ -4,7 +4,7 @@ using System.CommandLine;
 namespace SphFluid.Headless.Cli;
 
 /// <summary>The arguments of <c>sphfluid simulate</c>.</summary>
-public sealed class SimulateOptions
+public sealed class SimulateOptions(string scenePath)
 {
     public const double DefaultSeconds = 3.0;
     public const double DefaultFrameSeconds = 1.0 / 60.0;
@@ -16,7 +16,7 @@ public sealed class SimulateOptions
     /// </summary>
     public const double MinInterval = 1e-4;
 
-    public string ScenePath { get; set; }
+    public string ScenePath { get; } = scenePath;
 
     /// <summary>Simulated seconds to run (ignored when <see cref="Frames"/> is set).</summary>
     public double Seconds { get; set; } = DefaultSeconds;
@@ -27,8 +27,8 @@ public sealed class SimulateOptions
     /// <summary>Real time given to each frame (as a 60 Hz Unity frame), s; the solver covers it in adaptive sub-steps.</summary>
     public double FrameSeconds { get; set; } = DefaultFrameSeconds;
 
-    /// <summary>Output folder; default Output/&lt;scene name&gt;.</summary>
-    public string OutputDirectory { get; set; }
+    /// <summary>Output folder; null = Output/&lt;scene name&gt;.</summary>
+    public string? OutputDirectory { get; set; }
 
     public double SnapshotEvery { get; set; } = 0.25;
     public double DiagnosticsEvery { get; set; } = 0.25;
@@ -39,8 +39,8 @@ public sealed class SimulateOptions
     /// <summary>Multiplies the scene's particle count (the spacing shrinks by its cube root).</summary>
     public double ParticlesScale { get; set; } = 1.0;
 
-    /// <summary>Case-insensitive substring of the Vulkan adapter name.</summary>
-    public string DeviceName { get; set; }
+    /// <summary>Case-insensitive substring of the Vulkan adapter name; null = SPHFLUID_VULKAN_DEVICE, else the best.</summary>
+    public string? DeviceName { get; set; }
 
     public bool TopView { get; set; }
     public int ImageWidth { get; set; } = 640;
@@ -115,9 +115,11 @@ the back wall, spray ignored.
     /// <summary>The options of a parse without errors; the checks that span options are made here.</summary>
     public SimulateOptions Read(ParseResult r)
     {
-        var options = new SimulateOptions
+        string? scene = r.GetValue(_scene);
+        if (string.IsNullOrWhiteSpace(scene))
+            throw new UsageException($"{Verb}: the scene file argument is missing (e.g. sphfluid simulate Assets/FluidDemo/Scenes/OilAndWater.unity)");
+        var options = new SimulateOptions(scene)
         {
-            ScenePath = r.GetValue(_scene),
             Seconds = r.GetValue(_seconds),
             Frames = r.GetValue(_steps),
             OutputDirectory = r.GetValue(_out),
@@ -132,8 +134,6 @@ the back wall, spray ignored.
             Solver = _solver.Read(r),
         };
         if (r.GetResult(_frameSeconds) != null) options.FrameSeconds = r.GetValue(_frameSeconds);
-        if (string.IsNullOrWhiteSpace(options.ScenePath))
-            throw new UsageException($"{Verb}: the scene file argument is missing (e.g. sphfluid simulate Assets/FluidDemo/Scenes/OilAndWater.unity)");
         if (r.GetResult(_seconds) is { Implicit: false } && options.Frames > 0)
             throw new UsageException($"{Verb}: give either --seconds or --steps, not both");
         return options;

@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using System.CommandLine;
 using System.CommandLine.Help;
@@ -68,7 +69,7 @@ energetic than the scene allows (the message names the time, phase and figure)."
         {
             generated.Invoke(parseResult);
             var output = parseResult.InvocationConfiguration.Output;
-            if (details.TryGetValue(parseResult.CommandResult.Command, out string text))
+            if (details.TryGetValue(parseResult.CommandResult.Command, out string? text))
             {
                 output.WriteLine(text);
                 output.WriteLine();
@@ -84,21 +85,22 @@ energetic than the scene allows (the message names the time, phase and figure)."
         RefuseFlagValues(args);
         var result = Root.Parse(args);
         if (result.Action is DetailedHelp) return result;
-        string error = FirstError(result);
+        string? error = FirstError(result);
         if (error != null) throw new UsageException(error);
         return result;
     }
 
     /// <summary>The options of one command without running it (tests and scripts that build runs themselves).</summary>
-    public static T ParseOnly<T>(string command, string[] args)
+    public static T ParseOnly<T>(string command, string[] args) where T : class
     {
         var cli = new SphfluidCommandLine();
         var result = cli.Parse(new[] { command }.Concat(args).ToArray());
-        return (T)cli.Read(result);
+        return cli.Read(result) as T
+            ?? throw new ArgumentException($"'{command}' is not the sphfluid command that reads {typeof(T).Name}", nameof(command));
     }
 
     /// <summary>The options object of the parsed command (SimulateOptions, BenchOptions ...), null for the root.</summary>
-    public object Read(ParseResult result)
+    public object? Read(ParseResult result)
     {
         var command = result.CommandResult.Command;
         if (command == Simulate) return Simulate.Read(result);
@@ -128,10 +130,10 @@ energetic than the scene allows (the message names the time, phase and figure)."
         }
     }
 
-    string FirstError(ParseResult result)
+    string? FirstError(ParseResult result)
     {
         var command = result.CommandResult.Command;
-        string name = command == Root ? null : command.Name;
+        string? name = command == Root ? null : command.Name;
         // The project's own refusals first (they name the option and range), then unknown tokens: the library's
         // "Unrecognized command or argument" says less than what the token is.
         var own = result.Errors.FirstOrDefault(e => name != null && e.Message.StartsWith(name + ":", System.StringComparison.Ordinal));

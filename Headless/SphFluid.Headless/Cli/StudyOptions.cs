@@ -4,11 +4,16 @@ using System.CommandLine;
 namespace SphFluid.Headless.Cli;
 
 /// <summary>The arguments of <c>sphfluid study</c>: the matrix of configurations the accuracy-for-time study runs.</summary>
-public sealed class StudyOptions
+public sealed class StudyOptions(string scenePath)
 {
-    public string ScenePath { get; set; }
-    public string OutputDirectory { get; set; }
-    public string DeviceName { get; set; }
+    public string ScenePath { get; } = scenePath;
+
+    /// <summary>Output folder; null = Output/&lt;scene name&gt;-study.</summary>
+    public string? OutputDirectory { get; set; }
+
+    /// <summary>Case-insensitive substring of the Vulkan adapter name; null = SPHFLUID_VULKAN_DEVICE, else the best.</summary>
+    public string? DeviceName { get; set; }
+
     public bool Quick { get; set; }
 
     /// <summary>Simulated seconds per configuration.</summary>
@@ -85,9 +90,11 @@ real-time factor. Writes study.csv, study.md (the same table in Markdown) and st
     public StudyOptions Read(ParseResult r)
     {
         bool quick = r.GetValue(_quick);
-        var options = new StudyOptions
+        string? scene = r.GetValue(_scene);
+        if (string.IsNullOrWhiteSpace(scene))
+            throw new UsageException($"{Verb}: the scene file argument is missing (e.g. sphfluid study Assets/FluidDemo/Scenes/DamBreak.unity --quick)");
+        var options = new StudyOptions(scene)
         {
-            ScenePath = r.GetValue(_scene),
             OutputDirectory = r.GetValue(_out),
             DeviceName = r.GetValue(_device),
             Quick = quick,
@@ -99,13 +106,11 @@ real-time factor. Writes study.csv, study.md (the same table in Markdown) and st
             options.ParticleScales = new() { 0.25, 0.5 };
         }
         if (r.GetResult(_seconds) != null) options.Seconds = r.GetValue(_seconds);
-        if (r.GetResult(_stiffness) != null) options.StiffnessFactors = r.GetValue(_stiffness);
-        if (r.GetResult(_tolerances) != null) options.DensityTolerances = r.GetValue(_tolerances);
-        if (r.GetResult(_scales) != null) options.ParticleScales = r.GetValue(_scales);
-        if (r.GetResult(_cfl) != null) options.CflNumbers = r.GetValue(_cfl);
-        if (r.GetResult(_solvers) != null) options.Solvers = r.GetValue(_solvers);
-        if (string.IsNullOrWhiteSpace(options.ScenePath))
-            throw new UsageException($"{Verb}: the scene file argument is missing (e.g. sphfluid study Assets/FluidDemo/Scenes/DamBreak.unity --quick)");
+        options.StiffnessFactors = OptionKinds.Given(r, _stiffness) ?? options.StiffnessFactors;
+        options.DensityTolerances = OptionKinds.Given(r, _tolerances) ?? options.DensityTolerances;
+        options.ParticleScales = OptionKinds.Given(r, _scales) ?? options.ParticleScales;
+        options.CflNumbers = OptionKinds.Given(r, _cfl) ?? options.CflNumbers;
+        options.Solvers = OptionKinds.Given(r, _solvers) ?? options.Solvers;
         return options;
     }
 }

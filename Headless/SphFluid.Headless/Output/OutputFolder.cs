@@ -50,7 +50,7 @@ public sealed class OutputFolder
             var folder = new OutputFolder(path);
             var claimed = folder.ReadManifest();
             var foreign = Directory.EnumerateFiles(path)
-                .Select(IoPath.GetFileName)
+                .Select(file => IoPath.GetFileName(file))
                 .Where(name => IsRunnerName(name) && !claimed.Contains(name))
                 .OrderBy(name => name, StringComparer.Ordinal)
                 .ToList();

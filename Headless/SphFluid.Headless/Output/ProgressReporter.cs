@@ -9,7 +9,7 @@ namespace SphFluid.Headless.Output;
 /// Progress on stderr: a redrawn bar when stderr is a terminal, otherwise a plain line every tenth of the
 /// run (logs and CI stay readable).
 /// </summary>
-public sealed class ProgressReporter(TextWriter writer, bool interactive, double total, string unit)
+public sealed class ProgressReporter(TextWriter? writer, bool interactive, double total, string unit)
 {
     const int BarWidth = 30;
     readonly Stopwatch _clock = Stopwatch.StartNew();

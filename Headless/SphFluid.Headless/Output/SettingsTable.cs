@@ -14,7 +14,8 @@ public static class SettingsTable
 {
     public static string Markdown(Type settingsType)
     {
-        object defaults = Activator.CreateInstance(settingsType);
+        object defaults = Activator.CreateInstance(settingsType)
+            ?? throw new ArgumentException($"{settingsType.Name} has no instance to read its defaults from", nameof(settingsType));
         var table = new StringBuilder();
         table.Append("| group | field | unit | range | default | meaning |\n|---|---|---|---|---|---|\n");
         foreach (var setting in SettingRules.DeclaredPaths(settingsType))
@@ -32,14 +33,14 @@ public static class SettingsTable
         return table.ToString();
     }
 
-    static string Value(object value) => value switch
+    static string Value(object? value) => value switch
     {
         float f => Number(f),
         int i => i.ToString(CultureInfo.InvariantCulture),
         SettingVector v => $"({Number(v.x)}, {Number(v.y)}, {Number(v.z)})",
         SettingColor c => $"({Number(c.r)}, {Number(c.g)}, {Number(c.b)}, {Number(c.a)})",
         Enum e => $"{Convert.ToInt64(e, CultureInfo.InvariantCulture)} ({e})",
-        _ => Convert.ToString(value, CultureInfo.InvariantCulture),
+        _ => Convert.ToString(value, CultureInfo.InvariantCulture) ?? "",
     };
 
     static string Number(double v) => v.ToString("G6", CultureInfo.InvariantCulture);

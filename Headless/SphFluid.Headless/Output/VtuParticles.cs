@@ -92,7 +92,7 @@ public static class VtuParticles
         xml.WriteEndDocument();
     }
 
-    static void Array(XmlWriter xml, string type, string name, int components, byte[] data)
+    static void Array(XmlWriter xml, string type, string? name, int components, byte[] data)
     {
         xml.WriteStartElement("DataArray");
         xml.WriteAttributeString("type", type);

@@ -30,8 +30,8 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         PassNames.UploadContainer, PassNames.PlaceBoundary,
     };
 
-    /// <summary>A device to use instead of opening one (tests share theirs); not disposed here.</summary>
-    public IComputeDevice Device { get; init; }
+    /// <summary>A device to use instead of opening one (tests share theirs); not disposed here. Null: the run opens its own.</summary>
+    public IComputeDevice? Device { get; init; }
 
     /// <param name="FrameWallMs">Wall ms per sub-step when a 60 Hz frame's sub-steps are recorded and submitted
     /// together, as the simulation steps a frame: the host cost of a submit and wait is shared by the frame.</param>
@@ -52,7 +52,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         var targets = options.Particles.Count > 0 ? options.Particles.Select(n => (int?)n).ToList() : new List<int?> { null };
         var descriptions = targets.Select(target => Scaled(scene, target)).ToList();
         var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name + "-bench"), "--out", "bench");
-        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "bench", out IDisposable owned);
+        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "bench", out IDisposable? owned);
         try
         {
             stdout.WriteLine($"bench: {scene.Path} on {device.DeviceName}; {options.Warmup} warm-up + {options.Steps} timed sub-steps per row, one submit each");

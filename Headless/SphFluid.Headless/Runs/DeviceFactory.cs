@@ -13,7 +13,7 @@ public static class DeviceFactory
     /// <exception cref="UsageException">No adapter's name contains <paramref name="deviceName"/> (the --device argument).</exception>
     /// <summary>The device a run was given (tests share theirs; the run must not dispose it), else a new one that the
     /// caller disposes through <paramref name="owned"/>.</summary>
-    public static IComputeDevice GivenOrOpen(IComputeDevice given, string projectRoot, string deviceName, string command, out IDisposable owned)
+    public static IComputeDevice GivenOrOpen(IComputeDevice? given, string projectRoot, string? deviceName, string command, out IDisposable? owned)
     {
         owned = null;
         if (given != null) return given;
@@ -22,7 +22,7 @@ public static class DeviceFactory
         return opened;
     }
 
-    public static VulkanComputeDevice Open(string projectRoot, string deviceName, string command)
+    public static VulkanComputeDevice Open(string projectRoot, string? deviceName, string command)
     {
         var options = new VulkanComputeOptions
         {

@@ -10,8 +10,8 @@ namespace SphFluid.Headless.Runs;
 
 /// <summary>The outcome of a simulate run, as summary.txt and the closing line print it.</summary>
 public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, string Device, double SimulatedSeconds, int Frames,
-    int Substeps, int CappedFrames, double WallSeconds, int Snapshots, DiagnosticsReport First, DiagnosticsReport Last,
-    FluidMeasures Measures, string Failure, string OutputDirectory)
+    int Substeps, int CappedFrames, double WallSeconds, int Snapshots, DiagnosticsReport? First, DiagnosticsReport? Last,
+    FluidMeasures? Measures, string? Failure, string OutputDirectory)
 {
     static readonly CultureInfo C = CultureInfo.InvariantCulture;
 
@@ -21,7 +21,7 @@ public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, s
     public int Exports { get; init; }
 
     /// <summary>The settings the run simulated (after the command line's overrides).</summary>
-    public FluidSettings Settings { get; init; }
+    public required FluidSettings Settings { get; init; }
 
     public string OneLine() => string.Format(C,
         "{0} ({11}): {1:F3} s simulated in {2} frames / {3} sub-steps, {4:F1} s wall ({5:F2} s per simulated s){6}; {7} snapshot(s){8}{9}; mass {10}",
@@ -30,7 +30,7 @@ public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, s
         Exports > 0 ? $", {Exports} particle export(s)" : "",
         Measures != null && double.IsFinite(Measures.LayeringIndex) ? string.Format(C, "; layering index {0:F2}", Measures.LayeringIndex) : "",
         First != null && Last != null ? string.Format(C, "{0:G9} -> {1:G9} kg", First.TotalMass, Last.TotalMass) : "n/a",
-        SolverChoice.ShortName(Settings?.PressureSolver ?? PressureSolver.Wcsph));
+        SolverChoice.ShortName(Settings.PressureSolver));
 
     public string ToText()
     {
@@ -45,17 +45,16 @@ public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, s
         b.AppendLine($"result: {(Ok ? "ok" : "FAILED: " + Failure)}");
         if (First != null) b.AppendLine($"first diagnostics: {First}");
         if (Last != null) b.AppendLine($"last diagnostics:  {Last}");
-        if (Measures != null) AppendMeasures(b);
+        if (Measures != null) AppendMeasures(b, Measures);
         b.Append($"files: diagnostics.csv, frame_0000.png .. frame_{Snapshots - 1:D4}.png{(Simulation.Phases.Count > 1 ? ", layering.png, layering.svg" : "")}");
         if (Exports > 0) b.Append($", particles_0000.vtu/.ply .. particles_{Exports - 1:D4}.vtu/.ply, {ParticleExport.IndexName}");
         b.AppendLine(", summary.txt");
         return b.ToString();
     }
 
-    void AppendMeasures(StringBuilder b)
+    void AppendMeasures(StringBuilder b, FluidMeasures m)
     {
         var phases = Simulation.Phases;
-        var m = Measures;
         b.AppendLine(string.Format(C, "final measures at t = {0:F4} s (heights along -gravity from the container's lowest corner; layers within one spacing of a face):", m.Time));
         b.AppendLine("  phase | compression avg / max | expansion avg / max | mean height m | bottom m | top m | floor share | wall share");
         for (int k = 0; k < phases.Count; k++)

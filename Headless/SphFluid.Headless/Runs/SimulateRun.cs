@@ -22,14 +22,14 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
 {
     static readonly CultureInfo C = CultureInfo.InvariantCulture;
 
-    /// <summary>A device to use instead of opening one (tests share theirs); not disposed here.</summary>
-    public IComputeDevice Device { get; init; }
+    /// <summary>A device to use instead of opening one (tests share theirs); not disposed here. Null: the run opens its own.</summary>
+    public IComputeDevice? Device { get; init; }
 
     /// <summary>Draw the progress bar (default: when stderr is a terminal).</summary>
     public bool InteractiveProgress { get; init; } = ProgressReporter.StderrIsTerminal;
 
     /// <summary>What the run ended with (null until it ran).</summary>
-    public RunSummary Summary { get; private set; }
+    public RunSummary? Summary { get; private set; }
 
     public int Execute()
     {
@@ -42,7 +42,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
 
         var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name), "--out", "simulate");
 
-        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "simulate", out IDisposable owned);
+        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "simulate", out IDisposable? owned);
         try
         {
             using var simulation = new FluidSimulation(device, description);
@@ -91,8 +91,8 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         var clock = Stopwatch.StartNew();
         int snapshots = 0, frame = 0, substeps = 0, cappedFrames = 0;
         double nextSnapshot = 0, nextDiagnostics = 0, nextExport = 0;
-        DiagnosticsReport first = null, last = null;
-        string failure = null;
+        DiagnosticsReport? first = null, last = null;
+        string? failure = null;
         var container = restContainer;
         IReadOnlyList<SphereObstacleDescription> obstacles = restObstacles;
         StepReport step = StepReport.None;
@@ -130,7 +130,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
                 snapshots++;
                 while (nextSnapshot <= t + 1e-9) nextSnapshot += options.SnapshotEvery;
             }
-            if (exportNow)
+            if (exportNow && export != null)
             {
                 export.Write(t, particles, densities);
                 while (nextExport <= t + 1e-9) nextExport += options.ExportEvery;
@@ -190,7 +190,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
 
     /// <summary>Why the state is unacceptable, or null: <see cref="HealthCheck"/> names the first bad time, phase and
     /// figure (non-finite, outside, lost, faster than the scene allows, over-compressed, energy from nowhere).</summary>
-    static string Health(HealthCheck health, DiagnosticsReport report, Particle[] particles) => health.Check(report, particles)?.Message;
+    static string? Health(HealthCheck health, DiagnosticsReport report, Particle[] particles) => health.Check(report, particles)?.Message;
 
     static string DiagnosticsLine(double t, int frame, StepReport step, DiagnosticsReport r, FluidMeasures m, IReadOnlyList<PhaseDescription> phases)
     {

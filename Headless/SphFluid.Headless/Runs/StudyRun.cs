@@ -25,8 +25,8 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
     static readonly CultureInfo C = CultureInfo.InvariantCulture;
     const double FrameSeconds = 1.0 / 60.0;
 
-    /// <summary>A device to use instead of opening one (tests share theirs); not disposed here.</summary>
-    public IComputeDevice Device { get; init; }
+    /// <summary>A device to use instead of opening one (tests share theirs); not disposed here. Null: the run opens its own.</summary>
+    public IComputeDevice? Device { get; init; }
 
     public sealed record Configuration(PressureSolver Solver, double StiffnessFactor, double DensityTolerance, double ParticleScale, double Cfl)
     {
@@ -35,18 +35,20 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
             : string.Format(C, "WCSPH k x{0:G3}", StiffnessFactor);
     }
 
-    public sealed class Row
+    public sealed class Row(Configuration config, int particles, string[] phaseNames)
     {
-        public Configuration Config;
-        public int Particles;
+        public readonly Configuration Config = config;
+        public readonly int Particles = particles;
         public double SimulatedSeconds, WallSeconds, GpuMilliseconds;
         public int Substeps;
-        public string[] PhaseNames;
-        public double[] DensityErrorAverage, DensityErrorMax;
+        public readonly string[] PhaseNames = phaseNames;
+        public readonly double[] DensityErrorAverage = new double[phaseNames.Length], DensityErrorMax = new double[phaseNames.Length];
         public double DivergenceError, EnergyDrift, SolverIterations;
         public double Layering, SurgeFront, Column;
         public double LayeringError, FrontError, ColumnError, ObservableError;
-        public string Failure;
+
+        /// <summary>Why the run became unhealthy; null while it is healthy.</summary>
+        public string? Failure;
 
         public double SubstepsPerSecond => Substeps / SimulatedSeconds;
         public double WallMsPerSecond => WallSeconds * 1000 / SimulatedSeconds;
@@ -63,7 +65,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         // Every configuration is made into a scene before the device opens: an impossible one is refused by name first.
         var descriptions = configs.Select(c => Describe(c)).ToList();
         var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name + "-study"), "--out", "study");
-        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "study", out IDisposable owned);
+        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "study", out IDisposable? owned);
         try
         {
             stdout.WriteLine(string.Format(C, "study: {0} on {1}; {2} configuration(s) of {3:G3} s simulated each{4}", scene.Path, device.DeviceName, configs.Count,
@@ -137,20 +139,15 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         var densities = new Vector4[sim.ParticleCount];
         var health = new HealthCheck(description, sim.ParticleCount);
         int phases = sim.Phases.Count;
-        var row = new Row
-        {
-            Config = config, Particles = sim.ParticleCount, PhaseNames = sim.Phases.Select(p => p.Name).ToArray(),
-            DensityErrorAverage = new double[phases], DensityErrorMax = new double[phases],
-        };
+        var row = new Row(config, sim.ParticleCount, sim.Phases.Select(p => p.Name).ToArray());
         int samples = 0;
         double energy0 = double.NaN, energy = double.NaN, divergence = 0, iterations = 0;
-        FluidMeasures last = null;
-        void Sample()
+        FluidMeasures Sample()
         {
             var report = sim.ReadDiagnostics();
             sim.Particles.GetData(particles);
             sim.Densities.GetData(densities);
-            last = FluidMeasures.Measure(sim.SimulatedTime, particles, densities, sim.PhaseRows, container, settings.Gravity, settings.ParticleSpacing, settings.SmoothingRadius);
+            var measures = FluidMeasures.Measure(sim.SimulatedTime, particles, densities, sim.PhaseRows, container, settings.Gravity, settings.ParticleSpacing, settings.SmoothingRadius);
             for (int k = 0; k < phases; k++)
             {
                 row.DensityErrorAverage[k] += report.Phases[k].AverageDensityError;
@@ -158,10 +155,11 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
             }
             divergence += report.DivergenceError;
             iterations += report.DensitySolveIterations + report.DivergenceSolveIterations;
-            energy = report.KineticEnergy + last.PotentialEnergy;
+            energy = report.KineticEnergy + measures.PotentialEnergy;
             if (double.IsNaN(energy0)) energy0 = energy;
             samples++;
             row.Failure ??= health.Check(report, particles)?.Message;
+            return measures;
         }
 
         Sample();
@@ -193,7 +191,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         }
         row.WallSeconds = clock.Elapsed.TotalSeconds;
         row.SimulatedSeconds = sim.SimulatedTime;
-        Sample();
+        var last = Sample();
         for (int k = 0; k < phases; k++) row.DensityErrorAverage[k] /= samples;
         row.DivergenceError = divergence / samples;
         row.SolverIterations = iterations / samples;
@@ -226,8 +224,8 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         Finest = finest;
     }
 
-    /// <summary>The configuration the others are compared with.</summary>
-    public Row Finest { get; private set; }
+    /// <summary>The configuration the others are compared with; null when every configuration failed.</summary>
+    public Row? Finest { get; private set; }
 
     string Csv()
     {

@@ -7,26 +7,26 @@ namespace SphFluid.Headless.Scenes;
 public sealed class LoadedScene
 {
     /// <summary>The scene file as given.</summary>
-    public string Path { get; init; }
+    public required string Path { get; init; }
 
     /// <summary>Root of the Unity project the scene belongs to (its shaders are under Packages/com.sphfluid.fluid/Shaders).</summary>
-    public string ProjectRoot { get; init; }
+    public required string ProjectRoot { get; init; }
 
     /// <summary>File name without extension ("OilAndWater").</summary>
-    public string Name { get; init; }
+    public required string Name { get; init; }
 
     /// <summary>Settings, spawn boxes, container and obstacles at time 0.</summary>
-    public FluidSceneDescription Description { get; init; }
+    public required FluidSceneDescription Description { get; init; }
 
     public SceneMotion Motion { get; init; } = new();
 
     /// <summary>GameObject holding the Fluid.</summary>
-    public string SimulatorObject { get; init; }
+    public required string SimulatorObject { get; init; }
 
     /// <summary>GameObject of each spawn box, in spawn order.</summary>
-    public IReadOnlyList<string> SpawnBoxObjects { get; init; }
+    public required IReadOnlyList<string> SpawnBoxObjects { get; init; }
 
-    public string ContainerObject { get; init; }
+    public required string ContainerObject { get; init; }
 
-    public IReadOnlyList<string> ObstacleObjects { get; init; }
+    public required IReadOnlyList<string> ObstacleObjects { get; init; }
 }

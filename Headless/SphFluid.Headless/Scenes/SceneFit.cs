@@ -19,7 +19,7 @@ public static partial class SceneFit
     private static partial Regex ParameterSuffix();
 
     /// <summary>The neighbour grid's refusal of the container and support radius, or null when the grid fits.</summary>
-    public static string GridProblem(FluidSceneDescription scene)
+    public static string? GridProblem(FluidSceneDescription scene)
     {
         try
         {

@@ -22,7 +22,7 @@ public static class SceneLoader
 {
     /// <summary>Loads and validates <paramref name="scenePath"/>; <paramref name="project"/> defaults to the
     /// Unity project at or above the file (else the one holding this program).</summary>
-    public static LoadedScene Load(string scenePath, UnityProject project = null)
+    public static LoadedScene Load(string scenePath, UnityProject? project = null)
     {
         if (Directory.Exists(scenePath))
             throw new SceneException($"{scenePath}: is a folder, not a scene file");
@@ -53,37 +53,54 @@ public static class SceneLoader
 
     static UnityProject FindProject(string scenePath)
     {
-        foreach (string start in new[] { Path.GetDirectoryName(Path.GetFullPath(scenePath)), AppContext.BaseDirectory, Directory.GetCurrentDirectory() })
+        // The scene's folder is null only for a root directory, which Load has refused as a folder.
+        foreach (string? start in new[] { Path.GetDirectoryName(Path.GetFullPath(scenePath)), AppContext.BaseDirectory, Directory.GetCurrentDirectory() })
         {
+            if (start == null) continue;
             try { return UnityProject.Find(start); }
             catch (DirectoryNotFoundException) { }
         }
         throw new SceneException($"{scenePath}: no Unity project (Assets/ + ProjectSettings/) found above the scene to resolve its script guids");
     }
 
-    sealed class Reader(string path, UnityScene scene, UnityProject project)
+    /// <summary>One scene's reading. The Fluid is found first (without it there is nothing to read); the container only
+    /// after the shaders, transforms and settings are checked, so that a scene with several faults is refused for the
+    /// first in that order, and its GameObject is then handed to what names it.</summary>
+    sealed class Reader
     {
+        readonly string path;
+        readonly UnityScene scene;
+        readonly UnityProject project;
         readonly List<(UnityGameObject Go, UnityDocument Behaviour)> _boxes = new();
         readonly List<(UnityGameObject Go, UnityDocument Behaviour)> _obstacles = new();
-        UnityGameObject _simulatorGo, _containerGo;
-        UnityDocument _simulator;
+        readonly UnityGameObject _simulatorGo;
+        readonly UnityDocument _simulator;
 
-        public LoadedScene Read()
+        public Reader(string path, UnityScene scene, UnityProject project)
         {
+            this.path = path;
+            this.scene = scene;
+            this.project = project;
             var simulators = Active(ScriptGuid(RuntimeScripts.Fluid));
             if (simulators.Count == 0)
                 throw new SceneException($"{path}: no active GameObject has a {RuntimeScripts.Fluid} component");
             if (simulators.Count > 1)
                 throw new SceneException($"{path}: {simulators.Count} active {RuntimeScripts.Fluid} components (GameObjects {string.Join(", ", simulators.Select(s => $"'{s.Go.Name}'"))}); the runner simulates one fluid per scene");
             (_simulatorGo, _simulator) = simulators[0];
+        }
+
+        public LoadedScene Read()
+        {
             CheckShaders();
             CheckTransforms();
             CheckDrawingSettings();
 
+            var settings = ReadSettings();
+            var (container, containerGo) = ReadContainer();
             var description = new FluidSceneDescription
             {
-                Settings = ReadSettings(),
-                Container = ReadContainer(),
+                Settings = settings,
+                Container = container,
             };
             foreach (var (go, mb) in Active(ScriptGuid(RuntimeScripts.SpawnBox)))
             {
@@ -101,10 +118,10 @@ public static class SceneLoader
             var errors = description.Validate();
             bool settingsOk = !errors.Any(e => e.Field.StartsWith("Settings", StringComparison.Ordinal));
             if (settingsOk && SceneFit.GridProblem(description) is { } grid)
-                throw new SceneException($"{path}:{_containerGo.Transform?.Root["m_LocalScale"]?.Line ?? _containerGo.Document.Line}: the fluid scene is invalid:\n  GameObject '{_containerGo.Name}', Transform.m_LocalScale and " +
+                throw new SceneException($"{path}:{containerGo.Transform?.Root["m_LocalScale"]?.Line ?? containerGo.Document.Line}: the fluid scene is invalid:\n  GameObject '{containerGo.Name}', Transform.m_LocalScale and " +
                     $"{Where(_simulatorGo, RuntimeScripts.Fluid, RuntimeScripts.Settings + "." + nameof(FluidSettings.SmoothingRadius))}: {grid}");
             if (errors.Count > 0)
-                throw new SceneException($"{path}: the fluid scene is invalid:\n  " + string.Join("\n  ", errors.Select(Locate)));
+                throw new SceneException($"{path}: the fluid scene is invalid:\n  " + string.Join("\n  ", errors.Select(e => Locate(e, containerGo))));
 
             return new LoadedScene
             {
@@ -112,10 +129,10 @@ public static class SceneLoader
                 ProjectRoot = project.Root,
                 Name = scene.Name,
                 Description = description,
-                Motion = ReadMotion(),
+                Motion = ReadMotion(containerGo),
                 SimulatorObject = _simulatorGo.Name,
                 SpawnBoxObjects = _boxes.Select(b => b.Go.Name).ToList(),
-                ContainerObject = _containerGo.Name,
+                ContainerObject = containerGo.Name,
                 ObstacleObjects = _obstacles.Select(o => o.Go.Name).ToList(),
             };
         }
@@ -233,7 +250,7 @@ public static class SceneLoader
         /// programs the headless pipeline loads by name (a renamed or re-pointed shader fails here, not mid-run).</summary>
         void CheckShaders()
         {
-            string resources = project.AssetPathOfResource(RuntimeScripts.ResourcesAsset + ".asset");
+            string? resources = project.AssetPathOfResource(RuntimeScripts.ResourcesAsset + ".asset");
             if (resources == null)
                 throw new SceneException($"{path}: the project has no Resources/{RuntimeScripts.ResourcesAsset}.asset (the fluid package's shaders and material)");
             var root = UnityYamlFile.Load(project.FullPath(resources)).Documents.FirstOrDefault()?.Root;
@@ -243,7 +260,7 @@ public static class SceneLoader
                 int line = root?[field]?.Line ?? 1;
                 if (reference == null || reference.IsNull)
                     throw new SceneException($"{resources}:{line}: {field} has no compute shader assigned (expected {program}.compute)");
-                string asset = project.AssetPathOf(reference);
+                string? asset = project.AssetPathOf(reference);
                 if (asset == null)
                     throw new SceneException($"{resources}:{line}: {field} refers to guid {reference.Guid}, which no asset of the project has (expected {program}.compute)");
                 if (Path.GetFileNameWithoutExtension(asset) != program || !asset.EndsWith(".compute", StringComparison.Ordinal))
@@ -285,30 +302,33 @@ public static class SceneLoader
             throw new SceneException($"{path}:{mb.Root.At(key)?.Line ?? mb.Line}: {Where(go, component, key)}: {errors[0].Message}");
         }
 
-        ContainerDescription ReadContainer()
+        /// <summary>The container (the Fluid's assigned one, else the scene's first active one) and its GameObject.</summary>
+        (ContainerDescription Container, UnityGameObject Go) ReadContainer()
         {
             string containerGuid = ScriptGuid(RuntimeScripts.FluidContainer);
             var reference = _simulator.Root.GetReference("container");
+            UnityGameObject containerGo;
             if (reference is { IsNull: false })
             {
                 var doc = scene.File.Find(reference);
                 if (doc == null || doc.ScriptGuid != containerGuid)
                     throw new SceneException($"{path}: {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} refers to {reference}, which is not a {RuntimeScripts.FluidContainer} component of this scene");
-                _containerGo = scene.GameObjectOf(doc);
+                containerGo = scene.GameObjectOf(doc)
+                    ?? throw new SceneException($"{path}:{doc.Line}: {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} refers to {reference}, a {RuntimeScripts.FluidContainer} on no GameObject of this scene (its m_GameObject is missing or dangling)");
             }
             else
             {
                 var found = Active(containerGuid);
                 if (found.Count == 0)
                     throw new SceneException($"{path}: the scene has no active {RuntimeScripts.FluidContainer} (assign {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} or add one)");
-                _containerGo = found[0].Go;
+                containerGo = found[0].Go;
             }
-            var w = _containerGo.World;
+            var w = containerGo.World;
             var container = new ContainerDescription(w.Position, w.Rotation, Abs(w.Scale));
-            var component = Active(containerGuid).Find(found => found.Go == _containerGo).Behaviour;
+            var component = Active(containerGuid).Find(found => found.Go == containerGo).Behaviour;
             if (component != null)
-                container.Friction = (WallFriction)Int(_containerGo, component, RuntimeScripts.FluidContainer, "friction", (int)container.Friction);
-            return container;
+                container.Friction = (WallFriction)Int(containerGo, component, RuntimeScripts.FluidContainer, "friction", (int)container.Friction);
+            return (container, containerGo);
         }
 
         /// <summary>The box's declared values (its phase among them) from its serialized block; the placement from its
@@ -332,16 +352,16 @@ public static class SceneLoader
             return new SphereObstacleDescription(w.Position, radius, Vector3.Zero) { Name = go.Name };
         }
 
-        SceneMotion ReadMotion()
+        SceneMotion ReadMotion(UnityGameObject containerGo)
         {
-            ContainerSpin spin = null;
+            ContainerSpin? spin = null;
             Vector3 pivot = Vector3.Zero;
             foreach (var (go, mb) in Active(ScriptGuid(RuntimeScripts.ContainerSpinner)))
             {
-                if (!IsSelfOrAncestor(go, _containerGo))
-                    throw new SceneException($"{path}: GameObject '{go.Name}' has a {RuntimeScripts.ContainerSpinner} but is neither the container '{_containerGo.Name}' nor its parent; the runner turns only the container");
+                if (!IsSelfOrAncestor(go, containerGo))
+                    throw new SceneException($"{path}: GameObject '{go.Name}' has a {RuntimeScripts.ContainerSpinner} but is neither the container '{containerGo.Name}' nor its parent; the runner turns only the container");
                 if (spin != null)
-                    throw new SceneException($"{path}: more than one {RuntimeScripts.ContainerSpinner} turns the container '{_containerGo.Name}'");
+                    throw new SceneException($"{path}: more than one {RuntimeScripts.ContainerSpinner} turns the container '{containerGo.Name}'");
                 const string c = RuntimeScripts.ContainerSpinner;
                 spin = ReadDeclared<ContainerSpin>(go, mb, c, RuntimeScripts.Spin);
                 RequireValid(spin.Validate(c), go, mb, c, RuntimeScripts.Spin);
@@ -366,7 +386,7 @@ public static class SceneLoader
             of.SelfAndAncestors.Any(g => g.FileId == candidate.FileId);
 
         /// <summary>Prefixes a core validation message with the GameObject, component and serialized field it came from.</summary>
-        string Locate(ValidationError error)
+        string Locate(ValidationError error, UnityGameObject containerGo)
         {
             string[] parts = error.Field.Split('.');
             string head = parts[0];
@@ -378,7 +398,7 @@ public static class SceneLoader
                 return $"line {line}: {Where(_simulatorGo, RuntimeScripts.Fluid, key)}: {error.Message}";
             }
             if (head == "Container")
-                return $"GameObject '{_containerGo.Name}', {TransformField(member) ?? RuntimeScripts.FluidContainer}: {error.Message}";
+                return $"GameObject '{containerGo.Name}', {TransformField(member) ?? RuntimeScripts.FluidContainer}: {error.Message}";
             if (TryIndex(head, "SpawnBoxes", out int b) && b < _boxes.Count)
             {
                 var (go, mb) = _boxes[b];
@@ -394,7 +414,7 @@ public static class SceneLoader
             return error.Message;
         }
 
-        static string TransformField(string member) => member switch
+        static string? TransformField(string member) => member switch
         {
             "Center" or "Position" => "Transform.m_LocalPosition",
             "Rotation" => "Transform.m_LocalRotation",

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Diagnostics.CodeAnalysis;
 using System.Numerics;
 using SphFluid.Simulation;
 
@@ -15,13 +16,14 @@ public sealed record DrivenSphere(int ObstacleIndex, SphereDrive Drive);
 public sealed class SceneMotion
 {
     /// <summary>The container's spin, or null.</summary>
-    public ContainerSpin ContainerSpin { get; init; }
+    public ContainerSpin? ContainerSpin { get; init; }
 
     /// <summary>World position of the spinner's Transform, which the spin turns about.</summary>
     public Vector3 SpinPivot { get; init; }
 
     public IReadOnlyList<DrivenSphere> SphereDrives { get; init; } = Array.Empty<DrivenSphere>();
 
+    [MemberNotNullWhen(true, nameof(ContainerSpin))]
     public bool MovesContainer => ContainerSpin != null;
     public bool MovesObstacles => SphereDrives.Count > 0;
 
