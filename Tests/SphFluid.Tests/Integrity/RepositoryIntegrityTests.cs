@@ -220,10 +220,42 @@ namespace SphFluid.Tests.Integrity
         [Test]
         public void Headless_test_project_compiles_exactly_the_unity_core_tests()
         {
+            // As Unity compiles them: C# 9, no nullable context, SphFluid.Core and NUnit only.
+            var project = XDocument.Load(At("Tests/SphFluid.Tests.Core/SphFluid.Tests.Core.csproj"));
+            var properties = project.Descendants("PropertyGroup").Elements().ToDictionary(e => e.Name.LocalName, e => e.Value);
+            Assert.That(properties["EnableDefaultCompileItems"], Is.EqualTo("false"));
+            Assert.That(properties["LangVersion"], Is.EqualTo("9.0"));
+            Assert.That(properties["Nullable"], Is.EqualTo("disable"));
+            Assert.That(properties["AssemblyName"], Is.EqualTo("SphFluid.Tests.Core"));
+            var compiled = project.Descendants("Compile").Select(e => (string)e.Attribute("Include")).ToList();
+            Assert.That(compiled, Is.EqualTo(new[] { "$(RepoRoot)/Packages/com.sphfluid.fluid/Tests/Core/**/*.cs" }));
+            var projects = project.Descendants("ProjectReference").Select(e => (string)e.Attribute("Include")).ToList();
+            Assert.That(projects, Is.EqualTo(new[] { "../../Headless/SphFluid.Core/SphFluid.Core.csproj" }));
+            var packages = project.Descendants("PackageReference").Select(e => (string)e.Attribute("Include")).ToList();
+            Assert.That(packages, Is.EquivalentTo(new[] { "Microsoft.NET.Test.Sdk", "NUnit", "NUnit3TestAdapter", "NUnit.Analyzers" }));
+            Assert.That(project.Descendants("Reference"), Is.Empty);
+        }
+
+        [Test]
+        public void Headless_test_project_compiles_none_of_the_unity_files()
+        {
+            // The shared files are SphFluid.Tests.Core's alone: compiled here too, they would meet this project's
+            // nullable context, which Unity never applies to them.
             var project = XDocument.Load(At("Tests/SphFluid.Tests/SphFluid.Tests.csproj"));
-            var shared = project.Descendants("Compile").Select(e => (string)e.Attribute("Include")).Where(i => i != null && i.Contains("Packages/")).ToList();
-            Assert.That(shared, Is.EqualTo(new[] { "$(RepoRoot)/Packages/com.sphfluid.fluid/Tests/Core/**/*.cs" }));
+            var compiled = project.Descendants("Compile").Select(e => (string)e.Attribute("Include") ?? "").ToList();
+            Assert.That(compiled.Where(i => i.Contains("Packages/")), Is.Empty);
             Assert.That(project.Descendants("LangVersion").Single().Value, Is.EqualTo("9.0"));
+        }
+
+        [Test]
+        public void The_test_script_runs_both_test_projects()
+        {
+            string script = File.ReadAllText(At("Headless/test.sh"));
+            Assert.That(script, Does.Contain("Tests/SphFluid.Tests.Core/SphFluid.Tests.Core.csproj"));
+            Assert.That(script, Does.Contain("Tests/SphFluid.Tests/SphFluid.Tests.csproj"));
+            string solution = File.ReadAllText(At("Headless/SphFluid.sln"));
+            Assert.That(solution, Does.Contain(@"..\Tests\SphFluid.Tests.Core\SphFluid.Tests.Core.csproj"));
+            Assert.That(solution, Does.Contain(@"..\Tests\SphFluid.Tests\SphFluid.Tests.csproj"));
         }
 
         [Test]
