@@ -20,8 +20,8 @@ namespace SphFluid.Tests
     public static class GpuTestDevice
     {
         static readonly object Gate = new object();
-        static VulkanComputeDevice _device;
-        static string _unavailable;
+        static VulkanComputeDevice? _device;
+        static string? _unavailable;
 
         /// <summary>The repository root: the first folder above the test assembly holding both Assets and Headless.</summary>
         public static string RepoRoot { get; } = FindRepoRoot();
@@ -69,7 +69,7 @@ namespace SphFluid.Tests
         /// <summary>Fails with every message the validation layer has reported so far, then forgets them.</summary>
         public static void AssertNoValidationMessages()
         {
-            VulkanComputeDevice device;
+            VulkanComputeDevice? device;
             lock (Gate) device = _device;
             if (device == null) return;
             var messages = device.ValidationMessages;

@@ -43,7 +43,7 @@ namespace SphFluid.Tests.Backend
                         {
                             checkedBuffers++;
                             string where = Path.GetFileName(file) + " " + program.KernelNames[k] + " [" + string.Join(" ", combo) + "] " + buffer.Name;
-                            string problem = StrideProblem(buffer, csharpStructs);
+                            string? problem = StrideProblem(buffer, csharpStructs);
                             if (problem != null && !problems.Any(p => p.EndsWith(buffer.Name + ": " + problem, StringComparison.Ordinal)))
                                 problems.Add(where + ": " + problem);
                         }
@@ -91,7 +91,7 @@ namespace SphFluid.Tests.Backend
             Assert.That(StrideProblem(float4, new Dictionary<string, Type>()), Is.Null);
         }
 
-        static string StrideProblem(SpirvResource buffer, Dictionary<string, Type> csharpStructs)
+        static string? StrideProblem(SpirvResource buffer, Dictionary<string, Type> csharpStructs)
         {
             if (buffer.ElementIsStruct)
             {

@@ -19,7 +19,7 @@ namespace SphFluid.Tests.Health
         static readonly Vector3 Tank = new Vector3(0.48f, 0.4f, 0.16f);
 
         /// <summary>A pool 0.16 m deep across the tank floor: 12 x 4 x 4 = 192 particles, c = 10.2 m/s.</summary>
-        static FluidSceneDescription Pool(PhaseDescription phase = null)
+        static FluidSceneDescription Pool(PhaseDescription? phase = null)
         {
             var water = new Vector3(Tank.X, 0.16f, Tank.Z);
             return SolverScenes.Scene(SolverScenes.Coarse(Spacing), Tank,

@@ -17,9 +17,13 @@ namespace SphFluid.Tests.Health
         const float Frame = 1f / 60f;
 
         public IReadOnlyList<string> Refusals { get; private set; } = Array.Empty<string>();
-        public HealthProblem Problem { get; private set; }
-        public HealthCheck Check { get; private set; }
-        public DiagnosticsReport Last { get; private set; }
+        HealthCheck? _check;
+        DiagnosticsReport? _last;
+
+        /// <summary>The first problem the check found; null while the run is healthy.</summary>
+        public HealthProblem? Problem { get; private set; }
+        public HealthCheck Check => _check ?? throw new InvalidOperationException("the scene was refused at validation: nothing was checked");
+        public DiagnosticsReport Last => _last ?? throw new InvalidOperationException("the scene was refused at validation: nothing was simulated");
         public float FastestSeen { get; private set; }
         public float MostCompressed { get; private set; }
         public int Frames { get; private set; }
@@ -32,7 +36,7 @@ namespace SphFluid.Tests.Health
         /// time (or <paramref name="maxFrames"/> frames, whichever comes first), moving its drivers with
         /// <paramref name="drive"/> (simulated time of the frame's end) before each frame.</summary>
         public static HealthRun Of(FluidSceneDescription scene, double seconds, int maxFrames = 120,
-            Action<FluidSimulation, double> drive = null)
+            Action<FluidSimulation, double>? drive = null)
         {
             var run = new HealthRun();
             run.Refusals = scene.Validate().Select(e => e.Message).ToArray();
@@ -44,7 +48,7 @@ namespace SphFluid.Tests.Health
             var clock = Stopwatch.StartNew();
             using (var sim = new FluidSimulation(GpuTestDevice.Shared, scene))
             {
-                run.Check = new HealthCheck(scene, sim.ParticleCount);
+                run._check = new HealthCheck(scene, sim.ParticleCount);
                 var particles = new Particle[sim.ParticleCount];
                 run.Observe(sim, particles);
                 while (run.Problem == null && sim.SimulatedTime < seconds - 1e-6 && run.Frames < maxFrames)
@@ -67,7 +71,7 @@ namespace SphFluid.Tests.Health
         void Observe(FluidSimulation sim, Particle[] particles)
         {
             sim.Particles.GetData(particles);
-            Last = sim.ReadDiagnostics();
+            _last = sim.ReadDiagnostics();
             FastestSeen = Math.Max(FastestSeen, float.IsNaN(Last.MaxSpeed) ? float.PositiveInfinity : Last.MaxSpeed);
             foreach (var p in Last.Phases) MostCompressed = Math.Max(MostCompressed, p.MaxDensityError);
             Problem ??= Check.Check(Last, particles);

@@ -28,7 +28,7 @@ namespace SphFluid.Tests.Health
                 var check = new HealthCheck(scene);
                 var particles = new Particle[sim.ParticleCount];
                 float dt = 5f * settings.CflNumber * settings.SmoothingRadius / sim.TimeStep.SpeedOfSound; // 15.6 ms
-                HealthProblem problem = null;
+                HealthProblem? problem = null;
                 for (int frame = 0; frame < 30 && problem == null; frame++)
                 {
                     sim.StepFixed(1, dt);
@@ -64,7 +64,7 @@ namespace SphFluid.Tests.Health
             TestContext.Out.WriteLine(stderr.ToString());
             Assert.That(code, Is.EqualTo(ExitCodes.SimulationFailed), stdout.ToString());
             Assert.That(stderr.ToString(), Does.Contain("simulate: unhealthy at t = ").And.Contains("phase '").And.Contains("exceeds the bound"));
-            Assert.That(run.Summary.SimulatedSeconds, Is.LessThan(0.1),
+            Assert.That(run.Summary.OrFail("the run's summary").SimulatedSeconds, Is.LessThan(0.1),
                 "the run stops at the first unhealthy frame, long before the next 0.25 s diagnostics line");
             Assert.That(File.ReadAllText(Path.Combine(outDir, "summary.txt")), Does.Contain("result: FAILED: unhealthy at t = "));
         }

@@ -51,7 +51,7 @@ namespace SphFluid.Tests.Integrity
         /// .meta, everything in it has one; its scene uses the project's script, its URP asset uses URP's script, and
         /// the project's manifest does not list URP (the sample lands in projects that have it).
         /// </summary>
-        static void AddPackageWithSample(SyntheticProject project, string samplesJson = null)
+        static void AddPackageWithSample(SyntheticProject project, string? samplesJson = null)
         {
             samplesJson ??= "[ { \"displayName\": \"Pond\", \"description\": \"A pond.\", \"path\": \"Samples~/Pond\" } ]";
             string json = "{\n  \"name\": \"" + SamplePackage + "\",\n  \"version\": \"1.0.0\",\n  \"unity\": \"2022.3\",\n  \"samples\": " + samplesJson + "\n}\n";

@@ -28,7 +28,7 @@ namespace SphFluid.Tests.Integrity
         {
             var scene = Scene(-1, 0, 1, 1);
             Assert.That(scene.ParentCycles(), Is.Empty);
-            Assert.That(scene.FindGameObject("O3").HierarchyPath, Is.EqualTo("O0/O1/O3"));
+            Assert.That(scene.FindGameObject("O3").OrFail("O3").HierarchyPath, Is.EqualTo("O0/O1/O3"));
         }
 
         [Test]
@@ -45,9 +45,9 @@ namespace SphFluid.Tests.Integrity
         public void Walks_up_a_cyclic_hierarchy_end()
         {
             var scene = Scene(1, 2, 0);
-            var path = Deadline.Within(10, () => scene.FindGameObject("O0").HierarchyPath, "HierarchyPath on a 3-cycle");
+            var path = Deadline.Within(10, () => scene.FindGameObject("O0").OrFail("O0").HierarchyPath, "HierarchyPath on a 3-cycle");
             Assert.That(path, Is.EqualTo("O2/O1/O0"));
-            Assert.That(scene.FindGameObject("O1").SelfAndAncestors.Count(), Is.EqualTo(3));
+            Assert.That(scene.FindGameObject("O1").OrFail("O1").SelfAndAncestors.Count(), Is.EqualTo(3));
         }
 
         [Test]
@@ -68,7 +68,7 @@ namespace SphFluid.Tests.Integrity
         {
             var scene = Scene(Enumerable.Range(0, 20_000).Select(i => i - 1).ToArray());
 
-            var world = Deadline.Within(30, () => scene.FindGameObject("O19999").World, "WorldTransformOf 20 000 levels deep");
+            var world = Deadline.Within(30, () => scene.FindGameObject("O19999").OrFail("O19999").World, "WorldTransformOf 20 000 levels deep");
 
             Assert.That(world.Position.Y, Is.EqualTo(20_000f), "one metre per level");
         }
@@ -78,7 +78,7 @@ namespace SphFluid.Tests.Integrity
         {
             var scene = Scene(1, 0);
 
-            var error = Deadline.Within(10, () => Deadline.Thrown(() => _ = scene.FindGameObject("O0").World), "WorldTransformOf on a 2-cycle");
+            var error = Deadline.Within(10, () => Deadline.Thrown(() => _ = scene.FindGameObject("O0").OrFail("O0").World), "WorldTransformOf on a 2-cycle");
 
             Assert.That(error, Is.TypeOf<InvalidDataException>());
             Assert.That(error.Message, Is.EqualTo("Cycles.unity: Transform &11 is its own ancestor (a parent cycle through m_Father)"));

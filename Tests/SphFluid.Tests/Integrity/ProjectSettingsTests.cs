@@ -62,7 +62,7 @@ namespace SphFluid.Tests.Integrity
                     .Select(f => Path.GetRelativePath(RepoRoot, f).Replace('\\', '/')).OrderBy(f => f).ToList()
                 : new System.Collections.Generic.List<string>();
             if (scenes.Count == 0) Assert.Ignore("no scenes under Assets/FluidDemo/Scenes yet");
-            var build = Settings("EditorBuildSettings.asset").Root["m_Scenes"].Items
+            var build = Settings("EditorBuildSettings.asset").Root["m_Scenes"].OrFail("m_Scenes").Items
                 .Where(s => s.GetBool("enabled")).Select(s => s.GetString("path")).ToList();
             Assert.That(build, Is.SupersetOf(scenes), "scenes missing from ProjectSettings/EditorBuildSettings.asset");
         }

@@ -60,7 +60,7 @@ namespace SphFluid.Tests.Integrity
         [Test]
         public void The_package_holds_the_library_assemblies_and_the_demo_stays_in_assets()
         {
-            string Name(string path) => AssemblyDefinition.Load(At(path)).Name;
+            string? Name(string path) => AssemblyDefinition.Load(At(path)).Name;
             var inPackage = Directory.GetFiles(At("Packages/com.sphfluid.fluid"), "*.asmdef", SearchOption.AllDirectories)
                 .Select(f => AssemblyDefinition.Load(f).Name).OrderBy(n => n, StringComparer.Ordinal);
             Assert.That(inPackage, Is.EqualTo(new[] { "SphFluid.Core", "SphFluid.Editor", "SphFluid.Runtime", "SphFluid.Tests.Core", "SphFluid.Tests.EditMode", "SphFluid.Tests.PlayMode" }));
@@ -95,7 +95,7 @@ namespace SphFluid.Tests.Integrity
             Assert.That(asset.ScriptGuid, Is.EqualTo("bf2edee5c58d82540a51f03df9d42094"), "UniversalRenderPipelineAsset");
             Assert.That(asset.Root.GetInt("k_AssetVersion"), Is.EqualTo(11), "the asset version URP 14 writes");
             Assert.That(asset.Root.GetInt("m_RequireOpaqueTexture"), Is.EqualTo(1), "the refraction reads _CameraOpaqueTexture");
-            var renderers = asset.Root["m_RendererDataList"].Items;
+            var renderers = asset.Root["m_RendererDataList"].OrFail("m_RendererDataList").Items;
             var renderer = renderers[asset.Root.GetInt("m_DefaultRendererIndex")].GetReference("");
             Assert.That(renderer, Is.EqualTo(new UnityReference(11400000, UnityMeta.GuidOf(At(UrpSample + "/Settings/FluidURP_Renderer.asset")), 2)));
             var rendererData = UnityYamlFile.Load(At(UrpSample + "/Settings/FluidURP_Renderer.asset")).Documents.Single();
@@ -212,7 +212,7 @@ namespace SphFluid.Tests.Integrity
             Assert.That(properties["EnableDefaultCompileItems"], Is.EqualTo("false"));
             Assert.That(properties["TargetFramework"], Is.EqualTo("netstandard2.1"));
             Assert.That(properties["LangVersion"], Is.EqualTo("9.0"));
-            var compiled = project.Descendants("Compile").Select(e => (string)e.Attribute("Include")).ToList();
+            var compiled = project.Descendants("Compile").Select(e => (string?)e.Attribute("Include")).ToList();
             Assert.That(compiled, Is.EqualTo(new[] { "$(RepoRoot)/Packages/com.sphfluid.fluid/Runtime/Core/**/*.cs" }));
             Assert.That(project.Descendants("Reference").Concat(project.Descendants("PackageReference")).Concat(project.Descendants("ProjectReference")), Is.Empty);
         }
@@ -220,17 +220,49 @@ namespace SphFluid.Tests.Integrity
         [Test]
         public void Headless_test_project_compiles_exactly_the_unity_core_tests()
         {
+            // As Unity compiles them: C# 9, no nullable context, SphFluid.Core and NUnit only.
+            var project = XDocument.Load(At("Tests/SphFluid.Tests.Core/SphFluid.Tests.Core.csproj"));
+            var properties = project.Descendants("PropertyGroup").Elements().ToDictionary(e => e.Name.LocalName, e => e.Value);
+            Assert.That(properties["EnableDefaultCompileItems"], Is.EqualTo("false"));
+            Assert.That(properties["LangVersion"], Is.EqualTo("9.0"));
+            Assert.That(properties["Nullable"], Is.EqualTo("disable"));
+            Assert.That(properties["AssemblyName"], Is.EqualTo("SphFluid.Tests.Core"));
+            var compiled = project.Descendants("Compile").Select(e => (string?)e.Attribute("Include")).ToList();
+            Assert.That(compiled, Is.EqualTo(new[] { "$(RepoRoot)/Packages/com.sphfluid.fluid/Tests/Core/**/*.cs" }));
+            var projects = project.Descendants("ProjectReference").Select(e => (string?)e.Attribute("Include")).ToList();
+            Assert.That(projects, Is.EqualTo(new[] { "../../Headless/SphFluid.Core/SphFluid.Core.csproj" }));
+            var packages = project.Descendants("PackageReference").Select(e => (string?)e.Attribute("Include")).ToList();
+            Assert.That(packages, Is.EquivalentTo(new[] { "Microsoft.NET.Test.Sdk", "NUnit", "NUnit3TestAdapter", "NUnit.Analyzers" }));
+            Assert.That(project.Descendants("Reference"), Is.Empty);
+        }
+
+        [Test]
+        public void Headless_test_project_compiles_none_of_the_unity_files()
+        {
+            // The shared files are SphFluid.Tests.Core's alone: compiled here too, they would meet this project's
+            // nullable context, which Unity never applies to them.
             var project = XDocument.Load(At("Tests/SphFluid.Tests/SphFluid.Tests.csproj"));
-            var shared = project.Descendants("Compile").Select(e => (string)e.Attribute("Include")).Where(i => i != null && i.Contains("Packages/")).ToList();
-            Assert.That(shared, Is.EqualTo(new[] { "$(RepoRoot)/Packages/com.sphfluid.fluid/Tests/Core/**/*.cs" }));
-            Assert.That(project.Descendants("LangVersion").Single().Value, Is.EqualTo("9.0"));
+            var compiled = project.Descendants("Compile").Select(e => (string?)e.Attribute("Include") ?? "").ToList();
+            Assert.That(compiled.Where(i => i.Contains("Packages/")), Is.Empty);
+            Assert.That(project.Descendants("Nullable").Single().Value, Is.EqualTo("enable"));
+        }
+
+        [Test]
+        public void The_test_script_runs_both_test_projects()
+        {
+            string script = File.ReadAllText(At("Headless/test.sh"));
+            Assert.That(script, Does.Contain("Tests/SphFluid.Tests.Core/SphFluid.Tests.Core.csproj"));
+            Assert.That(script, Does.Contain("Tests/SphFluid.Tests/SphFluid.Tests.csproj"));
+            string solution = File.ReadAllText(At("Headless/SphFluid.sln"));
+            Assert.That(solution, Does.Contain(@"..\Tests\SphFluid.Tests.Core\SphFluid.Tests.Core.csproj"));
+            Assert.That(solution, Does.Contain(@"..\Tests\SphFluid.Tests\SphFluid.Tests.csproj"));
         }
 
         [Test]
         public void Compiled_core_references_no_engine_assembly()
         {
             var core = Assembly.Load("SphFluid.Core");
-            var references = core.GetReferencedAssemblies().Select(a => a.Name).ToList();
+            var references = core.GetReferencedAssemblies().Select(a => a.Name ?? "").ToList();
             Assert.That(references, Has.Member("netstandard"));
             Assert.That(references.Where(r => r.StartsWith("Unity", StringComparison.Ordinal)), Is.Empty);
         }

@@ -110,7 +110,7 @@ namespace SphFluid.Tests.Integrity
                 var scene = SimulationTestScenes.OilOnWater();
                 var first = scene.SpawnBoxes[0].Phase;
                 var second = first.Clone();
-                object value = declared.Field.GetValue(second);
+                object? value = declared.Field.GetValue(second);
                 declared.Field.SetValue(second, value switch
                 {
                     float f => f == 0f ? 0.01f : f * 0.875f,
@@ -185,7 +185,7 @@ namespace SphFluid.Tests.Integrity
                 $"line {line}: GameObject 'Water', SpawnBox.spawn.Jitter: SpawnBox 'Water': Jitter must be in [0, 0.5] particle spacings (was 0.75)"));
         }
 
-        static string Text(object value) => Convert.ToString(value, CultureInfo.InvariantCulture);
+        static string Text(object value) => string.Format(CultureInfo.InvariantCulture, "{0}", value);
 
         static IEnumerable<string> Prefixes(string path)
         {

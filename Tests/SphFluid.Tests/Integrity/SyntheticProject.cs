@@ -39,7 +39,7 @@ namespace SphFluid.Tests.Integrity
         public void Write(string relativePath, string text)
         {
             var abs = Abs(relativePath);
-            Directory.CreateDirectory(Path.GetDirectoryName(abs));
+            Directory.CreateDirectory(Path.GetDirectoryName(abs) ?? Root);
             File.WriteAllText(abs, text.Replace("\r\n", "\n"));
         }
 
@@ -79,7 +79,8 @@ namespace SphFluid.Tests.Integrity
             var guid = NewGuid();
             _guids[relativePath] = guid;
             Write(relativePath + ".meta", "fileFormatVersion: 2\nguid: " + guid + "\n" + importer);
-            var parent = Path.GetDirectoryName(relativePath).Replace('\\', '/');
+            // GetDirectoryName is null only for a root, which a project-relative path never is.
+            var parent = (Path.GetDirectoryName(relativePath) ?? "").Replace('\\', '/');
             if (parent != "Assets" && !File.Exists(Abs(parent + ".meta"))) WriteMeta(parent, FolderImporter);
         }
 

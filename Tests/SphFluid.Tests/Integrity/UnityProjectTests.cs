@@ -25,8 +25,8 @@ namespace SphFluid.Tests.Integrity
                 var emitter = scene.Behaviours(project.ScriptGuid("FluidEmitter")).Single();
                 Assert.That(project.AssetPathOf(emitter.Root.GetReference("splash")), Is.EqualTo(SyntheticProject.ShaderPath));
                 Assert.That(emitter.Root.GetFloat("rate"), Is.EqualTo(2f));
-                Assert.That(scene.GameObjectOf(emitter).Name, Is.EqualTo("Container"));
-                Assert.That(scene.FindGameObject("Ball").World.Position.Y, Is.EqualTo(3f));
+                Assert.That(scene.GameObjectOf(emitter).OrFail("the emitter's GameObject").Name, Is.EqualTo("Container"));
+                Assert.That(scene.FindGameObject("Ball").OrFail("Ball").World.Position.Y, Is.EqualTo(3f));
                 Assert.That(() => project.LoadScene("Nowhere"), Throws.TypeOf<FileNotFoundException>().With.Message.Contains("Main"));
             }
         }

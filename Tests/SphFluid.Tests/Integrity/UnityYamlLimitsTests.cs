@@ -69,8 +69,8 @@ namespace SphFluid.Tests.Integrity
 
             var file = Deadline.Within(60, () => UnityYamlFile.Parse(text.ToString(), "Wide.unity"), "parsing 200 000 keys");
 
-            Assert.That(file.Find(1).Root.Entries.Count, Is.EqualTo(200_001));
-            Assert.That(file.Find(1).Root.GetLong("k199999"), Is.EqualTo(199_999L));
+            Assert.That(file.Find(1).OrFail("document 1").Root.Entries.Count, Is.EqualTo(200_001));
+            Assert.That(file.Find(1).OrFail("document 1").Root.GetLong("k199999"), Is.EqualTo(199_999L));
         }
 
         [Test]

@@ -24,8 +24,8 @@ namespace SphFluid.Tests.Integrity
             Assert.That(file.Documents.Select(d => d.FileId), Is.EqualTo(new[] { 1L, -8840L, long.MaxValue }));
             Assert.That(file.Documents[0].TypeName, Is.EqualTo("OcclusionCullingSettings"));
             Assert.That(file.Documents[1].IsStripped, Is.True);
-            Assert.That(file.Documents[2].Root["m_Roots"].IsSequence, Is.True);
-            Assert.That(file.Documents[2].Root["m_Roots"].Items.Count, Is.EqualTo(0));
+            Assert.That(file.Documents[2].Root["m_Roots"].OrFail("m_Roots").IsSequence, Is.True);
+            Assert.That(file.Documents[2].Root["m_Roots"].OrFail("m_Roots").Items.Count, Is.EqualTo(0));
         }
 
         [Test]
@@ -51,26 +51,26 @@ namespace SphFluid.Tests.Integrity
                 "  tagged: Water #1\n" +
                 "  last: Infinity\n", "b.unity");
 
-            var root = file.Find(5).Root;
-            var script = root.GetReference("m_Script");
+            var root = file.Find(5).OrFail("document 5").Root;
+            var script = root.GetReference("m_Script").OrFail("m_Script");
             Assert.That(script.FileId, Is.EqualTo(11500000L));
             Assert.That(script.Guid, Is.EqualTo("0123456789abcdef0123456789abcdef"));
             Assert.That(script.Type, Is.EqualTo(3));
-            Assert.That(root["m_Name"].IsEmpty, Is.True);
+            Assert.That(root["m_Name"].OrFail("m_Name").IsEmpty, Is.True);
             Assert.That(root.GetString("label"), Is.EqualTo("it's: quoted"));
             Assert.That(root.GetString("escaped"), Is.EqualTo("tab\there \u00e9"));
             Assert.That(root.GetFloat("near clip plane"), Is.EqualTo(0.3f));
             Assert.That(root.GetVector3("bounds"), Is.EqualTo(new Vector3(10f, -5.5f, 0.001f)));
             Assert.That(root.GetColor("tint"), Is.EqualTo(new Vector4(1f, 0.5f, 0.25f, 1f)));
             Assert.That(root.GetString("apis"), Is.EqualTo("02000000"));
-            Assert.That(root["weights"].Items.Select(i => i.Value), Is.EqualTo(new[] { "0.5", "1" }));
+            Assert.That(root["weights"].OrFail("weights").Items.Select(i => i.Value), Is.EqualTo(new[] { "0.5", "1" }));
             Assert.That(root.GetFloat("emitters[1].radius"), Is.EqualTo(0.75f));
             Assert.That(root.GetVector3("emitters[1].origin"), Is.EqualTo(new Vector3(3f, 1f, -2f)));
-            Assert.That(root.At("emitters[0].tags").Items.Select(i => i.Value), Is.EqualTo(new[] { "a", "b" }));
-            Assert.That(root.At("emitters[1].tags").Items.Count, Is.EqualTo(0));
+            Assert.That(root.At("emitters[0].tags").OrFail("emitters[0].tags").Items.Select(i => i.Value), Is.EqualTo(new[] { "a", "b" }));
+            Assert.That(root.At("emitters[1].tags").OrFail("emitters[1].tags").Items.Count, Is.EqualTo(0));
             Assert.That(root.GetLong("collisionMask.m_Bits"), Is.EqualTo(4294967295L));
             Assert.That(root.GetString("note"), Is.EqualTo("a long plain string that Unity wrapped"));
-            Assert.That(root["empty"].IsMapping, Is.True);
+            Assert.That(root["empty"].OrFail("empty").IsMapping, Is.True);
             Assert.That(root.GetString("tagged"), Is.EqualTo("Water"));
             Assert.That(float.IsPositiveInfinity(root.GetFloat("last")), Is.True);
             Assert.That(root.References().Select(r => r.Path), Is.EqualTo(new[] { "m_Script" }));
@@ -117,16 +117,16 @@ namespace SphFluid.Tests.Integrity
                 "  m_LocalRotation: {x: 0, y: 0, z: 0, w: 1}\n  m_LocalPosition: {x: 1, y: 1, z: 0}\n  m_LocalScale: {x: 1, y: 3, z: 1}\n" +
                 "  m_Children: []\n  m_Father: {fileID: 11}\n", "World.unity");
 
-            var spawn = scene.FindGameObject("Spawn");
+            var spawn = scene.FindGameObject("Spawn").OrFail("Spawn");
             var world = spawn.World;
             // 90 degrees about +Y turns local +X into world -Z (as Unity's Quaternion.Euler(0, 90, 0) * Vector3.right does).
             Assert.That(Vector3.Distance(world.Position, new Vector3(5f, 2f, -2f)), Is.LessThan(1e-5f));
             Assert.That(Vector3.Distance(world.Scale, new Vector3(2f, 6f, 2f)), Is.LessThan(1e-6f));
             Assert.That(Vector3.Distance(world.TransformDirection(Vector3.UnitX), -Vector3.UnitZ), Is.LessThan(1e-5f));
             Assert.That(Vector3.Distance(Vector3.Transform(Vector3.Zero, world.LocalToWorld), world.Position), Is.LessThan(1e-5f));
-            Assert.That(spawn.Parent.Name, Is.EqualTo("Container"));
+            Assert.That(spawn.Parent.OrFail("Spawn's parent").Name, Is.EqualTo("Container"));
             Assert.That(spawn.HierarchyPath, Is.EqualTo("Container/Spawn"));
-            Assert.That(scene.FindGameObject("Container").Children.Select(c => c.Name), Is.EqualTo(new[] { "Spawn" }));
+            Assert.That(scene.FindGameObject("Container").OrFail("Container").Children.Select(c => c.Name), Is.EqualTo(new[] { "Spawn" }));
             Assert.That(scene.RootTransforms.Select(t => t.FileId), Is.EqualTo(new[] { 11L }));
         }
     }

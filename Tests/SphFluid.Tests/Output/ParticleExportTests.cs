@@ -103,8 +103,8 @@ namespace SphFluid.Tests.Output
 
             var pvd = new XmlDocument();
             pvd.Load(Path.Combine(dir, "particles.pvd"));
-            Assert.That(pvd.DocumentElement.GetAttribute("type"), Is.EqualTo("Collection"));
-            var sets = pvd.SelectNodes("/VTKFile/Collection/DataSet").Cast<XmlElement>().ToArray();
+            Assert.That(pvd.DocumentElement.OrFail("the .pvd's root").GetAttribute("type"), Is.EqualTo("Collection"));
+            var sets = pvd.SelectNodes("/VTKFile/Collection/DataSet").OrFail("the .pvd's DataSets").Cast<XmlElement>().ToArray();
             Assert.That(sets.Select(s => s.GetAttribute("file")).ToArray(), Is.EqualTo(new[] { "particles_0000.vtu", "particles_0001.vtu" }));
             Assert.That(sets.Select(s => double.Parse(s.GetAttribute("timestep"), CultureInfo.InvariantCulture)).ToArray(), Is.EqualTo(new[] { 0.0, 0.25 }));
         }

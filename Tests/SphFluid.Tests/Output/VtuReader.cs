@@ -18,26 +18,25 @@ namespace SphFluid.Tests.Output
         public VtuReader(string path)
         {
             _document.Load(path);
-            var root = _document.DocumentElement;
+            var root = _document.DocumentElement.OrFail(path + "'s root element");
             Assert.That(root.Name, Is.EqualTo("VTKFile"));
             Assert.That(root.GetAttribute("type"), Is.EqualTo("UnstructuredGrid"));
             Assert.That(root.GetAttribute("byte_order"), Is.EqualTo("LittleEndian"));
             Assert.That(root.GetAttribute("header_type"), Is.EqualTo("UInt64"));
         }
 
-        XmlElement Piece => (XmlElement)_document.SelectSingleNode("/VTKFile/UnstructuredGrid/Piece");
+        XmlElement Piece => (_document.SelectSingleNode("/VTKFile/UnstructuredGrid/Piece") as XmlElement).OrFail("Piece");
 
         public int Points => int.Parse(Piece.GetAttribute("NumberOfPoints"), CultureInfo.InvariantCulture);
 
         public int Cells => int.Parse(Piece.GetAttribute("NumberOfCells"), CultureInfo.InvariantCulture);
 
-        public double Time => double.Parse(_document.SelectSingleNode("/VTKFile/UnstructuredGrid/FieldData/DataArray[@Name='TimeValue']").InnerText, CultureInfo.InvariantCulture);
+        public double Time => double.Parse(_document.SelectSingleNode("/VTKFile/UnstructuredGrid/FieldData/DataArray[@Name='TimeValue']").OrFail("TimeValue").InnerText, CultureInfo.InvariantCulture);
 
         /// <summary>The values of the array at <paramref name="xpath"/> (relative to the Piece), checked for type and component count.</summary>
         public byte[] Raw(string xpath, string type, int components)
         {
-            var array = (XmlElement)Piece.SelectSingleNode(xpath);
-            Assert.That(array, Is.Not.Null, xpath);
+            var array = (Piece.SelectSingleNode(xpath) as XmlElement).OrFail(xpath);
             Assert.That(array.GetAttribute("type"), Is.EqualTo(type), xpath);
             Assert.That(array.GetAttribute("format"), Is.EqualTo("binary"), xpath);
             string declared = array.GetAttribute("NumberOfComponents");

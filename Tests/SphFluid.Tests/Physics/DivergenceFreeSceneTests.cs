@@ -60,7 +60,7 @@ namespace SphFluid.Tests.Physics
             var scene = DivergenceFree("OilAndWater");
             using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
             double reached = double.NaN, next = 0.5;
-            FluidMeasures last = null;
+            FluidMeasures? last = null;
             int water = Phase(sim, "Water"), oil = Phase(sim, "Oil");
             var particles = new Particle[sim.ParticleCount];
             var densities = new Vector4[sim.ParticleCount];
@@ -78,6 +78,7 @@ namespace SphFluid.Tests.Physics
                 if (double.IsNaN(reached) && last.LayeringIndex >= 0.95) reached = sim.SimulatedTime;
             }
             var report = sim.ReadDiagnostics();
+            Assert.That(last, Is.Not.Null, "measured every half second");
             TestContext.Progress.WriteLine($"DFSPH OilAndWater: layering 0.95 reached at {reached:F2} s; at 6 s {last.LayeringIndex:F3}, " +
                 $"oil floor share {100 * last.Phases[oil].FloorShare:F2} %; {report}");
             Assert.That(reached, Is.LessThanOrEqualTo(6.0 + 1e-5), "layering index >= 0.95 within 6 simulated seconds");

@@ -36,7 +36,7 @@ namespace SphFluid.Tests.Physics
         {
             using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
             double reached = double.NaN, next = 0.5;
-            FluidMeasures last = null;
+            FluidMeasures? last = null;
             while (sim.SimulatedTime < seconds - 1e-6)
             {
                 sim.Step(Frame);
@@ -48,7 +48,7 @@ namespace SphFluid.Tests.Physics
                     string.Join(" | ", sim.Phases.Select((p, k) => $"{p.Name} y {last.Phases[k].MeanHeight:F3} m floor {100 * last.Phases[k].FloorShare:F1} %"))));
                 if (double.IsNaN(reached) && last.LayeringIndex >= target) reached = sim.SimulatedTime;
             }
-            return (reached, last, sim.ReadDiagnostics());
+            return (reached, last ?? throw new ArgumentOutOfRangeException(nameof(seconds), seconds, "shorter than the half second between measures"), sim.ReadDiagnostics());
         }
 
         [Test]

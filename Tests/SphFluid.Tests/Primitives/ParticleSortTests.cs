@@ -123,10 +123,18 @@ namespace SphFluid.Tests.Primitives
 
         private sealed class GpuSort
         {
-            public Particle[] Particles;
-            public uint[] Source;
-            public uint[] CellStart;
-            public uint[] CellCount;
+            public readonly Particle[] Particles;
+            public readonly uint[] Source;
+            public readonly uint[] CellStart;
+            public readonly uint[] CellCount;
+
+            public GpuSort(int particles, int cells)
+            {
+                Particles = new Particle[particles];
+                Source = new uint[particles];
+                CellStart = new uint[cells];
+                CellCount = new uint[cells];
+            }
         }
 
         private GpuSort RunSort(Particle[] input)
@@ -134,13 +142,7 @@ namespace SphFluid.Tests.Primitives
             if (input.Length > 0) particles.SetData(input, 0, 0, input.Length);
             sorter.Sort(grid, particles, sorted, input.Length);
             device.Submit();
-            var result = new GpuSort
-            {
-                Particles = new Particle[input.Length],
-                Source = new uint[input.Length],
-                CellStart = new uint[grid.CellCount],
-                CellCount = new uint[grid.CellCount],
-            };
+            var result = new GpuSort(input.Length, grid.CellCount);
             if (input.Length > 0)
             {
                 sorted.GetData(result.Particles);

@@ -59,9 +59,9 @@ namespace SphFluid.Tests.Rendering
             const string resources = "Packages/com.sphfluid.fluid/Runtime/Resources/SphFluidResources.asset";
             const string universalShader = "Packages/com.sphfluid.fluid/Shaders/FluidParticlesUniversal.shader";
             var root = UnityYamlFile.Load(At(resources)).Documents.Single().Root;
-            Assert.That(root.GetReference("m_Script").Guid, Is.EqualTo(UnityMeta.GuidOf(At("Packages/com.sphfluid.fluid/Runtime/FluidResources.cs"))));
-            Assert.That(root.GetReference("particleMaterial").Guid, Is.EqualTo(UnityMeta.GuidOf(At(MaterialRelativePath))), "particleMaterial");
-            var universal = root.GetReference("universalParticleShader");
+            Assert.That(root.GetReference("m_Script").OrFail("m_Script").Guid, Is.EqualTo(UnityMeta.GuidOf(At("Packages/com.sphfluid.fluid/Runtime/FluidResources.cs"))));
+            Assert.That(root.GetReference("particleMaterial").OrFail("particleMaterial").Guid, Is.EqualTo(UnityMeta.GuidOf(At(MaterialRelativePath))), "particleMaterial");
+            var universal = root.GetReference("universalParticleShader").OrFail("universalParticleShader");
             Assert.That(universal.Guid, Is.EqualTo(UnityMeta.GuidOf(At(universalShader))), "universalParticleShader: the particles would not draw in URP");
             Assert.That(universal.FileId, Is.EqualTo(4800000L));
             foreach (string scene in Directory.GetFiles(At("Assets/FluidDemo/Scenes"), "*.unity"))
@@ -83,8 +83,9 @@ namespace SphFluid.Tests.Rendering
                     // Unity stores Float/Range/Int in m_Floats and only Integer in m_Ints.
                     var list = property.Type == "Integer" ? ints : floats;
                     if (!list.TryGetValue(property.Name, out var value)) { problems.Add(property.Name + ": no material entry"); continue; }
+                    if (value.Value == null) { problems.Add(property.Name + ": the material entry is not a number"); continue; }
                     float v = float.Parse(value.Value, CultureInfo.InvariantCulture);
-                    if (property.RangeMin.HasValue && (v < property.RangeMin.Value || v > property.RangeMax.Value))
+                    if (property.RangeMin is float min && property.RangeMax is float max && (v < min || v > max))
                         problems.Add(property.Name + " = " + v + " outside its Range(" + property.RangeMin + ", " + property.RangeMax + ")");
                 }
                 else if (property.IsVector && !colors.ContainsKey(property.Name))

@@ -93,10 +93,8 @@ namespace SphFluid.Tests.Rendering
             Assume.That(functionLine, Is.GreaterThanOrEqualTo(0), "no BackgroundBehind( line to break");
             int braceLine = Array.FindIndex(programLines, functionLine, l => l.Trim() == "{");
             programLines[braceLine + 1] = "float brokenOnPurpose = notDeclaredAnywhere;" + programLines[braceLine + 1];
-            var broken = new ShaderLabProgram
+            var broken = new ShaderLabProgram(string.Join("\n", programLines), original.FirstLine)
             {
-                Source = string.Join("\n", programLines),
-                FirstLine = original.FirstLine,
                 VertexEntry = original.VertexEntry,
                 FragmentEntry = original.FragmentEntry,
             };
@@ -107,7 +105,7 @@ namespace SphFluid.Tests.Rendering
             {
                 string hlsl = Path.Combine(work, "Broken.hlsl");
                 File.WriteAllText(hlsl, broken.WithLineDirective(ShaderRelativePath));
-                var result = GlslangShaderCheck.CompileStage(hlsl, "frag", broken.FragmentEntry, new string[0], work);
+                var result = GlslangShaderCheck.CompileStage(hlsl, "frag", broken.FragmentEntry.OrFail("#pragma fragment"), new string[0], work);
                 Assert.That(result.Succeeded, Is.False);
                 Assert.That(result.Messages, Does.Contain(ShaderRelativePath + ":" + expectedLine + ":"));
                 Assert.That(result.Messages, Does.Contain("notDeclaredAnywhere"));
@@ -131,7 +129,7 @@ namespace SphFluid.Tests.Rendering
                 var problems = new List<string>();
                 foreach (var defines in Platforms)
                 {
-                    foreach (var (stage, entry) in new[] { ("vert", program.VertexEntry), ("frag", program.FragmentEntry) })
+                    foreach (var (stage, entry) in new[] { ("vert", program.VertexEntry.OrFail("#pragma vertex")), ("frag", program.FragmentEntry.OrFail("#pragma fragment")) })
                     {
                         string tree = GlslangShaderCheck.IntermediateTree(hlsl, stage, entry, defines, work);
                         problems.AddRange(ImplicitTruncationLint.Find(tree).Select(p => stage + " " + p));
@@ -176,8 +174,8 @@ namespace SphFluid.Tests.Rendering
             {
                 string hlsl = Path.Combine(work, "FluidParticles.hlsl");
                 File.WriteAllText(hlsl, program.WithLineDirective(relativePath));
-                var result = GlslangShaderCheck.CompileStage(hlsl, "vert", program.VertexEntry, new string[0], work);
-                Assert.That(result.Succeeded, Is.True, result.Messages);
+                var result = GlslangShaderCheck.CompileStage(hlsl, "vert", program.VertexEntry.OrFail("#pragma vertex"), new string[0], work);
+                Assert.That(result.SpirvPath, Is.Not.Null, result.Messages);
 
                 byte[] bytes = File.ReadAllBytes(result.SpirvPath);
                 var reflection = SpirvReflection.Read(MemoryMarshal.Cast<byte, uint>(bytes));
@@ -275,7 +273,8 @@ namespace SphFluid.Tests.Rendering
             foreach (var property in Shader(relativePath).Properties.Where(p => p.Type == "Range"))
             {
                 float value = float.Parse(property.Default, System.Globalization.CultureInfo.InvariantCulture);
-                Assert.That(value, Is.InRange(property.RangeMin.Value, property.RangeMax.Value), property.Name + " (line " + property.Line + ")");
+                var (min, max) = property.Range;
+                Assert.That(value, Is.InRange(min, max), property.Name + " (line " + property.Line + ")");
             }
         }
 
@@ -289,7 +288,7 @@ namespace SphFluid.Tests.Rendering
             {
                 string hlsl = Path.Combine(work, "FluidParticles.hlsl");
                 File.WriteAllText(hlsl, program.WithLineDirective(relativePath));
-                foreach (var (profile, entry) in new[] { ("vs_6_0", program.VertexEntry), ("ps_6_0", program.FragmentEntry) })
+                foreach (var (profile, entry) in new[] { ("vs_6_0", program.VertexEntry.OrFail("#pragma vertex")), ("ps_6_0", program.FragmentEntry.OrFail("#pragma fragment")) })
                 {
                     var (exit, output) = GlslangShaderCheck.Run("dxc", new[] { "-T", profile, "-E", entry,
                         "-I", GlslangShaderCheck.StandInIncludeDir, "-I", GlslangShaderCheck.ShaderDir, "-Fo", Path.Combine(work, entry + ".dxil"), hlsl });

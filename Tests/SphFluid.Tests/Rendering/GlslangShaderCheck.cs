@@ -10,8 +10,14 @@ namespace SphFluid.Tests.Rendering
     /// <summary>The outcome of compiling one stage: the SPIR-V file (null on failure) and every message.</summary>
     public sealed class StageCompileResult
     {
-        public string SpirvPath { get; set; }
-        public string Messages { get; set; }
+        public StageCompileResult(string? spirvPath, string messages)
+        {
+            SpirvPath = spirvPath;
+            Messages = messages;
+        }
+
+        public string? SpirvPath { get; }
+        public string Messages { get; }
         public bool Succeeded => SpirvPath != null;
     }
 
@@ -35,7 +41,7 @@ namespace SphFluid.Tests.Rendering
             if (FindOnPath(tool) == null) Assert.Ignore(tool + " is not installed (apt-get install glslang-tools spirv-tools)");
         }
 
-        public static string FindOnPath(string tool)
+        public static string? FindOnPath(string tool)
         {
             foreach (string dir in (Environment.GetEnvironmentVariable("PATH") ?? "").Split(Path.PathSeparator))
             {
@@ -61,12 +67,12 @@ namespace SphFluid.Tests.Rendering
             args.Add(spv);
             var (exit, output) = Run("glslangValidator", args);
             if (exit != 0 || !File.Exists(spv))
-                return new StageCompileResult { Messages = "glslangValidator " + stage + " " + entry + " (exit " + exit + "):\n" + output.Trim() };
+                return new StageCompileResult(null, "glslangValidator " + stage + " " + entry + " (exit " + exit + "):\n" + output.Trim());
 
             var (valExit, valOutput) = Run("spirv-val", new List<string> { "--target-env", "vulkan1.1", spv });
             if (valExit != 0)
-                return new StageCompileResult { Messages = "spirv-val " + stage + " " + entry + " (exit " + valExit + "):\n" + valOutput.Trim() };
-            return new StageCompileResult { SpirvPath = spv, Messages = output.Trim() };
+                return new StageCompileResult(null, "spirv-val " + stage + " " + entry + " (exit " + valExit + "):\n" + valOutput.Trim());
+            return new StageCompileResult(spv, output.Trim());
         }
 
         /// <summary>glslang's intermediate tree (-i) of one stage, for lints glslang itself does not perform.</summary>
@@ -94,7 +100,7 @@ namespace SphFluid.Tests.Rendering
                 CreateNoWindow = true,
             };
             foreach (string a in args) start.ArgumentList.Add(a);
-            using (var process = Process.Start(start))
+            using (var process = Process.Start(start) ?? throw new InvalidOperationException(tool + " did not start"))
             {
                 var stdout = process.StandardOutput.ReadToEndAsync();
                 var stderr = process.StandardError.ReadToEndAsync();

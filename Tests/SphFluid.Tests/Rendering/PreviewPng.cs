@@ -36,7 +36,7 @@ namespace SphFluid.Tests.Rendering
             WriteBigEndian(header, 4, (uint)height);
             header[8] = 8; // bit depth
             header[9] = 2; // colour type: RGB
-            Directory.CreateDirectory(Path.GetDirectoryName(path));
+            Directory.CreateDirectory(Path.GetDirectoryName(Path.GetFullPath(path)) ?? throw new ArgumentException("a file path, not a root", nameof(path)));
             using (var file = File.Create(path))
             {
                 file.Write(new byte[] { 0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A }, 0, 8);

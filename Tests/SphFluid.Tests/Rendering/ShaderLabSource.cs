@@ -11,12 +11,25 @@ namespace SphFluid.Tests.Rendering
     /// <summary>One <c>_Name ("Label", Type) = default</c> line of a ShaderLab Properties block.</summary>
     public sealed class ShaderLabProperty
     {
-        public string Name { get; set; }
-        public string Type { get; set; }        // Range, Float, Int, Integer, Color, Vector, 2D, 3D, Cube, ...
-        public string Default { get; set; }     // text after '=' as written
+        public ShaderLabProperty(string name, string type, string defaultText, int line)
+        {
+            Name = name;
+            Type = type;
+            Default = defaultText;
+            Line = line;
+        }
+
+        public string Name { get; }
+        public string Type { get; }        // Range, Float, Int, Integer, Color, Vector, 2D, 3D, Cube, ...
+        public string Default { get; }     // text after '=' as written
+        /// <summary>The bounds of a Range property; null for every other type.</summary>
         public float? RangeMin { get; set; }
         public float? RangeMax { get; set; }
-        public int Line { get; set; }
+        public int Line { get; }
+
+        /// <summary>Both bounds of a Range property (an error for any other type, which has none).</summary>
+        public (float Min, float Max) Range => RangeMin is float min && RangeMax is float max
+            ? (min, max) : throw new InvalidOperationException(Name + " (" + Type + ") is not a Range property");
 
         public bool IsNumber => Type == "Range" || Type == "Float" || Type == "Int" || Type == "Integer";
         public bool IsVector => Type == "Color" || Type == "Vector";
@@ -25,11 +38,18 @@ namespace SphFluid.Tests.Rendering
     /// <summary>One HLSLPROGRAM/CGPROGRAM block with the line its first source line has in the .shader file.</summary>
     public sealed class ShaderLabProgram
     {
-        public string Source { get; set; }
-        public int FirstLine { get; set; }
-        public string VertexEntry { get; set; }
-        public string FragmentEntry { get; set; }
-        public string Target { get; set; }
+        public ShaderLabProgram(string source, int firstLine)
+        {
+            Source = source;
+            FirstLine = firstLine;
+        }
+
+        public string Source { get; }
+        public int FirstLine { get; }
+        /// <summary>The #pragma vertex, fragment and target values; null where the program has no such line.</summary>
+        public string? VertexEntry { get; set; }
+        public string? FragmentEntry { get; set; }
+        public string? Target { get; set; }
 
         /// <summary>The program as a standalone HLSL file whose compiler messages name the .shader file and its lines.</summary>
         public string WithLineDirective(string shaderPathForMessages) =>
@@ -54,7 +74,9 @@ namespace SphFluid.Tests.Rendering
                 string file = System.IO.Path.GetFullPath(System.IO.Path.Combine(directory, m.Groups[1].Value));
                 if (!File.Exists(file)) return m.Value;
                 if (!seen.Add(file)) return "";
-                return Inline(File.ReadAllText(file).Replace("\r\n", "\n"), System.IO.Path.GetDirectoryName(file), seen);
+                // A full path to an existing file always has a folder.
+                string folder = System.IO.Path.GetDirectoryName(file) ?? directory;
+                return Inline(File.ReadAllText(file).Replace("\r\n", "\n"), folder, seen);
             });
     }
 
@@ -69,18 +91,28 @@ namespace SphFluid.Tests.Rendering
             "^\\s*(?:\\[[^\\]]*\\]\\s*)*(_\\w+)\\s*\\(\\s*\"[^\"]*\"\\s*,\\s*(Range\\s*\\(\\s*([-+0-9.eE]+)\\s*,\\s*([-+0-9.eE]+)\\s*\\)|\\w+)\\s*\\)\\s*=\\s*(.+?)\\s*$");
         static readonly Regex PragmaLine = new Regex("^\\s*#pragma\\s+(vertex|fragment|target)\\s+(\\S+)");
 
-        public string Path { get; private set; }
-        public string Name { get; private set; }
-        public IReadOnlyList<ShaderLabProperty> Properties { get; private set; }
-        public IReadOnlyList<ShaderLabProgram> Programs { get; private set; }
-        public string Text { get; private set; }
+        ShaderLabSource(string path, string? name, IReadOnlyList<ShaderLabProperty> properties, IReadOnlyList<ShaderLabProgram> programs, string text)
+        {
+            Path = path;
+            Name = name;
+            Properties = properties;
+            Programs = programs;
+            Text = text;
+        }
+
+        public string Path { get; }
+        /// <summary>The name on the <c>Shader "..."</c> line; null where the file has none.</summary>
+        public string? Name { get; }
+        public IReadOnlyList<ShaderLabProperty> Properties { get; }
+        public IReadOnlyList<ShaderLabProgram> Programs { get; }
+        public string Text { get; }
 
         public static ShaderLabSource Load(string path) => Parse(File.ReadAllText(path), path);
 
         public static ShaderLabSource Parse(string text, string path)
         {
             string[] lines = text.Replace("\r\n", "\n").Split('\n');
-            var result = new ShaderLabSource { Path = path, Text = text };
+            string? shaderName = null;
             var properties = new List<ShaderLabProperty>();
             var programs = new List<ShaderLabProgram>();
 
@@ -90,10 +122,10 @@ namespace SphFluid.Tests.Rendering
             {
                 string line = StripLineComment(lines[i]);
                 string trimmed = line.Trim();
-                if (result.Name == null)
+                if (shaderName == null)
                 {
                     var name = NameLine.Match(line);
-                    if (name.Success) result.Name = name.Groups[1].Value;
+                    if (name.Success) shaderName = name.Groups[1].Value;
                 }
                 if (!inProperties && Regex.IsMatch(trimmed, "^Properties\\b"))
                 {
@@ -106,14 +138,10 @@ namespace SphFluid.Tests.Rendering
                     if (property.Success)
                     {
                         bool isRange = property.Groups[2].Value.StartsWith("Range", StringComparison.Ordinal);
-                        properties.Add(new ShaderLabProperty
+                        properties.Add(new ShaderLabProperty(property.Groups[1].Value, isRange ? "Range" : property.Groups[2].Value, property.Groups[5].Value, i + 1)
                         {
-                            Name = property.Groups[1].Value,
-                            Type = isRange ? "Range" : property.Groups[2].Value,
                             RangeMin = isRange ? float.Parse(property.Groups[3].Value, CultureInfo.InvariantCulture) : (float?)null,
                             RangeMax = isRange ? float.Parse(property.Groups[4].Value, CultureInfo.InvariantCulture) : (float?)null,
-                            Default = property.Groups[5].Value,
-                            Line = i + 1,
                         });
                     }
                     propertiesDepth += line.Count(c => c == '{') - line.Count(c => c == '}');
@@ -127,25 +155,22 @@ namespace SphFluid.Tests.Rendering
                     int last = first;
                     while (last < lines.Length && lines[last].Trim() != end) last++;
                     if (last >= lines.Length) throw new FormatException(path + ":" + (i + 1) + ": " + trimmed + " without " + end);
-                    var program = new ShaderLabProgram { FirstLine = first + 1 };
+                    string? vertex = null, fragment = null, target = null;
                     var source = new StringBuilder();
                     for (int k = first; k < last; k++)
                     {
                         source.Append(lines[k]).Append('\n');
                         var pragma = PragmaLine.Match(lines[k]);
                         if (!pragma.Success) continue;
-                        if (pragma.Groups[1].Value == "vertex") program.VertexEntry = pragma.Groups[2].Value;
-                        else if (pragma.Groups[1].Value == "fragment") program.FragmentEntry = pragma.Groups[2].Value;
-                        else program.Target = pragma.Groups[2].Value;
+                        if (pragma.Groups[1].Value == "vertex") vertex = pragma.Groups[2].Value;
+                        else if (pragma.Groups[1].Value == "fragment") fragment = pragma.Groups[2].Value;
+                        else target = pragma.Groups[2].Value;
                     }
-                    program.Source = source.ToString();
-                    programs.Add(program);
+                    programs.Add(new ShaderLabProgram(source.ToString(), first + 1) { VertexEntry = vertex, FragmentEntry = fragment, Target = target });
                     i = last;
                 }
             }
-            result.Properties = properties;
-            result.Programs = programs;
-            return result;
+            return new ShaderLabSource(path, shaderName, properties, programs, text);
         }
 
         static string StripLineComment(string line)

@@ -22,9 +22,16 @@ namespace SphFluid.Tests.Runner
 
         sealed class Outcome
         {
-            public int Code;
-            public string Stdout;
-            public string Stderr;
+            public readonly int Code;
+            public readonly string Stdout;
+            public readonly string Stderr;
+
+            public Outcome(int code, string stdout, string stderr)
+            {
+                Code = code;
+                Stdout = stdout;
+                Stderr = stderr;
+            }
         }
 
         static Outcome Run(double seconds, params string[] args)
@@ -34,7 +41,7 @@ namespace SphFluid.Tests.Runner
                 var o = new StringWriter();
                 var e = new StringWriter();
                 int code = Program.Run(args, o, e);
-                return new Outcome { Code = code, Stdout = o.ToString(), Stderr = e.ToString() };
+                return new Outcome(code, o.ToString(), e.ToString());
             }, "sphfluid " + string.Join(" ", args.Select(a => a.Length > 60 ? a.Substring(0, 60) + "..." : a)));
             TestContext.Out.WriteLine($"exit {outcome.Code}: {outcome.Stderr}");
             Assert.That(outcome.Stderr, Does.Not.Contain("Exception"), "a message for the reader, never an exception type name");
@@ -46,7 +53,7 @@ namespace SphFluid.Tests.Runner
 
         /// <summary>The default scene with <paramref name="find"/> replaced inside the one document that starts with
         /// <paramref name="header"/>; <paramref name="line"/> is the 1-based line of the edit.</summary>
-        static string EditDocument(string header, string find, string replace, out int line, string text = null)
+        static string EditDocument(string header, string find, string replace, out int line, string? text = null)
         {
             text = text ?? File.ReadAllText(RunnerPaths.Scene(Default));
             int start = text.IndexOf(header, StringComparison.Ordinal);

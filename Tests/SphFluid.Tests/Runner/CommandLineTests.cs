@@ -37,7 +37,7 @@ namespace SphFluid.Tests.Runner
         [TestCase("--frames-every", "abc", "--frames-every must be a number in [0.0001, 3600] s (was 'abc')")]
         [TestCase("--particles-scale", "1000", "--particles-scale must be in [0.01, 100] (was 1000)")]
         [TestCase("--out", null, "option --out needs a value")]
-        public void OutOfRangeValuesAreRefusedWithTheirRange(string option, string value, string message)
+        public void OutOfRangeValuesAreRefusedWithTheirRange(string option, string? value, string message)
         {
             var args = value == null
                 ? new[] { "simulate", RunnerPaths.Scene("PlayModeTest"), option }

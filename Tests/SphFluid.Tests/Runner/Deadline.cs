@@ -18,7 +18,7 @@ namespace SphFluid.Tests.Runner
         }
 
         /// <summary>The exception <paramref name="work"/> throws, or null; to assert on outside the worker thread.</summary>
-        public static Exception Thrown(Action work)
+        public static Exception? Thrown(Action work)
         {
             try
             {

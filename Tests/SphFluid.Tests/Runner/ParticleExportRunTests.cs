@@ -104,18 +104,19 @@ namespace SphFluid.Tests.Runner
             // 60 Hz frames: exports at t = 0, at the first frame past 0.025 s (0.0333) and at 0.05 s.
             var pvd = new XmlDocument();
             pvd.Load(Path.Combine(outDir, "particles.pvd"));
-            var sets = pvd.SelectNodes("/VTKFile/Collection/DataSet").Cast<XmlElement>().ToArray();
+            var sets = pvd.SelectNodes("/VTKFile/Collection/DataSet").OrFail("the .pvd's DataSets").Cast<XmlElement>().ToArray();
             Assert.That(sets.Select(s => s.GetAttribute("file")).ToArray(), Is.EqualTo(new[] { "particles_0000.vtu", "particles_0001.vtu", "particles_0002.vtu" }));
             Assert.That(double.Parse(sets[1].GetAttribute("timestep"), System.Globalization.CultureInfo.InvariantCulture), Is.EqualTo(2.0 / 60).Within(1e-4));
             var last = new VtuReader(Path.Combine(outDir, "particles_0002.vtu"));
             Assert.That(last.Points, Is.EqualTo(192));
-            Assert.That(last.Time, Is.EqualTo(run.Summary.SimulatedSeconds).Within(1e-9));
+            var summary = run.Summary.OrFail("the run's summary");
+            Assert.That(last.Time, Is.EqualTo(summary.SimulatedSeconds).Within(1e-9));
             Assert.That(new PlyReader(Path.Combine(outDir, "particles_0002.ply")).Vertices, Is.EqualTo(192));
             Assert.That(File.Exists(Path.Combine(outDir, "particles_0003.vtu")), Is.False);
-            Assert.That(run.Summary.Exports, Is.EqualTo(3));
-            string summary = File.ReadAllText(Path.Combine(outDir, "summary.txt"));
-            Assert.That(summary, Does.Contain("particles_0000.vtu/.ply .. particles_0002.vtu/.ply, particles.pvd"));
-            Assert.That(summary, Does.Contain("surge front: "));
+            Assert.That(summary.Exports, Is.EqualTo(3));
+            string summaryText = File.ReadAllText(Path.Combine(outDir, "summary.txt"));
+            Assert.That(summaryText, Does.Contain("particles_0000.vtu/.ply .. particles_0002.vtu/.ply, particles.pvd"));
+            Assert.That(summaryText, Does.Contain("surge front: "));
             Assert.That(stdout.ToString(), Does.Contain(" PE="));
             Assert.That(stdout.ToString(), Does.Contain("3 particle export(s)"));
         }

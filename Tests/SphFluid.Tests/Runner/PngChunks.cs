@@ -12,10 +12,18 @@ namespace SphFluid.Tests.Runner
     {
         public sealed class Chunk
         {
-            public string Type;
-            public byte[] Data;
-            public uint StoredCrc;
-            public uint ComputedCrc;
+            public readonly string Type;
+            public readonly byte[] Data;
+            public readonly uint StoredCrc;
+            public readonly uint ComputedCrc;
+
+            public Chunk(string type, byte[] data, uint storedCrc, uint computedCrc)
+            {
+                Type = type;
+                Data = data;
+                StoredCrc = storedCrc;
+                ComputedCrc = computedCrc;
+            }
         }
 
         public static List<Chunk> Read(byte[] png)
@@ -26,13 +34,11 @@ namespace SphFluid.Tests.Runner
             {
                 int length = BinaryPrimitives.ReadInt32BigEndian(png.AsSpan(at));
                 var typeAndData = png.AsSpan(at + 4, 4 + length);
-                chunks.Add(new Chunk
-                {
-                    Type = Encoding.ASCII.GetString(typeAndData.Slice(0, 4)),
-                    Data = typeAndData.Slice(4).ToArray(),
-                    StoredCrc = BinaryPrimitives.ReadUInt32BigEndian(png.AsSpan(at + 8 + length)),
-                    ComputedCrc = Crc32.HashToUInt32(typeAndData),
-                });
+                chunks.Add(new Chunk(
+                    Encoding.ASCII.GetString(typeAndData.Slice(0, 4)),
+                    typeAndData.Slice(4).ToArray(),
+                    BinaryPrimitives.ReadUInt32BigEndian(png.AsSpan(at + 8 + length)),
+                    Crc32.HashToUInt32(typeAndData)));
                 at += 12 + length;
             }
             return chunks;

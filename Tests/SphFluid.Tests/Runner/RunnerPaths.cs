@@ -11,7 +11,7 @@ namespace SphFluid.Tests.Runner
 
         public static string Scene(string name) => Path.Combine(GpuTestDevice.RepoRoot, "Assets", "FluidDemo", "Scenes", name + ".unity");
 
-        static UnityProject _project;
+        static UnityProject? _project;
 
         public static UnityProject Project => _project ?? (_project = new UnityProject(GpuTestDevice.RepoRoot));
 

@@ -39,9 +39,10 @@ namespace SphFluid.Tests.Runner
             Assert.That(File.ReadAllText(Path.Combine(outDir, "summary.txt")), Does.Contain("result: ok"));
             Assert.That(stdout.ToString(), Does.Contain("plan: 1 phase, 0 obstacles"));
             Assert.That(stdout.ToString(), Does.Contain("device: "));
-            Assert.That(run.Summary.Ok, Is.True);
-            Assert.That(run.Summary.SimulatedSeconds, Is.EqualTo(0.05).Within(1e-4));
-            Assert.That(run.Summary.Last.TotalMass, Is.EqualTo(run.Summary.First.TotalMass), "mass exactly constant");
+            var summary = run.Summary.OrFail("the run's summary");
+            Assert.That(summary.Ok, Is.True);
+            Assert.That(summary.SimulatedSeconds, Is.EqualTo(0.05).Within(1e-4));
+            Assert.That(summary.Last.OrFail("the last diagnostics").TotalMass, Is.EqualTo(summary.First.OrFail("the first diagnostics").TotalMass), "mass exactly constant");
         }
 
         [Test]
@@ -58,7 +59,7 @@ namespace SphFluid.Tests.Runner
             Assert.That(File.Exists(Path.Combine(outDir, "top_0000.png")), Is.True);
             Assert.That(File.ReadAllLines(Path.Combine(outDir, "diagnostics.csv"))[0], Does.EndWith("oil_mean_height_m,oil_bottom_m,oil_top_m,oil_floor_share,oil_wall_share,layering_index,surge_front_m,back_wall_column_m,potential_energy_J,clamp_hits,density_iterations,divergence_iterations,divergence_error_pct_per_s"));
             Assert.That(stdout.ToString(), Does.Contain("scaled x0.1"));
-            Assert.That(run.Summary.Frames, Is.EqualTo(2));
+            Assert.That(run.Summary.OrFail("the run's summary").Frames, Is.EqualTo(2));
         }
 
         [Test]

@@ -19,8 +19,14 @@ namespace SphFluid.Tests.Solver
     {
         sealed class Dispatch
         {
-            public string Kernel;
-            public HashSet<string> Keywords;
+            public readonly string Kernel;
+            public readonly HashSet<string> Keywords;
+
+            public Dispatch(string kernel, HashSet<string> keywords)
+            {
+                Kernel = kernel;
+                Keywords = keywords;
+            }
         }
 
         /// <summary>Forwards to the shared device and records each dispatch of the solver program.</summary>
@@ -50,7 +56,7 @@ namespace SphFluid.Tests.Solver
             public override void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ)
             {
                 if (program.Name.Contains(FluidSimulation.SolverProgramName))
-                    Dispatches.Add(new Dispatch { Kernel = NameOf(program, kernel), Keywords = new HashSet<string>(_keywords[program]) });
+                    Dispatches.Add(new Dispatch(NameOf(program, kernel), new HashSet<string>(_keywords[program])));
                 Inner.Dispatch(program, kernel, groupsX, groupsY, groupsZ);
             }
 
@@ -59,7 +65,7 @@ namespace SphFluid.Tests.Solver
                 if (_names.Count == 0 || !_names.Keys.Any(k => k.Item1 == program))
                     foreach (string name in new[] { "HalfStep", "PlaceBoundary", "DensityPressure", "WallPressure", "Normals", "Forces", "FullStep" })
                         _names[(program, program.FindKernel(name))] = name;
-                return _names.TryGetValue((program, kernel), out string known) ? known : "kernel " + kernel;
+                return _names.TryGetValue((program, kernel), out string? known) ? known : "kernel " + kernel;
             }
         }
 
@@ -74,7 +80,7 @@ namespace SphFluid.Tests.Solver
         }
 
         /// <summary>The dispatches of frames after the first (the first places the container's walls once).</summary>
-        static List<Dispatch> LaterFrames(PlanOverrides forced)
+        static List<Dispatch> LaterFrames(PlanOverrides? forced)
         {
             var device = new DispatchCountingDevice(GpuTestDevice.Shared);
             using (var sim = new FluidSimulation(device, PlainScene()) { ForcedEffects = forced })

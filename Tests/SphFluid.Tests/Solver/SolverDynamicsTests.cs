@@ -18,11 +18,10 @@ namespace SphFluid.Tests.Solver
         static void Log(string line) => TestContext.Out.WriteLine(line);
 
         /// <summary>Runs frames of 1/60 s until <paramref name="seconds"/> of simulated time, logging diagnostics now and then.</summary>
-        static DiagnosticsReport Run(FluidSimulation sim, double seconds, Action<FluidSimulation, int> perFrame = null)
+        static DiagnosticsReport Run(FluidSimulation sim, double seconds, Action<FluidSimulation, int>? perFrame = null)
         {
             var clock = Stopwatch.StartNew();
             int frame = 0, substeps = 0;
-            DiagnosticsReport last = null;
             while (sim.SimulatedTime < seconds - 1e-6)
             {
                 perFrame?.Invoke(sim, frame);
@@ -31,11 +30,10 @@ namespace SphFluid.Tests.Solver
                 frame++;
                 if (frame % 30 == 0)
                 {
-                    last = sim.ReadDiagnostics();
-                    Log($"frame {frame} ({step}) {last}");
+                    Log($"frame {frame} ({step}) {sim.ReadDiagnostics()}");
                 }
             }
-            last = sim.ReadDiagnostics();
+            var last = sim.ReadDiagnostics();
             Log($"end: {frame} frames, {substeps} sub-steps in {clock.Elapsed.TotalSeconds:F1} s wall; {last}");
             return last;
         }

@@ -215,17 +215,21 @@ namespace SphFluid.Tests.Solver
     /// <summary>A blocking read-back of the solver's per-particle buffers (sorted order).</summary>
     public sealed class GpuState
     {
-        public Particle[] Particles;
-        public Vector4[] Densities, Normals, Accelerations, Xsph;
+        public readonly Particle[] Particles;
+        public readonly Vector4[] Densities, Normals, Accelerations, Xsph;
+
+        GpuState(int n)
+        {
+            Particles = new Particle[n];
+            Densities = new Vector4[n];
+            Normals = new Vector4[n];
+            Accelerations = new Vector4[n];
+            Xsph = new Vector4[n];
+        }
 
         public static GpuState Read(FluidSimulation sim)
         {
-            int n = sim.ParticleCount;
-            var s = new GpuState
-            {
-                Particles = new Particle[n], Densities = new Vector4[n], Normals = new Vector4[n],
-                Accelerations = new Vector4[n], Xsph = new Vector4[n],
-            };
+            var s = new GpuState(sim.ParticleCount);
             sim.Particles.GetData(s.Particles);
             sim.Densities.GetData(s.Densities);
             sim.Normals.GetData(s.Normals);
