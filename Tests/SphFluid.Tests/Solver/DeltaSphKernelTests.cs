@@ -55,13 +55,13 @@ namespace SphFluid.Tests.Solver
             reference.DensityRates(start, velocities, delta, out var continuity, out var diffusion);
             var state = reference.Evaluate(start, true, delta);
 
-            Assert.That(Max(n, k => diffusion[k]), Is.GreaterThan(1e-3 * Max(n, k => continuity[k])), "the diffusion must have work");
-            Compare("continuity term", n, k => continuity[k], k => rates[byId[k]].X);
-            Compare("diffusion term", n, k => diffusion[k], k => rates[byId[k]].Y);
-            Compare("number density", n, k => state.NumberDensity[k], k => gpu.Densities[byId[k]].Z);
-            Compare("pressure", n, k => state.Pressure[k], k => gpu.Densities[byId[k]].Y);
-            Assert.That(Max(n, k => state.Pressure[k]), Is.GreaterThan(100.0), "the case must be compressed");
-            CompareVectors("acceleration", Tolerance, n, k => state.Acceleration[k], k => new Double3(gpu.Accelerations[byId[k]].X, gpu.Accelerations[byId[k]].Y, gpu.Accelerations[byId[k]].Z));
+            Assert.That(ReferenceComparison.Max(n, k => diffusion[k]), Is.GreaterThan(1e-3 * ReferenceComparison.Max(n, k => continuity[k])), "the diffusion must have work");
+            ReferenceComparison.Compare("continuity term", Tolerance, n, k => continuity[k], k => rates[byId[k]].X);
+            ReferenceComparison.Compare("diffusion term", Tolerance, n, k => diffusion[k], k => rates[byId[k]].Y);
+            ReferenceComparison.Compare("number density", Tolerance, n, k => state.NumberDensity[k], k => gpu.Densities[byId[k]].Z);
+            ReferenceComparison.Compare("pressure", Tolerance, n, k => state.Pressure[k], k => gpu.Densities[byId[k]].Y);
+            Assert.That(ReferenceComparison.Max(n, k => state.Pressure[k]), Is.GreaterThan(100.0), "the case must be compressed");
+            ReferenceComparison.CompareVectors("acceleration", Tolerance, n, k => state.Acceleration[k], k => new Double3(gpu.Accelerations[byId[k]].X, gpu.Accelerations[byId[k]].Y, gpu.Accelerations[byId[k]].Z));
 
             const float dt = 0.0005f;
             var expected = reference.Substep(start, state, dt, sim.Plan.Xsph, delta, out _);
@@ -70,44 +70,10 @@ namespace SphFluid.Tests.Solver
             var afterById = after.IndexById();
             var stepped = new float[n];
             sim.NumberDensities.GetData(stepped);
-            Compare("number density change over the sub-step", n, k => delta[k] - carried[k], k => (double)stepped[k] - carried[k]);
-            CompareVectors("displacement", MotionTolerance, n, k => new Double3(expected[k].Position) - new Double3(start[k].Position),
+            ReferenceComparison.Compare("number density change over the sub-step", Tolerance, n, k => delta[k] - carried[k], k => (double)stepped[k] - carried[k]);
+            ReferenceComparison.CompareVectors("displacement", MotionTolerance, n, k => new Double3(expected[k].Position) - new Double3(start[k].Position),
                 k => new Double3(after.Particles[afterById[k]].Position) - new Double3(start[k].Position));
-            CompareVectors("velocity", MotionTolerance, n, k => new Double3(expected[k].Velocity), k => new Double3(after.Particles[afterById[k]].Velocity));
-        }
-
-        static double Max(int n, Func<int, double> f)
-        {
-            double m = 0;
-            for (int i = 0; i < n; i++) m = Math.Max(m, Math.Abs(f(i)));
-            return m;
-        }
-
-        static void Compare(string what, int n, Func<int, double> expected, Func<int, double> actual)
-        {
-            double scale = Math.Max(Max(n, expected), 1e-30), worst = 0;
-            int at = -1;
-            for (int i = 0; i < n; i++)
-            {
-                double e = Math.Abs(actual(i) - expected(i)) / scale;
-                if (e > worst) { worst = e; at = i; }
-            }
-            TestContext.Out.WriteLine($"{what}: scale {scale:G4}, worst relative error {worst:E2}");
-            Assert.That(worst, Is.LessThanOrEqualTo(Tolerance), $"{what}: particle id {at} (scale {scale:G4})");
-        }
-
-        static void CompareVectors(string what, double tolerance, int n, Func<int, Double3> expected, Func<int, Double3> actual)
-        {
-            double scale = Math.Max(Max(n, i => expected(i).Length()), 1e-30), worst = 0;
-            int at = -1;
-            for (int i = 0; i < n; i++)
-            {
-                var d = actual(i) - expected(i);
-                double e = Math.Max(Math.Abs(d.X), Math.Max(Math.Abs(d.Y), Math.Abs(d.Z))) / scale;
-                if (e > worst) { worst = e; at = i; }
-            }
-            TestContext.Out.WriteLine($"{what}: scale {scale:G4}, worst relative component error {worst:E2}");
-            Assert.That(worst, Is.LessThanOrEqualTo(tolerance), $"{what}: particle id {at} (scale {scale:G4})");
+            ReferenceComparison.CompareVectors("velocity", MotionTolerance, n, k => new Double3(expected[k].Velocity), k => new Double3(after.Particles[afterById[k]].Velocity));
         }
     }
 }

@@ -65,47 +65,13 @@ namespace SphFluid.Tests.Solver
             var warm = new Vector2[sim.ParticleCount];
             sim.WarmStart.GetData(warm);
             int n = input.Length;
-            Assert.That(Max(n, i => densityQ[i]), Is.GreaterThan(0.0), "the constant-density solve must have work");
-            Assert.That(Max(n, i => divergenceQ[i]), Is.GreaterThan(0.0), "the divergence-free solve must have work");
-            Compare("constant-density q", n, i => densityQ[i], i => warm[i].X);
-            Compare("divergence-free q", n, i => divergenceQ[i], i => warm[i].Y);
-            CompareVectors("displacement", n, i => new Double3(expected[i].Position) - new Double3(start[i].Position),
+            Assert.That(ReferenceComparison.Max(n, i => densityQ[i]), Is.GreaterThan(0.0), "the constant-density solve must have work");
+            Assert.That(ReferenceComparison.Max(n, i => divergenceQ[i]), Is.GreaterThan(0.0), "the divergence-free solve must have work");
+            ReferenceComparison.Compare("constant-density q", Tolerance, n, i => densityQ[i], i => warm[i].X);
+            ReferenceComparison.Compare("divergence-free q", Tolerance, n, i => divergenceQ[i], i => warm[i].Y);
+            ReferenceComparison.CompareVectors("displacement", Tolerance, n, i => new Double3(expected[i].Position) - new Double3(start[i].Position),
                 i => new Double3(after.Particles[byId[i]].Position) - new Double3(start[i].Position));
-            CompareVectors("velocity", n, i => new Double3(expected[i].Velocity), i => new Double3(after.Particles[byId[i]].Velocity));
-        }
-
-        static double Max(int n, Func<int, double> f)
-        {
-            double m = 0;
-            for (int i = 0; i < n; i++) m = Math.Max(m, Math.Abs(f(i)));
-            return m;
-        }
-
-        static void Compare(string what, int n, Func<int, double> expected, Func<int, double> actual)
-        {
-            double scale = Math.Max(Max(n, expected), 1e-30), worst = 0;
-            int at = -1;
-            for (int i = 0; i < n; i++)
-            {
-                double e = Math.Abs(actual(i) - expected(i)) / scale;
-                if (e > worst) { worst = e; at = i; }
-            }
-            TestContext.Out.WriteLine($"{what}: scale {scale:G4}, worst relative error {worst:E2}");
-            Assert.That(worst, Is.LessThanOrEqualTo(Tolerance), $"{what}: particle id {at} (scale {scale:G4})");
-        }
-
-        static void CompareVectors(string what, int n, Func<int, Double3> expected, Func<int, Double3> actual)
-        {
-            double scale = Math.Max(Max(n, i => expected(i).Length()), 1e-30), worst = 0;
-            int at = -1;
-            for (int i = 0; i < n; i++)
-            {
-                var d = actual(i) - expected(i);
-                double e = Math.Max(Math.Abs(d.X), Math.Max(Math.Abs(d.Y), Math.Abs(d.Z))) / scale;
-                if (e > worst) { worst = e; at = i; }
-            }
-            TestContext.Out.WriteLine($"{what}: scale {scale:G4}, worst relative component error {worst:E2}");
-            Assert.That(worst, Is.LessThanOrEqualTo(Tolerance), $"{what}: particle id {at} (scale {scale:G4})");
+            ReferenceComparison.CompareVectors("velocity", Tolerance, n, i => new Double3(expected[i].Velocity), i => new Double3(after.Particles[byId[i]].Velocity));
         }
     }
 }
