@@ -5,7 +5,6 @@ using System.IO;
 using System.Linq;
 using System.Reflection;
 using NUnit.Framework;
-using SphFluid.Headless.Output;
 using SphFluid.Headless.Scenes;
 using SphFluid.Simulation;
 using SphFluid.Tests.Core.Simulation;
@@ -45,17 +44,8 @@ namespace SphFluid.Tests.Integrity
         }
 
         [Test]
-        public void TheReadmeTableIsTheDeclarations()
-        {
-            string readme = File.ReadAllText(Path.Combine(GpuTestDevice.RepoRoot, "README.md")).Replace("\r\n", "\n");
-            int start = readme.IndexOf(Begin, StringComparison.Ordinal);
-            int end = readme.IndexOf(End, StringComparison.Ordinal);
-            Assert.That(start, Is.GreaterThanOrEqualTo(0), "README.md lacks the marker " + Begin);
-            Assert.That(end, Is.GreaterThan(start), "README.md lacks the marker " + End);
-            string expected = SettingsTable.Markdown(typeof(SpawnBoxDescription));
-            Assert.That(readme.Substring(start + Begin.Length, end - start - Begin.Length), Is.EqualTo(expected),
-                "README's SpawnBox table differs from the declarations; replace it with:\n" + expected);
-        }
+        public void TheReadmeTableIsTheDeclarations() =>
+            ReadmeTable.AssertIsTheDeclarations(Begin, End, typeof(SpawnBoxDescription), "SpawnBox");
 
         [Test]
         public void TheDefaultsAreValid()
