@@ -11,7 +11,7 @@ namespace SphFluid.Editor
     /// Only a changed pick is written back, so that opening the inspector does not round a stored value.
     /// </summary>
     [CustomPropertyDrawer(typeof(SettingColor))]
-    public sealed class SettingColorDrawer : PropertyDrawer
+    public sealed class LinearColorDrawer : PropertyDrawer
     {
         public override float GetPropertyHeight(SerializedProperty property, GUIContent label) => EditorGUIUtility.singleLineHeight;
 
