@@ -68,11 +68,61 @@ namespace SphFluid.Simulation
             }
         }
 
+        /// <summary>
+        /// What a sphere's shells must weigh, relative to their volume, so that a fluid particle resting half a spacing
+        /// outside the sphere sums as much boundary as it would half a spacing from a flat wall. A convex shell curves
+        /// away from the particle, so at equal volume it fills less of the kernel's support, and the fluid pressed
+        /// against a small sphere sank past its surface (a sphere of 2.25 spacings held still in a pool: 853 clamp hits
+        /// in 4 s). Continuum sums over the shells at R - (l + 1/2) s and the flat layers at the same distances; 1 for
+        /// a flat wall, growing as the radius shrinks towards the support.
+        /// </summary>
+        public static double ConvexWeightFactor(double radius, double spacing, double support)
+        {
+            int layers = Layers((float)spacing, (float)support);
+            double s = spacing, flat = 0, sphere = 0, outside = radius + 0.5 * s;
+            for (int l = 0; l < layers; l++)
+            {
+                double r = radius - (l + 0.5) * s;
+                if (r <= 0.25 * s) break;
+                double d = outside - r;
+                flat += PlaneIntegral(d, support);
+                sphere += ShellIntegral(outside, r, support);
+            }
+            return sphere > 0 ? flat / sphere : 1.0;
+        }
+
+        /// <summary>The kernel integrated over a plane at distance d: 2 pi int_0^H W(sqrt(d^2 + rho^2)) rho d rho.</summary>
+        static double PlaneIntegral(double d, double support)
+        {
+            const int steps = 2000;
+            double sum = 0, h = support / steps;
+            for (int i = 0; i < steps; i++)
+            {
+                double rho = (i + 0.5) * h;
+                sum += SmoothingKernels.CubicSpline(Math.Sqrt(d * d + rho * rho), support) * rho * h;
+            }
+            return 2.0 * Math.PI * sum;
+        }
+
+        /// <summary>The kernel integrated over a sphere of radius r around a centre at distance D from the point.</summary>
+        static double ShellIntegral(double distance, double r, double support)
+        {
+            const int steps = 2000;
+            double sum = 0, h = 2.0 / steps;
+            for (int i = 0; i < steps; i++)
+            {
+                double mu = -1.0 + (i + 0.5) * h;
+                sum += SmoothingKernels.CubicSpline(Math.Sqrt(Math.Max(0.0, distance * distance + r * r - 2.0 * distance * r * mu)), support) * h;
+            }
+            return 2.0 * Math.PI * r * r * sum;
+        }
+
         static void AddSphere(List<BoundaryParticle> list, float radius, uint owner, float spacing, float support, double delta0)
         {
             int layers = Layers(spacing, support);
             double s = spacing;
             double golden = Math.PI * (3.0 - Math.Sqrt(5.0));
+            double curvature = ConvexWeightFactor(radius, spacing, support);
             for (int l = 0; l < layers; l++)
             {
                 double r = radius - (l + 0.5) * s;
@@ -85,7 +135,7 @@ namespace SphFluid.Simulation
                     break;
                 }
                 int n = Math.Max(1, (int)Math.Round(4.0 * Math.PI * r * r / (s * s)));
-                float weight = (float)(4.0 * Math.PI * r * r * s / n * delta0);
+                float weight = (float)(4.0 * Math.PI * r * r * s / n * delta0 * curvature);
                 for (int p = 0; p < n; p++)
                 {
                     double y = 1.0 - 2.0 * (p + 0.5) / n;

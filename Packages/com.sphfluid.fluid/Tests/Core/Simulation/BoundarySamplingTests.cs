@@ -1,0 +1,70 @@
+using System;
+using System.Collections.Generic;
+using System.Numerics;
+using NUnit.Framework;
+using SphFluid.Simulation;
+
+namespace SphFluid.Tests.Core.Simulation
+{
+    /// <summary>
+    /// A sphere's boundary shells are weighted so that a fluid particle resting half a spacing outside the sphere sums
+    /// as much boundary (delta, number density) as it would half a spacing from a flat wall of the container: without it
+    /// the fluid pressed against a small sphere sank past its surface (BoundarySampling.ConvexWeightFactor).
+    /// </summary>
+    public sealed class BoundarySamplingTests
+    {
+        const float Spacing = 0.02f, Support = 0.04f;
+
+        [Test]
+        public void AFlatWallNeedsNoCorrection() =>
+            Assert.That(BoundarySampling.ConvexWeightFactor(200 * Spacing, Spacing, Support), Is.EqualTo(1.0).Within(0.01));
+
+        [Test]
+        public void TheSmallerTheSphereTheHeavierItsShells()
+        {
+            double small = BoundarySampling.ConvexWeightFactor(2.25 * Spacing, Spacing, Support);
+            double larger = BoundarySampling.ConvexWeightFactor(5 * Spacing, Spacing, Support);
+            Assert.That(larger, Is.GreaterThan(1.0));
+            Assert.That(small, Is.GreaterThan(larger));
+        }
+
+        /// <summary>The sampled particles themselves: around the sphere of the sphere-wake scene (R = 2.25 spacings), the boundary
+        /// sum half a spacing outside it, averaged over 200 directions, is the flat wall's at half a spacing from a face.</summary>
+        [Test]
+        public void ASmallSpheresShellsSumAsMuchAsAFlatWall()
+        {
+            float radius = 2.25f * Spacing;
+            var scene = new FluidSceneDescription
+            {
+                Settings = new FluidSettings { ParticleSpacing = Spacing, SmoothingRadius = Support },
+                Container = new ContainerDescription { Size = new Vector3(0.4f, 0.4f, 0.4f) },
+                Obstacles = new List<SphereObstacleDescription> { new SphereObstacleDescription(Vector3.Zero, radius, Vector3.Zero) },
+            };
+            BoundaryParticle[] all = BoundarySampling.Sample(scene);
+
+            // Half a spacing inside the floor's face, in the middle of the floor (a fluid lattice point).
+            double flat = Sum(all, BoundaryParticle.ContainerOwner, new Vector3(0.5f * Spacing, -0.2f + 0.5f * Spacing, 0.5f * Spacing));
+            double sphere = 0;
+            const int directions = 200;
+            double golden = Math.PI * (3.0 - Math.Sqrt(5.0));
+            for (int p = 0; p < directions; p++)
+            {
+                double y = 1.0 - 2.0 * (p + 0.5) / directions, ring = Math.Sqrt(1.0 - y * y);
+                var direction = new Vector3((float)(ring * Math.Cos(golden * p)), (float)y, (float)(ring * Math.Sin(golden * p)));
+                sphere += Sum(all, 0u, direction * (radius + 0.5f * Spacing));
+            }
+            sphere /= directions;
+            TestContext.Out.WriteLine($"boundary sum half a spacing out: sphere {sphere:F4}, flat wall {flat:F4}");
+            Assert.That(sphere, Is.EqualTo(flat).Within(0.03 * flat));
+        }
+
+        static double Sum(BoundaryParticle[] particles, uint owner, Vector3 at)
+        {
+            double sum = 0;
+            foreach (var b in particles)
+                if (b.Owner == owner)
+                    sum += b.Weight * SmoothingKernels.CubicSpline(Vector3.Distance(b.Position, at), Support);
+            return sum;
+        }
+    }
+}
