@@ -54,7 +54,8 @@ namespace SphFluid.Tests.Core.Simulation
                 sphere += Sum(all, 0u, direction * (radius + 0.5f * Spacing));
             }
             sphere /= directions;
-            TestContext.Out.WriteLine($"boundary sum half a spacing out: sphere {sphere:F4}, flat wall {flat:F4}");
+            TestContext.Out.WriteLine($"boundary sum half a spacing out: sphere {sphere:F4}, flat wall {flat:F4}; " +
+                $"curvature weight factor {BoundarySampling.ConvexWeightFactor(radius, Spacing, Support):F3}");
             Assert.That(sphere, Is.EqualTo(flat).Within(0.03 * flat));
         }
 
