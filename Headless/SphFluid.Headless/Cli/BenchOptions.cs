@@ -77,9 +77,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
 
     public BenchOptions Read(ParseResult r)
     {
-        string? scene = r.GetValue(_scene);
-        if (string.IsNullOrWhiteSpace(scene))
-            throw new UsageException($"{Verb}: the scene file argument is missing (e.g. sphfluid bench Assets/FluidDemo/Scenes/DamBreak.unity)");
+        string scene = OptionKinds.RequiredScene(r, _scene, Verb, "Assets/FluidDemo/Scenes/DamBreak.unity");
         var options = new BenchOptions(scene)
         {
             Steps = r.GetValue(_steps),

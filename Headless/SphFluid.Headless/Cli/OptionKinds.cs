@@ -102,6 +102,15 @@ public static class OptionKinds
         return scene;
     }
 
+    /// <summary>The scene argument of a parse, refused when it is missing, with an example of the command.</summary>
+    public static string RequiredScene(ParseResult r, Argument<string> scene, string command, string example)
+    {
+        string? path = r.GetValue(scene);
+        if (string.IsNullOrWhiteSpace(path))
+            throw new UsageException($"{command}: the scene file argument is missing (e.g. sphfluid {command} {example})");
+        return path;
+    }
+
     /// <summary>Parses the option's last token; a refusal is recorded on the result (the parse then fails) and the
     /// value returned with it is never read.</summary>
     static T? Guard<T>(ArgumentResult result, string command, string name, Func<string, T> parse)

@@ -115,9 +115,7 @@ the back wall, spray ignored.
     /// <summary>The options of a parse without errors; the checks that span options are made here.</summary>
     public SimulateOptions Read(ParseResult r)
     {
-        string? scene = r.GetValue(_scene);
-        if (string.IsNullOrWhiteSpace(scene))
-            throw new UsageException($"{Verb}: the scene file argument is missing (e.g. sphfluid simulate Assets/FluidDemo/Scenes/OilAndWater.unity)");
+        string scene = OptionKinds.RequiredScene(r, _scene, Verb, "Assets/FluidDemo/Scenes/OilAndWater.unity");
         var options = new SimulateOptions(scene)
         {
             Seconds = r.GetValue(_seconds),

@@ -90,9 +90,7 @@ real-time factor. Writes study.csv, study.md (the same table in Markdown) and st
     public StudyOptions Read(ParseResult r)
     {
         bool quick = r.GetValue(_quick);
-        string? scene = r.GetValue(_scene);
-        if (string.IsNullOrWhiteSpace(scene))
-            throw new UsageException($"{Verb}: the scene file argument is missing (e.g. sphfluid study Assets/FluidDemo/Scenes/DamBreak.unity --quick)");
+        string scene = OptionKinds.RequiredScene(r, _scene, Verb, "Assets/FluidDemo/Scenes/DamBreak.unity --quick");
         var options = new StudyOptions(scene)
         {
             OutputDirectory = r.GetValue(_out),
