@@ -111,9 +111,9 @@ public sealed unsafe partial class VulkanComputeDevice
             };
             w++;
         }
-        foreach (var (block, members) in v.UniformBlocks)
+        foreach (var (block, blockId, members) in v.UniformBlocks)
         {
-            if (p.ConstantBuffers.TryGetValue(PropertyIdOf(block.Resource.Name), out var constants))
+            if (p.ConstantBuffers.TryGetValue(blockId, out var constants))
             {
                 if (constants.IsDisposed)
                     throw new ObjectDisposedException(constants.Name, $"Dispatch of kernel '{v.Kernel}' in {p.Path} refused: constant buffer '{constants.Name}' bound to cbuffer '{block.Resource.Name}' was disposed");

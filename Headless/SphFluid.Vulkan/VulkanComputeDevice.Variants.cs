@@ -74,7 +74,7 @@ public sealed unsafe partial class VulkanComputeDevice
         v.TextureIds = v.Textures.Select(r => PropertyIdOf(r.Name)).ToArray();
         v.Samplers = reflection.Resources.Where(r => r.Kind == SpirvResourceKind.Sampler).ToArray();
         v.UniformBlocks = reflection.UniformBlocks
-            .Select(b => (b, b.Members.Values.Select(m => (PropertyIdOf(m.Name), m)).ToArray()))
+            .Select(b => (b, PropertyIdOf(b.Resource.Name), b.Members.Values.Select(m => (PropertyIdOf(m.Name), m)).ToArray()))
             .ToArray();
         v.Unsupported = WhyUnrunnable(reflection, words);
         _variantCache[key] = v;

@@ -27,7 +27,9 @@ public sealed class KernelVariant
     internal int[] TextureIds = Array.Empty<int>();
     internal SpirvResource[] Textures = Array.Empty<SpirvResource>();
     internal SpirvResource[] Samplers = Array.Empty<SpirvResource>();
-    internal (SpirvUniformBlock Block, (int Id, SpirvGlobal Member)[] Members)[] UniformBlocks = Array.Empty<(SpirvUniformBlock, (int, SpirvGlobal)[])>();
+    /// <summary>Each uniform block with its own property id (a cbuffer bound by name) and its members' ids.</summary>
+    internal (SpirvUniformBlock Block, int BlockId, (int Id, SpirvGlobal Member)[] Members)[] UniformBlocks =
+        Array.Empty<(SpirvUniformBlock, int, (int, SpirvGlobal)[])>();
 
     internal KernelVariant(string kernel, IReadOnlyList<string> defines, uint[] spirv, SpirvReflection reflection)
     {
