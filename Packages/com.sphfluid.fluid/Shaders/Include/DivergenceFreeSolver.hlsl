@@ -37,15 +37,9 @@
 // while its wall part, sum_b omega_b (v_i - v_b) . gradW_ib, is positive. For such a particle the divergence-free
 // condition is applied to the wall part alone before the constant-density solve: the same Jacobi step as the
 // divergence-free solve's with the walls as the only neighbours, q = rate alpha_w / dt with alpha_w = m_i / |G_w|^2,
-// which removes exactly the velocity along G_w = sum_b omega_b gradW_ib that compresses the wall side (an
-// inelastic contact; sliding along the wall is left alone). It is DFSPH's counterpart of WCSPH's contact damping
-// (SphBoundary.hlsl), with no speed of sound in it and no time-step bound of its own.
-float3 WallContactVelocity(float3 velocity, float3 wallGradientSum, float wallVelocityRate)
-{
-    float rate = dot(velocity, wallGradientSum) - wallVelocityRate;
-    float g2 = dot(wallGradientSum, wallGradientSum);
-    return rate > 0.0 && g2 > 1e-20 ? velocity - (rate / g2) * wallGradientSum : velocity;
-}
+// which removes exactly the velocity along G_w = sum_b omega_b gradW_ib that compresses the wall side
+// (WallContactVelocity in SphBoundary.hlsl, which WCSPH uses too; there only for particles already closer to the walls
+// than at rest, beside its contact damping). It has no speed of sound in it and no time-step bound of its own.
 
 // 1 / ( |G|^2 / m_i + sum |gradW_ij|^2 / m_j ), 0 where nothing can be pushed.
 float DivergenceFreeFactor(float3 gradientSum, float squaredGradientsOverMass, float particleMass)

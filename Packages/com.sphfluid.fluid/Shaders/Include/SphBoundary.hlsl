@@ -34,6 +34,23 @@
 // into the wall, where the wall pressure cannot, and leaves sliding along it and the bulk alone. (A 25 times stronger isotropic alpha also stopped the clamp hits, but slowed a
 // dam-break front 6-7 % below Martin & Moyce's measurement; braking the bulk too slowed oil rising through
 // water in a narrow tank by half.)
+// Wall contact: the damping only brakes, so a particle below its rest density (no pressure of its own to meet the
+// wall's) that the bulk keeps pushing still reached the clamp: 27 times in 3 s of the OilAndWater scene, along the
+// front and back walls of its thin container. Once such a particle is closer to the walls than a particle at rest
+// beside a flat wall (its walls' number density sum_b omega_b W_ib exceeds that lattice value,
+// _WallContactNumberDensity: SmoothingKernels.FlatWallNumberDensity), it may come no closer: the wall part of its
+// continuity equation,
+//   sum_b omega_b (v_i - v_b) . gradW_ib = v_i . G_w - sum_b omega_b v_b . gradW_ib,   G_w = sum_b omega_b gradW_ib,
+// is kept from turning positive by removing exactly the velocity along G_w that would (WallContactVelocity: an
+// inelastic contact; sliding along the wall and motion away from it are left alone). It acts on the velocity the
+// particle drifts with next (v_{n+1/2} + a dt + dv_xsph) through the full step's velocity correction, so it is not
+// an acceleration and does not shorten the step. DFSPH's solves have no such damping and apply the same contact to
+// every particle below rest density, before the constant-density solve (DivergenceFreeSolver.hlsl).
+// Measured (`Headless/simulate.sh <scene> --seconds N`): clamp hits 27 -> 0 in OilAndWater (3 s), 35 -> 15 in
+// SphereWake (4 s, the rest are compressed fluid driven into the corners of the back wall at a third of the speed
+// of sound), 2 -> 0 in RotatingContainer (3 s). Applied to every particle below rest density instead, it stilled
+// splashes as well but doubled the last-second speed of a small tank at rest (SolverDynamicsTests.TankAtRest_Settles:
+// 51 mm/s against 23): contact chatter of the free surface along the side walls.
 // A clamp (after every position update) remains as the last resort: a particle centre beyond the wall
 // (or inside a sphere) is put back on it and loses its outward velocity. Every catch is counted in
 // _ClampHits[0], which the diagnostics report; it stays at zero in normal runs.
@@ -118,6 +135,15 @@ bool UnderDense(float density, float restDensity)
 float3 IntoWallVelocity(float3 relativeVelocity, float3 normal)
 {
     return max(dot(relativeVelocity, normal), 0.0) * normal;
+}
+
+// The velocity of a particle below rest density after its wall contact: the part along G_w (wallGradientSum) that
+// compresses its wall side, v . G_w - sum_b omega_b v_b . gradW_ib (wallVelocityRate: the walls' own motion), removed.
+float3 WallContactVelocity(float3 velocity, float3 wallGradientSum, float wallVelocityRate)
+{
+    float rate = dot(velocity, wallGradientSum) - wallVelocityRate;
+    float g2 = dot(wallGradientSum, wallGradientSum);
+    return rate > 0.0 && g2 > 1e-20 ? velocity - (rate / g2) * wallGradientSum : velocity;
 }
 
 // One fluid neighbour's share of a wall particle's pressure: (p_f + rho_f g . (x_b - x_f)) W, and W.

@@ -6,9 +6,10 @@
 // Velocity Verlet (kick-drift-kick; Verlet 1967, Swope et al. 1982), split around the force pass:
 //   half step:  v_{n+1/2} = v_n + a_n dt/2 ;  x_{n+1} = x_n + v_{n+1/2} dt     (then clamp)
 //   forces:     a_{n+1} = a(x_{n+1}, v_{n+1/2})                                (after the re-sort)
-//   full step:  v_{n+1} = v_{n+1/2} + a_{n+1} dt/2 + dv_xsph ;  v *= max(0, 1 - damping dt)   (then clamp)
+//   full step:  v_{n+1} = v_{n+1/2} + a_{n+1} dt/2 + dv ;  v *= max(0, 1 - damping dt)   (then clamp)
+// where dv, computed by the force pass, is XSPH's correction plus the wall contact (SphBoundary.hlsl).
 // Second order and time-reversible for position-only forces; the velocity-dependent terms
-// (viscosity, XSPH, wall damping) use the half-step velocity. Before the first step the forces are
+// (viscosity, XSPH, the wall contact) use the half-step velocity. Before the first step the forces are
 // computed once so that a_0 is valid.
 // Reads _TimeStep and _VelocityDamping (FluidConstants.hlsl).
 
@@ -18,18 +19,18 @@ void KickDrift(inout float3 x, inout float3 v, float3 a)
     x += v * _TimeStep;
 }
 
-float3 FullStepVelocity(float3 v, float3 a, float3 xsphCorrection)
+float3 FullStepVelocity(float3 v, float3 a, float3 correction)
 {
-    v += a * (0.5 * _TimeStep) + xsphCorrection;
+    v += a * (0.5 * _TimeStep) + correction;
     return v * max(0.0, 1.0 - _VelocityDamping * _TimeStep);
 }
 
 // Divergence-free SPH integrates with symplectic Euler (Bender & Koschier 2017, Algorithm 1): the non-pressure
 // accelerations give v* = v + a dt (+ dv_xsph, then damping), the constant-density solve corrects v*, and the
 // particles drift with it: x += v* dt.
-float3 PredictedVelocity(float3 v, float3 a, float3 xsphCorrection)
+float3 PredictedVelocity(float3 v, float3 a, float3 correction)
 {
-    v += a * _TimeStep + xsphCorrection;
+    v += a * _TimeStep + correction;
     return v * max(0.0, 1.0 - _VelocityDamping * _TimeStep);
 }
 

@@ -17,7 +17,7 @@ namespace SphFluid.Reference
         readonly FluidSettings _settings;
         readonly PhaseProperties[] _phases;
         readonly BoundaryParticle[] _boundaryRest;
-        readonly double _h, _h2, _cohesion;
+        readonly double _h, _h2, _cohesion, _flatWallNumberDensity;
 
         public ContainerDescription Container { get; set; }
         public List<SphereObstacleDescription> Obstacles { get; set; }
@@ -32,6 +32,7 @@ namespace SphFluid.Reference
             _h = _settings.SmoothingRadius;
             _h2 = _h * _h;
             _cohesion = 32.0 / (Math.PI * Math.Pow(_h, 9));
+            _flatWallNumberDensity = SmoothingKernels.FlatWallNumberDensity(_settings.ParticleSpacing, _h);
         }
 
         public IReadOnlyList<PhaseProperties> PhaseTable => _phases;
@@ -233,6 +234,9 @@ namespace SphFluid.Reference
                     var intoWall = underDense ? normal * Math.Max(0.0, Double3.Dot(v[i] - wallVelocity, normal)) : Double3.Zero;
                     double contact = Math.Min(0.0, Double3.Dot(intoWall, rib)) / (r2 + 0.01 * _h2);
                     force += gradient * (pressureOn * wallArtificial * s.Density[i] * weight / (di * di) * contact);
+                    s.WallGradientSum[i] += gradient * weight;
+                    s.WallNumberDensity[i] += weight * Kernel(r);
+                    s.WallVelocityRate[i] += weight * Double3.Dot(wallVelocity, gradient);
                 }
                 s.InternalForce[i] = force;
                 s.Acceleration[i] = force / mi + gravity;
@@ -383,11 +387,11 @@ namespace SphFluid.Reference
                 for (int i = 0; i < n; i++) numberDensities[i] += 0.5 * dt * after[i];
             }
             next = Evaluate(moved, true, numberDensities);
+            var corrections = VelocityCorrections(moved, next, dt, xsph);
             double damping = Math.Max(0, 1 - _settings.VelocityDamping * dt);
             for (int i = 0; i < n; i++)
             {
-                var vi = v[i] + next.Acceleration[i] * (0.5 * dt);
-                if (xsph) vi += next.Xsph[i];
+                var vi = v[i] + next.Acceleration[i] * (0.5 * dt) + corrections[i];
                 vi *= damping;
                 var xi = x[i];
                 Clamp(ref xi, ref vi);
@@ -530,6 +534,36 @@ namespace SphFluid.Reference
             return rates;
         }
 
+        /// <summary>
+        /// The velocity change WCSPH's full step adds to each particle (FluidSolver's _VelocityCorrections, computed by the
+        /// force pass of <paramref name="state"/> with the pressure on): XSPH's correction when <paramref name="xsph"/>, plus
+        /// the wall contact of a particle below rest density (SphBoundary.hlsl) on the velocity it would drift with next,
+        /// v + a dt + dv_xsph. <paramref name="dt"/> is the sub-step's (0 outside a step, as after SetParticles).
+        /// </summary>
+        public Double3[] VelocityCorrections(Particle[] particles, ReferenceState state, double dt, bool xsph)
+        {
+            var corrections = new Double3[particles.Length];
+            for (int i = 0; i < particles.Length; i++)
+            {
+                var correction = xsph ? state.Xsph[i] : Double3.Zero;
+                if (state.Density[i] < _phases[particles[i].Phase].RestDensity && state.WallNumberDensity[i] > _flatWallNumberDensity)
+                {
+                    var predicted = new Double3(particles[i].Velocity) + state.Acceleration[i] * dt + correction;
+                    correction += ContactVelocity(predicted, state.WallGradientSum[i], state.WallVelocityRate[i]) - predicted;
+                }
+                corrections[i] = correction;
+            }
+            return corrections;
+        }
+
+        /// <summary>SphBoundary.hlsl's WallContactVelocity: the velocity without its part along G_w that would compress the
+        /// wall side, v . G_w - <paramref name="wallRate"/> &gt; 0.</summary>
+        static Double3 ContactVelocity(Double3 v, Double3 g, double wallRate)
+        {
+            double rate = Double3.Dot(v, g) - wallRate, g2 = Double3.Dot(g, g);
+            return rate > 0 && g2 > 1e-20 ? v - g * (rate / g2) : v;
+        }
+
         /// <summary>DFSPH's wall contact (DivergenceFreeSolver.hlsl): an under-dense particle loses the velocity along
         /// G_w = sum_b omega_b gradW_ib that would compress its wall side.</summary>
         public void WallContact(Particle[] particles, double[] numberDensity, Double3[] v)
@@ -550,8 +584,7 @@ namespace SphFluid.Reference
                     g += gradient;
                     wallRate += Double3.Dot(new Double3(wall.Velocity), gradient);
                 }
-                double rate = Double3.Dot(v[i], g) - wallRate, g2 = Double3.Dot(g, g);
-                if (rate > 0 && g2 > 1e-20) v[i] -= g * (rate / g2);
+                v[i] = ContactVelocity(v[i], g, wallRate);
             }
         }
 

@@ -17,7 +17,7 @@ namespace SphFluid.Simulation
     public struct FluidConstants
     {
         /// <summary>The cbuffer's size in bytes, whole 16-byte rows (HLSL rounds a part row up).</summary>
-        public const int Bytes = 384;
+        public const int Bytes = 400;
 
         public Matrix4x4 WorldToContainer;
         public Matrix4x4 ContainerToWorld;
@@ -46,6 +46,7 @@ namespace SphFluid.Simulation
         public float Gamma;
         public float ArtificialViscosity;
         public float WallArtificialViscosity;
+        public float WallContactNumberDensity;
         public float CohesionCoefficient;
         public float XsphEpsilon;
         public float ShiftingCoefficient;

@@ -175,8 +175,9 @@ namespace SphFluid.Simulation
         /// <summary>Per particle: colour-field normal (xyz) when surface tension is on.</summary>
         public IComputeBuffer Normals => _buffers.Normals;
 
-        /// <summary>Per particle: XSPH velocity correction (xyz) when XSPH is on, m/s.</summary>
-        public IComputeBuffer XsphCorrections => _buffers.XsphCorrections;
+        /// <summary>Per particle: the velocity change (xyz) the next full step adds, m/s: XSPH's when XSPH is on, plus the
+        /// wall contact of a particle below rest density (SphBoundary.hlsl).</summary>
+        public IComputeBuffer VelocityCorrections => _buffers.VelocityCorrections;
 
         /// <summary>DFSPH, by particle id (not sorted): float2 of the q the last constant-density (x) and divergence-free (y)
         /// solves applied in total, the next sub-step's warm start (DivergenceFreeSolver.hlsl).</summary>
@@ -589,6 +590,7 @@ namespace SphFluid.Simulation
             c.GradientCoefficient = (float)(8.0 / (Math.PI * h * h * h * h));
             c.ArtificialViscosity = (float)(s.ArtificialViscosity * _timeStep.SpeedOfSound * 0.5 * h);
             c.WallArtificialViscosity = (float)(WallContactDamping * _timeStep.SpeedOfSound * 0.5 * h);
+            c.WallContactNumberDensity = (float)SmoothingKernels.FlatWallNumberDensity(s.ParticleSpacing, h);
             c.WallFriction = _scene.Container.Friction == WallFriction.NoSlip ? 1f : 0f;
             c.CohesionCoefficient = (float)(32.0 / (Math.PI * Math.Pow(h, 9)));
             c.Stiffness = s.Stiffness;

@@ -41,6 +41,18 @@ namespace SphFluid.Simulation
             return sum;
         }
 
+        /// <summary>The walls' part of the number density of a lattice particle at rest beside a flat wall sampled on the
+        /// same lattice: the lattice sum over the half-space of points below it (dy &lt; 0).</summary>
+        public static double FlatWallNumberDensity(double spacing, double support)
+        {
+            double sum = 0.0;
+            ForEachLatticePoint(spacing, support, (dx, dy, dz) =>
+            {
+                if (dy < 0) sum += CubicSpline(Math.Sqrt(dx * dx + dy * dy + dz * dz), support);
+            });
+            return sum;
+        }
+
         /// <summary>
         /// How much of a linear pressure field's gradient the kernel recovers on the rest lattice:
         /// -sum_j V0 y_ij (dW/dy)(r_ij) with V0 = 1 / delta0 (1 is exact). The hydrostatic pressure gradient

@@ -69,7 +69,7 @@ namespace SphFluid.Simulation
             new Binding("_Densities", b => b.Densities, Readers.Both, Group.Fixed),
             new Binding("_Normals", b => b.Normals, Readers.Solver, Group.Fixed),
             new Binding("_Accelerations", b => b.Accelerations, Readers.Both, Group.Fixed),
-            new Binding("_XsphCorrections", b => b.XsphCorrections, Readers.Solver, Group.Fixed),
+            new Binding("_VelocityCorrections", b => b.VelocityCorrections, Readers.Solver, Group.Fixed),
             new Binding("_Shifts", b => b.Shifts, Readers.Solver, Group.Fixed),
             new Binding("_Obstacles", b => b.Obstacles, Readers.Both, Group.Fixed),
             new Binding("_ClampHits", b => b.ClampHits, Readers.Both, Group.Fixed),
@@ -104,7 +104,7 @@ namespace SphFluid.Simulation
         readonly int _particleCount;
 
         public IComputeBuffer Particles, ParticlesOther;
-        public IComputeBuffer Phases, Densities, Normals, Accelerations, XsphCorrections, Shifts, Obstacles, ClampHits;
+        public IComputeBuffer Phases, Densities, Normals, Accelerations, VelocityCorrections, Shifts, Obstacles, ClampHits;
         public IComputeBuffer Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
         public IComputeBuffer NumberDensities, NumberDensitiesHalf, DensityRates; // delta-SPH (SphDensityDiffusion.hlsl)
         public IComputeBuffer MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
@@ -148,7 +148,7 @@ namespace SphFluid.Simulation
             Densities = Zeroed("FluidSimulation.Densities", n, 16);
             Normals = Zeroed("FluidSimulation.Normals", n, 16);
             Accelerations = Zeroed("FluidSimulation.Accelerations", n, 16);
-            XsphCorrections = Zeroed("FluidSimulation.XsphCorrections", n, 16);
+            VelocityCorrections = Zeroed("FluidSimulation.VelocityCorrections", n, 16);
             Shifts = Zeroed("FluidSimulation.Shifts", n, 16);
             Obstacles = device.CreateBuffer("FluidSimulation.Obstacles", FluidSceneDescription.MaxObstacles, SphereObstacleData.Stride);
             ClampHits = Zeroed("FluidSimulation.ClampHits", 1, 4);
@@ -253,12 +253,12 @@ namespace SphFluid.Simulation
 
         public void Dispose()
         {
-            foreach (var buffer in new[] { Particles, ParticlesOther, Phases, Densities, Normals, Accelerations, XsphCorrections, Shifts,
+            foreach (var buffer in new[] { Particles, ParticlesOther, Phases, Densities, Normals, Accelerations, VelocityCorrections, Shifts,
                          Obstacles, ClampHits, Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments,
                          DivergenceRates, NumberDensities, NumberDensitiesHalf, DensityRates, MotionPartials, MotionTotals, DiagnosticsPartials,
                          DiagnosticsTotals, Constants })
                 buffer?.Dispose();
-            Particles = ParticlesOther = Phases = Densities = Normals = Accelerations = XsphCorrections = Shifts = null;
+            Particles = ParticlesOther = Phases = Densities = Normals = Accelerations = VelocityCorrections = Shifts = null;
             Obstacles = ClampHits = Factors = SolverStiffness = WarmStart = SolverPartials = SolverState = SolverArguments = null;
             NumberDensities = NumberDensitiesHalf = DensityRates = null;
             DivergenceRates = MotionPartials = MotionTotals = DiagnosticsPartials = DiagnosticsTotals = Constants = null;
