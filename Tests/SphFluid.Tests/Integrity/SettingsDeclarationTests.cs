@@ -89,7 +89,9 @@ namespace SphFluid.Tests.Integrity
             string text = Convert.ToString(current, System.Globalization.CultureInfo.InvariantCulture)!;
             // A distinct value inside the range, so that the check sees this very field read.
             object edited = info.FieldType == typeof(int) ? (object)((int)current == 1 ? 2 : (int)current - 1) : (float)current * 0.875f;
-            if (field == nameof(FluidSettings.SmoothingRadius)) edited = loaded.ParticleSpacing * 3f;
+            // The support stays within the cubic spline's 2 to 2.25 spacings (FluidSettings.MaxCubicSplineSupportRatio).
+            if (field == nameof(FluidSettings.SmoothingRadius)) edited = loaded.ParticleSpacing * 2.2f;
+            if (field == nameof(FluidSettings.ParticleSpacing)) edited = (float)current * 0.95f;
             string editedText = Convert.ToString(edited, System.Globalization.CultureInfo.InvariantCulture)!;
             string path = RunnerPaths.EditedScene("PlayModeTest", $"    {field}: {text}\n", $"    {field}: {editedText}\n");
             var read = SceneLoader.Load(path, RunnerPaths.Project).Description.Settings;

@@ -19,9 +19,12 @@ namespace SphFluid.Tests.Solver
         const double Tolerance = 1e-4;
 
         /// <summary>A compressed, noisy blob (spacing 0.85 s, random velocities), partly pushed into the walls.</summary>
-        internal static FluidSceneDescription RandomScene(bool multiphase, bool tension, bool xsph, bool obstacle)
+        internal static FluidSceneDescription RandomScene(bool multiphase, bool tension, bool xsph, bool obstacle,
+            KernelFamily kernel = KernelFamily.CubicSpline)
         {
             var settings = SolverScenes.Coarse(0.02f);
+            settings.SmoothingKernel = kernel;
+            if (kernel == KernelFamily.WendlandC2) settings.SmoothingRadius = 3f * settings.ParticleSpacing;
             settings.XsphEpsilon = xsph ? 0.3f : 0f;
             var size = new Vector3(0.16f, 0.16f, 0.16f);
             var boxes = new List<SpawnBoxDescription>
@@ -76,9 +79,11 @@ namespace SphFluid.Tests.Solver
         [TestCase(true, false, true, false, TestName = "Kernels_MatchReference_TwoPhasesXsph")]
         [TestCase(true, true, true, true, TestName = "Kernels_MatchReference_AllEffects")]
         [TestCase(false, true, false, true, TestName = "Kernels_MatchReference_SinglePhaseTensionObstacle")]
-        public void ForcePassesMatchReference(bool multiphase, bool tension, bool xsph, bool obstacle)
+        [TestCase(true, true, true, true, KernelFamily.WendlandC2, TestName = "Kernels_MatchReference_AllEffectsWendlandC2")]
+        public void ForcePassesMatchReference(bool multiphase, bool tension, bool xsph, bool obstacle,
+            KernelFamily kernel = KernelFamily.CubicSpline)
         {
-            var scene = RandomScene(multiphase, tension, xsph, obstacle);
+            var scene = RandomScene(multiphase, tension, xsph, obstacle, kernel);
             using (var sim = new FluidSimulation(GpuTestDevice.Shared, scene))
             {
                 var input = RandomParticles(scene, sim.ParticleCount, 12345);
@@ -109,9 +114,10 @@ namespace SphFluid.Tests.Solver
 
         [TestCase(false, TestName = "Substep_MatchesReference_SinglePhase")]
         [TestCase(true, TestName = "Substep_MatchesReference_AllEffects")]
-        public void SubstepMatchesReference(bool all)
+        [TestCase(true, KernelFamily.WendlandC2, TestName = "Substep_MatchesReference_AllEffectsWendlandC2")]
+        public void SubstepMatchesReference(bool all, KernelFamily kernel = KernelFamily.CubicSpline)
         {
-            var scene = RandomScene(all, all, all, all);
+            var scene = RandomScene(all, all, all, all, kernel);
             using (var sim = new FluidSimulation(GpuTestDevice.Shared, scene))
             {
                 var input = RandomParticles(scene, sim.ParticleCount, 777);

@@ -36,8 +36,8 @@ cbuffer FluidConstants
 
     float _SmoothingRadius;                 // SphKernels: H, the support radius, m
     float _SmoothingRadius2;                // SphKernels: H^2, m^2
-    float _KernelCoefficient;               // SphKernels: sigma = 8 / (pi H^3), 1/m^3
-    float _GradientCoefficient;             // SphKernels: sigma / H = 8 / (pi H^4), 1/m^4
+    float _KernelCoefficient;               // SphKernels: sigma (8 / (pi H^3) for the cubic spline), 1/m^3
+    float _GradientCoefficient;             // SphKernels: sigma / H, 1/m^4
     float _Stiffness;                       // SphDensityPressure: Tait k, Pa
     float _Gamma;                           // SphDensityPressure: Tait exponent
     float _ArtificialViscosity;             // SphViscosity: alpha c h, m^2/s
@@ -57,6 +57,7 @@ cbuffer FluidConstants
 
     float _DensityDiffusion;                // SphDensityDiffusion: xi h c0, m^2/s
     float _HydrostaticCompliance;           // SphDensityDiffusion: 1 / (gamma k), 1/Pa
+    uint _SmoothingKernel;                  // SphKernels: 0 cubic spline, 1 Wendland C2
 };
 
 // Grid.hlsl reads its three values from here instead of declaring its own.

@@ -32,7 +32,7 @@ namespace SphFluid.Reference
             _h = _settings.SmoothingRadius;
             _h2 = _h * _h;
             _cohesion = 32.0 / (Math.PI * Math.Pow(_h, 9));
-            _flatWallNumberDensity = SmoothingKernels.FlatWallNumberDensity(_settings.ParticleSpacing, _h);
+            _flatWallNumberDensity = SmoothingKernels.FlatWallNumberDensity(_settings.SmoothingKernel, _settings.ParticleSpacing, _h);
         }
 
         public IReadOnlyList<PhaseProperties> PhaseTable => _phases;
@@ -44,9 +44,9 @@ namespace SphFluid.Reference
             return min;
         }
 
-        public double Kernel(double r) => SmoothingKernels.CubicSpline(r, _h);
+        public double Kernel(double r) => SmoothingKernels.Value(_settings.SmoothingKernel, r, _h);
 
-        public Double3 Gradient(Double3 rij, double r) => rij * (SmoothingKernels.CubicSplineDerivative(r, _h) / r);
+        public Double3 Gradient(Double3 rij, double r) => rij * (SmoothingKernels.Derivative(_settings.SmoothingKernel, r, _h) / r);
 
         /// <summary>gradW of a pair, a coincident pair given the id-signed diagonal (SphPressureForce.hlsl).</summary>
         public Double3 PairGradient(Double3 rij, double r, uint idI, uint idJ)

@@ -30,11 +30,11 @@ namespace SphFluid.Simulation
         {
             var list = new List<BoundaryParticle>();
             var s = scene.Settings;
-            double delta0 = SmoothingKernels.LatticeNumberDensity(s.ParticleSpacing, s.SmoothingRadius);
+            double delta0 = SmoothingKernels.LatticeNumberDensity(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius);
             AddContainer(list, scene.Container.Size, s.ParticleSpacing, s.SmoothingRadius, delta0);
             if (scene.Obstacles != null)
                 for (int o = 0; o < scene.Obstacles.Count; o++)
-                    AddSphere(list, scene.Obstacles[o].Radius, (uint)o, s.ParticleSpacing, s.SmoothingRadius, delta0);
+                    AddSphere(list, scene.Obstacles[o].Radius, (uint)o, s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius, delta0);
             return list.ToArray();
         }
 
@@ -76,7 +76,7 @@ namespace SphFluid.Simulation
         /// in 4 s). Continuum sums over the shells at R - (l + 1/2) s and the flat layers at the same distances; 1 for
         /// a flat wall, growing as the radius shrinks towards the support.
         /// </summary>
-        public static double ConvexWeightFactor(double radius, double spacing, double support)
+        public static double ConvexWeightFactor(KernelFamily kind, double radius, double spacing, double support)
         {
             int layers = Layers((float)spacing, (float)support);
             double s = spacing, flat = 0, sphere = 0, outside = radius + 0.5 * s;
@@ -85,44 +85,44 @@ namespace SphFluid.Simulation
                 double r = radius - (l + 0.5) * s;
                 if (r <= 0.25 * s) break;
                 double d = outside - r;
-                flat += PlaneIntegral(d, support);
-                sphere += ShellIntegral(outside, r, support);
+                flat += PlaneIntegral(kind, d, support);
+                sphere += ShellIntegral(kind, outside, r, support);
             }
             return sphere > 0 ? flat / sphere : 1.0;
         }
 
         /// <summary>The kernel integrated over a plane at distance d: 2 pi int_0^H W(sqrt(d^2 + rho^2)) rho d rho.</summary>
-        static double PlaneIntegral(double d, double support)
+        static double PlaneIntegral(KernelFamily kind, double d, double support)
         {
             const int steps = 2000;
             double sum = 0, h = support / steps;
             for (int i = 0; i < steps; i++)
             {
                 double rho = (i + 0.5) * h;
-                sum += SmoothingKernels.CubicSpline(Math.Sqrt(d * d + rho * rho), support) * rho * h;
+                sum += SmoothingKernels.Value(kind, Math.Sqrt(d * d + rho * rho), support) * rho * h;
             }
             return 2.0 * Math.PI * sum;
         }
 
         /// <summary>The kernel integrated over a sphere of radius r around a centre at distance D from the point.</summary>
-        static double ShellIntegral(double distance, double r, double support)
+        static double ShellIntegral(KernelFamily kind, double distance, double r, double support)
         {
             const int steps = 2000;
             double sum = 0, h = 2.0 / steps;
             for (int i = 0; i < steps; i++)
             {
                 double mu = -1.0 + (i + 0.5) * h;
-                sum += SmoothingKernels.CubicSpline(Math.Sqrt(Math.Max(0.0, distance * distance + r * r - 2.0 * distance * r * mu)), support) * h;
+                sum += SmoothingKernels.Value(kind, Math.Sqrt(Math.Max(0.0, distance * distance + r * r - 2.0 * distance * r * mu)), support) * h;
             }
             return 2.0 * Math.PI * r * r * sum;
         }
 
-        static void AddSphere(List<BoundaryParticle> list, float radius, uint owner, float spacing, float support, double delta0)
+        static void AddSphere(List<BoundaryParticle> list, float radius, uint owner, KernelFamily kind, float spacing, float support, double delta0)
         {
             int layers = Layers(spacing, support);
             double s = spacing;
             double golden = Math.PI * (3.0 - Math.Sqrt(5.0));
-            double curvature = ConvexWeightFactor(radius, spacing, support);
+            double curvature = ConvexWeightFactor(kind, radius, spacing, support);
             for (int l = 0; l < layers; l++)
             {
                 double r = radius - (l + 0.5) * s;

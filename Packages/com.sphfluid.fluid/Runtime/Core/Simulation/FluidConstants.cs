@@ -61,5 +61,6 @@ namespace SphFluid.Simulation
 
         public float DensityDiffusion;
         public float HydrostaticCompliance;
+        public uint SmoothingKernel;
     }
 }

@@ -46,7 +46,7 @@ namespace SphFluid.Simulation
 
         /// <summary>Number density delta0 of an interior particle of the spawn lattice.</summary>
         public double RestNumberDensity() =>
-            SmoothingKernels.LatticeNumberDensity(Settings.ParticleSpacing, Settings.SmoothingRadius);
+            SmoothingKernels.LatticeNumberDensity(Settings.SmoothingKernel, Settings.ParticleSpacing, Settings.SmoothingRadius);
 
         /// <summary>The GPU phase table: one row per distinct phase name, masses derived where 0 (<see cref="DerivedParticleMass"/>).</summary>
         public PhaseProperties[] BuildPhaseTable()

@@ -586,11 +586,12 @@ namespace SphFluid.Simulation
             c.ParticleSpacing = s.ParticleSpacing;
             c.SmoothingRadius = (float)h;
             c.SmoothingRadius2 = (float)(h * h);
-            c.KernelCoefficient = (float)(8.0 / (Math.PI * h * h * h));
-            c.GradientCoefficient = (float)(8.0 / (Math.PI * h * h * h * h));
+            c.SmoothingKernel = (uint)s.SmoothingKernel;
+            c.KernelCoefficient = (float)SmoothingKernels.Normalisation(s.SmoothingKernel, h);
+            c.GradientCoefficient = (float)(SmoothingKernels.Normalisation(s.SmoothingKernel, h) / h);
             c.ArtificialViscosity = (float)(s.ArtificialViscosity * _timeStep.SpeedOfSound * 0.5 * h);
             c.WallArtificialViscosity = (float)(WallContactDamping * _timeStep.SpeedOfSound * 0.5 * h);
-            c.WallContactNumberDensity = (float)SmoothingKernels.FlatWallNumberDensity(s.ParticleSpacing, h);
+            c.WallContactNumberDensity = (float)SmoothingKernels.FlatWallNumberDensity(s.SmoothingKernel, s.ParticleSpacing, h);
             c.WallFriction = _scene.Container.Friction == WallFriction.NoSlip ? 1f : 0f;
             c.CohesionCoefficient = (float)(32.0 / (Math.PI * Math.Pow(h, 9)));
             c.Stiffness = s.Stiffness;

@@ -17,13 +17,13 @@ namespace SphFluid.Tests.Core.Simulation
 
         [Test]
         public void AFlatWallNeedsNoCorrection() =>
-            Assert.That(BoundarySampling.ConvexWeightFactor(200 * Spacing, Spacing, Support), Is.EqualTo(1.0).Within(0.01));
+            Assert.That(BoundarySampling.ConvexWeightFactor(KernelFamily.CubicSpline, 200 * Spacing, Spacing, Support), Is.EqualTo(1.0).Within(0.01));
 
         [Test]
         public void TheSmallerTheSphereTheHeavierItsShells()
         {
-            double small = BoundarySampling.ConvexWeightFactor(2.25 * Spacing, Spacing, Support);
-            double larger = BoundarySampling.ConvexWeightFactor(5 * Spacing, Spacing, Support);
+            double small = BoundarySampling.ConvexWeightFactor(KernelFamily.CubicSpline, 2.25 * Spacing, Spacing, Support);
+            double larger = BoundarySampling.ConvexWeightFactor(KernelFamily.CubicSpline, 5 * Spacing, Spacing, Support);
             Assert.That(larger, Is.GreaterThan(1.0));
             Assert.That(small, Is.GreaterThan(larger));
         }
@@ -55,7 +55,7 @@ namespace SphFluid.Tests.Core.Simulation
             }
             sphere /= directions;
             TestContext.Out.WriteLine($"boundary sum half a spacing out: sphere {sphere:F4}, flat wall {flat:F4}; " +
-                $"curvature weight factor {BoundarySampling.ConvexWeightFactor(radius, Spacing, Support):F3}");
+                $"curvature weight factor {BoundarySampling.ConvexWeightFactor(KernelFamily.CubicSpline, radius, Spacing, Support):F3}");
             Assert.That(sphere, Is.EqualTo(flat).Within(0.03 * flat));
         }
 
@@ -64,7 +64,7 @@ namespace SphFluid.Tests.Core.Simulation
             double sum = 0;
             foreach (var b in particles)
                 if (b.Owner == owner)
-                    sum += b.Weight * SmoothingKernels.CubicSpline(Vector3.Distance(b.Position, at), Support);
+                    sum += b.Weight * SmoothingKernels.Value(KernelFamily.CubicSpline, Vector3.Distance(b.Position, at), Support);
             return sum;
         }
     }

@@ -30,8 +30,21 @@ namespace SphFluid.Tests.Core.Simulation
         public void SmoothingRadiusOutsideRatio_IsRefused()
         {
             var scene = SimulationTestScenes.OilOnWater();
+            scene.Settings.SmoothingKernel = KernelFamily.WendlandC2;
             scene.Settings.SmoothingRadius = 0.1f;
             Assert.That(Messages(scene), Has.Some.Contains("FluidSettings: SmoothingRadius must be in [0.04, 0.08] m (2 to 4 particle spacings)").And.Contains("(was 0.1)"));
+        }
+
+        [Test]
+        public void ACubicSplineWiderThanItsPairingLimit_IsRefusedNamingTheOtherKernel()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.Settings.SmoothingRadius = 0.06f; // 3 spacings: fine for Wendland C2, not for the cubic spline
+            Assert.That(Messages(scene), Has.Some.Contains(
+                "FluidSettings: SmoothingRadius must be in [0.04, 0.045] m (2 to 2.25 particle spacings with the CubicSpline kernel; up to 4 with WendlandC2)")
+                .And.Contains("(was 0.06)"));
+            scene.Settings.SmoothingKernel = KernelFamily.WendlandC2;
+            Assert.That(Messages(scene), Has.None.Contains("SmoothingRadius"));
         }
 
         [TestCase("Stiffness", "Stiffness must be in [1, 1E+09] Pa (was -1)")]

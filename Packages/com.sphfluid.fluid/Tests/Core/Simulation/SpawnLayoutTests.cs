@@ -181,18 +181,35 @@ namespace SphFluid.Tests.Core.Simulation
             double s = 0.02, h = 0.04;
             double sigma = 8.0 / (Math.PI * h * h * h);
             double expected = sigma * (1.0 + 6 * 0.25 + 12 * 2 * Math.Pow(1 - Math.Sqrt(2) / 2, 3) + 8 * 2 * Math.Pow(1 - Math.Sqrt(3) / 2, 3));
-            Assert.That(SmoothingKernels.LatticeNumberDensity(s, h), Is.EqualTo(expected).Within(1e-9 * expected));
-            Assert.That(SmoothingKernels.LatticeNumberDensity(s, h) * s * s * s, Is.EqualTo(1.0).Within(1e-4), "the spline sums to 1 / s^3 on its lattice");
+            Assert.That(SmoothingKernels.LatticeNumberDensity(KernelFamily.CubicSpline, s, h), Is.EqualTo(expected).Within(1e-9 * expected));
+            Assert.That(SmoothingKernels.LatticeNumberDensity(KernelFamily.CubicSpline, s, h) * s * s * s, Is.EqualTo(1.0).Within(1e-4),
+                "the spline sums to 1 / s^3 on its lattice");
         }
 
-        [TestCase(2.0, 0.021)]
-        [TestCase(3.0, 0.01)]
-        [TestCase(4.0, 0.002)]
-        public void TheKernelRecoversALinearPressureGradientOnTheLattice(double supportRatio, double tolerance)
+        [Test]
+        public void RestNumberDensity_MatchesTheWendlandLatticeSum()
         {
-            // The hydrostatic gradient a resting tank settles to is off by this factor's distance from 1.
-            double reproduction = SmoothingKernels.LatticeGradientReproduction(1.0, supportRatio);
-            TestContext.Progress.WriteLine($"cubic spline, support {supportRatio} spacings: lattice number density {SmoothingKernels.LatticeNumberDensity(1.0, supportRatio):F5} / s^3, linear-gradient reproduction {reproduction:F4}");
+            // The same neighbours at H = 2 s (q = 0, 1/2, sqrt(2)/2, sqrt(3)/2), with w(q) = (1 - q)^4 (1 + 4 q).
+            double s = 0.02, h = 0.04;
+            double sigma = 21.0 / (2.0 * Math.PI * h * h * h);
+            Func<double, double> w = q => Math.Pow(1 - q, 4) * (1 + 4 * q);
+            double expected = sigma * (w(0) + 6 * w(0.5) + 12 * w(Math.Sqrt(2) / 2) + 8 * w(Math.Sqrt(3) / 2));
+            Assert.That(SmoothingKernels.LatticeNumberDensity(KernelFamily.WendlandC2, s, h), Is.EqualTo(expected).Within(1e-9 * expected));
+        }
+
+        // The hydrostatic gradient a resting tank settles to is off by this factor's distance from 1. Each kernel at the
+        // supports it is allowed (FluidSettings.MaxCubicSplineSupportRatio): the cubic spline recovers 1.0201 at 2 spacings
+        // and 0.9904 at 2.25; Wendland C2 0.9501 at 2 spacings (its support is too narrow there), 0.9975 at 3 and 0.9989 at 4.
+        [TestCase(KernelFamily.CubicSpline, 2.0, 0.021)]
+        [TestCase(KernelFamily.CubicSpline, 2.25, 0.01)]
+        [TestCase(KernelFamily.WendlandC2, 2.0, 0.05)]
+        [TestCase(KernelFamily.WendlandC2, 3.0, 0.0026)]
+        [TestCase(KernelFamily.WendlandC2, 4.0, 0.0012)]
+        public void TheKernelRecoversALinearPressureGradientOnTheLattice(KernelFamily kind, double supportRatio, double tolerance)
+        {
+            double reproduction = SmoothingKernels.LatticeGradientReproduction(kind, 1.0, supportRatio);
+            TestContext.Progress.WriteLine($"{kind}, support {supportRatio} spacings: lattice number density " +
+                $"{SmoothingKernels.LatticeNumberDensity(kind, 1.0, supportRatio):F5} / s^3, linear-gradient reproduction {reproduction:F4}");
             Assert.That(reproduction, Is.EqualTo(1.0).Within(tolerance));
         }
     }
