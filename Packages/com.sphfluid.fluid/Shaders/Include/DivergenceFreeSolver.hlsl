@@ -35,7 +35,7 @@
 // Wall contact. The solves correct compression only, so a particle that is under-dense (at a free surface, or left
 // behind by neighbours moving away) feels nothing from a wall it moves into: its own D delta_i / Dt can be negative
 // while its wall part, sum_b omega_b (v_i - v_b) . gradW_ib, is positive. For such a particle the divergence-free
-// condition is applied to the wall part alone before the constant-density solve: the same Jacobi step as the
+// condition is applied to the wall part alone in the drift, after the constant-density solve (Drift): the same Jacobi step as the
 // divergence-free solve's with the walls as the only neighbours, q = rate alpha_w / dt with alpha_w = m_i / |G_w|^2,
 // which removes exactly the velocity along G_w = sum_b omega_b gradW_ib that compresses the wall side
 // (WallContactVelocity in SphBoundary.hlsl, which WCSPH uses too; there only for particles already closer to the walls

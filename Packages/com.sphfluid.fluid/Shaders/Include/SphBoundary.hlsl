@@ -45,8 +45,8 @@
 // inelastic contact; sliding along the wall and motion away from it are left alone). It acts on the velocity the
 // particle drifts with next (v_{n+1/2} + a dt + dv_xsph) through the full step's velocity correction, so it is not
 // an acceleration and does not shorten the step. DFSPH's solves have no such damping and apply the same contact to
-// every particle below rest density, before the constant-density solve (DivergenceFreeSolver.hlsl).
-// Measured (`Headless/simulate.sh <scene> --seconds N`): clamp hits 27 -> 0 in OilAndWater (3 s), 35 -> 15 in
+// every particle below rest density, in the drift after the constant-density solve (DivergenceFreeSolver.hlsl).
+// Measured (`Headless/simulate.sh <scene> --seconds N`): clamp hits 27 -> 0 in OilAndWater (3 s), 35 -> 10 in
 // SphereWake (4 s, the rest are compressed fluid driven into the corners of the back wall at a third of the speed
 // of sound), 2 -> 0 in RotatingContainer (3 s). Applied to every particle below rest density instead, it stilled
 // splashes as well but doubled the last-second speed of a small tank at rest (SolverDynamicsTests.TankAtRest_Settles:
