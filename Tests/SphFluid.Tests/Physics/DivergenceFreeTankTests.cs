@@ -57,8 +57,11 @@ namespace SphFluid.Tests.Physics
         [Test]
         public void TheSubStepIsAtLeastFiveTimesWcsphs() => Assert.That(_dfsphStep, Is.GreaterThanOrEqualTo(5.0 * _wcsphStep));
 
-        [Test, Ignore("Not met yet: measured 43 last-resort clamp hits in 1 s (0 NaN, 0 outside; 19 before the density solve aimed " +
-                      "at 90 % of its tolerance, 289 before DFSPH's wall contact, DivergenceFreeSolver.hlsl).")]
+        [Test, Ignore("Not met yet: measured 22 last-resort clamp hits in 1 s (0 NaN, 0 outside; 43 before the spawn stayed on the " +
+                      "lattice under DFSPH, HydrostaticSpawn.cs; 289 before DFSPH's wall contact, DivergenceFreeSolver.hlsl). The column " +
+                      "still sinks 2.6 % in the first 0.25 s, its fastest particles within 0.3 spacings of the wall faces. A likely cause: " +
+                      "the mirrored wall pressure (q_i alone, Akinci et al. 2012) gives a particle beside a wall half the push a uniform " +
+                      "pressure needs, and the solve makes up the rest only once the particle has come closer.")]
         public void NothingIsLostOrClamped()
         {
             Assert.That(_report.NanCount, Is.EqualTo(0));

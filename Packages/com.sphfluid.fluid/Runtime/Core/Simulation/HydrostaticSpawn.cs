@@ -13,7 +13,10 @@ namespace SphFluid.Simulation
     /// <remarks>
     /// Along the vertical line through a particle (up = -g), the pressure at height y is the weight of the
     /// spawned fluid above it, p(y) = |g| sum_boxes rho0_box L_box(y), with L_box(y) the length of that line
-    /// above y inside the box. The density the equation of state then asks for is
+    /// above y inside the box. Under DFSPH the fluid is incompressible: its constant-density solve holds every particle
+    /// at the rest density whatever the pressure, so the particles stay on the lattice (a column compressed for the Tait
+    /// fluid would spring up as the first solve removes the compression) and only the pressures are reported.
+    /// Under WCSPH the density the equation of state asks for is
     /// rho / rho0 = (1 + p / k)^(1 / gamma) (Becker &amp; Teschner 2007, eq. 6, inverted), so each fluid layer
     /// of thickness dy shrinks to dy rho0 / rho, and a particle at height y moves down by
     /// D(y) = integral over the fluid below y of (1 - rho0 / rho(y')) dy'. The integral is taken by the
@@ -37,12 +40,13 @@ namespace SphFluid.Simulation
             if (!(g > 0f) || particles.Length == 0) return;
             var up = -(Vector3)settings.Gravity / g;
             var boxes = scene.SpawnBoxes;
+            bool compressible = settings.PressureSolver == PressureSolver.Wcsph;
             for (int i = 0; i < particles.Length; i++)
             {
                 var x = particles[i].Position;
                 double drop = Drop(boxes, x, up, g, settings.Stiffness, settings.Gamma, out double pressure);
                 if (pressures != null) pressures[i] = pressure;
-                particles[i].Position = x - up * (float)drop;
+                if (compressible) particles[i].Position = x - up * (float)drop;
             }
         }
 

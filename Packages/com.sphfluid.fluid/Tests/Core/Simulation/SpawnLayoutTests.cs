@@ -1,4 +1,5 @@
 using System;
+using System.Linq;
 using System.Numerics;
 using NUnit.Framework;
 using SphFluid.Simulation;
@@ -156,6 +157,28 @@ namespace SphFluid.Tests.Core.Simulation
                 deepest = Math.Max(deepest, expected);
             }
             Assert.That(deepest, Is.GreaterThan(1e-5), "the test scene compresses measurably");
+        }
+
+        [Test]
+        public void UnderDfsphTheSpawnStaysOnTheLatticeWithTheSamePressures()
+        {
+            // DFSPH holds every particle at the rest density: a spawn compressed for the Tait fluid would spring up.
+            var tait = SimulationTestScenes.OilOnWater();
+            var incompressible = SimulationTestScenes.OilOnWater();
+            incompressible.Settings.PressureSolver = PressureSolver.Dfsph;
+            var flat = SimulationTestScenes.OilOnWater();
+            flat.Settings.Gravity = Vector3.Zero;
+            var lowered = SpawnLayout.Generate(tait, out double[] taitPressures);
+            var kept = SpawnLayout.Generate(incompressible, out double[] pressures);
+            var lattice = SpawnLayout.Generate(flat);
+            Assert.That(kept.Length, Is.EqualTo(lattice.Length));
+            for (int i = 0; i < kept.Length; i++)
+            {
+                Assert.That(kept[i].Position, Is.EqualTo(lattice[i].Position), $"particle {i}");
+                Assert.That(pressures[i], Is.EqualTo(taitPressures[i]), $"particle {i}'s hydrostatic pressure");
+            }
+            Assert.That(pressures.Max(), Is.GreaterThan(100.0), "the test scene has a column to weigh");
+            Assert.That(lowered.Zip(lattice, (a, b) => b.Position.Y - a.Position.Y).Max(), Is.GreaterThan(1e-5f), "WCSPH's spawn is lowered");
         }
 
         [Test]
