@@ -16,7 +16,7 @@ public static class SnapshotRenderer
     static readonly Rgb Obstacle = new(255, 153, 51);
 
     public static RgbImage Render(SnapshotView view, ReadOnlySpan<Particle> particles, IReadOnlyList<PhaseProperties> phases,
-        ContainerDescription container, IReadOnlyList<SphereObstacleDescription> obstacles, float particleSpacing)
+        ContainerDescription container, IReadOnlyList<RigidSphere> obstacles, float particleSpacing)
     {
         var image = new RgbImage(view.Width, view.Height);
         image.Fill(Background);

@@ -63,7 +63,7 @@ public static class ParticleScaling
     {
         var before = new FluidSceneDescription
         {
-            Settings = scene.Settings, SpawnBoxes = new System.Collections.Generic.List<SpawnBoxDescription>(scene.SpawnBoxes),
+            Settings = scene.Settings, SpawnBoxes = new System.Collections.Generic.List<FluidBlock>(scene.SpawnBoxes),
             Container = scene.Container, Obstacles = scene.Obstacles,
         };
         var settings = scene.Settings.Clone();

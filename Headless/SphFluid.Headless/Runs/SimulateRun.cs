@@ -94,7 +94,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         DiagnosticsReport? first = null, last = null;
         string? failure = null;
         var container = restContainer;
-        IReadOnlyList<SphereObstacleDescription> obstacles = restObstacles;
+        IReadOnlyList<RigidSphere> obstacles = restObstacles;
         StepReport step = StepReport.None;
         var health = new HealthCheck(description, sim.ParticleCount);
 

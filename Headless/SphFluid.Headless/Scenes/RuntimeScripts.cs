@@ -16,7 +16,7 @@ public static class RuntimeScripts
     /// <summary>Fluid's serialized FluidSettings field, which holds every declared setting by its field name.</summary>
     public const string Settings = "settings";
 
-    /// <summary>SpawnBox's serialized SpawnBoxDescription, which holds every declared spawn value and, under Phase, every
+    /// <summary>SpawnBox's serialized FluidBlock, which holds every declared spawn value and, under Phase, every
     /// declared phase value, by its field name.</summary>
     public const string Spawn = "spawn";
 

@@ -333,9 +333,9 @@ public static class SceneLoader
 
         /// <summary>The box's declared values (its phase among them) from its serialized block; the placement from its
         /// GameObject, as SpawnBox.Describe takes it.</summary>
-        SpawnBoxDescription ReadSpawnBox(UnityGameObject go, UnityDocument mb)
+        FluidBlock ReadSpawnBox(UnityGameObject go, UnityDocument mb)
         {
-            var box = ReadDeclared<SpawnBoxDescription>(go, mb, RuntimeScripts.SpawnBox, RuntimeScripts.Spawn);
+            var box = ReadDeclared<FluidBlock>(go, mb, RuntimeScripts.SpawnBox, RuntimeScripts.Spawn);
             var w = go.World;
             box.Name = go.Name;
             box.Center = w.Position;
@@ -344,12 +344,12 @@ public static class SceneLoader
             return box;
         }
 
-        SphereObstacleDescription ReadObstacle(UnityGameObject go, UnityDocument mb)
+        RigidSphere ReadObstacle(UnityGameObject go, UnityDocument mb)
         {
             var w = go.World;
             var s = Abs(w.Scale);
             float radius = Float(go, mb, RuntimeScripts.SphereObstacle, "radius", 0.5f) * MathF.Max(s.X, MathF.Max(s.Y, s.Z));
-            return new SphereObstacleDescription(w.Position, radius, Vector3.Zero) { Name = go.Name };
+            return new RigidSphere(w.Position, radius, Vector3.Zero) { Name = go.Name };
         }
 
         SceneMotion ReadMotion(UnityGameObject containerGo)

@@ -29,9 +29,9 @@ public sealed class SceneMotion
 
     public ContainerDescription ContainerAt(ContainerDescription rest, double t) => ContainerSpin?.At(rest, SpinPivot, t) ?? rest;
 
-    public List<SphereObstacleDescription> ObstaclesAt(IReadOnlyList<SphereObstacleDescription> rest, double t)
+    public List<RigidSphere> ObstaclesAt(IReadOnlyList<RigidSphere> rest, double t)
     {
-        var list = new List<SphereObstacleDescription>(rest.Count);
+        var list = new List<RigidSphere>(rest.Count);
         for (int i = 0; i < rest.Count; i++) list.Add(rest[i].Clone());
         foreach (var driven in SphereDrives) list[driven.ObstacleIndex] = driven.Drive.At(rest[driven.ObstacleIndex], t);
         return list;

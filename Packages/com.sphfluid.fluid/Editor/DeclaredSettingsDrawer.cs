@@ -5,14 +5,14 @@ using UnityEngine;
 namespace SphFluid.Editor
 {
     /// <summary>
-    /// Draws a core settings object (<see cref="FluidSettings"/>, a SpawnBox's <see cref="SpawnBoxDescription"/> with its
+    /// Draws a core settings object (<see cref="FluidSettings"/>, a SpawnBox's <see cref="FluidBlock"/> with its
     /// <see cref="PhaseDescription"/> block, the <see cref="ContainerSpin"/> and <see cref="SphereDrive"/> laws) from its
     /// declarations: a header per group, each field with its tooltip, unit and range, clamped to that range like Unity's
     /// own Range attribute. The core cannot carry Unity's attributes (it is engine-free), so this drawer is how the
     /// inspector reads the one declaration.
     /// </summary>
     [CustomPropertyDrawer(typeof(FluidSettings))]
-    [CustomPropertyDrawer(typeof(SpawnBoxDescription))]
+    [CustomPropertyDrawer(typeof(FluidBlock))]
     [CustomPropertyDrawer(typeof(PhaseDescription))]
     [CustomPropertyDrawer(typeof(ContainerSpin))]
     [CustomPropertyDrawer(typeof(SphereDrive))]

@@ -19,7 +19,7 @@ namespace SphFluid.Runtime
 
         /// <summary>Errors about the box and its phase; its size and placement depend on the simulator's
         /// spacing and container, so they are checked when the simulation starts.</summary>
-        public static IReadOnlyList<ValidationError> SpawnBoxErrors(SpawnBoxDescription box)
+        public static IReadOnlyList<ValidationError> SpawnBoxErrors(FluidBlock box)
         {
             var scene = new FluidSceneDescription
             {
@@ -30,7 +30,7 @@ namespace SphFluid.Runtime
             return Keep(scene.Validate(), "SpawnBoxes[0]", "SpawnBoxes[0].Size", "SpawnBoxes[0].Center");
         }
 
-        public static IReadOnlyList<ValidationError> ObstacleErrors(SphereObstacleDescription obstacle)
+        public static IReadOnlyList<ValidationError> ObstacleErrors(RigidSphere obstacle)
         {
             var scene = new FluidSceneDescription();
             scene.Obstacles.Add(obstacle);

@@ -54,8 +54,8 @@ namespace SphFluid.Runtime
         readonly List<Vector3> _obstaclePositions = new List<Vector3>();
         // Refilled every frame, never remade: the per-frame push is free of garbage (the simulation copies what changed).
         readonly ContainerDescription _containerDescription = new ContainerDescription();
-        readonly List<SphereObstacleDescription> _obstacleRows = new List<SphereObstacleDescription>();
-        readonly List<SphereObstacleDescription> _obstacleDescriptions = new List<SphereObstacleDescription>();
+        readonly List<RigidSphere> _obstacleRows = new List<RigidSphere>();
+        readonly List<RigidSphere> _obstacleDescriptions = new List<RigidSphere>();
         Vector3 _containerPosition;
         Quaternion _containerRotation;
         bool _paused, _stepRequested;

@@ -11,11 +11,11 @@ namespace SphFluid.Runtime
     /// </summary>
     public sealed class SpawnBox : MonoBehaviour
     {
-        [SerializeField, Tooltip("The box's liquid and lattice; each value's default, range, unit and meaning are declared once, in the core's PhaseDescription and SpawnBoxDescription.")]
-        SpawnBoxDescription spawn = new SpawnBoxDescription();
+        [SerializeField, Tooltip("The box's liquid and lattice; each value's default, range, unit and meaning are declared once, in the core's PhaseDescription and FluidBlock.")]
+        FluidBlock spawn = new FluidBlock();
 
         /// <summary>The inspector's values, for scripts (the placement comes from the Transform, see <see cref="Describe"/>).</summary>
-        public SpawnBoxDescription Spawn => spawn;
+        public FluidBlock Spawn => spawn;
 
         public string PhaseName => spawn.Phase != null ? spawn.Phase.Name : "";
 
@@ -25,10 +25,10 @@ namespace SphFluid.Runtime
         public PhaseDescription DescribePhase() => spawn.Phase?.Clone();
 
         /// <summary>A copy of the declared values with the placement of this Transform and the GameObject's name.</summary>
-        public SpawnBoxDescription Describe()
+        public FluidBlock Describe()
         {
             Transform t = transform;
-            SpawnBoxDescription box = spawn.Clone();
+            FluidBlock box = spawn.Clone();
             box.Name = name;
             box.Center = t.position.ToNumerics();
             box.Rotation = t.rotation.ToNumerics();

@@ -24,13 +24,13 @@ namespace SphFluid.Runtime
             }
         }
 
-        public SphereObstacleDescription Describe(Vector3 velocity) =>
-            DescribeInto(new SphereObstacleDescription { Name = name }, velocity);
+        public RigidSphere Describe(Vector3 velocity) =>
+            DescribeInto(new RigidSphere { Name = name }, velocity);
 
         /// <summary>Writes centre, radius and <paramref name="velocity"/> into <paramref name="description"/> but not
         /// its Name: reading <c>name</c> makes a new string each time, and the simulator refills one description
         /// per sphere every frame.</summary>
-        public SphereObstacleDescription DescribeInto(SphereObstacleDescription description, Vector3 velocity)
+        public RigidSphere DescribeInto(RigidSphere description, Vector3 velocity)
         {
             description.Center = transform.position.ToNumerics();
             description.Radius = WorldRadius;

@@ -24,7 +24,7 @@ namespace SphFluid.Tests.Health
             var scene = SolverScenes.Scene(settings, tank,
                 SolverScenes.Box("Water", SolverScenes.Water(tension: 0.07f), new Vector3(-0.12f, -0.12f, 0f), new Vector3(0.24f, 0.16f, 0.16f), seed: seed),
                 SolverScenes.Box("Oil", SolverScenes.Oil(tension: 0.03f), new Vector3(0.12f, -0.12f, 0f), new Vector3(0.24f, 0.16f, 0.16f), seed: seed + 1, jitter: 0.3f));
-            scene.Obstacles.Add(new SphereObstacleDescription(new Vector3(0f, 0.05f, 0f), 0.05f, new Vector3(0f, -0.5f, 0f)));
+            scene.Obstacles.Add(new RigidSphere(new Vector3(0f, 0.05f, 0f), 0.05f, new Vector3(0f, -0.5f, 0f)));
             return scene;
         }
 

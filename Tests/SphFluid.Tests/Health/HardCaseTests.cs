@@ -84,7 +84,7 @@ namespace SphFluid.Tests.Health
         {
             var scene = Pool();
             var phase = scene.SpawnBoxes[0].Phase;
-            scene.SpawnBoxes = new List<SpawnBoxDescription>
+            scene.SpawnBoxes = new List<FluidBlock>
             {
                 SolverScenes.Box("Left", phase, new Vector3(-0.12f, -0.12f, 0f), new Vector3(0.24f, 0.16f, 0.16f)),
                 SolverScenes.Box("Right", phase, new Vector3(0.12f, -0.12f, 0f), new Vector3(0.24f, 0.16f, 0.16f), seed: 2),
@@ -185,7 +185,7 @@ namespace SphFluid.Tests.Health
             float wave = MathF.Sqrt(9.81f * 0.16f); // shallow-water wave speed over the 0.16 m pool, 1.25 m/s
             float speed = 5f * wave;
             var start = new Vector3(-0.16f, -0.12f, 0f);
-            scene.Obstacles.Add(new SphereObstacleDescription(start, 0.05f, Vector3.Zero));
+            scene.Obstacles.Add(new RigidSphere(start, 0.05f, Vector3.Zero));
             var run = HealthRun.Of(scene, 0.3, drive: (sim, t) =>
             {
                 // Back and forth across the pool at the full speed, turning at the ends.
@@ -193,7 +193,7 @@ namespace SphFluid.Tests.Health
                 double phase = t % (2 * leg);
                 float x = (float)(phase < leg ? -0.16 + speed * phase : 0.16 - speed * (phase - leg));
                 float v = phase < leg ? speed : -speed;
-                sim.UpdateObstacles(new[] { new SphereObstacleDescription(new Vector3(x, start.Y, 0f), 0.05f, new Vector3(v, 0f, 0f)) });
+                sim.UpdateObstacles(new[] { new RigidSphere(new Vector3(x, start.Y, 0f), 0.05f, new Vector3(v, 0f, 0f)) });
             });
             AssertHealthy(run);
             Assert.That(run.Check.ObstacleSpeed, Is.EqualTo(speed).Within(1e-4f));

@@ -15,7 +15,7 @@ using SphFluid.UnityFiles.Yaml;
 namespace SphFluid.Tests.Integrity
 {
     /// <summary>
-    /// Each spawn-box and phase value is declared once (<see cref="SettingAttribute"/> on a field of SpawnBoxDescription
+    /// Each spawn-box and phase value is declared once (<see cref="SettingAttribute"/> on a field of FluidBlock
     /// or of its PhaseDescription block), as the solver settings are: the README's table, the validation, the scenes and
     /// the headless scene reader all agree with that declaration, for every field.
     /// </summary>
@@ -24,7 +24,7 @@ namespace SphFluid.Tests.Integrity
         const string Begin = "<!-- SpawnBox table: generated from the declarations, checked by SpawnBoxDeclarationTests -->\n";
         const string End = "<!-- end of SpawnBox table -->";
 
-        static SettingPath[] Declared => SettingRules.DeclaredPaths(typeof(SpawnBoxDescription)).ToArray();
+        static SettingPath[] Declared => SettingRules.DeclaredPaths(typeof(FluidBlock)).ToArray();
 
         [Test]
         public void EveryPhaseAndSpawnFieldIsDeclared()
@@ -34,24 +34,24 @@ namespace SphFluid.Tests.Integrity
                 "a public PhaseDescription field without [Setting] has no range, unit or tooltip");
             Assert.That(typeof(PhaseDescription).GetProperties(BindingFlags.Public | BindingFlags.Instance), Is.Empty,
                 "Unity serializes fields, not properties: a phase property would never reach a scene");
-            var boxFields = typeof(SpawnBoxDescription).GetFields(BindingFlags.Public | BindingFlags.Instance);
+            var boxFields = typeof(FluidBlock).GetFields(BindingFlags.Public | BindingFlags.Instance);
             Assert.That(boxFields.Where(f => f.GetCustomAttribute<SettingAttribute>() == null && !SettingRules.IsBlock(f.FieldType)).Select(f => f.Name), Is.Empty,
-                "a public SpawnBoxDescription field is either declared or a declared block");
+                "a public FluidBlock field is either declared or a declared block");
             // The placement is the Transform's and the name the GameObject's: properties, so Unity never serializes them.
-            Assert.That(typeof(SpawnBoxDescription).GetProperties(BindingFlags.Public | BindingFlags.Instance).Select(p => p.Name),
+            Assert.That(typeof(FluidBlock).GetProperties(BindingFlags.Public | BindingFlags.Instance).Select(p => p.Name),
                 Is.EquivalentTo(new[] { "Name", "Center", "Rotation", "Size" }));
             Assert.That(Declared.Select(d => d.Path), Has.Member("Phase.RestDensity").And.Member("Jitter"));
         }
 
         [Test]
         public void TheReadmeTableIsTheDeclarations() =>
-            ReadmeTable.AssertIsTheDeclarations(Begin, End, typeof(SpawnBoxDescription), "SpawnBox");
+            ReadmeTable.AssertIsTheDeclarations(Begin, End, typeof(FluidBlock), "SpawnBox");
 
         [Test]
         public void TheDefaultsAreValid()
         {
             var errors = new List<ValidationError>();
-            var box = new SpawnBoxDescription();
+            var box = new FluidBlock();
             SettingRules.ValidateAll(box, errors, "SpawnBox", "");
             SettingRules.ValidateAll(box.Phase, errors, "SpawnBox", "Phase.");
             Assert.That(errors.Select(e => e.Message), Is.Empty);
@@ -197,11 +197,11 @@ namespace SphFluid.Tests.Integrity
             return keys;
         }
 
-        static string[] ReadablePaths() => SettingRules.DeclaredPaths(typeof(SpawnBoxDescription))
+        static string[] ReadablePaths() => SettingRules.DeclaredPaths(typeof(FluidBlock))
             .Where(d => d.Field.FieldType == typeof(float) || d.Field.FieldType == typeof(int))
             .Select(d => d.Path).ToArray();
 
-        static string[] NumberPaths() => SettingRules.DeclaredPaths(typeof(SpawnBoxDescription))
+        static string[] NumberPaths() => SettingRules.DeclaredPaths(typeof(FluidBlock))
             .Where(d => d.Field.FieldType == typeof(float) || (d.Field.FieldType == typeof(int) && d.Declaration.Max < int.MaxValue))
             .Select(d => d.Path).ToArray();
     }

@@ -27,7 +27,7 @@ namespace SphFluid.Tests.Physics
             var settings = new FluidSettings { ParticleSpacing = 0.02f, SmoothingRadius = 0.04f, MaxSubsteps = 200 };
             var scene = SolverScenes.Scene(settings, Tank,
                 SolverScenes.Box("Water", SolverScenes.Water(viscosity: 0.001f), new Vector3(0f, -0.5f * Tank.Y + 0.5f * Depth, 0f), new Vector3(Tank.X, Depth, Tank.Z)));
-            scene.Obstacles.Add(new SphereObstacleDescription(CentreAt(0), Radius, new Vector3(Speed, 0f, 0f)));
+            scene.Obstacles.Add(new RigidSphere(CentreAt(0), Radius, new Vector3(Speed, 0f, 0f)));
             using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
             _count = sim.ParticleCount;
             var particles = new Particle[_count];
@@ -36,7 +36,7 @@ namespace SphFluid.Tests.Physics
             for (int frame = 1; frame <= 60; frame++)
             {
                 double t = frame / 60.0;
-                sim.UpdateObstacles(new List<SphereObstacleDescription> { new SphereObstacleDescription(CentreAt(t), Radius, new Vector3(Speed, 0f, 0f)) });
+                sim.UpdateObstacles(new List<RigidSphere> { new RigidSphere(CentreAt(t), Radius, new Vector3(Speed, 0f, 0f)) });
                 sim.Step(1f / 60f);
                 sim.Particles.GetData(particles);
                 // The sphere's centre at the end of the frame (the solver moved it by its velocity over the frame).

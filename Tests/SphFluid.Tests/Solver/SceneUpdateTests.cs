@@ -18,13 +18,13 @@ namespace SphFluid.Tests.Solver
         {
             var scene = SolverScenes.Scene(SolverScenes.Coarse(0.04f), new Vector3(0.24f, 0.24f, 0.16f),
                 SolverScenes.Box("Water", SolverScenes.Water(), new Vector3(0f, -0.06f, 0f), new Vector3(0.24f, 0.12f, 0.16f)));
-            scene.Obstacles.Add(new SphereObstacleDescription(BallCentre, 0.03f, Vector3.Zero) { Name = "Ball" });
+            scene.Obstacles.Add(new RigidSphere(BallCentre, 0.03f, Vector3.Zero) { Name = "Ball" });
             return scene;
         }
 
         /// <summary>Fresh objects equal to what the simulation holds, as a caller that rebuilds them each frame passes.</summary>
-        static List<SphereObstacleDescription> SameBall() =>
-            new List<SphereObstacleDescription> { new SphereObstacleDescription(BallCentre, 0.03f, Vector3.Zero) { Name = "Ball" } };
+        static List<RigidSphere> SameBall() =>
+            new List<RigidSphere> { new RigidSphere(BallCentre, 0.03f, Vector3.Zero) { Name = "Ball" } };
 
         [Test]
         public void UnchangedContainerAndSpheres_AllocateNothing()
@@ -104,7 +104,7 @@ namespace SphFluid.Tests.Solver
                     Throws.ArgumentException.With.Message.Contains("Sphere 'Ball': Radius must be in (0, 1000] m (was -1)"));
                 Assert.That(sim.Scene.Obstacles[0].Radius, Is.EqualTo(0.03f), "a refused sphere changes nothing");
 
-                sim.UpdateObstacles(new List<SphereObstacleDescription>());
+                sim.UpdateObstacles(new List<RigidSphere>());
                 Assert.That(sim.Scene.Obstacles, Is.Empty, "fewer spheres is a change");
             }
         }

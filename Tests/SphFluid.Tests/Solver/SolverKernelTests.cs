@@ -27,7 +27,7 @@ namespace SphFluid.Tests.Solver
             if (kernel == KernelFamily.WendlandC2) settings.SmoothingRadius = 3f * settings.ParticleSpacing;
             settings.XsphEpsilon = xsph ? 0.3f : 0f;
             var size = new Vector3(0.16f, 0.16f, 0.16f);
-            var boxes = new List<SpawnBoxDescription>
+            var boxes = new List<FluidBlock>
             {
                 SolverScenes.Box("A", SolverScenes.Water(0.1f, tension ? 0.5f : 0f), new Vector3(0f, -0.04f, 0f), new Vector3(0.16f, 0.08f, 0.16f)),
                 SolverScenes.Box("B", multiphase ? SolverScenes.Oil(0.02f, tension ? 0.3f : 0f) : SolverScenes.Water(0.1f, tension ? 0.5f : 0f),
@@ -43,7 +43,7 @@ namespace SphFluid.Tests.Solver
                 box.Center = scene.Container.Position + Vector3.Transform(box.Center, scene.Container.Rotation);
                 box.Rotation = scene.Container.Rotation;
             }
-            if (obstacle) scene.Obstacles.Add(new SphereObstacleDescription(new Vector3(0.02f, 0f, 0f), 0.03f, new Vector3(0.2f, 0f, 0f)));
+            if (obstacle) scene.Obstacles.Add(new RigidSphere(new Vector3(0.02f, 0f, 0f), 0.03f, new Vector3(0.2f, 0f, 0f)));
             return scene;
         }
 

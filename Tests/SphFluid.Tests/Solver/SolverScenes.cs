@@ -32,15 +32,15 @@ namespace SphFluid.Tests.Solver
             MaxTimeStep = 0.005f,
         };
 
-        public static SpawnBoxDescription Box(string name, PhaseDescription phase, Vector3 center, Vector3 size, int seed = 1, float jitter = 0.05f) =>
-            new SpawnBoxDescription { Name = name, Phase = phase, Center = center, Size = size, Seed = seed, Jitter = jitter };
+        public static FluidBlock Box(string name, PhaseDescription phase, Vector3 center, Vector3 size, int seed = 1, float jitter = 0.05f) =>
+            new FluidBlock { Name = name, Phase = phase, Center = center, Size = size, Seed = seed, Jitter = jitter };
 
-        public static FluidSceneDescription Scene(FluidSettings settings, Vector3 containerSize, params SpawnBoxDescription[] boxes) =>
+        public static FluidSceneDescription Scene(FluidSettings settings, Vector3 containerSize, params FluidBlock[] boxes) =>
             new FluidSceneDescription
             {
                 Settings = settings,
                 Container = new ContainerDescription { Size = containerSize },
-                SpawnBoxes = new List<SpawnBoxDescription>(boxes),
+                SpawnBoxes = new List<FluidBlock>(boxes),
             };
 
         /// <summary>A deterministic pseudo-random generator for test cases (same on every runtime).</summary>

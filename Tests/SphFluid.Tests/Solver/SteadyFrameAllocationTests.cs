@@ -29,7 +29,7 @@ namespace SphFluid.Tests.Solver
             var scene = SolverScenes.Scene(SolverScenes.Coarse(0.04f), new Vector3(0.24f, 0.24f, 0.16f),
                 SolverScenes.Box("Water", SolverScenes.Water(), new Vector3(0f, -0.06f, 0f), new Vector3(0.24f, 0.12f, 0.16f)),
                 SolverScenes.Box("Oil", SolverScenes.Oil(), new Vector3(0f, 0.04f, 0f), new Vector3(0.24f, 0.04f, 0.16f)));
-            scene.Obstacles.Add(new SphereObstacleDescription(BallCentre, 0.03f, Vector3.Zero) { Name = "Ball" });
+            scene.Obstacles.Add(new RigidSphere(BallCentre, 0.03f, Vector3.Zero) { Name = "Ball" });
             return scene;
         }
 
@@ -117,7 +117,7 @@ namespace SphFluid.Tests.Solver
             var device = new StandInDevice();
             using (var sim = new FluidSimulation(device, TankWithBall()))
             {
-                var spheres = new List<SphereObstacleDescription> { sim.Scene.Obstacles[0].Clone() }; // refilled each frame as Unity does
+                var spheres = new List<RigidSphere> { sim.Scene.Obstacles[0].Clone() }; // refilled each frame as Unity does
                 int frameIndex = 0;
                 Action frame = () =>
                 {
@@ -143,7 +143,7 @@ namespace SphFluid.Tests.Solver
         {
             using (var sim = new FluidSimulation(new StandInDevice(), TankWithBall()))
             {
-                var spheres = new List<SphereObstacleDescription> { sim.Scene.Obstacles[0].Clone() };
+                var spheres = new List<RigidSphere> { sim.Scene.Obstacles[0].Clone() };
                 spheres[0].Center = new Vector3(float.NaN, 0.04f, 0f);
                 Assert.That(() => sim.UpdateObstacles(spheres),
                     Throws.ArgumentException.With.Message.Contains("Sphere 'Ball': Center"));
@@ -158,7 +158,7 @@ namespace SphFluid.Tests.Solver
             var check = new HealthCheck(scene, 100);
             var phases = new[] { new PhaseDiagnostics("Water", 60, 0.01f, 0.05f), new PhaseDiagnostics("Oil", 40, 0.01f, 0.04f) };
             var healthy = new DiagnosticsReport(1.0, 0.01, 0.2f, 0, 0, phases, 0.5);
-            var spheres = new List<SphereObstacleDescription>(scene.Obstacles);
+            var spheres = new List<RigidSphere>(scene.Obstacles);
             Action frame = () =>
             {
                 check.ObserveDrivers(scene.Container, spheres);

@@ -60,7 +60,7 @@
 // The container's transforms, extents and motion, the spacing, the wall friction and the obstacle count are in
 // FluidConstants.hlsl.
 
-struct SphereObstacle
+struct Obstacle
 {
     float3 center;   // o, m
     float radius;    // R, m
@@ -68,7 +68,7 @@ struct SphereObstacle
     float padding;
 };
 
-StructuredBuffer<SphereObstacle> _Obstacles; // the first _ObstacleCount are live
+StructuredBuffer<Obstacle> _Obstacles; // the first _ObstacleCount are live
 
 float3 ContainerLocal(float3 x)
 {
@@ -101,7 +101,7 @@ BoundaryParticle PlaceBoundaryParticle(BoundaryParticle rest)
     }
     else
     {
-        SphereObstacle sphere = _Obstacles[min(rest.owner, max(_ObstacleCount, 1u) - 1u)];
+        Obstacle sphere = _Obstacles[min(rest.owner, max(_ObstacleCount, 1u) - 1u)];
         placed.position = sphere.center + rest.position;
         placed.velocity = sphere.velocity;
     }
@@ -199,7 +199,7 @@ bool ObstacleClamp(inout float3 x, inout float3 v)
     bool caught = false;
     for (uint o = 0u; o < _ObstacleCount; o++)
     {
-        SphereObstacle sphere = _Obstacles[o];
+        Obstacle sphere = _Obstacles[o];
         float3 d = x - sphere.center;
         float distance = length(d);
         float surface = sphere.radius + 0.01 * _ParticleSpacing;

@@ -51,9 +51,9 @@ namespace SphFluid.Tests.EditMode
         public void SphereRefill_WritesCentreRadiusAndVelocity_AndKeepsTheName()
         {
             SphereObstacle ball = Add<SphereObstacle>("Ball", new Vector3(0.1f, 0.2f, 0.3f), new Vector3(0.08f, 0.05f, 0.02f));
-            var reused = new SphereObstacleDescription { Name = "Ball" };
+            var reused = new RigidSphere { Name = "Ball" };
 
-            SphereObstacleDescription filled = ball.DescribeInto(reused, new Vector3(0f, -1f, 0f));
+            RigidSphere filled = ball.DescribeInto(reused, new Vector3(0f, -1f, 0f));
 
             Assert.That(filled, Is.SameAs(reused));
             Assert.That(filled.Name, Is.EqualTo("Ball"));

@@ -91,7 +91,7 @@ namespace SphFluid.Tests.EditMode
             box.transform.localScale = new Vector3(0.2f, -0.1f, 0.4f);
             // As the inspector's colour drawer stores a pick: sRGB in, linear kept.
             box.Spawn.Phase.Color = new Color(0.5f, 0.5f, 0.5f, 0.25f).ToLinearSetting();
-            SpawnBoxDescription d = box.Describe();
+            FluidBlock d = box.Describe();
             Assert.That(d.Name, Is.EqualTo("Water"));
             Assert.That(d.Center.Y, Is.EqualTo(0.2f).Within(1e-6f));
             Assert.That(d.Size.Y, Is.EqualTo(0.1f).Within(1e-6f), "negative scale is a mirrored box of the same size");
@@ -129,7 +129,7 @@ namespace SphFluid.Tests.EditMode
         public void UnitySerializesEveryDeclaredSpawnBoxValue()
         {
             var serialized = new UnityEditor.SerializedObject(Add<SpawnBox>("Water"));
-            foreach (SettingPath declared in SettingRules.DeclaredPaths(typeof(SpawnBoxDescription)))
+            foreach (SettingPath declared in SettingRules.DeclaredPaths(typeof(FluidBlock)))
                 Assert.That(serialized.FindProperty("spawn." + declared.Path), Is.Not.Null, declared.Path);
         }
 

@@ -20,7 +20,7 @@ namespace SphFluid.Reference
         readonly double _h, _h2, _cohesion, _flatWallNumberDensity;
 
         public ContainerDescription Container { get; set; }
-        public List<SphereObstacleDescription> Obstacles { get; set; }
+        public List<RigidSphere> Obstacles { get; set; }
 
         public ReferenceSph(FluidSceneDescription scene)
         {
@@ -28,7 +28,7 @@ namespace SphFluid.Reference
             _phases = scene.BuildPhaseTable();
             _boundaryRest = BoundarySampling.Sample(scene);
             Container = scene.Container.Clone();
-            Obstacles = new List<SphereObstacleDescription>(scene.Obstacles ?? new List<SphereObstacleDescription>());
+            Obstacles = new List<RigidSphere>(scene.Obstacles ?? new List<RigidSphere>());
             _h = _settings.SmoothingRadius;
             _h2 = _h * _h;
             _cohesion = 32.0 / (Math.PI * Math.Pow(_h, 9));

@@ -18,9 +18,9 @@ namespace SphFluid.Simulation
         public const int MaxBoundaryParticles = SphFluid.Sorting.ParticleSorter.MaxSupportedParticles;
 
         public FluidSettings Settings { get; set; } = new FluidSettings();
-        public List<SpawnBoxDescription> SpawnBoxes { get; set; } = new List<SpawnBoxDescription>();
+        public List<FluidBlock> SpawnBoxes { get; set; } = new List<FluidBlock>();
         public ContainerDescription Container { get; set; } = new ContainerDescription();
-        public List<SphereObstacleDescription> Obstacles { get; set; } = new List<SphereObstacleDescription>();
+        public List<RigidSphere> Obstacles { get; set; } = new List<RigidSphere>();
 
         /// <summary>The distinct phases in order of first appearance among the spawn boxes (the phase-table order).</summary>
         public IReadOnlyList<PhaseDescription> Phases()
@@ -131,10 +131,10 @@ namespace SphFluid.Simulation
                 errors.Add(new ValidationError("SpawnBoxes", "FluidScene: SpawnBoxes must hold at least one box (was 0)"));
                 return;
             }
-            var firstOfPhase = new Dictionary<string, SpawnBoxDescription>();
+            var firstOfPhase = new Dictionary<string, FluidBlock>();
             // Phase names become diagnostics columns and inspector rows, where "Water" and "water" would read as one
             // phase twice; names must differ by more than letter case.
-            var firstOfFoldedName = new Dictionary<string, SpawnBoxDescription>(StringComparer.OrdinalIgnoreCase);
+            var firstOfFoldedName = new Dictionary<string, FluidBlock>(StringComparer.OrdinalIgnoreCase);
             long total = 0;
             for (int b = 0; b < SpawnBoxes.Count; b++)
             {
@@ -165,8 +165,8 @@ namespace SphFluid.Simulation
                     }
                     else firstOfFoldedName.Add(box.Phase.Name, box);
                 }
-                ValidationRules.Finite(errors, owner, path, nameof(SpawnBoxDescription.Center), box.Center, 1e6f, "m");
-                ValidationRules.Rotation(errors, owner, path, nameof(SpawnBoxDescription.Rotation), box.Rotation);
+                ValidationRules.Finite(errors, owner, path, nameof(FluidBlock.Center), box.Center, 1e6f, "m");
+                ValidationRules.Rotation(errors, owner, path, nameof(FluidBlock.Rotation), box.Rotation);
                 SettingRules.ValidateAll(box, errors, owner, path);
                 if (!settingsOk) continue;
 
@@ -225,18 +225,18 @@ namespace SphFluid.Simulation
 
         /// <summary>The rules of one sphere; <paramref name="owner"/> and <paramref name="path"/> name it in the messages
         /// (FluidSimulation keeps them, so that a sphere driven every frame is checked without making strings).</summary>
-        internal static void ValidateObstacle(List<ValidationError> errors, SphereObstacleDescription o, string owner, string path)
+        internal static void ValidateObstacle(List<ValidationError> errors, RigidSphere o, string owner, string path)
         {
-            ValidationRules.Finite(errors, owner, path, nameof(SphereObstacleDescription.Center), o.Center, 1e6f, "m");
-            ValidationRules.Positive(errors, owner, path, nameof(SphereObstacleDescription.Radius), o.Radius, 1000f, "m");
-            ValidationRules.Finite(errors, owner, path, nameof(SphereObstacleDescription.Velocity), o.Velocity, 1000f, "m/s");
+            ValidationRules.Finite(errors, owner, path, nameof(RigidSphere.Center), o.Center, 1e6f, "m");
+            ValidationRules.Positive(errors, owner, path, nameof(RigidSphere.Radius), o.Radius, 1000f, "m");
+            ValidationRules.Finite(errors, owner, path, nameof(RigidSphere.Velocity), o.Velocity, 1000f, "m/s");
         }
 
-        internal static string ObstacleOwner(SphereObstacleDescription o) => $"Sphere '{o.Name}'";
+        internal static string ObstacleOwner(RigidSphere o) => $"Sphere '{o.Name}'";
 
         internal static string ObstaclePath(int index) => $"Obstacles[{index}].";
 
-        bool BoxInsideContainer(SpawnBoxDescription box, out Vector3 outsideCorner)
+        bool BoxInsideContainer(FluidBlock box, out Vector3 outsideCorner)
         {
             var half = box.Size * 0.5f;
             var containerHalf = Container.Size * 0.5f;

@@ -50,7 +50,7 @@ namespace SphFluid.Simulation
         /// <summary>Replaces the sphere obstacles (any count up to <see cref="FluidSceneDescription.MaxObstacles"/>).
         /// Callers push the obstacles every frame, so the same spheres as now return before anything is copied,
         /// validated or uploaded.</summary>
-        public void UpdateObstacles(IReadOnlyList<SphereObstacleDescription> obstacles)
+        public void UpdateObstacles(IReadOnlyList<RigidSphere> obstacles)
         {
             ThrowIfDisposed();
             int count = obstacles == null ? 0 : obstacles.Count;
@@ -58,14 +58,14 @@ namespace SphFluid.Simulation
             bool same = current.Count == count;
             for (int i = 0; same && i < count; i++)
             {
-                SphereObstacleDescription now = current[i], next = obstacles[i];
+                RigidSphere now = current[i], next = obstacles[i];
                 same = next != null && now.Name == next.Name && now.Center == next.Center && now.Radius == next.Radius
                        && now.Velocity == next.Velocity;
             }
             if (same) return;
             if (MovedOnly(obstacles, count)) return;
 
-            var list = new List<SphereObstacleDescription>(count);
+            var list = new List<RigidSphere>(count);
             for (int i = 0; i < count; i++) list.Add(obstacles[i]?.Clone());
             // The obstacles' rules read nothing else of the scene, so the probe holds only them.
             var probe = new FluidSceneDescription { Obstacles = list };
@@ -82,13 +82,13 @@ namespace SphFluid.Simulation
         /// <summary>The same spheres (count, names, radii) at new centres or speeds, as a driven sphere is every frame:
         /// checked with the sphere rules under names made once, and copied into the simulation's own descriptions, so
         /// that nothing is allocated. False when more than that changed (the caller then replaces the list).</summary>
-        bool MovedOnly(IReadOnlyList<SphereObstacleDescription> obstacles, int count)
+        bool MovedOnly(IReadOnlyList<RigidSphere> obstacles, int count)
         {
             var current = _scene.Obstacles;
             if (current.Count != count) return false;
             for (int i = 0; i < count; i++)
             {
-                SphereObstacleDescription now = current[i], next = obstacles[i];
+                RigidSphere now = current[i], next = obstacles[i];
                 if (next == null || now.Name != next.Name || now.Radius != next.Radius) return false;
             }
             if (_obstacleNamesFor != current)
@@ -115,7 +115,7 @@ namespace SphFluid.Simulation
         }
 
         /// <summary>Same count and radii: the boundary particles only move with the spheres.</summary>
-        static bool SameShapes(IReadOnlyList<SphereObstacleDescription> a, IReadOnlyList<SphereObstacleDescription> b)
+        static bool SameShapes(IReadOnlyList<RigidSphere> a, IReadOnlyList<RigidSphere> b)
         {
             int na = a == null ? 0 : a.Count, nb = b == null ? 0 : b.Count;
             if (na != nb) return false;
@@ -129,7 +129,7 @@ namespace SphFluid.Simulation
             var rows = _obstacleRows;
             int count = _scene.Obstacles == null ? 0 : _scene.Obstacles.Count;
             for (int i = 0; i < count; i++)
-                rows[i] = new SphereObstacleData(_scene.Obstacles[i]);
+                rows[i] = new Obstacle(_scene.Obstacles[i]);
             if (count == 0) rows[0] = default;
             _buffers.Obstacles.SetData(rows, 0, 0, Math.Max(count, 1));
             _constants[0].ObstacleCount = (uint)count;

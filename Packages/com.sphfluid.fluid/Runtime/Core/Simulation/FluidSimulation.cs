@@ -72,7 +72,7 @@ namespace SphFluid.Simulation
         readonly int[] _solveRounds = new int[2];       // rounds recorded per solve, by solve slot (SolveBudget)
         // Kept for the simulation's lifetime so that a steady frame makes no garbage (Unity's GC stalls show as hitches).
         readonly int[] _diagnosticsKernels;
-        readonly SphereObstacleData[] _obstacleRows = new SphereObstacleData[FluidSceneDescription.MaxObstacles];
+        readonly Obstacle[] _obstacleRows = new Obstacle[FluidSceneDescription.MaxObstacles];
         readonly Vector4[] _diagnosticsRows;
         readonly SimulationPlan[] _plans = new SimulationPlan[2]; // [container unchanged, container moved]
         DiagnosticsReport _latestDiagnostics, _diagnosticsReport;
@@ -80,7 +80,7 @@ namespace SphFluid.Simulation
         readonly List<ValidationError> _containerErrors = new List<ValidationError>();
         readonly List<ValidationError> _obstacleErrors = new List<ValidationError>();
         string[,] _obstacleNames; // [sphere, 0] owner and [sphere, 1] path in messages, made for _obstacleNamesFor
-        List<SphereObstacleDescription> _obstacleNamesFor;
+        List<RigidSphere> _obstacleNamesFor;
         PhaseDiagnostics[] _diagnosticsPhases;
         bool _disposed;
 
@@ -657,13 +657,13 @@ namespace SphFluid.Simulation
 
         static FluidSceneDescription CopyOf(FluidSceneDescription scene)
         {
-            var obstacles = new List<SphereObstacleDescription>();
+            var obstacles = new List<RigidSphere>();
             if (scene.Obstacles != null)
                 foreach (var o in scene.Obstacles) obstacles.Add(o?.Clone());
             return new FluidSceneDescription
             {
                 Settings = scene.Settings?.Clone(),
-                SpawnBoxes = scene.SpawnBoxes == null ? null : new List<SpawnBoxDescription>(scene.SpawnBoxes),
+                SpawnBoxes = scene.SpawnBoxes == null ? null : new List<FluidBlock>(scene.SpawnBoxes),
                 Container = scene.Container?.Clone(),
                 Obstacles = obstacles,
             };

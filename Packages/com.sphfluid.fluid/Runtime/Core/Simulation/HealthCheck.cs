@@ -120,7 +120,7 @@ namespace SphFluid.Simulation
 
         /// <summary>Takes in the container and spheres as they move now (call before each frame or check):
         /// the speed bound follows the fastest driver seen so far.</summary>
-        public void ObserveDrivers(ContainerDescription container, IReadOnlyList<SphereObstacleDescription> obstacles)
+        public void ObserveDrivers(ContainerDescription container, IReadOnlyList<RigidSphere> obstacles)
         {
             if (container != null)
             {

@@ -51,7 +51,7 @@ namespace SphFluid.Simulation
         }
 
         /// <summary>How far the particle at <paramref name="x"/> moves down: the compression of the fluid below it.</summary>
-        static double Drop(List<SpawnBoxDescription> boxes, Vector3 x, Vector3 up, float g, float stiffness, float gamma, out double pressureHere)
+        static double Drop(List<FluidBlock> boxes, Vector3 x, Vector3 up, float g, float stiffness, float gamma, out double pressureHere)
         {
             // The vertical line x + t up: each box occupies one interval [enter, exit] of t.
             var spans = new List<(double Enter, double Exit, double Density)>();
@@ -83,7 +83,7 @@ namespace SphFluid.Simulation
         }
 
         /// <summary>Where the line x + t up enters and leaves the (rotated) box, by the slab method.</summary>
-        static bool Crossing(SpawnBoxDescription box, Vector3 x, Vector3 up, out double enter, out double exit)
+        static bool Crossing(FluidBlock box, Vector3 x, Vector3 up, out double enter, out double exit)
         {
             var inverse = Quaternion.Conjugate(Quaternion.Normalize(box.Rotation));
             var origin = Vector3.Transform(x - box.Center, inverse);

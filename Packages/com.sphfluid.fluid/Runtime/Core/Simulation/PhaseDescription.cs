@@ -6,7 +6,7 @@ namespace SphFluid.Simulation
     /// What one liquid is, as the scene describes it. Spawn boxes that name the same phase share one row of the GPU phase
     /// table (<see cref="PhaseProperties"/>). Each value is declared once, like <see cref="FluidSettings"/>: the field's
     /// initializer is its default and its <see cref="SettingAttribute"/> its range, unit, group and tooltip. Unity
-    /// serializes the class inside the SpawnBox component (through <see cref="SpawnBoxDescription.Phase"/>); the editor
+    /// serializes the class inside the SpawnBox component (through <see cref="FluidBlock.Phase"/>); the editor
     /// drawer, the validation, the headless scene reader and the README's table read the declarations.
     /// </summary>
     [Serializable]

@@ -87,7 +87,7 @@ namespace SphFluid.Simulation
 
         /// <summary>
         /// Every declared setting of <paramref name="type"/> and of the declared blocks it holds (a public field, without
-        /// a declaration of its own, whose class declares settings: <see cref="SpawnBoxDescription.Phase"/>), depth first
+        /// a declaration of its own, whose class declares settings: <see cref="FluidBlock.Phase"/>), depth first
         /// in source order, each with its dotted path from <paramref name="type"/> ("Phase.RestDensity"). The path is the
         /// serialized name Unity writes and the headless scene reader reads.
         /// </summary>

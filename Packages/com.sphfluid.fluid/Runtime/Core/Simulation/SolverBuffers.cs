@@ -150,7 +150,7 @@ namespace SphFluid.Simulation
             Accelerations = Zeroed("FluidSimulation.Accelerations", n, 16);
             VelocityCorrections = Zeroed("FluidSimulation.VelocityCorrections", n, 16);
             Shifts = Zeroed("FluidSimulation.Shifts", n, 16);
-            Obstacles = device.CreateBuffer("FluidSimulation.Obstacles", FluidSceneDescription.MaxObstacles, SphereObstacleData.Stride);
+            Obstacles = device.CreateBuffer("FluidSimulation.Obstacles", FluidSceneDescription.MaxObstacles, Obstacle.Stride);
             ClampHits = Zeroed("FluidSimulation.ClampHits", 1, 4);
             int particleGroups = ComputeDispatch.GroupsFor(n, ParticleThreads);
             Factors = Zeroed("FluidSimulation.DivergenceFreeFactors", n, 4);

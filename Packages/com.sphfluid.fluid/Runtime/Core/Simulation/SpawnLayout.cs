@@ -21,13 +21,13 @@ namespace SphFluid.Simulation
     /// </remarks>
     public static class SpawnLayout
     {
-        /// <summary>The declared bound of <see cref="SpawnBoxDescription.Jitter"/>: the lattice clamps to it as the
+        /// <summary>The declared bound of <see cref="FluidBlock.Jitter"/>: the lattice clamps to it as the
         /// validation refuses beyond it.</summary>
-        static readonly float MaxJitter = (float)SettingRules.Of(typeof(SpawnBoxDescription), nameof(SpawnBoxDescription.Jitter)).Max;
+        static readonly float MaxJitter = (float)SettingRules.Of(typeof(FluidBlock), nameof(FluidBlock.Jitter)).Max;
 
         /// <summary>Lattice points along each box axis: floor or ceil of Size / s per axis, the combination whose cell
         /// volume V / (nx ny nz) is closest to s^3 (an exact multiple of s, within rounding, keeps Size / s).</summary>
-        public static void CountPerAxis(FluidSettings settings, SpawnBoxDescription box, out int nx, out int ny, out int nz)
+        public static void CountPerAxis(FluidSettings settings, FluidBlock box, out int nx, out int ny, out int nz)
         {
             nx = ny = nz = 0;
             double s = settings.ParticleSpacing;
@@ -60,14 +60,14 @@ namespace SphFluid.Simulation
         }
 
         /// <summary>Volume each particle of this box stands for, m^3: the box volume over its lattice count (0 for an empty box).</summary>
-        public static double CellVolume(FluidSettings settings, SpawnBoxDescription box)
+        public static double CellVolume(FluidSettings settings, FluidBlock box)
         {
             long count = Count(settings, box);
             return count > 0 ? (double)box.Size.X * box.Size.Y * box.Size.Z / count : 0.0;
         }
 
         /// <summary>Particles this box spawns.</summary>
-        public static long Count(FluidSettings settings, SpawnBoxDescription box)
+        public static long Count(FluidSettings settings, FluidBlock box)
         {
             CountPerAxis(settings, box, out int nx, out int ny, out int nz);
             return (long)nx * ny * nz;
@@ -113,7 +113,7 @@ namespace SphFluid.Simulation
             return -1;
         }
 
-        static int Fill(FluidSceneDescription scene, SpawnBoxDescription box, uint phase, Particle[] particles, int next)
+        static int Fill(FluidSceneDescription scene, FluidBlock box, uint phase, Particle[] particles, int next)
         {
             var settings = scene.Settings;
             CountPerAxis(settings, box, out int nx, out int ny, out int nz);

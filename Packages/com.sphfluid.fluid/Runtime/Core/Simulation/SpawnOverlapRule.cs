@@ -28,7 +28,7 @@ namespace SphFluid.Simulation
             }
         }
 
-        static bool Overlap(SpawnBoxDescription a, SpawnBoxDescription b, float tolerance, out float depth)
+        static bool Overlap(FluidBlock a, FluidBlock b, float tolerance, out float depth)
         {
             var axesA = Axes(a.Rotation);
             var axesB = Axes(b.Rotation);

@@ -41,7 +41,7 @@ namespace SphFluid.Simulation
         }
 
         /// <summary>A sphere at rest moved to time <paramref name="t"/>, with its velocity.</summary>
-        public SphereObstacleDescription At(SphereObstacleDescription rest, double t)
+        public RigidSphere At(RigidSphere rest, double t)
         {
             var result = rest.Clone();
             result.Center = rest.Center + Offset(t);

@@ -38,7 +38,7 @@ namespace SphFluid.Tests.Core.Simulation
             {
                 Settings = new FluidSettings { ParticleSpacing = Spacing, SmoothingRadius = Support },
                 Container = new ContainerDescription { Size = new Vector3(0.4f, 0.4f, 0.4f) },
-                Obstacles = new List<SphereObstacleDescription> { new SphereObstacleDescription(Vector3.Zero, radius, Vector3.Zero) },
+                Obstacles = new List<RigidSphere> { new RigidSphere(Vector3.Zero, radius, Vector3.Zero) },
             };
             BoundaryParticle[] all = BoundarySampling.Sample(scene);
 

@@ -59,12 +59,12 @@ namespace SphFluid.Tests.Core.Simulation
             float rest = check.SpeedBound;
             var spinning = scene.Container.Clone();
             spinning.AngularVelocity = new Vector3(0f, 0f, 2f * MathF.PI); // 360 deg/s
-            check.ObserveDrivers(spinning, new[] { new SphereObstacleDescription(Vector3.Zero, 0.05f, new Vector3(1.5f, 0f, 0f)) });
+            check.ObserveDrivers(spinning, new[] { new RigidSphere(Vector3.Zero, 0.05f, new Vector3(1.5f, 0f, 0f)) });
             Assert.That(check.WallSpeed, Is.EqualTo(2f * MathF.PI * 0.5f * (float)Math.Sqrt(0.75)).Within(1e-4f)); // 2.72 m/s
             Assert.That(check.ObstacleSpeed, Is.EqualTo(1.5f));
             Assert.That(check.SpeedBound, Is.EqualTo(rest + 2f * (2f * 2.7207f + 2f * 1.5f)).Within(1e-3f));
             Assert.That(check.Driven, Is.True);
-            check.ObserveDrivers(scene.Container, new SphereObstacleDescription[0]);
+            check.ObserveDrivers(scene.Container, new RigidSphere[0]);
             Assert.That(check.WallSpeed, Is.EqualTo(2f * MathF.PI * 0.5f * (float)Math.Sqrt(0.75)).Within(1e-4f), "a slower driver later keeps the bound");
         }
 

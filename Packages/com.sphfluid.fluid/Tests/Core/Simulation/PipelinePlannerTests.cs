@@ -29,7 +29,7 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(plan.FramePasses, Has.No.Member(PassNames.PlaceBoundary), "walls at rest are placed once, not every frame");
             Assert.That(plan.Keywords, Has.No.Member(SolverKeywords.Obstacles));
             var scene = SimulationTestScenes.OilOnWater();
-            scene.Obstacles.Add(new SphereObstacleDescription(Vector3.Zero, 0.05f, Vector3.Zero));
+            scene.Obstacles.Add(new RigidSphere(Vector3.Zero, 0.05f, Vector3.Zero));
             plan = PipelinePlanner.Plan(scene, false);
             Assert.That(plan.FramePasses, Has.Member(PassNames.PlaceBoundary), "moving spheres re-place their boundary particles");
             Assert.That(plan.Keywords, Has.Member(SolverKeywords.Obstacles));
@@ -89,7 +89,7 @@ namespace SphFluid.Tests.Core.Simulation
         {
             var scene = SimulationTestScenes.OilOnWater();
             scene.SpawnBoxes[0].Phase.SurfaceTension = 0.07f;
-            scene.Obstacles.Add(new SphereObstacleDescription(Vector3.Zero, 0.05f, Vector3.Zero));
+            scene.Obstacles.Add(new RigidSphere(Vector3.Zero, 0.05f, Vector3.Zero));
             var plan = PipelinePlanner.Plan(scene, true);
             Assert.That(plan.SubstepPasses, Is.EqualTo(new[]
             {

@@ -106,7 +106,7 @@ namespace SphFluid.Tests.Core.Simulation
         public void ObstacleWithZeroRadius_IsRefused()
         {
             var scene = SimulationTestScenes.OilOnWater();
-            scene.Obstacles.Add(new SphereObstacleDescription(Vector3.Zero, 0f, Vector3.Zero) { Name = "Ball" });
+            scene.Obstacles.Add(new RigidSphere(Vector3.Zero, 0f, Vector3.Zero) { Name = "Ball" });
             Assert.That(Messages(scene), Has.Member("Sphere 'Ball': Radius must be in (0, 1000] m (was 0)"));
         }
 

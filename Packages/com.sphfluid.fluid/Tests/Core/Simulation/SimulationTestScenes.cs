@@ -17,10 +17,10 @@ namespace SphFluid.Tests.Core.Simulation
             {
                 Settings = new FluidSettings(),
                 Container = new ContainerDescription { Size = new Vector3(0.5f, 0.5f, 0.5f) },
-                SpawnBoxes = new List<SpawnBoxDescription>
+                SpawnBoxes = new List<FluidBlock>
                 {
-                    new SpawnBoxDescription("Water", Water(), new Vector3(0f, -0.19f, 0f), new Vector3(0.5f, 0.12f, 0.5f)) { Seed = 1 },
-                    new SpawnBoxDescription("Oil", Oil(), new Vector3(0f, -0.07f, 0f), new Vector3(0.5f, 0.12f, 0.5f)) { Seed = 2 },
+                    new FluidBlock("Water", Water(), new Vector3(0f, -0.19f, 0f), new Vector3(0.5f, 0.12f, 0.5f)) { Seed = 1 },
+                    new FluidBlock("Oil", Oil(), new Vector3(0f, -0.07f, 0f), new Vector3(0.5f, 0.12f, 0.5f)) { Seed = 2 },
                 },
             };
         }

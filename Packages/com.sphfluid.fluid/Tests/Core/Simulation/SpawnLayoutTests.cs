@@ -13,7 +13,7 @@ namespace SphFluid.Tests.Core.Simulation
         {
             // 0.05 / 0.02 = 2.5 points: 3 (150 cells of 8.3e-6 m^3 for 125 of 8e-6) is closer in volume than 2 (100).
             var settings = new FluidSettings { ParticleSpacing = 0.02f, SmoothingRadius = 0.04f };
-            var box = new SpawnBoxDescription("B", SimulationTestScenes.Water(), Vector3.Zero, new Vector3(0.2f, 0.1f, 0.05f));
+            var box = new FluidBlock("B", SimulationTestScenes.Water(), Vector3.Zero, new Vector3(0.2f, 0.1f, 0.05f));
             SpawnLayout.CountPerAxis(settings, box, out int nx, out int ny, out int nz);
             Assert.That(new[] { nx, ny, nz }, Is.EqualTo(new[] { 10, 5, 3 }));
             Assert.That(SpawnLayout.Count(settings, box), Is.EqualTo(150L));
@@ -104,7 +104,7 @@ namespace SphFluid.Tests.Core.Simulation
         public void PhaseTable_OneRowPerPhaseName_MassAtRestDensity()
         {
             var scene = SimulationTestScenes.OilOnWater();
-            scene.SpawnBoxes.Add(new SpawnBoxDescription("MoreWater", SimulationTestScenes.Water(), new Vector3(0f, 0.1f, 0f), new Vector3(0.1f, 0.1f, 0.1f)));
+            scene.SpawnBoxes.Add(new FluidBlock("MoreWater", SimulationTestScenes.Water(), new Vector3(0f, 0.1f, 0f), new Vector3(0.1f, 0.1f, 0.1f)));
             var table = scene.BuildPhaseTable();
             Assert.That(table.Length, Is.EqualTo(2));
             double delta0 = scene.RestNumberDensity();
@@ -186,7 +186,7 @@ namespace SphFluid.Tests.Core.Simulation
         {
             var scene = SimulationTestScenes.OilOnWater();
             var without = SpawnLayout.Generate(scene).Length;
-            var sphere = new SphereObstacleDescription(scene.SpawnBoxes[0].Center, 0.05f, Vector3.Zero);
+            var sphere = new RigidSphere(scene.SpawnBoxes[0].Center, 0.05f, Vector3.Zero);
             scene.Obstacles.Add(sphere);
             var particles = SpawnLayout.Generate(scene);
             Assert.That(particles.Length, Is.LessThan(without));

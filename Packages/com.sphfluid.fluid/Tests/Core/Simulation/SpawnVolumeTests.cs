@@ -22,7 +22,7 @@ namespace SphFluid.Tests.Core.Simulation
                 Settings = new FluidSettings { ParticleSpacing = spacing, SmoothingRadius = 2f * spacing },
                 Container = new ContainerDescription { Size = new Vector3(0.6f, 0.6f, 0.3f) },
             };
-            scene.SpawnBoxes.Add(new SpawnBoxDescription("Water", SimulationTestScenes.Water(), new Vector3(0f, -0.1f, 0f), size) { Jitter = jitter });
+            scene.SpawnBoxes.Add(new FluidBlock("Water", SimulationTestScenes.Water(), new Vector3(0f, -0.1f, 0f), size) { Jitter = jitter });
             return scene;
         }
 
@@ -80,7 +80,7 @@ namespace SphFluid.Tests.Core.Simulation
             scene.Settings.Gravity = Vector3.Zero;
             var lower = scene.SpawnBoxes[0];
             lower.Center = new Vector3(0f, -0.5f * lower.Size.Y, 0f);
-            var upper = new SpawnBoxDescription("Upper", SimulationTestScenes.Water(), new Vector3(0f, 0.0505f, 0f), new Vector3(0.2f, 0.101f, 0.1f)) { Jitter = 0f };
+            var upper = new FluidBlock("Upper", SimulationTestScenes.Water(), new Vector3(0f, 0.0505f, 0f), new Vector3(0.2f, 0.101f, 0.1f)) { Jitter = 0f };
             scene.SpawnBoxes.Add(upper);
             Assert.That(scene.Validate(), Is.Empty);
             var particles = SpawnLayout.Generate(scene);
@@ -98,7 +98,7 @@ namespace SphFluid.Tests.Core.Simulation
         public void CountMatchesWhatGenerateSpawnsForAwkwardSizes()
         {
             var scene = OneBox(0.017f, new Vector3(0.113f, 0.071f, 0.049f), jitter: 0.5f);
-            scene.SpawnBoxes.Add(new SpawnBoxDescription("Oil", SimulationTestScenes.Oil(), new Vector3(0.2f, -0.1f, 0f), new Vector3(0.05f, 0.031f, 0.2f)) { Seed = 3 });
+            scene.SpawnBoxes.Add(new FluidBlock("Oil", SimulationTestScenes.Oil(), new Vector3(0.2f, -0.1f, 0f), new Vector3(0.05f, 0.031f, 0.2f)) { Seed = 3 });
             var particles = SpawnLayout.Generate(scene);
             Assert.That(particles.Length, Is.EqualTo(SpawnLayout.TotalCount(scene)));
             Assert.That(particles.Count(p => p.Phase == 1), Is.EqualTo((int)SpawnLayout.Count(scene.Settings, scene.SpawnBoxes[1])));
@@ -122,7 +122,7 @@ namespace SphFluid.Tests.Core.Simulation
         public void APhaseOverSeveralBoxesWeighsRestDensityTimesTheirVolume()
         {
             var scene = OneBox(0.017f, new Vector3(0.113f, 0.071f, 0.049f));
-            scene.SpawnBoxes.Add(new SpawnBoxDescription("More", SimulationTestScenes.Water(), new Vector3(0.2f, -0.1f, 0f), new Vector3(0.05f, 0.031f, 0.2f)));
+            scene.SpawnBoxes.Add(new FluidBlock("More", SimulationTestScenes.Water(), new Vector3(0.2f, -0.1f, 0f), new Vector3(0.05f, 0.031f, 0.2f)));
             double mass = scene.BuildPhaseTable()[0].ParticleMass * (double)SpawnLayout.TotalCount(scene);
             double volume = scene.SpawnBoxes.Sum(b => (double)b.Size.X * b.Size.Y * b.Size.Z);
             Assert.That(mass, Is.EqualTo(1000.0 * volume).Within(2e-4 * 1000.0 * volume));

@@ -16,8 +16,8 @@ namespace SphFluid.Tests.Core.Simulation
         static FluidSceneDescription TwoBoxes(Vector3 centreA, Vector3 centreB, Quaternion rotation, float size)
         {
             var scene = SimulationTestScenes.SingleWater();
-            scene.SpawnBoxes[0] = new SpawnBoxDescription("A", SimulationTestScenes.Water(), centreA, new Vector3(size, size, size)) { Rotation = rotation };
-            scene.SpawnBoxes.Add(new SpawnBoxDescription("B", SimulationTestScenes.Water(), centreB, new Vector3(size, size, size)) { Rotation = rotation, Seed = 2 });
+            scene.SpawnBoxes[0] = new FluidBlock("A", SimulationTestScenes.Water(), centreA, new Vector3(size, size, size)) { Rotation = rotation };
+            scene.SpawnBoxes.Add(new FluidBlock("B", SimulationTestScenes.Water(), centreB, new Vector3(size, size, size)) { Rotation = rotation, Seed = 2 });
             return scene;
         }
 

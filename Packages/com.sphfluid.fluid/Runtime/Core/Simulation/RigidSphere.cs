@@ -2,8 +2,9 @@ using System.Numerics;
 
 namespace SphFluid.Simulation
 {
-    /// <summary>A solid sphere that pushes fluid out of itself with its velocity.</summary>
-    public sealed class SphereObstacleDescription
+    /// <summary>A solid sphere that pushes fluid out of itself with its velocity: what a SphereObstacle component
+    /// describes to the engine-free core.</summary>
+    public sealed class RigidSphere
     {
         public string Name { get; set; } = "Sphere";
 
@@ -16,16 +17,16 @@ namespace SphFluid.Simulation
         /// <summary>World-space velocity, m/s.</summary>
         public Vector3 Velocity { get; set; }
 
-        public SphereObstacleDescription() { }
+        public RigidSphere() { }
 
-        public SphereObstacleDescription(Vector3 center, float radius, Vector3 velocity)
+        public RigidSphere(Vector3 center, float radius, Vector3 velocity)
         {
             Center = center;
             Radius = radius;
             Velocity = velocity;
         }
 
-        public SphereObstacleDescription Clone() => (SphereObstacleDescription)MemberwiseClone();
+        public RigidSphere Clone() => (RigidSphere)MemberwiseClone();
 
         public override string ToString() => $"Sphere '{Name}' at {Center} r {Radius}";
     }

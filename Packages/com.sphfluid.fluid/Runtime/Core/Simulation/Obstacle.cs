@@ -3,10 +3,10 @@ using System.Runtime.InteropServices;
 
 namespace SphFluid.Simulation
 {
-    /// <summary>One sphere obstacle as the GPU reads it (<c>SphereObstacle</c> in Shaders/Include/SphBoundary.hlsl):
+    /// <summary>One sphere obstacle as the GPU reads it (<c>Obstacle</c> in Shaders/Include/SphBoundary.hlsl):
     /// two 16-byte groups.</summary>
     [StructLayout(LayoutKind.Sequential)]
-    public struct SphereObstacleData
+    public struct Obstacle
     {
         public const int Stride = 32;
 
@@ -15,7 +15,7 @@ namespace SphFluid.Simulation
         public Vector3 Velocity;
         float _padding;
 
-        public SphereObstacleData(SphereObstacleDescription obstacle)
+        public Obstacle(RigidSphere obstacle)
         {
             Center = obstacle.Center;
             Radius = obstacle.Radius;

@@ -4,13 +4,14 @@ using System.Numerics;
 namespace SphFluid.Simulation
 {
     /// <summary>
-    /// A box filled with one phase on a regular lattice at start (and on reset). Boxes may touch but not overlap
+    /// A block of fluid: a box filled with one phase on a regular lattice at start (and on reset), what a SpawnBox
+    /// component describes to the engine-free core. Boxes may touch but not overlap
     /// (<see cref="SpawnOverlapRule"/>). The spawn values and the <see cref="Phase"/> block are declared once
     /// (<see cref="SettingAttribute"/>) and serialized by Unity inside the SpawnBox component; the placement (name, centre,
     /// rotation, size) is not a setting: Unity and the headless reader take it from the box's GameObject and Transform.
     /// </summary>
     [Serializable]
-    public sealed class SpawnBoxDescription
+    public sealed class FluidBlock
     {
         const string Spawn = "Spawn";
 
@@ -38,9 +39,9 @@ namespace SphFluid.Simulation
         /// <summary>Edge lengths, m; each at least one particle spacing.</summary>
         public Vector3 Size { get; set; } = new Vector3(0.2f, 0.2f, 0.2f);
 
-        public SpawnBoxDescription() { }
+        public FluidBlock() { }
 
-        public SpawnBoxDescription(string name, PhaseDescription phase, Vector3 center, Vector3 size)
+        public FluidBlock(string name, PhaseDescription phase, Vector3 center, Vector3 size)
         {
             Name = name;
             Phase = phase;
@@ -49,9 +50,9 @@ namespace SphFluid.Simulation
         }
 
         /// <summary>A copy whose phase is a copy too, so that editing one does not edit the other.</summary>
-        public SpawnBoxDescription Clone()
+        public FluidBlock Clone()
         {
-            var copy = (SpawnBoxDescription)MemberwiseClone();
+            var copy = (FluidBlock)MemberwiseClone();
             copy.Phase = Phase?.Clone();
             return copy;
         }
