@@ -463,11 +463,22 @@ namespace SphFluid.Simulation
         /// and with <paramref name="withForces"/> the non-pressure forces the motion read-back needs).</summary>
         void SortAndComputeForces(bool withForces = true)
         {
+            Sort();
+            DensityAndForces(withForces);
+        }
+
+        /// <summary>Counting sort of the particles by grid cell (ParticleSort.compute) into the other particle buffer.</summary>
+        void Sort()
+        {
             _device.BeginSample(PassNames.Sort);
             _buffers.Sorter.Sort(_grid, _buffers.Particles, _buffers.ParticlesOther, ParticleCount);
             _buffers.SwapParticles();
             _device.EndSample(PassNames.Sort);
+        }
 
+        /// <summary>The passes of <see cref="SortAndComputeForces"/> after the sort, for particles already sorted.</summary>
+        void DensityAndForces(bool withForces = true)
+        {
             if (_divergenceFree)
             {
                 SolverPass(PassNames.DensityFactor, _densityFactor);
@@ -503,15 +514,17 @@ namespace SphFluid.Simulation
             BeginFrame();
             if (_deltaSph)
             {
-                // delta-SPH outside a step: dt = 0 keeps the carried delta; DensityRate runs on the sorted state for its rates.
+                // delta-SPH outside a step: dt = 0 keeps the carried delta; DensityRate runs on the sorted state for its
+                // rates, and nothing moves before the density and forces.
                 SetTimeStep(0f);
-                _device.BeginSample(PassNames.Sort);
-                _buffers.Sorter.Sort(_grid, _buffers.Particles, _buffers.ParticlesOther, ParticleCount);
-                _buffers.SwapParticles();
-                _device.EndSample(PassNames.Sort);
+                Sort();
                 SolverPass(PassNames.DensityRate, _densityRate);
+                DensityAndForces();
             }
-            SortAndComputeForces();
+            else
+            {
+                SortAndComputeForces();
+            }
             _device.Submit();
         }
 
