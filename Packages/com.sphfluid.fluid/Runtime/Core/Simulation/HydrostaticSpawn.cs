@@ -14,8 +14,9 @@ namespace SphFluid.Simulation
     /// Along the vertical line through a particle (up = -g), the pressure at height y is the weight of the
     /// spawned fluid above it, p(y) = |g| sum_boxes rho0_box L_box(y), with L_box(y) the length of that line
     /// above y inside the box. Under DFSPH the fluid is incompressible: its constant-density solve holds every particle
-    /// at the rest density whatever the pressure, so the particles stay on the lattice (a column compressed for the Tait
-    /// fluid would spring up as the first solve removes the compression) and only the pressures are reported.
+    /// at the rest density whatever the pressure, so the particles stay on the lattice and only the pressures are
+    /// reported (a column compressed for the Tait fluid would be expanded by the first solve within one sub-step, a
+    /// jolt through the whole column).
     /// Under WCSPH the density the equation of state asks for is
     /// rho / rho0 = (1 + p / k)^(1 / gamma) (Becker &amp; Teschner 2007, eq. 6, inverted), so each fluid layer
     /// of thickness dy shrinks to dy rho0 / rho, and a particle at height y moves down by

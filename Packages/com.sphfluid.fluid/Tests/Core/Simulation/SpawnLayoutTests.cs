@@ -162,7 +162,7 @@ namespace SphFluid.Tests.Core.Simulation
         [Test]
         public void UnderDfsphTheSpawnStaysOnTheLatticeWithTheSamePressures()
         {
-            // DFSPH holds every particle at the rest density: a spawn compressed for the Tait fluid would spring up.
+            // DFSPH holds every particle at the rest density: the first solve would expand a spawn compressed for the Tait fluid within one sub-step.
             var tait = SimulationTestScenes.OilOnWater();
             var incompressible = SimulationTestScenes.OilOnWater();
             incompressible.Settings.PressureSolver = PressureSolver.Dfsph;
