@@ -47,6 +47,20 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(Messages(scene), Has.None.Contains("SmoothingRadius"));
         }
 
+        [TestCase(KernelFamily.CubicSpline, 0.045f)]
+        [TestCase(KernelFamily.WendlandC2, 0.06f)]
+        public void ADfsphSupportWiderThanTwoSpacings_IsRefusedWithTheReason(KernelFamily kernel, float radius)
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.Settings.PressureSolver = PressureSolver.Dfsph;
+            scene.Settings.SmoothingKernel = kernel;
+            Assert.That(Messages(scene), Has.None.Contains("SmoothingRadius"), "2 spacings");
+            scene.Settings.SmoothingRadius = radius;
+            Assert.That(Messages(scene), Has.Some.Contains(
+                "FluidSettings: SmoothingRadius must be in [0.04, 0.04] m (2 particle spacings with the Dfsph pressure solver, " +
+                "whose walls let the fluid through at wider supports)").And.Contains($"(was {radius.ToString(System.Globalization.CultureInfo.InvariantCulture)})"));
+        }
+
         [TestCase("Stiffness", "Stiffness must be in [1, 1E+09] Pa (was -1)")]
         [TestCase("Gamma", "Gamma must be in [1, 10] (was -1)")]
         [TestCase("XsphEpsilon", "XsphEpsilon must be in [0, 1] (was -1)")]
