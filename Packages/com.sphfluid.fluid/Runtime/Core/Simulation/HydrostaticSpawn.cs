@@ -5,10 +5,10 @@ using System.Numerics;
 namespace SphFluid.Simulation
 {
     /// <summary>
-    /// Starts the fluid in hydrostatic equilibrium: every spawned particle is lowered along gravity so that
+    /// Starts the WCSPH fluid in hydrostatic equilibrium: every spawned particle is lowered along gravity so that
     /// the fluid below it is compressed to the density the Tait equation of state needs to carry the weight
     /// above it. A resting tank spawned on the plain lattice would instead start with zero pressure, fall by
-    /// that compression, and ring with pressure waves for seconds.
+    /// that compression, and ring with pressure waves for seconds. The DFSPH fluid stays on the lattice (below).
     /// </summary>
     /// <remarks>
     /// Along the vertical line through a particle (up = -g), the pressure at height y is the weight of the
