@@ -57,7 +57,7 @@ namespace SphFluid.Tests.Solver
             var before = GpuState.Read(sim);
             var start = before.ByIdParticles(input);
             const float dt = 0.001f;
-            var expected = new ReferenceSph(scene).DivergenceFreeSubstep(start, dt, sim.Plan.Xsph, 1, out var densityQ, out var divergenceQ);
+            var expected = new ReferenceSph(scene).DivergenceFreeSubstep(start, dt, sim.Plan.Xsph, 1, out var densityQ, out var divergenceQ, out var wallQ);
 
             sim.StepFixed(1, dt);
             var after = GpuState.Read(sim);
@@ -67,6 +67,7 @@ namespace SphFluid.Tests.Solver
             int n = input.Length;
             Assert.That(ReferenceComparison.Max(n, i => densityQ[i]), Is.GreaterThan(0.0), "the constant-density solve must have work");
             Assert.That(ReferenceComparison.Max(n, i => divergenceQ[i]), Is.GreaterThan(0.0), "the divergence-free solve must have work");
+            Assert.That(ReferenceComparison.Max(wallQ.Length, b => wallQ[b]), Is.GreaterThan(0.0), "the wall particles must push too");
             ReferenceComparison.Compare("constant-density q", Tolerance, n, i => densityQ[i], i => warm[i].X);
             ReferenceComparison.Compare("divergence-free q", Tolerance, n, i => divergenceQ[i], i => warm[i].Y);
             ReferenceComparison.CompareVectors("displacement", Tolerance, n, i => new Double3(expected[i].Position) - new Double3(start[i].Position),

@@ -5,8 +5,8 @@
 // 2017, "Divergence-Free SPH for Incompressible and Viscous Fluids", IEEE TVCG 23), written in the number density
 // of the density-contrast formulation (SphDensityPressure.hlsl) so that phases of different particle mass meet
 // without a spurious force: the constraint is delta_i = delta0_i = rho0_i / m_i, and the pressure force is the same
-// antisymmetric pair force as WCSPH's, F_i = -sum_j (q_i + q_j) gradW_ij - sum_b omega_b q_i gradW_ib with
-// q = p / delta^2 (the boundary term mirrors the fluid particle's own q onto the wall particle, Akinci et al. 2012).
+// antisymmetric pair force as WCSPH's, F_i = -sum_j (q_i + q_j) gradW_ij - sum_b (omega_b q_i + q_b) gradW_ib with
+// q = p / delta^2, each wall particle b carrying a q_b of its own (walls as unknowns, below).
 //
 // Rate of change of the number density (continuity equation, walls at their own velocity):
 //   D delta_i / Dt = sum_j (v_i - v_j) . gradW_ij + sum_b omega_b (v_i - v_b) . gradW_ib
@@ -41,6 +41,32 @@
 // (WallContactVelocity in SphBoundary.hlsl, which WCSPH uses too; there only for particles already closer to the walls
 // than at rest, beside its contact damping). It has no speed of sound in it and no time-step bound of its own.
 
+// Walls as unknowns. With the fluid particle's own q mirrored onto the wall (Akinci et al. 2012, "Versatile rigid-fluid
+// coupling for incompressible SPH": F_i = -sum_b omega_b q_i gradW_ib) the wall term is the adjoint of the walls' part of
+// the continuity equation, so it does no work, but in a uniform pressure it leaves a particle beside a wall a net push
+// q_i G_w into it: in a resting tank the floor row sank from half a spacing above the wall face to a quarter, and the
+// column lost 2.6 % of its height in 0.25 s. So each wall particle b is a constraint of its own, as the fluid's are:
+//   delta_b = sum_f W_bf + sum_b' omega_b' W_bb',   D delta_b / Dt = sum_f (v_f - v_b) . gradW_fb
+// with the rest number density of the fluid around it (Shepard-weighted) as its target, and q_b moves the fluid by
+// -(dt / m_f) q_b gradW_fb: the force on the fluid, -(omega_b q_i + q_b) gradW_ib, is again the constraints' adjoint.
+// Its Jacobi factor has no |G|^2 term (a wall does not move): alpha_b = 1 / sum_f |gradW_bf|^2 / m_f. Two safeguards,
+// both measured: the step is relaxed by WALL_RELAXATION (without it, or with a wall particle that had lost its fluid
+// keeping its q in the warm start, the tank diverged within 0.25 s), and a wall particle that reaches little fluid has
+// its factor scaled by its fluid share sum_f W_bf / (WALL_FULL_SHARE delta0_b), so that one fluid particle near the
+// edge of its support is not asked to remove the wall's whole excess (the oil-and-water scene, whose walls are not on
+// the fluid's lattice, blew up in its first frame). Wall particles keep their warm start per sorted slot, cleared
+// whenever the boundary is re-sorted.
+
+#define WALL_RELAXATION 0.5
+#define WALL_FULL_SHARE 0.25
+
+// alpha_b of a wall particle from its fluid sums: sum_f W_bf, the fluid's rest number density and sum_f |gradW_bf|^2 / m_f.
+float WallFactor(float fluidNumberDensity, float restNumberDensity, float squaredGradientsOverMass)
+{
+    float share = min(1.0, fluidNumberDensity / (WALL_FULL_SHARE * max(restNumberDensity, 1e-20)));
+    return squaredGradientsOverMass > 1e-20 ? share / squaredGradientsOverMass : 0.0;
+}
+
 // 1 / ( |G|^2 / m_i + sum |gradW_ij|^2 / m_j ), 0 where nothing can be pushed.
 float DivergenceFreeFactor(float3 gradientSum, float squaredGradientsOverMass, float particleMass)
 {
@@ -69,10 +95,10 @@ float3 StiffnessVelocityPair(float stiffnessI, float stiffnessJ, float3 gradient
     return -dtOverMass * (stiffnessI + stiffnessJ) * gradient;
 }
 
-// Velocity change of fluid particle i from wall particle b: -(dt / m_i) omega_b q_i gradW_ib.
-float3 StiffnessVelocityWall(float stiffnessI, float weight, float3 gradient, float dtOverMass)
+// Velocity change of fluid particle i from wall particle b: -(dt / m_i) (omega_b q_i + q_b) gradW_ib.
+float3 StiffnessVelocityWall(float stiffnessI, float stiffnessB, float weight, float3 gradient, float dtOverMass)
 {
-    return -dtOverMass * weight * stiffnessI * gradient;
+    return -dtOverMass * (weight * stiffnessI + stiffnessB) * gradient;
 }
 
 #endif

@@ -588,8 +588,9 @@ namespace SphFluid.Reference
             }
         }
 
-        /// <summary>Applies the pressure terms q to the velocities: v_i -= (dt / m_i) (sum_j (q_i + q_j) gradW_ij + sum_b omega_b q_i gradW_ib).</summary>
-        public void ApplyStiffness(Particle[] particles, Double3[] v, double[] q, double dt)
+        /// <summary>Applies the pressure terms q of the fluid and <paramref name="wallQ"/> of the walls (indexed like
+        /// <see cref="PlacedBoundary"/>) to the velocities: v_i -= (dt / m_i) (sum_j (q_i + q_j) gradW_ij + sum_b (omega_b q_i + q_b) gradW_ib).</summary>
+        public void ApplyStiffness(Particle[] particles, Double3[] v, double[] q, double[] wallQ, double dt)
         {
             int n = particles.Length;
             var walls = PlacedBoundary();
@@ -606,16 +607,80 @@ namespace SphFluid.Reference
                     if (r >= _h) continue;
                     sum += PairGradient(rij, r, particles[i].Id, particles[j].Id) * (q[i] + q[j]);
                 }
-                foreach (var wall in walls)
+                for (int b = 0; b < walls.Length; b++)
                 {
-                    var rib = xi - new Double3(wall.Position);
+                    var rib = xi - new Double3(walls[b].Position);
                     double r = rib.Length();
                     if (r >= _h) continue;
-                    sum += PairGradient(rib, r, 1, 0) * (wall.Weight * q[i]);
+                    sum += PairGradient(rib, r, 1, 0) * (walls[b].Weight * q[i] + wallQ[b]);
                 }
                 dv[i] = sum * (-dt / _phases[particles[i].Phase].ParticleMass);
             }
             for (int i = 0; i < n; i++) v[i] += dv[i];
+        }
+
+        /// <summary>The relaxation of a wall particle's Jacobi step (DivergenceFreeSolver.hlsl's WALL_RELAXATION).</summary>
+        public const double WallRelaxation = 0.5;
+
+        /// <summary>The fluid share of delta0 above which a wall particle takes a whole Jacobi step (WALL_FULL_SHARE).</summary>
+        public const double WallFullShare = 0.25;
+
+        /// <summary>Each wall particle as an unknown of the DFSPH solves, indexed like <see cref="PlacedBoundary"/>.</summary>
+        public sealed class WallSolveState
+        {
+            public double[] NumberDensity = Array.Empty<double>(), Factor = Array.Empty<double>(), Rest = Array.Empty<double>(), Q = Array.Empty<double>();
+        }
+
+        /// <summary>Every wall particle's number density (fluid and walls), DFSPH factor and rest number density
+        /// (DivergenceFreeSolver.hlsl, BoundaryDensityFactor).</summary>
+        public WallSolveState WallUnknowns(Particle[] particles)
+        {
+            var walls = PlacedBoundary();
+            var state = new WallSolveState
+            {
+                NumberDensity = new double[walls.Length], Factor = new double[walls.Length], Rest = new double[walls.Length], Q = new double[walls.Length],
+            };
+            for (int b = 0; b < walls.Length; b++)
+            {
+                var xb = new Double3(walls[b].Position);
+                double fluid = 0, wall = 0, squares = 0, rest = 0;
+                foreach (var p in particles)
+                {
+                    var rfb = new Double3(p.Position) - xb;
+                    double r = rfb.Length();
+                    if (r >= _h) continue;
+                    double w = Kernel(r);
+                    fluid += w;
+                    rest += w * RestNumberDensity(p);
+                    squares += PairGradient(rfb, r, 1, 0).LengthSquared() / _phases[p.Phase].ParticleMass;
+                }
+                foreach (var other in walls)
+                    wall += other.Weight * Kernel((xb - new Double3(other.Position)).Length());
+                state.NumberDensity[b] = fluid + wall;
+                state.Rest[b] = fluid > 0 ? rest / fluid : 0.0;
+                double share = Math.Min(1.0, fluid / (WallFullShare * Math.Max(state.Rest[b], 1e-20)));
+                state.Factor[b] = squares > 1e-20 ? share / squares : 0.0;
+            }
+            return state;
+        }
+
+        /// <summary>D delta_b / Dt of every wall particle, sum_f (v_f - v_b) . gradW_fb, for the fluid velocities <paramref name="v"/>.</summary>
+        public double[] WallNumberDensityRates(Particle[] particles, Double3[] v)
+        {
+            var walls = PlacedBoundary();
+            var rates = new double[walls.Length];
+            for (int b = 0; b < walls.Length; b++)
+            {
+                var xb = new Double3(walls[b].Position);
+                for (int f = 0; f < particles.Length; f++)
+                {
+                    var rfb = new Double3(particles[f].Position) - xb;
+                    double r = rfb.Length();
+                    if (r >= _h) continue;
+                    rates[b] += Double3.Dot(v[f] - new Double3(walls[b].Velocity), PairGradient(rfb, r, 1, 0));
+                }
+            }
+            return rates;
         }
 
         double RestNumberDensity(Particle p) => _phases[p.Phase].RestDensity / (double)_phases[p.Phase].ParticleMass;
@@ -624,10 +689,11 @@ namespace SphFluid.Reference
         /// One DFSPH sub-step as FluidSimulation runs it from a state without warm start, with exactly
         /// <paramref name="iterations"/> corrections per solve (MaxSolverIterations = 1 stops each solve after one): non-pressure
         /// forces, predicted velocity (XSPH, damping), constant-density solve, wall contact, drift and clamp, factors at the new positions,
-        /// divergence-free solve. Returns the new particles and the q each solve summed per particle.
+        /// divergence-free solve, each with the wall particles as unknowns. Returns the new particles, the q each solve summed per
+        /// particle and the q_b both solves summed per wall particle (indexed like <see cref="PlacedBoundary"/>).
         /// </summary>
         public Particle[] DivergenceFreeSubstep(Particle[] particles, double dt, bool xsph, int iterations,
-            out double[] densityStiffness, out double[] divergenceStiffness)
+            out double[] densityStiffness, out double[] divergenceStiffness, out double[] wallStiffness)
         {
             int n = particles.Length;
             var state = Evaluate(particles, false);
@@ -642,16 +708,24 @@ namespace SphFluid.Reference
             }
             densityStiffness = new double[n];
             var q = new double[n];
+            var walls = WallUnknowns(particles);
+            wallStiffness = new double[walls.Q.Length];
             for (int l = 0; l < iterations; l++)
             {
                 var rates = NumberDensityRates(particles, v);
+                var wallRates = WallNumberDensityRates(particles, v);
                 for (int i = 0; i < n; i++)
                 {
                     double excess = Math.Max(state.NumberDensity[i] + dt * rates[i] - RestNumberDensity(particles[i]), 0.0);
                     q[i] = excess * factors[i] / (dt * dt);
                     densityStiffness[i] += q[i];
                 }
-                ApplyStiffness(particles, v, q, dt);
+                for (int b = 0; b < walls.Q.Length; b++)
+                {
+                    walls.Q[b] = WallRelaxation * Math.Max(walls.NumberDensity[b] + dt * wallRates[b] - walls.Rest[b], 0.0) * walls.Factor[b] / (dt * dt);
+                    wallStiffness[b] += walls.Q[b];
+                }
+                ApplyStiffness(particles, v, q, walls.Q, dt);
             }
             var moved = new Particle[n];
             WallContact(particles, state.NumberDensity, v);
@@ -664,17 +738,24 @@ namespace SphFluid.Reference
                 moved[i] = new Particle(x.ToVector3(), vi.ToVector3(), particles[i].Phase, particles[i].Id);
             }
             factors = DivergenceFreeFactors(moved);
+            walls = WallUnknowns(moved);
             divergenceStiffness = new double[n];
             for (int l = 0; l < iterations; l++)
             {
                 var rates = NumberDensityRates(moved, v, out var neighbours);
+                var wallRates = WallNumberDensityRates(moved, v);
                 for (int i = 0; i < n; i++)
                 {
                     double rate = neighbours[i] >= DivergenceMinNeighbours ? rates[i] : 0.0;
                     q[i] = Math.Max(rate, 0.0) * factors[i] / dt;
                     divergenceStiffness[i] += q[i];
                 }
-                ApplyStiffness(moved, v, q, dt);
+                for (int b = 0; b < walls.Q.Length; b++)
+                {
+                    walls.Q[b] = WallRelaxation * Math.Max(wallRates[b], 0.0) * walls.Factor[b] / dt;
+                    wallStiffness[b] += walls.Q[b];
+                }
+                ApplyStiffness(moved, v, q, walls.Q, dt);
             }
             for (int i = 0; i < n; i++)
                 moved[i] = new Particle(moved[i].Position, v[i].ToVector3(), moved[i].Phase, moved[i].Id);

@@ -50,7 +50,7 @@ namespace SphFluid.Simulation
         readonly int _densityFactor, _nonPressureForces, _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError,
             _solveFinal, _applyStiffness, _drift, _divergenceRate;
         readonly bool _divergenceFree;
-        readonly int _particleShift, _applyShift;
+        readonly int _particleShift, _applyShift, _boundaryDensityFactor, _boundaryBeginSolve, _boundarySolveError, _clearBoundaryWarmStart;
         readonly int _densityRate, _continuityDensity; // delta-SPH (SphDensityDiffusion.hlsl)
         readonly bool _deltaSph;
         readonly float[] _spawnNumberDensities;
@@ -123,6 +123,10 @@ namespace SphFluid.Simulation
             _divergenceFree = _scene.Settings.PressureSolver == PressureSolver.Dfsph;
             _particleShift = _solver.FindKernel("ParticleShift");
             _applyShift = _solver.FindKernel("ApplyShift");
+            _boundaryDensityFactor = _solver.FindKernel("BoundaryDensityFactor");
+            _boundaryBeginSolve = _solver.FindKernel("BoundaryBeginSolve");
+            _boundarySolveError = _solver.FindKernel("BoundarySolveError");
+            _clearBoundaryWarmStart = _solver.FindKernel("ClearBoundaryWarmStart");
             _densityRate = _solver.FindKernel("DensityRate");
             _continuityDensity = _solver.FindKernel("ContinuityDensity");
             _deltaSph = !_divergenceFree && _scene.Settings.WcsphDensity == WcsphDensity.DeltaSph;
@@ -130,7 +134,7 @@ namespace SphFluid.Simulation
             {
                 _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep, _densityFactor, _nonPressureForces,
                 _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError, _solveFinal, _applyStiffness, _drift, _divergenceRate,
-                _particleShift, _applyShift, _densityRate, _continuityDensity,
+                _particleShift, _applyShift, _densityRate, _continuityDensity, _boundaryDensityFactor, _boundaryBeginSolve, _boundarySolveError, _clearBoundaryWarmStart,
             };
             _motionPartial = _diagnostics.FindKernel("MotionPartial");
             _motionFinal = _diagnostics.FindKernel("MotionFinal");
@@ -325,6 +329,7 @@ namespace SphFluid.Simulation
                 _device.BeginSample(PassNames.PlaceBoundary);
                 _device.DispatchThreads(_solver, _placeBoundary, _boundaryCount);
                 _buffers.BoundarySorter.Sort(_grid, _buffers.BoundaryPlaced, _buffers.BoundarySorted, _boundaryCount);
+                if (_divergenceFree) _device.DispatchThreads(_solver, _clearBoundaryWarmStart, _boundaryCount);
                 _device.EndSample(PassNames.PlaceBoundary);
                 _boundaryMoved = false;
             }
@@ -449,10 +454,12 @@ namespace SphFluid.Simulation
         {
             int rounds = _solveRounds[slot];
             _device.Dispatch(_solver, beginKernel, 1, 1, 1);
+            _device.DispatchThreads(_solver, _boundaryBeginSolve, _boundaryCount);
             _device.DispatchThreads(_solver, _applyStiffness, ParticleCount);
             for (int l = 0; l < rounds; l++)
             {
                 _device.DispatchIndirect(_solver, errorKernel, _buffers.SolverArguments, 0);
+                _device.DispatchIndirect(_solver, _boundarySolveError, _buffers.SolverArguments, 12);
                 _device.Dispatch(_solver, _solveFinal, 1, 1, 1);
                 _device.DispatchIndirect(_solver, _applyStiffness, _buffers.SolverArguments, 0);
             }
@@ -482,6 +489,7 @@ namespace SphFluid.Simulation
             if (_divergenceFree)
             {
                 SolverPass(PassNames.DensityFactor, _densityFactor);
+                _device.DispatchThreads(_solver, _boundaryDensityFactor, _boundaryCount);
                 if (!withForces) return;
                 if (Plan.SurfaceTension) _device.DispatchThreads(_solver, _normals, ParticleCount);
                 _device.DispatchThreads(_solver, _nonPressureForces, ParticleCount);

@@ -91,6 +91,8 @@ namespace SphFluid.Simulation
             new Binding("_BoundaryPlaced", b => b.BoundaryPlaced, Readers.Solver, Group.Boundary),
             new Binding("_BoundaryParticles", b => b.BoundarySorted, Readers.Solver, Group.Boundary),
             new Binding("_BoundaryPressures", b => b.BoundaryPressures, Readers.Solver, Group.Boundary),
+            new Binding("_BoundarySolve", b => b.BoundarySolve, Readers.Solver, Group.Boundary),
+            new Binding("_BoundaryWarmStart", b => b.BoundaryWarmStart, Readers.Solver, Group.Boundary),
             new Binding("_BoundaryCellStart", b => b.BoundarySorter.CellStart, Readers.Solver, Group.Boundary),
             new Binding("_BoundaryCellCount", b => b.BoundarySorter.CellCount, Readers.Solver, Group.Boundary),
             new Binding(ParticleSorter.CellStartProperty, b => b.Sorter.CellStart, Readers.Solver, Group.Cells),
@@ -108,7 +110,7 @@ namespace SphFluid.Simulation
         public IComputeBuffer Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
         public IComputeBuffer NumberDensities, NumberDensitiesHalf, DensityRates; // delta-SPH (SphDensityDiffusion.hlsl)
         public IComputeBuffer MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
-        public IComputeBuffer BoundaryRest, BoundaryPlaced, BoundarySorted, BoundaryPressures;
+        public IComputeBuffer BoundaryRest, BoundaryPlaced, BoundarySorted, BoundaryPressures, BoundarySolve, BoundaryWarmStart;
         public IComputeBuffer Constants;
         public ParticleSorter Sorter, BoundarySorter;
 
@@ -158,8 +160,8 @@ namespace SphFluid.Simulation
             WarmStart = Zeroed("FluidSimulation.WarmStart", n, 8);
             SolverPartials = Zeroed("FluidSimulation.SolverPartials", particleGroups, 4);
             SolverState = Zeroed("FluidSimulation.SolverState", SolverStateWords, 4);
-            SolverArguments = device.CreateArgumentsBuffer("FluidSimulation.SolverArguments", 3);
-            SolverArguments.SetData(new uint[] { (uint)particleGroups, 1u, 1u });
+            SolverArguments = device.CreateArgumentsBuffer("FluidSimulation.SolverArguments", 6);
+            SolverArguments.SetData(new uint[] { (uint)particleGroups, 1u, 1u, 0u, 1u, 1u });
             DivergenceRates = Zeroed("FluidSimulation.DivergenceRates", n, 4);
             NumberDensities = device.CreateBuffer("FluidSimulation.NumberDensities", n, 4);
             NumberDensities.SetData(spawnNumberDensities);
@@ -218,6 +220,8 @@ namespace SphFluid.Simulation
             BoundaryPlaced = _device.CreateBuffer("FluidSimulation.BoundaryPlaced", count, BoundaryParticle.Stride);
             BoundarySorted = _device.CreateBuffer("FluidSimulation.BoundarySorted", count, BoundaryParticle.Stride);
             BoundaryPressures = Zeroed("FluidSimulation.BoundaryPressures", count, 4);
+            BoundarySolve = Zeroed("FluidSimulation.BoundarySolve", count, 16);
+            BoundaryWarmStart = Zeroed("FluidSimulation.BoundaryWarmStart", count, 8);
             BoundarySorter = new ParticleSorter(_device, count, cellCount);
             Bind(Group.Boundary);
         }
@@ -237,6 +241,7 @@ namespace SphFluid.Simulation
         {
             ClampHits.SetData(new uint[1]);
             WarmStart.SetData(new Vector2[_particleCount]);
+            BoundaryWarmStart?.SetData(new Vector2[BoundaryWarmStart.Count]);
             SolverState.SetData(new uint[SolverStateWords]);
         }
 
@@ -246,8 +251,10 @@ namespace SphFluid.Simulation
             BoundaryPlaced?.Dispose();
             BoundarySorted?.Dispose();
             BoundaryPressures?.Dispose();
+            BoundarySolve?.Dispose();
+            BoundaryWarmStart?.Dispose();
             BoundarySorter?.Dispose();
-            BoundaryRest = BoundaryPlaced = BoundarySorted = BoundaryPressures = null;
+            BoundaryRest = BoundaryPlaced = BoundarySorted = BoundaryPressures = BoundarySolve = BoundaryWarmStart = null;
             BoundarySorter = null;
         }
 
