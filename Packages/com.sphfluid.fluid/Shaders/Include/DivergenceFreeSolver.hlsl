@@ -49,12 +49,13 @@
 //   delta_b = sum_f W_bf + sum_b' omega_b' W_bb',   D delta_b / Dt = sum_f (v_f - v_b) . gradW_fb
 // with the rest number density of the fluid around it (Shepard-weighted) as its target, and q_b moves the fluid by
 // -(dt / m_f) q_b gradW_fb: the force on the fluid, -(omega_b q_i + q_b) gradW_ib, is again the constraints' adjoint.
-// Its Jacobi factor has no |G|^2 term (a wall does not move): alpha_b = 1 / sum_f |gradW_bf|^2 / m_f. Two safeguards,
-// both measured: the step is relaxed by WALL_RELAXATION (without it, or with a wall particle that had lost its fluid
-// keeping its q in the warm start, the tank diverged within 0.25 s), and a wall particle that reaches little fluid has
-// its factor scaled by its fluid share sum_f W_bf / (WALL_FULL_SHARE delta0_b), so that one fluid particle near the
-// edge of its support is not asked to remove the wall's whole excess (the oil-and-water scene, whose walls are not on
-// the fluid's lattice, blew up in its first frame). Wall particles keep their warm start per sorted slot, cleared
+// Its Jacobi factor has no |G|^2 term (a wall does not move): alpha_b = 1 / sum_f |gradW_bf|^2 / m_f. Its step is
+// relaxed by WALL_RELAXATION, as IISPH's relaxed Jacobi is (Ihmsen et al. 2014, "Implicit incompressible SPH"); not
+// measured without it. A wall particle that has lost its fluid gets q_b = 0: one that kept its q summed it into the warm
+// start every iteration, and the tank diverged within 0.25 s. A wall particle that reaches little fluid has its factor
+// scaled by its fluid share sum_f W_bf / (WALL_FULL_SHARE delta0_b), so that one fluid particle near the edge of its
+// support is not asked to remove the wall's whole excess (the oil-and-water scene, whose walls are not on the fluid's
+// lattice, blew up in its first frame without it). Wall particles keep their warm start per sorted slot, cleared
 // whenever the boundary is re-sorted.
 
 #define WALL_RELAXATION 0.5
