@@ -22,7 +22,7 @@ public enum VulkanTextureFormat
 }
 
 /// <summary>How each <see cref="VulkanTextureFormat"/> appears to Vulkan, to SPIR-V and to HLSL.</summary>
-public static class VulkanTextureFormats
+public static class TexelEncoding
 {
     public static Format VulkanFormat(this VulkanTextureFormat f) => f switch
     {
