@@ -4,7 +4,9 @@
 # run summaries and the dam-break accuracy-for-time study, into Headless/figures/. About 10 minutes on 2 CPU cores.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-scenes="$root/Assets/FluidDemo/Scenes"
+# Scenes by their path in the repository, which the summaries record, so that they read the same on any machine.
+cd "$root"
+scenes="Assets/FluidDemo/Scenes"
 out="$root/Output"
 figures="$root/Headless/figures"
 mkdir -p "$figures"
