@@ -52,6 +52,8 @@ namespace SphFluid.Tests.Physics
         /// <param name="gravityScale">Gravity as a multiple of g, and <paramref name="stiffnessScale"/> the Tait stiffness as a
         /// multiple of the default (the speed of sound grows as its square root): an instability of the pressure's acoustics
         /// would follow the stiffness, one driven by gravity would follow g.</param>
+        /// <param name="kernel">The kernel family, at <paramref name="supportRatio"/> spacings: whether the kernel and its
+        /// support decide the lattice's stability.</param>
         public TankEquilibriumProbe(WcsphDensity density, float cfl, float xsph, float gravityScale, float stiffnessScale,
             KernelFamily kernel, float supportRatio)
         {
