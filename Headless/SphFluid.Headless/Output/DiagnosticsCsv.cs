@@ -15,8 +15,8 @@ public sealed record DiagnosticsRow(double Time, int Frame, StepReport Step, Dia
 /// time_s, frame, substeps, dt_s, particles, total_mass_kg, kinetic_energy_J, max_speed_mps, nan_count,
 /// outside_count (GPU reductions); then per phase &lt;name&gt;_count (a distinct prefix per phase: <see cref="ColumnPrefixes"/>), _compression_avg, _compression_max,
 /// _expansion_avg, _expansion_max, _mean_height_m, _bottom_m, _top_m, _floor_share, _wall_share
-/// (<see cref="PhaseMeasures"/>); then layering_index, surge_front_m, back_wall_column_m, potential_energy_J
-/// (<see cref="FluidMeasures"/>); then clamp_hits (particles the last-resort wall clamp caught since spawn:
+/// (<see cref="PhaseMeasures"/>); then layering_index, interface_tilt_m, surge_front_m, back_wall_column_m,
+/// potential_energy_J (<see cref="FluidMeasures"/>); then clamp_hits (particles the last-resort wall clamp caught since spawn:
 /// 0 while the boundary particles hold the fluid); then density_iterations and divergence_iterations (DFSPH: mean
 /// corrections per solve since the previous row; 0 with WCSPH) and divergence_error_pct_per_s (mean |D rho / Dt| / rho0,
 /// either solver). NaN where a figure does not exist (an empty phase, no pair to order).
@@ -36,7 +36,7 @@ public sealed class DiagnosticsCsv : IDisposable
         var header = new StringBuilder("time_s,frame,substeps,dt_s,particles,total_mass_kg,kinetic_energy_J,max_speed_mps,nan_count,outside_count");
         foreach (string n in ColumnPrefixes(phases))
             foreach (string column in PhaseColumns) header.Append(',').Append(n).Append('_').Append(column);
-        header.Append(",layering_index,surge_front_m,back_wall_column_m,potential_energy_J,clamp_hits,density_iterations,divergence_iterations,divergence_error_pct_per_s");
+        header.Append(",layering_index,interface_tilt_m,surge_front_m,back_wall_column_m,potential_energy_J,clamp_hits,density_iterations,divergence_iterations,divergence_error_pct_per_s");
         _writer.WriteLine(header);
     }
 
@@ -56,8 +56,8 @@ public sealed class DiagnosticsCsv : IDisposable
                 q?.CompressionAverage ?? double.NaN, q?.CompressionMax ?? double.NaN, q?.ExpansionAverage ?? double.NaN, q?.ExpansionMax ?? double.NaN,
                 q?.MeanHeight ?? double.NaN, q?.Bottom ?? double.NaN, q?.Top ?? double.NaN, q?.FloorShare ?? double.NaN, q?.WallShare ?? double.NaN));
         }
-        line.Append(string.Format(c, ",{0:G6},{1:G6},{2:G6},{3:G6},{4},{5:G4},{6:G4},{7:G6}",
-            m?.LayeringIndex ?? double.NaN, m?.SurgeFront ?? double.NaN, m?.BackWallColumn ?? double.NaN, m?.PotentialEnergy ?? double.NaN, r.ClampHits,
+        line.Append(string.Format(c, ",{0:G6},{1:G6},{2:G6},{3:G6},{4:G6},{5},{6:G4},{7:G4},{8:G6}",
+            m?.LayeringIndex ?? double.NaN, m?.InterfaceTilt ?? double.NaN, m?.SurgeFront ?? double.NaN, m?.BackWallColumn ?? double.NaN, m?.PotentialEnergy ?? double.NaN, r.ClampHits,
             r.DensitySolveIterations, r.DivergenceSolveIterations, r.DivergenceError));
         _writer.WriteLine(line);
         _writer.Flush();

@@ -8,11 +8,12 @@ namespace SphFluid.Headless.Output;
 /// <summary>
 /// What a validation engineer reads off one instant of a run, computed on the CPU from the read-back particle
 /// and density buffers: per phase <see cref="PhaseMeasures"/>, the <see cref="Output.LayeringIndex"/>, the
-/// <see cref="DamBreakFront"/> figures and the potential energy sum m |g| h (h above the container's lowest
-/// corner, so it is 0 for fluid lying on that corner). Measuring results is not solver maths, so it lives here.
+/// <see cref="DamBreakFront"/> figures, the <see cref="Output.InterfaceTilt"/> and the potential energy sum m |g| h
+/// (h above the container's lowest corner, so it is 0 for fluid lying on that corner). Measuring results is not
+/// solver maths, so it lives here.
 /// </summary>
 public sealed record FluidMeasures(double Time, IReadOnlyList<PhaseMeasures> Phases, double LayeringIndex,
-    double SurgeFront, double BackWallColumn, double PotentialEnergy)
+    double SurgeFront, double BackWallColumn, double PotentialEnergy, double InterfaceTilt)
 {
     /// <param name="densities">Per particle, in the order of <paramref name="particles"/>: rho, p, delta, p/delta^2 (the
     /// solver's density buffer); empty to leave compression and expansion out (NaN).</param>
@@ -39,6 +40,8 @@ public sealed record FluidMeasures(double Time, IReadOnlyList<PhaseMeasures> Pha
         var local = new Vector3[n];
         var heights = new List<float>(n);
         var restDensities = new List<float>(n);
+        var volumes = new float[n];
+        var particleRestDensities = new float[n];
         for (int i = 0; i < n; i++)
         {
             var p = particles[i];
@@ -57,6 +60,8 @@ public sealed record FluidMeasures(double Time, IReadOnlyList<PhaseMeasures> Pha
             potential += phases[k].ParticleMass * g * h;
             heights.Add(h);
             restDensities.Add(phases[k].RestDensity);
+            particleRestDensities[i] = phases[k].RestDensity;
+            volumes[i] = phases[k].ParticleMass / (densities.Length > 0 ? densities[i].X : phases[k].RestDensity);
 
             if (frame.AboveFloor(local[i]) <= particleSpacing) { floorLayer++; onFloor[k]++; }
             if (frame.FromWalls(local[i]) <= particleSpacing) { wallLayer++; onWalls[k]++; }
@@ -84,7 +89,8 @@ public sealed record FluidMeasures(double Time, IReadOnlyList<PhaseMeasures> Pha
         }
         double index = Output.LayeringIndex.Of(heights.ToArray(), restDensities.ToArray());
         var (front, column) = DamBreakFront.Measure(local, frame, particleSpacing, supportRadius);
-        return new FluidMeasures(time, measures, index, front, column, potential);
+        double tilt = Output.InterfaceTilt.Measure(local, volumes, particleRestDensities, frame.FloorAxis, container.Size);
+        return new FluidMeasures(time, measures, index, front, column, potential, tilt);
     }
 
     static double[] Filled(int length, double value)

@@ -67,6 +67,7 @@ public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, s
         {
             string order = string.Join(" < ", Enumerable.Range(0, phases.Count).OrderBy(k => m.Phases[k].MeanHeight).Select(k => phases[k].Name));
             b.AppendLine(string.Format(C, "layering index: {0:F3} (pairs of different density, (ordered - inverted) / pairs: 1 = perfectly layered, 0 = mixed, -1 = upside down); mean heights from the floor up: {1}", m.LayeringIndex, order));
+            b.AppendLine(string.Format(C, "interface tilt: {0:F4} m (the least-squares plane through each interface between liquids rises by at most this across the floor; 0 = flat)", m.InterfaceTilt));
         }
         b.AppendLine(string.Format(C, "surge front: {0:F4} m from the back wall (container-local x, fluid within 2 spacings of the floor, spray ignored)", m.SurgeFront));
         b.AppendLine(string.Format(C, "column at the back wall: {0:F4} m above the floor", m.BackWallColumn));

@@ -203,7 +203,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
                 p.CompressionAverage, p.CompressionMax, p.ExpansionAverage, p.ExpansionMax, p.MeanHeight);
             if (phases.Count > 1) line += string.Format(C, " floor {0:P0} wall {1:P0}", p.FloorShare, p.WallShare);
         }
-        if (phases.Count > 1) line += string.Format(C, " | layering {0:F2}", m.LayeringIndex);
+        if (phases.Count > 1) line += string.Format(C, " | layering {0:F2} tilt {1:F3} m", m.LayeringIndex, m.InterfaceTilt);
         line += string.Format(C, " | front {0:F3} m column {1:F3} m", m.SurgeFront, m.BackWallColumn);
         return line;
     }

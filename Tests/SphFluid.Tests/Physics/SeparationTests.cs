@@ -44,7 +44,7 @@ namespace SphFluid.Tests.Physics
                 next += 0.5;
                 last = Measure(sim, scene);
                 TestContext.Progress.WriteLine(string.Format(System.Globalization.CultureInfo.InvariantCulture,
-                    "t={0:F2} s layering {1:F3} | {2}", sim.SimulatedTime, last.LayeringIndex,
+                    "t={0:F2} s layering {1:F3} interface tilt {2:F1} mm | {3}", sim.SimulatedTime, last.LayeringIndex, 1000 * last.InterfaceTilt,
                     string.Join(" | ", sim.Phases.Select((p, k) => $"{p.Name} y {last.Phases[k].MeanHeight:F3} m floor {100 * last.Phases[k].FloorShare:F1} %"))));
                 if (double.IsNaN(reached) && last.LayeringIndex >= target) reached = sim.SimulatedTime;
             }
@@ -57,7 +57,7 @@ namespace SphFluid.Tests.Physics
             var scene = SceneLoader.Load(RunnerPaths.Scene("OilAndWater"), RunnerPaths.Project).Description;
             var (reached, last, report) = Run(scene, 6.0, 0.95);
             int water = Phase(scene, "Water"), oil = Phase(scene, "Oil");
-            TestContext.Progress.WriteLine($"OilAndWater: layering 0.95 reached at {reached:F2} s; at 6 s {last.LayeringIndex:F3}, oil floor share {100 * last.Phases[oil].FloorShare:F2} %, clamp hits {report.ClampHits}");
+            TestContext.Progress.WriteLine($"OilAndWater: layering 0.95 reached at {reached:F2} s; at 6 s {last.LayeringIndex:F3}, interface tilt {1000 * last.InterfaceTilt:F1} mm, oil floor share {100 * last.Phases[oil].FloorShare:F2} %, clamp hits {report.ClampHits}");
             Assert.That(reached, Is.LessThanOrEqualTo(6.0 + 1e-5), "layering index >= 0.95 within 6 simulated seconds");
             Assert.That(last.Phases[oil].FloorShare, Is.LessThan(0.02), "less than 2 % of the floor layer is oil");
             Assert.That(last.Phases[oil].MeanHeight, Is.GreaterThan(last.Phases[water].MeanHeight));
@@ -82,7 +82,7 @@ namespace SphFluid.Tests.Physics
                 SolverScenes.Box("Heavy", Liquid("Heavy", 1300f), new Vector3(0f, floor + 2.5f * layer.Y, 0f), layer, seed: 3));
             var (reached, last, report) = Run(scene, 8.0, 0.9);
             int light = Phase(scene, "Light"), middle = Phase(scene, "Middle"), heavy = Phase(scene, "Heavy");
-            TestContext.Progress.WriteLine($"three liquids: layering 0.9 reached at {reached:F2} s; at 8 s {last.LayeringIndex:F3}; clamp hits {report.ClampHits}");
+            TestContext.Progress.WriteLine($"three liquids: layering 0.9 reached at {reached:F2} s; at 8 s {last.LayeringIndex:F3}, interface tilt {1000 * last.InterfaceTilt:F1} mm; clamp hits {report.ClampHits}");
             // The 480th frame's clock reads 8.0000004 s (float frames of 1/60 s added up): that frame is 8 s.
             Assert.That(reached, Is.LessThanOrEqualTo(8.0 + 1e-5), "layering index >= 0.9 within 8 simulated seconds");
             Assert.That(last.Phases[heavy].MeanHeight, Is.LessThan(last.Phases[middle].MeanHeight), "heavy below middle");
