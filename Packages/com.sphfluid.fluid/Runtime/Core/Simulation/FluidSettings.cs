@@ -40,7 +40,7 @@ namespace SphFluid.Simulation
         [Setting(Particles, 0.002, 4, "m", "Kernel support radius H (= grid cell size), 2 to 4 particle spacings (the cubic spline up to 2.25, DFSPH 2 only): wider is smoother and slower.")]
         public float SmoothingRadius = 0.04f;
 
-        [Setting(Particles, 0, 1, "", "Kernel family of every SPH sum: 0 = CubicSpline (cheapest; support 2 to 2.25 spacings), 1 = WendlandC2 (no particle pairing at any support: for 3 to 4 spacings with WCSPH, at more neighbours and cost).")]
+        [Setting(Particles, 0, 1, "", "Kernel family of every SPH sum: 0 = CubicSpline (cheapest; support 2 to 2.25 spacings; a fluid at rest keeps creeping), 1 = WendlandC2 (no particle pairing; at 2.8 to 2.9 spacings its particle lattice is stable under pressure, so with DeltaSph a fluid at rest comes to rest, at about 3 times the neighbours).")]
         public KernelFamily SmoothingKernel = KernelFamily.CubicSpline;
 
         [Setting(Particles, 1, 16777216, "", "Most particles the spawn boxes may hold together.")]

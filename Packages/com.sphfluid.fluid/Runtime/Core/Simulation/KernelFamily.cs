@@ -11,7 +11,9 @@ namespace SphFluid.Simulation
 
         /// <summary>Wendland's C2 function (Wendland, "Piecewise polynomial, positive definite and compactly supported radial
         /// functions of minimal degree"), which has no pairing instability at any support (Dehnen and Aly, "Improving
-        /// convergence in SPH simulations without pairing instability"): the kernel for supports of 3 and 4 spacings.</summary>
+        /// convergence in SPH simulations without pairing instability"): the kernel for supports wider than 2.25 spacings.
+        /// At 2.8 to 2.9 spacings the spawn lattice is stable under pressure (LatticeStability), so a tank at rest stays at
+        /// rest; the cubic spline's lattice at 2 spacings is not.</summary>
         WendlandC2 = 1,
     }
 }

@@ -32,6 +32,15 @@ namespace SphFluid.Simulation
             return q <= 0.5 ? 6.0 * (3.0 * q * q - 2.0 * q) : -6.0 * t * t;
         }
 
+        /// <summary>d2w/dq2: what the lattice's stiffness under pressure is built from (<see cref="LatticeStability"/>).</summary>
+        public static double ShapeSecondDerivative(KernelFamily kind, double q)
+        {
+            if (q >= 1.0) return 0.0;
+            double t = 1.0 - q;
+            if (kind == KernelFamily.WendlandC2) return 20.0 * t * t * (4.0 * q - 1.0);
+            return q <= 0.5 ? 36.0 * q - 12.0 : 12.0 * t;
+        }
+
         /// <summary>W(r) of support H.</summary>
         public static double Value(KernelFamily kind, double r, double support) =>
             Normalisation(kind, support) * Shape(kind, r / support);
@@ -39,6 +48,10 @@ namespace SphFluid.Simulation
         /// <summary>dW/dr (negative inside the support): gradW = dW/dr r_ij / r.</summary>
         public static double Derivative(KernelFamily kind, double r, double support) =>
             Normalisation(kind, support) / support * ShapeDerivative(kind, r / support);
+
+        /// <summary>d2W/dr2.</summary>
+        public static double SecondDerivative(KernelFamily kind, double r, double support) =>
+            Normalisation(kind, support) / (support * support) * ShapeSecondDerivative(kind, r / support);
 
         /// <summary>delta0 = sum over the cubic lattice of spacing s of W(|r|), self included.</summary>
         public static double LatticeNumberDensity(KernelFamily kind, double spacing, double support)
@@ -77,7 +90,7 @@ namespace SphFluid.Simulation
             return -sum;
         }
 
-        static void ForEachLatticePoint(double spacing, double support, Action<double, double, double> visit)
+        internal static void ForEachLatticePoint(double spacing, double support, Action<double, double, double> visit)
         {
             int reach = (int)Math.Ceiling(support / spacing);
             for (int i = -reach; i <= reach; i++)
