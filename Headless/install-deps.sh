@@ -7,7 +7,8 @@ set -euo pipefail
 need=()
 command -v glslangValidator >/dev/null 2>&1 || need+=(glslang-tools)
 command -v spirv-val >/dev/null 2>&1 || need+=(spirv-tools)
-ldconfig -p 2>/dev/null | grep -q 'libvulkan.so.1 ' || need+=(libvulkan1)
+# grep reads the whole list (no -q): with pipefail, grep -q's early exit fails ldconfig on SIGPIPE and reinstalls.
+ldconfig -p 2>/dev/null | grep 'libvulkan.so.1 ' >/dev/null || need+=(libvulkan1)
 ls /usr/share/vulkan/icd.d/lvp_icd.*.json >/dev/null 2>&1 || need+=(mesa-vulkan-drivers)
 ls /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json >/dev/null 2>&1 || need+=(vulkan-validationlayers)
 # The charts (ScottPlot on SkiaSharp without native dependencies) load this font file by path: no fontconfig lookup.
