@@ -137,7 +137,7 @@ namespace SphFluid.Tests.Integrity
                     boxes++;
                 }
             }
-            Assert.That(boxes, Is.EqualTo(11), "the shipped scenes' spawn boxes: 9 in the demo, 2 in the URP sample");
+            Assert.That(boxes, Is.EqualTo(12), "the shipped scenes' spawn boxes: 10 in the demo, 2 in the URP sample");
         }
 
         [TestCaseSource(nameof(ReadablePaths))]

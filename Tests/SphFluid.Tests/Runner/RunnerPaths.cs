@@ -7,7 +7,7 @@ namespace SphFluid.Tests.Runner
     /// <summary>The shipped scenes and a scratch folder for the runner tests.</summary>
     static class RunnerPaths
     {
-        public static readonly string[] ShippedScenes = { "OilAndWater", "DamBreak", "Splash", "RotatingContainer", "SphereWake", "PlayModeTest" };
+        public static readonly string[] ShippedScenes = { "OilAndWater", "DamBreak", "Splash", "RotatingContainer", "SphereWake", "RestingTank", "PlayModeTest" };
 
         public static string Scene(string name) => Path.Combine(GpuTestDevice.RepoRoot, "Assets", "FluidDemo", "Scenes", name + ".unity");
 
