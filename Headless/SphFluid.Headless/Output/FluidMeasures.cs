@@ -13,8 +13,11 @@ namespace SphFluid.Headless.Output;
 /// solver maths, so it lives here.
 /// </summary>
 public sealed record FluidMeasures(double Time, IReadOnlyList<PhaseMeasures> Phases, double LayeringIndex,
-    double SurgeFront, double BackWallColumn, double PotentialEnergy, double InterfaceTilt)
+    double SurgeFront, double BackWallColumn, double PotentialEnergy, IReadOnlyList<(double AlongU, double AlongW)> InterfaceRises)
 {
+    /// <summary>The largest rise of an interface across the floor, m (<see cref="Output.InterfaceTilt"/>); NaN with one liquid.</summary>
+    public double InterfaceTilt => Output.InterfaceTilt.Of(InterfaceRises);
+
     /// <param name="densities">Per particle, in the order of <paramref name="particles"/>: rho, p, delta, p/delta^2 (the
     /// solver's density buffer); empty to leave compression and expansion out (NaN).</param>
     public static FluidMeasures Measure(double time, ReadOnlySpan<Particle> particles, ReadOnlySpan<Vector4> densities,
@@ -89,8 +92,8 @@ public sealed record FluidMeasures(double Time, IReadOnlyList<PhaseMeasures> Pha
         }
         double index = Output.LayeringIndex.Of(heights.ToArray(), restDensities.ToArray());
         var (front, column) = DamBreakFront.Measure(local, frame, particleSpacing, supportRadius);
-        double tilt = Output.InterfaceTilt.Measure(local, volumes, particleRestDensities, frame.FloorAxis, container.Size);
-        return new FluidMeasures(time, measures, index, front, column, potential, tilt);
+        var rises = Output.InterfaceTilt.Rises(local, volumes, particleRestDensities, frame.FloorAxis, container.Size);
+        return new FluidMeasures(time, measures, index, front, column, potential, rises);
     }
 
     static double[] Filled(int length, double value)

@@ -29,6 +29,19 @@ public static class InterfaceTilt
     /// <param name="size">The container's edge lengths, m.</param>
     public static double Measure(ReadOnlySpan<Vector3> local, ReadOnlySpan<float> volumes, ReadOnlySpan<float> restDensities, int floorAxis, Vector3 size)
     {
+        return Of(Rises(local, volumes, restDensities, floorAxis, size));
+    }
+
+    /// <summary>The largest rise across the floor of the interfaces whose signed rises are <paramref name="rises"/>
+    /// (<see cref="Rises"/>); NaN for none.</summary>
+    public static double Of(IReadOnlyList<(double AlongU, double AlongW)> rises) =>
+        rises.Count == 0 ? double.NaN : rises.Max(r => Math.Abs(r.AlongU) + Math.Abs(r.AlongW));
+
+    /// <summary>Each interface's plane, heaviest first: its signed rise b L_u from the u = -L_u/2 side of the floor to the
+    /// u = +L_u/2 side, and c L_w likewise (m). An oscillating interface (an internal seiche) changes sign.</summary>
+    public static IReadOnlyList<(double AlongU, double AlongW)> Rises(ReadOnlySpan<Vector3> local, ReadOnlySpan<float> volumes,
+        ReadOnlySpan<float> restDensities, int floorAxis, Vector3 size)
+    {
         if (volumes.Length != local.Length || restDensities.Length != local.Length)
             throw new ArgumentException($"InterfaceTilt: {local.Length} positions, {volumes.Length} volumes, {restDensities.Length} rest densities");
         int uAxis = floorAxis == 0 ? 1 : 0, wAxis = floorAxis == 2 ? 1 : 2;
@@ -43,17 +56,16 @@ public static class InterfaceTilt
             moments.TryGetValue(restDensities[i], out var m);
             moments[restDensities[i]] = (m.U + volumes[i] * Component(p, uAxis), m.W + volumes[i] * Component(p, wAxis));
         }
-        if (moments.Count < 2) return double.NaN;
 
-        double largest = 0, sumU = 0, sumW = 0;
-        foreach (var (u, w) in moments.Values.Take(moments.Count - 1))
+        var rises = new List<(double, double)>();
+        double sumU = 0, sumW = 0;
+        foreach (var (u, w) in moments.Values.Take(Math.Max(0, moments.Count - 1)))
         {
             sumU += u;
             sumW += w;
-            double rise = 12 * Math.Abs(sumU) / (lu * lu * lw) + 12 * Math.Abs(sumW) / (lw * lw * lu);
-            largest = Math.Max(largest, rise);
+            rises.Add((12 * sumU / (lu * lu * lw), 12 * sumW / (lw * lw * lu)));
         }
-        return largest;
+        return rises;
     }
 
     static float Component(Vector3 v, int axis) => axis == 0 ? v.X : axis == 1 ? v.Y : v.Z;

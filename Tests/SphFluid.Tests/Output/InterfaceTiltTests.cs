@@ -59,6 +59,18 @@ namespace SphFluid.Tests.Output
         }
 
         [Test]
+        public void TheRisesAreSignedFromTheNegativeSideOfEachAxis()
+        {
+            var layers = new Layers();
+            layers.Add(1000f, 0, 6, (u, w) => 0.1f - 0.04f * u / 0.6f);
+            layers.Add(900f, 6, 6, (u, w) => 0.1f);
+            var rises = InterfaceTilt.Rises(layers.Local.ToArray(), layers.Volumes.ToArray(), layers.RestDensities.ToArray(), 1, Size);
+            Assert.That(rises.Count, Is.EqualTo(1));
+            Assert.That(rises[0].AlongU, Is.EqualTo(-0.04).Within(0.01 * 0.04));
+            Assert.That(rises[0].AlongW, Is.EqualTo(0.0).Within(1e-6));
+        }
+
+        [Test]
         public void TheSteepestOfSeveralInterfacesIsReported()
         {
             // Heavy layer flat; the middle liquid's top (heavy + middle) rises by 30 mm along the tank.
