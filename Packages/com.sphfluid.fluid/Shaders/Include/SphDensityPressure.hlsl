@@ -5,7 +5,7 @@
 
 // Density and pressure of the multi-phase density-contrast formulation
 // (Solenthaler & Pajarola 2008, "Density contrast SPH interfaces", SCA 2008, eqs. 4-5):
-//   number density   delta_i = sum_j Ws(r_ij)        (Spiky kernel, see SphKernels.hlsl for why; self
+//   number density   delta_i = sum_j W(r_ij)         (the scene's kernel family, SphKernels.hlsl; self
 //                                                     included; any phase: a neighbour's volume
 //                                                     counts, not its mass, so a light phase next to a
 //                                                     heavy one is not seen as compressed)
