@@ -27,10 +27,8 @@ public static class InterfaceTilt
     /// <param name="restDensities">Each particle's phase rest density, kg/m^3.</param>
     /// <param name="floorAxis">Container-local axis normal to the floor (<see cref="GravityFrame.FloorAxis"/>).</param>
     /// <param name="size">The container's edge lengths, m.</param>
-    public static double Measure(ReadOnlySpan<Vector3> local, ReadOnlySpan<float> volumes, ReadOnlySpan<float> restDensities, int floorAxis, Vector3 size)
-    {
-        return Of(Rises(local, volumes, restDensities, floorAxis, size));
-    }
+    public static double Measure(ReadOnlySpan<Vector3> local, ReadOnlySpan<float> volumes, ReadOnlySpan<float> restDensities, int floorAxis, Vector3 size) =>
+        Of(Rises(local, volumes, restDensities, floorAxis, size));
 
     /// <summary>The largest rise across the floor of the interfaces whose signed rises are <paramref name="rises"/>
     /// (<see cref="Rises"/>); NaN for none.</summary>
