@@ -63,6 +63,15 @@ namespace SphFluid.Tests.Solver
             Assert.That(ReferenceComparison.Max(n, k => state.Pressure[k]), Is.GreaterThan(100.0), "the case must be compressed");
             ReferenceComparison.CompareVectors("acceleration", Tolerance, n, k => state.Acceleration[k], k => new Double3(gpu.Accelerations[byId[k]].X, gpu.Accelerations[byId[k]].Y, gpu.Accelerations[byId[k]].Z));
 
+            // delta-SPH's wall contact acts by distance alone (SphBoundary.hlsl): the block must hold particles at or above
+            // rest density that are closer to a wall than the flat-wall lattice, which summation's contact would leave alone.
+            var s = scene.Settings;
+            double flatWall = SmoothingKernels.FlatWallNumberDensity(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius);
+            int denseAtWalls = 0;
+            for (int k = 0; k < n; k++)
+                if (state.Density[k] >= sim.PhaseRows[(int)start[k].Phase].RestDensity && state.WallNumberDensity[k] > flatWall) denseAtWalls++;
+            Assert.That(denseAtWalls, Is.GreaterThan(0), "dense particles in wall contact");
+
             const float dt = 0.0005f;
             var expected = reference.Substep(start, state, dt, sim.Plan.Xsph, delta, out _);
             sim.StepFixed(1, dt);

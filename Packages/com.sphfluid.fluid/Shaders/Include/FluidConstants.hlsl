@@ -58,6 +58,7 @@ cbuffer FluidConstants
     float _DensityDiffusion;                // SphDensityDiffusion: xi h c0, m^2/s
     float _HydrostaticCompliance;           // SphDensityDiffusion: 1 / (gamma k), 1/Pa
     uint _SmoothingKernel;                  // SphKernels: 0 cubic spline, 1 Wendland C2
+    uint _WallContactAtAnyDensity;          // SphBoundary: 1 (delta-SPH) wall contact by distance alone, 0 below rest density too
 };
 
 // Grid.hlsl reads its three values from here instead of declaring its own.

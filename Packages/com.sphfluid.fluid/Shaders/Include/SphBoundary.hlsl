@@ -50,7 +50,12 @@
 // SphereWake (4 s, the rest are compressed fluid driven into the corners of the back wall at a third of the speed
 // of sound), 2 -> 0 in RotatingContainer (3 s). Applied to every particle below rest density instead, it stilled
 // splashes as well but doubled the last-second speed of a small tank at rest (SolverDynamicsTests.TankAtRest_Settles:
-// 51 mm/s against 23): contact chatter of the free surface along the side walls.
+// 51 mm/s against 23): contact chatter of the free surface along the side walls. With delta-SPH
+// (_WallContactAtAnyDensity = 1) the density gate does not hold: a particle carries its density, and one at the free
+// surface keeps one near or just above rest, so it passed the gate while the small near-surface wall pressure could not
+// stop it: oil and water in the RestingTank configuration had 21 clamp hits in 3.6 s, all of them surface oil at 901 to
+// 903 kg/m^3 in the corners. There the contact acts by distance alone, which took them to 0 and left the resting tank at
+// rest.
 // A clamp (after every position update) remains as the last resort: a particle centre beyond the wall
 // (or inside a sphere) is put back on it and loses its outward velocity. Every catch is counted in
 // _ClampHits[0], which the diagnostics report; it stays at zero in normal runs.

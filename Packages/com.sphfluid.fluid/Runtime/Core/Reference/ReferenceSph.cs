@@ -537,7 +537,8 @@ namespace SphFluid.Reference
         /// <summary>
         /// The velocity change WCSPH's full step adds to each particle (FluidSolver's _VelocityCorrections, computed by the
         /// force pass of <paramref name="state"/> with the pressure on): XSPH's correction when <paramref name="xsph"/>, plus
-        /// the wall contact of a particle below rest density (SphBoundary.hlsl) on the velocity it would drift with next,
+        /// the wall contact of a particle closer to the walls than the flat-wall lattice (with summation density, only below
+        /// rest density; SphBoundary.hlsl) on the velocity it would drift with next,
         /// v + a dt + dv_xsph. <paramref name="dt"/> is the sub-step's (0 outside a step, as after SetParticles).
         /// </summary>
         public Double3[] VelocityCorrections(Particle[] particles, ReferenceState state, double dt, bool xsph)
@@ -546,7 +547,8 @@ namespace SphFluid.Reference
             for (int i = 0; i < particles.Length; i++)
             {
                 var correction = xsph ? state.Xsph[i] : Double3.Zero;
-                if (state.Density[i] < _phases[particles[i].Phase].RestDensity && state.WallNumberDensity[i] > _flatWallNumberDensity)
+                bool contact = _settings.WcsphDensity == WcsphDensity.DeltaSph || state.Density[i] < _phases[particles[i].Phase].RestDensity;
+                if (contact && state.WallNumberDensity[i] > _flatWallNumberDensity)
                 {
                     var predicted = new Double3(particles[i].Velocity) + state.Acceleration[i] * dt + correction;
                     correction += ContactVelocity(predicted, state.WallGradientSum[i], state.WallVelocityRate[i]) - predicted;

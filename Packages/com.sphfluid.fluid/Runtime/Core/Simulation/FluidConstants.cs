@@ -62,5 +62,6 @@ namespace SphFluid.Simulation
         public float DensityDiffusion;
         public float HydrostaticCompliance;
         public uint SmoothingKernel;
+        public uint WallContactAtAnyDensity;
     }
 }
