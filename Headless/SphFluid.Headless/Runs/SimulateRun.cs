@@ -10,6 +10,7 @@ using SphFluid.Headless.Cli;
 using SphFluid.Headless.Output;
 using SphFluid.Headless.Scenes;
 using SphFluid.Simulation;
+using SphFluid.Vulkan;
 
 namespace SphFluid.Headless.Runs;
 
@@ -37,16 +38,22 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         var description = scene.Description;
         int sceneCount = SpawnLayout.TotalCount(description);
         options.Solver.ApplyTo(description, "simulate");
-        ParticleScaling.ScaleBy(description, options.ParticlesScale);
-        SceneFit.RequireScaled(description, "simulate", "--particles-scale", options.ParticlesScale.ToString("G6", C));
 
-        var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name), "--out", "simulate");
-
+        // The device decides the scale (--cpu-particles-scale), so it opens before the scene is scaled and checked; the
+        // output folder is claimed only once the scaled scene fits.
         IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "simulate", out IDisposable? owned);
         try
         {
+            bool onCpu = device is VulkanComputeDevice { DeviceType: "Cpu" } && options.CpuParticlesScale != 1.0;
+            double scale = options.ParticlesScale * (onCpu ? options.CpuParticlesScale : 1.0);
+            ParticleScaling.ScaleBy(description, scale);
+            SceneFit.RequireScaled(description, "simulate", onCpu ? "--particles-scale times --cpu-particles-scale" : "--particles-scale",
+                scale.ToString("G6", C));
+            var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name), "--out", "simulate");
             using var simulation = new FluidSimulation(device, description);
-            return Simulate(scene, simulation, device, output, sceneCount);
+            string scaled = sceneCount == simulation.ParticleCount ? ""
+                : string.Format(C, " (scene: {0}, scaled x{1:G4}{2})", sceneCount, scale, onCpu ? " on a CPU device: --cpu-particles-scale" : "");
+            return Simulate(scene, simulation, device, output, scaled);
         }
         finally
         {
@@ -54,7 +61,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         }
     }
 
-    int Simulate(LoadedScene scene, FluidSimulation sim, IComputeDevice device, OutputFolder output, int sceneCount)
+    int Simulate(LoadedScene scene, FluidSimulation sim, IComputeDevice device, OutputFolder output, string scaled)
     {
         var description = scene.Description;
         var settings = description.Settings;
@@ -70,7 +77,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             + (scene.Motion.MovesContainer ? string.Format(C, ", container spins {0:G3} deg/s after {1:G3} s", scene.Motion.ContainerSpin.AngularSpeed, scene.Motion.ContainerSpin.StartDelay) : "")
             + (scene.Motion.MovesObstacles ? $", {scene.Motion.SphereDrives.Count} driven sphere(s)" : ""));
         stdout.WriteLine(string.Format(C, "particles: {0}{1} (spacing {2:G4} m, support {3:G4} m); phases: {4}",
-            sim.ParticleCount, sceneCount != sim.ParticleCount ? $" (scene: {sceneCount}, scaled x{options.ParticlesScale:G4})" : "",
+            sim.ParticleCount, scaled,
             settings.ParticleSpacing, settings.SmoothingRadius,
             string.Join(", ", sim.Phases.Select((p, k) => string.Format(C, "{0} {1} rho0 {2:G4} kg/m^3 mu {3:G3} Pa s", p.Name, CountOf(description, settings, k, sim), p.RestDensity, p.Viscosity)))));
         stdout.WriteLine(sim.Plan.ToString());

@@ -62,6 +62,23 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Summary.OrFail("the run's summary").Frames, Is.EqualTo(2));
         }
 
+        /// <summary>--cpu-particles-scale scales the fluid only on a CPU device (the main job's half particles on lavapipe)
+        /// and says so; on a GPU the scene runs as it is.</summary>
+        [Test]
+        public void TheCpuScaleAppliesOnlyOnACpuDeviceAndIsPrinted()
+        {
+            string outDir = RunnerPaths.ScratchFolder("cpu-scale");
+            var run = Simulate("OilAndWater", out var stdout, out var stderr, "--steps", "1", "--cpu-particles-scale", "0.5", "--out", outDir);
+
+            int code = run.Execute();
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
+            if (GpuTestDevice.Shared.DeviceType == "Cpu")
+                Assert.That(stdout.ToString(), Does.Contain("particles: 2112 (scene: 4160, scaled x0.5 on a CPU device: --cpu-particles-scale)"));
+            else
+                Assert.That(stdout.ToString(), Does.Contain("particles: 4160 (spacing"));
+        }
+
         [Test]
         public void BenchPrintsATableWithEveryPass()
         {
