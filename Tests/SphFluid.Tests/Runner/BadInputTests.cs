@@ -246,7 +246,7 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: the fluid scene is invalid"));
             Assert.That(run.Stderr, Does.Contain("GameObject 'Container', Transform.m_LocalScale and GameObject 'Fluid', Fluid.settings.SmoothingRadius"));
-            Assert.That(run.Stderr, Does.Contain("33336 x 33336 x 33336 = 3.70E+013 cells"));
+            Assert.That(run.Stderr, Does.Contain("23394 x 23394 x 23394 = 1.28E+013 cells"));
         }
 
         [Test]
