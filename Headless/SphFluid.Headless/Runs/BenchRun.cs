@@ -22,6 +22,9 @@ namespace SphFluid.Headless.Runs;
 public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter stderr)
 {
     static readonly CultureInfo C = CultureInfo.InvariantCulture;
+
+    /// <summary>What --solver changed besides the solver (<see cref="SolverChoice.FitSupport"/>), printed with the plan.</summary>
+    string? _solverNote;
     static readonly string[] Passes =
     {
         PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals, PassNames.Forces, PassNames.FullStep,
@@ -57,6 +60,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         {
             stdout.WriteLine($"bench: {scene.Path} on {device.DeviceName}; {options.Warmup} warm-up + {options.Steps} timed sub-steps per row, one submit each");
             stdout.WriteLine(SolverChoice.Describe(descriptions[0].Settings));
+            if (_solverNote != null) stdout.WriteLine(_solverNote);
             SolverName = SolverChoice.ShortName(descriptions[0].Settings.PressureSolver);
             foreach (var description in descriptions)
             {
@@ -131,7 +135,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
     FluidSceneDescription Scaled(LoadedScene scene, int? target)
     {
         var description = target.HasValue ? SceneLoader.Load(options.ScenePath).Description : scene.Description;
-        options.Solver.ApplyTo(description, "bench");
+        _solverNote = options.Solver.ApplyTo(description, "bench");
         if (!target.HasValue) return description;
         ParticleScaling.ScaleTo(description, target.Value);
         SceneFit.RequireScaled(description, "bench", "--particles", target.Value.ToString(C));

@@ -29,6 +29,9 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
     /// <summary>Draw the progress bar (default: when stderr is a terminal).</summary>
     public bool InteractiveProgress { get; init; } = ProgressReporter.StderrIsTerminal;
 
+    /// <summary>What --solver changed besides the solver (<see cref="SolverChoice.FitSupport"/>), printed with the plan.</summary>
+    string? _solverNote;
+
     /// <summary>What the run ended with (null until it ran).</summary>
     public RunSummary? Summary { get; private set; }
 
@@ -37,7 +40,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         var scene = SceneLoader.Load(options.ScenePath);
         var description = scene.Description;
         int sceneCount = SpawnLayout.TotalCount(description);
-        options.Solver.ApplyTo(description, "simulate");
+        _solverNote = options.Solver.ApplyTo(description, "simulate");
 
         // The device decides the scale (--cpu-particles-scale), so it opens before the scene is scaled and checked; the
         // output folder is claimed only once the scaled scene fits.
@@ -82,6 +85,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             string.Join(", ", sim.Phases.Select((p, k) => string.Format(C, "{0} {1} rho0 {2:G4} kg/m^3 mu {3:G3} Pa s", p.Name, CountOf(description, settings, k, sim), p.RestDensity, p.Viscosity)))));
         stdout.WriteLine(sim.Plan.ToString());
         stdout.WriteLine(SolverChoice.Describe(settings));
+        if (_solverNote != null) stdout.WriteLine(_solverNote);
         stdout.WriteLine(string.Format(C, "device: {0}", device.DeviceName));
         stdout.WriteLine(string.Format(C, "run: {0:G4} s simulated in {1} frames of {2:G4} ms; output: {3}", duration, frames, options.FrameSeconds * 1000, Path.GetFullPath(output.Path)));
         stdout.Flush();

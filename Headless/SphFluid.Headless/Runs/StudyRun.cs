@@ -117,6 +117,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         var settings = description.Settings.Clone();
         settings.PressureSolver = config.Solver;
         if (config.Solver == PressureSolver.Dfsph) settings.DensityTolerance = (float)config.DensityTolerance;
+        SolverChoice.FitSupport(settings, "study");
         settings.Stiffness = (float)(settings.Stiffness * config.StiffnessFactor);
         settings.CflNumber = (float)config.Cfl;
         description.Settings = settings;

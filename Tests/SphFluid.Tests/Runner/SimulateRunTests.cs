@@ -79,6 +79,21 @@ namespace SphFluid.Tests.Runner
                 Assert.That(stdout.ToString(), Does.Contain("particles: 4160 (spacing"));
         }
 
+        /// <summary>OilAndWater runs WCSPH at Wendland C2's 2.85 spacings, a support DFSPH refuses: --solver dfsph runs it
+        /// at DFSPH's 2 spacings with the cubic spline and says so, instead of refusing the scene.</summary>
+        [Test]
+        public void SolverDfsphFitsAWideSupportAndSaysSo()
+        {
+            string outDir = RunnerPaths.ScratchFolder("dfsph-support");
+            var run = Simulate("OilAndWater", out var stdout, out var stderr, "--steps", "1", "--particles-scale", "0.1", "--solver", "dfsph", "--out", outDir);
+
+            int code = run.Execute();
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
+            Assert.That(stdout.ToString(), Does.Contain("simulate: DFSPH takes a support of 2 spacings: 0.03 m with the cubic spline instead of the scene's 0.04275 m with WendlandC2"));
+            Assert.That(stdout.ToString(), Does.Contain("solver: DFSPH"));
+        }
+
         [Test]
         public void BenchPrintsATableWithEveryPass()
         {
