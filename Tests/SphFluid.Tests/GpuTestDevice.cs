@@ -63,12 +63,12 @@ namespace SphFluid.Tests
         static VulkanComputeDevice? _unvalidated;
 
         /// <summary>
-        /// A second device on the same driver without the validation layers, for the runs of thousands of frames
+        /// A second device on the same driver without the validation layers, for the runs of hundreds of frames
         /// (SeparationTests) whose passes the validated tests already record in the same scenes' configurations for a
         /// few frames (SimulateRunTests, ParticleExportRunTests, the solver kernel tests): a long run repeats that
         /// recording, and the layers cost it 12 % (OilAndWater's separation test: 362 s with them, 319 s without, on
-        /// lavapipe, the measured figures identical). Created on first
-        /// use and released with <see cref="Shared"/>; ignored, like it, where no Vulkan driver exists.
+        /// lavapipe, the measured figures identical). Created on first use and released with <see cref="Shared"/>;
+        /// ignored, like it, where no Vulkan driver exists.
         /// </summary>
         public static VulkanComputeDevice Unvalidated
         {

@@ -22,9 +22,6 @@ namespace SphFluid.Headless.Runs;
 public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter stderr)
 {
     static readonly CultureInfo C = CultureInfo.InvariantCulture;
-
-    /// <summary>What --solver changed besides the solver (<see cref="SolverChoice.FitSupport"/>), printed with the plan.</summary>
-    string? _solverNote;
     static readonly string[] Passes =
     {
         PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals, PassNames.Forces, PassNames.FullStep,
@@ -43,6 +40,9 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         IReadOnlyList<(string Kernel, int Dispatches, double Ms)> Kernels, float TimeStep, bool Finite, double FrameWallMs, int FrameSubsteps);
 
     public List<Row> Rows { get; } = new();
+
+    /// <summary>What --solver changed besides the solver (<see cref="SolverChoice.FitSupport"/>), printed with the plan.</summary>
+    string? _solverNote;
 
     /// <summary>The solver the rows ran (the scene's, or --solver's).</summary>
     string SolverName { get; set; } = "WCSPH";

@@ -58,6 +58,9 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
 
     public List<Row> Rows { get; } = new();
 
+    /// <summary>What <see cref="SolverChoice.FitSupport"/> changed for the DFSPH rows, printed with the header; null if nothing.</summary>
+    string? _supportNote;
+
     public int Execute()
     {
         var scene = SceneLoader.Load(options.ScenePath);
@@ -70,6 +73,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         {
             stdout.WriteLine(string.Format(C, "study: {0} on {1}; {2} configuration(s) of {3:G3} s simulated each{4}", scene.Path, device.DeviceName, configs.Count,
                 options.Seconds, options.Quick ? " (--quick)" : ""));
+            if (_supportNote != null) stdout.WriteLine(_supportNote + " (the DFSPH rows)");
             for (int i = 0; i < configs.Count; i++)
             {
                 var row = Run(scene, descriptions[i], configs[i], device);
@@ -117,7 +121,8 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         var settings = description.Settings.Clone();
         settings.PressureSolver = config.Solver;
         if (config.Solver == PressureSolver.Dfsph) settings.DensityTolerance = (float)config.DensityTolerance;
-        SolverChoice.FitSupport(settings, "study");
+        string? note = SolverChoice.FitSupport(settings, "study");
+        _supportNote ??= note;
         settings.Stiffness = (float)(settings.Stiffness * config.StiffnessFactor);
         settings.CflNumber = (float)config.Cfl;
         description.Settings = settings;

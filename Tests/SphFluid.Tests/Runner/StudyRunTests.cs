@@ -2,6 +2,7 @@ using System;
 using System.IO;
 using System.Linq;
 using NUnit.Framework;
+using SphFluid.Simulation;
 using SphFluid.Headless.Cli;
 using SphFluid.Headless.Runs;
 
@@ -40,6 +41,31 @@ namespace SphFluid.Tests.Runner
             Assert.That(File.ReadAllText(Path.Combine(outDir, "study.md")), Does.Contain("| DFSPH 0.01 % (ref) | 0.5 |"));
             ChartFiles.Check(outDir, "study-pareto", "Accuracy for time: PlayModeTest", "wall time per simulated second (ms, log)",
                 "observable error vs finest run (relative, log)", "WCSPH", "DFSPH");
+        }
+
+        /// <summary>OilAndWater's support (Wendland C2 at 2.85 spacings) is wider than DFSPH takes: its DFSPH rows run at 2
+        /// spacings with the cubic spline, and the header says so.</summary>
+        [Test]
+        public void DfsphRowsOfAWideSupportSceneRunAtTwoSpacingsAndSaySo()
+        {
+            string outDir = RunnerPaths.ScratchFolder("study-support");
+            var stdout = new StringWriter();
+            var run = new StudyRun(StudyOptions.Parse(new[] { RunnerPaths.Scene("OilAndWater"), "--solvers", "dfsph", "--density-tolerances", "1",
+                "--particles-scales", "0.1", "--seconds", "0.02", "--out", outDir }), stdout, new StringWriter())
+            {
+                Device = GpuTestDevice.Shared,
+            };
+
+            int code = run.Execute();
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok), stdout.ToString());
+            Assert.That(run.Rows, Is.Not.Empty);
+            foreach (var row in run.Rows)
+            {
+                Assert.That(row.Config.Solver, Is.EqualTo(PressureSolver.Dfsph), row.Config.Label);
+                Assert.That(row.Failure, Is.Null, row.Config.Label);
+            }
+            Assert.That(stdout.ToString(), Does.Contain("study: DFSPH takes a support of 2 spacings: 0.03 m with the cubic spline instead of the scene's 0.04275 m with WendlandC2 (the DFSPH rows)"));
         }
 
         [Test]
