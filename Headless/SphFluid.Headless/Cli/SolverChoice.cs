@@ -60,8 +60,8 @@ public sealed class SolverChoice
 
     /// <summary>One line for the run header and summary.</summary>
     public static string Describe(FluidSettings settings) => settings.PressureSolver == PressureSolver.Dfsph
-        ? string.Format(C, "solver: DFSPH (density tolerance {0:G3} %, divergence tolerance {1:G3} %/s, at most {2} iterations per solve)",
-            settings.DensityTolerance, settings.DivergenceTolerance, settings.MaxSolverIterations)
+        ? string.Format(C, "solver: DFSPH (density tolerance {0:G3} %, divergence tolerance {1:G3} %/s, at most {2} iterations per solve, relaxation {3:G3})",
+            settings.DensityTolerance, settings.DivergenceTolerance, settings.MaxSolverIterations, settings.SolverRelaxation)
         : string.Format(C, "solver: WCSPH (Tait stiffness {0:G4} Pa, gamma {1:G3})", settings.Stiffness, settings.Gamma);
 
     public static string ShortName(PressureSolver solver) => solver == PressureSolver.Dfsph ? "DFSPH" : "WCSPH";

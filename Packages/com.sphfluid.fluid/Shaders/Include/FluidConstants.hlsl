@@ -59,6 +59,7 @@ cbuffer FluidConstants
     float _HydrostaticCompliance;           // SphDensityDiffusion: 1 / (gamma k), 1/Pa
     uint _SmoothingKernel;                  // SphKernels: 0 cubic spline, 1 Wendland C2
     uint _WallContactAtAnyDensity;          // SphBoundary: 1 (delta-SPH) wall contact by distance alone, 0 below rest density too
+    float _SolverRelaxation;                // DivergenceFreeSolver: omega of the fluid particles' Jacobi step (SolverRelaxation.cs)
 };
 
 // Grid.hlsl reads its three values from here instead of declaring its own.

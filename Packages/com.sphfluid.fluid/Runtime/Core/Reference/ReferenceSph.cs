@@ -708,6 +708,7 @@ namespace SphFluid.Reference
                 if (xsph) vi += state.Xsph[i];
                 v[i] = vi * damping;
             }
+            double relaxation = _settings.SolverRelaxation;
             densityStiffness = new double[n];
             var q = new double[n];
             var walls = WallUnknowns(particles);
@@ -719,7 +720,7 @@ namespace SphFluid.Reference
                 for (int i = 0; i < n; i++)
                 {
                     double excess = Math.Max(state.NumberDensity[i] + dt * rates[i] - RestNumberDensity(particles[i]), 0.0);
-                    q[i] = excess * factors[i] / (dt * dt);
+                    q[i] = relaxation * excess * factors[i] / (dt * dt);
                     densityStiffness[i] += q[i];
                 }
                 for (int b = 0; b < walls.Q.Length; b++)
@@ -749,7 +750,7 @@ namespace SphFluid.Reference
                 for (int i = 0; i < n; i++)
                 {
                     double rate = neighbours[i] >= DivergenceMinNeighbours ? rates[i] : 0.0;
-                    q[i] = Math.Max(rate, 0.0) * factors[i] / dt;
+                    q[i] = relaxation * Math.Max(rate, 0.0) * factors[i] / dt;
                     divergenceStiffness[i] += q[i];
                 }
                 for (int b = 0; b < walls.Q.Length; b++)

@@ -63,5 +63,6 @@ namespace SphFluid.Simulation
         public float HydrostaticCompliance;
         public uint SmoothingKernel;
         public uint WallContactAtAnyDensity;
+        public float SolverRelaxation;
     }
 }

@@ -614,6 +614,7 @@ namespace SphFluid.Simulation
             c.WallArtificialViscosity = (float)(WallContactDamping * _timeStep.SpeedOfSound * 0.5 * h);
             c.WallContactNumberDensity = (float)SmoothingKernels.FlatWallNumberDensity(s.SmoothingKernel, s.ParticleSpacing, h);
             c.WallContactAtAnyDensity = _deltaSph ? 1u : 0u;
+            c.SolverRelaxation = s.SolverRelaxation;
             c.WallFriction = _scene.Container.Friction == WallFriction.NoSlip ? 1f : 0f;
             c.CohesionCoefficient = (float)(32.0 / (Math.PI * Math.Pow(h, 9)));
             c.Stiffness = s.Stiffness;
