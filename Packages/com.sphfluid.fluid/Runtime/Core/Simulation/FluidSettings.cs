@@ -35,7 +35,8 @@ namespace SphFluid.Simulation
         /// after one 4 ms sub-step at relaxation 0.35, walls 0.2; 0.22 m/s in the resting tank at the same 15 mm spacing). Not
         /// the lattice's waves: at their 1 / lambda_max (0.186) with the walls' step at 0.05 and 1000 iterations allowed the
         /// first solve still ran 970 iterations and left the fluid rising at 1.27 m/s (with a 1.5 ms step and the walls at 0.5,
-        /// 766 iterations and 6.2 m/s): the operator near the walls and the surface, not the lattice, bounds the step there.</summary>
+        /// 766 iterations and 6.2 m/s). So something beyond the lattice's waves drives it; the operator near the walls and the
+        /// free surface, whose diagonal differs from the lattice's, is the next suspect.</summary>
         public const float MaxDivergenceFreeSupportRatio = 2f;
 
         const string Particles = "Particles", Pressure = "Pressure", Forces = "Forces", Stepping = "Time stepping";
