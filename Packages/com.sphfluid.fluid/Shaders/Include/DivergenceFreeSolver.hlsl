@@ -19,7 +19,7 @@
 //   divergence-free    q_i = max(D delta_i / Dt, 0) alpha_i / dt
 // (only compression is corrected: a free surface is under-dense by construction), each fluid particle's step scaled
 // by _SolverRelaxation (the setting; 1 is the papers' step). On the lattice the full step multiplies the residual of a
-// wave of about 6 spacings by 1 - 2.82 (the cubic spline at 2 spacings), so that wave overshoots and grows with each
+// wave of about 3.6 spacings by 1 - 2.82 (the cubic spline at 2 spacings), so that wave overshoots and grows with each
 // iteration, and since expansion is never corrected the overshoot stays as pressure noise; at 1 / lambda_max
 // (SolverRelaxation.cs) no wave overshoots, at more iterations. The error each iteration
 // reports, per particle, is max(delta*_i / delta0_i - 1, 0) (compression) and max(D delta_i / Dt, 0) / delta0_i

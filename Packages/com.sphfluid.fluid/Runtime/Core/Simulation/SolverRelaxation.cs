@@ -14,7 +14,7 @@ namespace SphFluid.Simulation
     ///   lambda(k) = |S(k)|^2 / sum_j |gradW(r_j)|^2,
     /// summed over the lattice points r_j != 0 within the support. Its average over the zone is 1 (the factor is the
     /// operator's diagonal), but its largest value is above 2 for both kernels at DFSPH's 2 spacings (the cubic spline
-    /// 2.82, at waves of about 6 spacings; Wendland C2 2.61). The papers' step, omega = 1 (Bender and Koschier 2017,
+    /// 2.82, at k near (1/3, 1/3, 0.3) pi / s, a wavelength of about 3.6 spacings; Wendland C2 2.61). The papers' step, omega = 1 (Bender and Koschier 2017,
     /// "Divergence-Free SPH for Incompressible and Viscous Fluids"), overshoots those waves and makes them grow with
     /// every iteration. The solves correct compression only, so the expansion an overshoot leaves is never taken back:
     /// the tighter the tolerance, the more iterations, the more pressure noise. That is part of what holds the oil of the
