@@ -12,7 +12,9 @@ namespace SphFluid.Tests.Solver
     /// with one correction per solve (MaxSolverIterations = 1, no warm start yet) on a small compressed block with random
     /// velocities resting on the floor, so that the walls' boundary particles take part. The q each solve applied and the
     /// velocities and positions after the sub-step must match to 1e-4 of each quantity's scale. The two-phase block also takes
-    /// a relaxed Jacobi step (SolverRelaxation 0.355, the cubic spline's 1 / lambda_max), so the constant reaches the kernels.
+    /// a relaxed Jacobi step (SolverRelaxation 0.355, the cubic spline's 1 / lambda_max), so the constant reaches the kernels,
+    /// and its boxes are 3.9 spacings tall, so their 4 rows stand for 2.5 % less than s^3 and the walls count at a rest number
+    /// density other than the lattice's (PhaseProperties.WallWeightScale, SphBoundary.hlsl's WallWeight).
     /// </summary>
     public sealed class DivergenceFreeKernelTests
     {
@@ -26,10 +28,11 @@ namespace SphFluid.Tests.Solver
             settings.XsphEpsilon = multiphase ? 0.3f : 0f;
             settings.SolverRelaxation = multiphase ? 0.355f : 1f;
             var size = new Vector3(0.16f, 0.16f, 0.16f);
-            var half = new Vector3(0.16f, 0.08f, 0.16f);
+            float height = multiphase ? 0.078f : 0.08f;
+            var half = new Vector3(0.16f, height, 0.16f);
             return SolverScenes.Scene(settings, size,
-                SolverScenes.Box("A", SolverScenes.Water(0.1f), new Vector3(0f, -0.04f, 0f), half),
-                SolverScenes.Box("B", multiphase ? SolverScenes.Oil(0.02f) : SolverScenes.Water(0.1f), new Vector3(0f, 0.04f, 0f), half));
+                SolverScenes.Box("A", SolverScenes.Water(0.1f), new Vector3(0f, -0.08f + 0.5f * height, 0f), half),
+                SolverScenes.Box("B", multiphase ? SolverScenes.Oil(0.02f) : SolverScenes.Water(0.1f), new Vector3(0f, 0.08f - 0.5f * height, 0f), half));
         }
 
         /// <summary>Compressed by 3 % towards the floor's centre line and scattered, with random velocities: every solve has work,
@@ -54,6 +57,7 @@ namespace SphFluid.Tests.Solver
         {
             var scene = Block(multiphase);
             using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            Assert.That(sim.PhaseRows[0].WallWeightScale, multiphase ? Is.EqualTo(0.08 / 0.078).Within(1e-4) : Is.EqualTo(1.0).Within(1e-6));
             var input = Compressed(scene, sim.ParticleCount);
             sim.SetParticles(input);
             var before = GpuState.Read(sim);

@@ -5,12 +5,13 @@
 // 2017, "Divergence-Free SPH for Incompressible and Viscous Fluids", IEEE TVCG 23), written in the number density
 // of the density-contrast formulation (SphDensityPressure.hlsl) so that phases of different particle mass meet
 // without a spurious force: the constraint is delta_i = delta0_i = rho0_i / m_i, and the pressure force is the same
-// antisymmetric pair force as WCSPH's, F_i = -sum_j (q_i + q_j) gradW_ij - sum_b (omega_b q_i + q_b) gradW_ib with
-// q = p / delta^2, each wall particle b carrying a q_b of its own (walls as unknowns, below).
+// antisymmetric pair force as WCSPH's, F_i = -sum_j (q_i + q_j) gradW_ij - sum_b (omega_ib q_i + q_b) gradW_ib with
+// q = p / delta^2, each wall particle b carrying a q_b of its own (walls as unknowns, below), and omega_ib the wall
+// particle's volume at i's rest number density (SphBoundary.hlsl's WallWeight).
 //
 // Rate of change of the number density (continuity equation, walls at their own velocity):
-//   D delta_i / Dt = sum_j (v_i - v_j) . gradW_ij + sum_b omega_b (v_i - v_b) . gradW_ib
-// A q_i alone changes v_i by -(dt / m_i) q_i G_i, G_i = sum_j gradW_ij + sum_b omega_b gradW_ib, and each fluid
+//   D delta_i / Dt = sum_j (v_i - v_j) . gradW_ij + sum_b omega_ib (v_i - v_b) . gradW_ib
+// A q_i alone changes v_i by -(dt / m_i) q_i G_i, G_i = sum_j gradW_ij + sum_b omega_ib gradW_ib, and each fluid
 // neighbour's by +(dt / m_j) q_i gradW_ij, so D delta_i / Dt changes by -dt q_i / alpha_i with the DFSPH factor
 //   alpha_i = 1 / ( |G_i|^2 / m_i + sum_j |gradW_ij|^2 / m_j )        (walls in G_i only: they do not move)
 // (the papers' alpha_i in number-density form; 0 where the sum vanishes: an isolated particle has nothing to push).
@@ -38,10 +39,10 @@
 
 // Wall contact. The solves correct compression only, so a particle that is under-dense (at a free surface, or left
 // behind by neighbours moving away) feels nothing from a wall it moves into: its own D delta_i / Dt can be negative
-// while its wall part, sum_b omega_b (v_i - v_b) . gradW_ib, is positive. For such a particle the divergence-free
+// while its wall part, sum_b omega_ib (v_i - v_b) . gradW_ib, is positive. For such a particle the divergence-free
 // condition is applied to the wall part alone in the drift, after the constant-density solve (Drift): the same Jacobi step as the
 // divergence-free solve's with the walls as the only neighbours, q = rate alpha_w / dt with alpha_w = m_i / |G_w|^2,
-// which removes exactly the velocity along G_w = sum_b omega_b gradW_ib that compresses the wall side
+// which removes exactly the velocity along G_w = sum_b omega_ib gradW_ib that compresses the wall side
 // (WallContactVelocity in SphBoundary.hlsl, which WCSPH uses too; there only for particles already closer to the walls
 // than at rest, beside its contact damping). It has no speed of sound in it and no time-step bound of its own.
 
@@ -50,9 +51,11 @@
 // the continuity equation, so it does no work, but in a uniform pressure it leaves a particle beside a wall a net push
 // q_i G_w into it: in a resting tank the floor row sank from half a spacing above the wall face to a quarter, and the
 // column lost 2.6 % of its height in 0.25 s. So each wall particle b is a constraint of its own, as the fluid's are:
-//   delta_b = sum_f W_bf + sum_b' omega_b' W_bb',   D delta_b / Dt = sum_f (v_f - v_b) . gradW_fb
-// with the rest number density of the fluid around it (Shepard-weighted) as its target, and q_b moves the fluid by
-// -(dt / m_f) q_b gradW_fb: the force on the fluid, -(omega_b q_i + q_b) gradW_ib, is again the constraints' adjoint.
+//   delta_b = sum_f W_bf + sum_b' omega_bb' W_bb',   D delta_b / Dt = sum_f (v_f - v_b) . gradW_fb
+// with the rest number density of the fluid around it (Shepard-weighted) as its target and the walls around it weighed
+// at that same rest number density (omega_bb', WallWeight's scale Shepard-weighted: a wall whose own sum exceeded the
+// fluid's rest density asked for a density no motion of the fluid could give, see SphBoundary.hlsl), and q_b moves the fluid by
+// -(dt / m_f) q_b gradW_fb: the force on the fluid, -(omega_ib q_i + q_b) gradW_ib, is again the constraints' adjoint.
 // Its Jacobi factor has no |G|^2 term (a wall does not move): alpha_b = 1 / sum_f |gradW_bf|^2 / m_f. Its step is
 // relaxed by WALL_RELAXATION, as IISPH's relaxed Jacobi is (Ihmsen et al. 2014, "Implicit incompressible SPH"); not
 // measured without it. A wall particle that has lost its fluid gets q_b = 0: one that kept its q summed it into the warm
@@ -100,7 +103,7 @@ float3 StiffnessVelocityPair(float stiffnessI, float stiffnessJ, float3 gradient
     return -dtOverMass * (stiffnessI + stiffnessJ) * gradient;
 }
 
-// Velocity change of fluid particle i from wall particle b: -(dt / m_i) (omega_b q_i + q_b) gradW_ib.
+// Velocity change of fluid particle i from wall particle b: -(dt / m_i) (omega_ib q_i + q_b) gradW_ib.
 float3 StiffnessVelocityWall(float stiffnessI, float stiffnessB, float weight, float3 gradient, float dtOverMass)
 {
     return -dtOverMass * (weight * stiffnessI + stiffnessB) * gradient;

@@ -12,7 +12,8 @@ struct PhaseProperties
     float4 color;         // linear RGB tint, opacity
     float fresnelF0;      // Schlick reflectance at normal incidence
     float absorption;     // Beer-Lambert coefficient, 1/m
-    float2 padding;
+    float wallWeightScale; // (rho0 / m) / the lattice's delta0: the walls' omega at this phase's rest (SphBoundary's WallWeight)
+    float padding;
 };
 
 #endif

@@ -5,6 +5,7 @@
 
 #include "SphKernels.hlsl"
 #include "BoundaryParticle.hlsl"
+#include "Phase.hlsl"
 
 // Walls and obstacles made of particles. The container's walls and every sphere obstacle are sampled
 // with boundary particles (BoundarySampling.cs): a shell of ceil(H / s) layers on the fluid's lattice, so
@@ -13,9 +14,18 @@
 // coupling for incompressible SPH", SIGGRAPH 2012: a boundary particle b adds its volume to the fluid's
 // density sum and receives a pressure force), with each particle's volume V_b carried as the weight
 // omega_b = V_b delta0 (1 for a shell on the fluid's lattice):
-//   delta_i += sum_b omega_b W(r_ib)
-//   F_i^p   += -sum_b omega_b (p_i + p_b) / delta_i^2 gradW(r_ib)
-// where the boundary particle's pressure is the fluid's around it, extrapolated hydrostatically as in
+//   delta_i += sum_b omega_ib W(r_ib)
+//   F_i^p   += -sum_b omega_ib (p_i + p_b) / delta_i^2 gradW(r_ib)
+// where omega_ib = omega_b (delta0_i / delta0) fills the wall particle's volume at fluid particle i's own rest number
+// density delta0_i = rho0_i / m_i, as Akinci et al. weigh it with rho0_i V_b (WallWeight). delta0_i equals the
+// lattice's delta0 only when a phase's particles stand for exactly s^3: a box whose height is not a whole number of
+// spacings spawns a stretched lattice (OilAndWater: 13 rows in 0.2 m, 0.01538 m apart) and its derived mass sets
+// delta0_i 2.5 % lower, and a phase of explicit mass sets its own. Weighed at the lattice's delta0, a wall beside
+// such a fluid reads 2.5 % times its share of the neighbourhood too dense, so both solvers saw the fluid at rest beside
+// a wall as compressed, and DFSPH's wall particles, whose own wall sum then exceeded the rest density of the fluid around them, asked for a
+// density no motion of the fluid could give, summed their q without bound and lifted the whole fluid: a DFSPH tank
+// spawned 2.5 % stretched rose at 1.02 m/s after its first frame, 0.033 m/s weighed here (StretchedLatticeTankTests).
+// The boundary particle's pressure p_b is the fluid's around it, extrapolated hydrostatically as in
 // Adami, Hu & Adams 2012 ("A generalized wall boundary condition for smoothed particle hydrodynamics",
 // JCP 231, eq. 27), one pass over the boundary particles per sub-step (WallPressure):
 //   p_b = max(0, sum_f (p_f + rho_f (g - a_b) . (x_b - x_f)) W(r_bf) / sum_f W(r_bf))
@@ -37,10 +47,10 @@
 // Wall contact: the damping only brakes, so a particle below its rest density (no pressure of its own to meet the
 // wall's) that the bulk keeps pushing still reached the clamp: 27 times in 3 s of the OilAndWater scene, along the
 // front and back walls of its thin container. Once such a particle is closer to the walls than a particle at rest
-// beside a flat wall (its walls' number density sum_b omega_b W_ib exceeds that lattice value,
-// _WallContactNumberDensity: SmoothingKernels.FlatWallNumberDensity), it may come no closer: the wall part of its
+// beside a flat wall (its walls' number density sum_b omega_ib W_ib exceeds that lattice value,
+// _WallContactNumberDensity: SmoothingKernels.FlatWallNumberDensity, times the phase's WallWeightScale), it may come no closer: the wall part of its
 // continuity equation,
-//   sum_b omega_b (v_i - v_b) . gradW_ib = v_i . G_w - sum_b omega_b v_b . gradW_ib,   G_w = sum_b omega_b gradW_ib,
+//   sum_b omega_ib (v_i - v_b) . gradW_ib = v_i . G_w - sum_b omega_ib v_b . gradW_ib,   G_w = sum_b omega_ib gradW_ib,
 // is kept from turning positive by removing exactly the velocity along G_w that would (WallContactVelocity: an
 // inelastic contact; sliding along the wall and motion away from it are left alone). It acts on the velocity the
 // particle drifts with next (v_{n+1/2} + a dt + dv_xsph) through the full step's velocity correction, so it is not
@@ -143,7 +153,7 @@ float3 IntoWallVelocity(float3 relativeVelocity, float3 normal)
 }
 
 // The velocity of a particle below rest density after its wall contact: the part along G_w (wallGradientSum) that
-// compresses its wall side, v . G_w - sum_b omega_b v_b . gradW_ib (wallVelocityRate: the walls' own motion), removed.
+// compresses its wall side, v . G_w - sum_b omega_ib v_b . gradW_ib (wallVelocityRate: the walls' own motion), removed.
 float3 WallContactVelocity(float3 velocity, float3 wallGradientSum, float wallVelocityRate)
 {
     float rate = dot(velocity, wallGradientSum) - wallVelocityRate;
@@ -160,6 +170,12 @@ float2 WallPressureTerm(float pressureF, float densityF, float3 gravity, float3 
 float WallPressureOf(float2 sums)
 {
     return sums.y > 0.0 ? max(0.0, sums.x / sums.y) : 0.0;
+}
+
+// omega_ib: wall particle b's volume at the rest number density of fluid particle i's phase (above).
+float WallWeight(BoundaryParticle wall, PhaseProperties phase)
+{
+    return wall.weight * phase.wallWeightScale;
 }
 
 // Pressure force on fluid particle i from boundary particle b (divide by m_i).

@@ -135,7 +135,7 @@ namespace SphFluid.Reference
             {
                 double delta = 0;
                 for (int j = 0; j < n; j++) delta += Kernel((x[i] - x[j]).Length());
-                for (int b = 0; b < walls.Length; b++) delta += walls[b].Weight * Kernel((x[i] - xb[b]).Length());
+                for (int b = 0; b < walls.Length; b++) delta += WallWeight(walls[b], particles[i]) * Kernel((x[i] - xb[b]).Length());
                 if (numberDensities != null) delta = numberDensities[i];
                 var phase = _phases[particles[i].Phase];
                 double rho = phase.ParticleMass * delta;
@@ -223,7 +223,7 @@ namespace SphFluid.Reference
                     if (r2 >= _h2) continue;
                     double r = Math.Sqrt(r2);
                     var gradient = PairGradient(rib, r, 1, 0);
-                    double weight = walls[b].Weight;
+                    double weight = WallWeight(walls[b], particles[i]);
                     var wallVelocity = new Double3(walls[b].Velocity);
                     force += gradient * (-(weight * (s.Pressure[i] + wallPressure[b]) / (di * di)) * pressureOn);
                     force += (v[i] - wallVelocity) * (2 * friction * phaseI.Viscosity * weight / (di * di) * Double3.Dot(rib, gradient) / (r2 + 0.01 * _h2));
@@ -335,7 +335,7 @@ namespace SphFluid.Reference
                     var rib = xi - new Double3(wall.Position);
                     double r2 = rib.LengthSquared();
                     if (r2 >= _h2) continue;
-                    var g = PairGradient(rib, Math.Sqrt(r2), 1, 0) * (wall.Weight * volumeI);
+                    var g = PairGradient(rib, Math.Sqrt(r2), 1, 0) * (WallWeight(wall, particles[i]) * volumeI);
                     gradient += g;
                     divergence -= Double3.Dot(rib, g);
                 }
@@ -452,7 +452,7 @@ namespace SphFluid.Reference
                     var rib = xi - new Double3(wall.Position);
                     double r2 = rib.LengthSquared();
                     if (r2 >= _h2) continue;
-                    rate += wall.Weight * Double3.Dot(v[i] - new Double3(wall.Velocity), PairGradient(rib, Math.Sqrt(r2), 1, 0));
+                    rate += WallWeight(wall, particles[i]) * Double3.Dot(v[i] - new Double3(wall.Velocity), PairGradient(rib, Math.Sqrt(r2), 1, 0));
                 }
                 continuity[i] = rate;
                 diffusion[i] = coefficient * diffuse;
@@ -487,7 +487,7 @@ namespace SphFluid.Reference
                     var rib = xi - new Double3(wall.Position);
                     double r = rib.Length();
                     if (r >= _h) continue;
-                    sum += PairGradient(rib, r, 1, 0) * wall.Weight;
+                    sum += PairGradient(rib, r, 1, 0) * WallWeight(wall, particles[i]);
                 }
                 double denominator = sum.LengthSquared() / _phases[particles[i].Phase].ParticleMass + squares;
                 factors[i] = denominator > 1e-20 ? 1.0 / denominator : 0.0;
@@ -526,7 +526,7 @@ namespace SphFluid.Reference
                     var rib = xi - new Double3(wall.Position);
                     double r = rib.Length();
                     if (r >= _h) continue;
-                    rate += wall.Weight * Double3.Dot(v[i] - new Double3(wall.Velocity), PairGradient(rib, r, 1, 0));
+                    rate += WallWeight(wall, particles[i]) * Double3.Dot(v[i] - new Double3(wall.Velocity), PairGradient(rib, r, 1, 0));
                     neighbours[i]++;
                 }
                 rates[i] = rate;
@@ -548,7 +548,7 @@ namespace SphFluid.Reference
             {
                 var correction = xsph ? state.Xsph[i] : Double3.Zero;
                 bool contact = _settings.WcsphDensity == WcsphDensity.DeltaSph || state.Density[i] < _phases[particles[i].Phase].RestDensity;
-                if (contact && state.WallNumberDensity[i] > _flatWallNumberDensity)
+                if (contact && state.WallNumberDensity[i] > _flatWallNumberDensity * _phases[(int)particles[i].Phase].WallWeightScale)
                 {
                     var predicted = new Double3(particles[i].Velocity) + state.Acceleration[i] * dt + correction;
                     correction += ContactVelocity(predicted, state.WallGradientSum[i], state.WallVelocityRate[i]) - predicted;
@@ -582,7 +582,7 @@ namespace SphFluid.Reference
                     var rib = xi - new Double3(wall.Position);
                     double r = rib.Length();
                     if (r >= _h) continue;
-                    var gradient = PairGradient(rib, r, 1, 0) * wall.Weight;
+                    var gradient = PairGradient(rib, r, 1, 0) * WallWeight(wall, particles[i]);
                     g += gradient;
                     wallRate += Double3.Dot(new Double3(wall.Velocity), gradient);
                 }
@@ -614,7 +614,7 @@ namespace SphFluid.Reference
                     var rib = xi - new Double3(walls[b].Position);
                     double r = rib.Length();
                     if (r >= _h) continue;
-                    sum += PairGradient(rib, r, 1, 0) * (walls[b].Weight * q[i] + wallQ[b]);
+                    sum += PairGradient(rib, r, 1, 0) * (WallWeight(walls[b], particles[i]) * q[i] + wallQ[b]);
                 }
                 dv[i] = sum * (-dt / _phases[particles[i].Phase].ParticleMass);
             }
@@ -645,7 +645,7 @@ namespace SphFluid.Reference
             for (int b = 0; b < walls.Length; b++)
             {
                 var xb = new Double3(walls[b].Position);
-                double fluid = 0, wall = 0, squares = 0, rest = 0;
+                double fluid = 0, wall = 0, squares = 0, rest = 0, scale = 0;
                 foreach (var p in particles)
                 {
                     var rfb = new Double3(p.Position) - xb;
@@ -654,11 +654,12 @@ namespace SphFluid.Reference
                     double w = Kernel(r);
                     fluid += w;
                     rest += w * RestNumberDensity(p);
+                    scale += w * _phases[(int)p.Phase].WallWeightScale;
                     squares += PairGradient(rfb, r, 1, 0).LengthSquared() / _phases[p.Phase].ParticleMass;
                 }
                 foreach (var other in walls)
                     wall += other.Weight * Kernel((xb - new Double3(other.Position)).Length());
-                state.NumberDensity[b] = fluid + wall;
+                state.NumberDensity[b] = fluid + (fluid > 0 ? scale / fluid : 1.0) * wall;
                 state.Rest[b] = fluid > 0 ? rest / fluid : 0.0;
                 double share = Math.Min(1.0, fluid / (WallFullShare * Math.Max(state.Rest[b], 1e-20)));
                 state.Factor[b] = squares > 1e-20 ? share / squares : 0.0;
@@ -684,6 +685,9 @@ namespace SphFluid.Reference
             }
             return rates;
         }
+
+        /// <summary>omega_ib, wall particle b's volume at fluid particle i's rest number density (SphBoundary.hlsl's WallWeight).</summary>
+        double WallWeight(BoundaryParticle wall, Particle particle) => wall.Weight * (double)_phases[(int)particle.Phase].WallWeightScale;
 
         double RestNumberDensity(Particle p) => _phases[p.Phase].RestDensity / (double)_phases[p.Phase].ParticleMass;
 

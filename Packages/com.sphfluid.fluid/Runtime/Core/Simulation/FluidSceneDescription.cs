@@ -53,14 +53,17 @@ namespace SphFluid.Simulation
         {
             var phases = Phases();
             var table = new PhaseProperties[phases.Count];
+            double latticeNumberDensity = RestNumberDensity();
             for (int i = 0; i < phases.Count; i++)
             {
                 var p = phases[i];
+                double mass = p.ParticleMass > 0f ? p.ParticleMass : DerivedParticleMass.Of(this, p);
                 table[i] = new PhaseProperties
                 {
                     RestDensity = p.RestDensity,
                     Viscosity = p.Viscosity,
-                    ParticleMass = p.ParticleMass > 0f ? p.ParticleMass : (float)DerivedParticleMass.Of(this, p),
+                    ParticleMass = (float)mass,
+                    WallWeightScale = (float)(p.RestDensity / mass / latticeNumberDensity),
                     SurfaceTension = p.SurfaceTension,
                     Color = p.Color, // linear, as declared
                     FresnelF0 = p.FresnelF0,

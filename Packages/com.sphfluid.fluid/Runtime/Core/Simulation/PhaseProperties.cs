@@ -33,7 +33,11 @@ namespace SphFluid.Simulation
         /// <summary>Beer-Lambert absorption coefficient of the tint, 1/m.</summary>
         public float Absorption;
 
-        float _padding0;
-        float _padding1;
+        /// <summary>This phase's rest number density rho0 / m over the lattice's delta0, in whose units a boundary particle's
+        /// weight omega_b is given: the wall stands for its volume filled at the rest number density of the fluid that meets
+        /// it (SphBoundary.hlsl's WallWeight). s^3 / c for a derived mass whose particles stand for the cell c.</summary>
+        public float WallWeightScale;
+
+        float _padding;
     }
 }
