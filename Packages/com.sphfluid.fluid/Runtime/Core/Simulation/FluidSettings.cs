@@ -24,20 +24,18 @@ namespace SphFluid.Simulation
         /// spacings, 208 at 2.5 and 23 515 at 3; Wendland C2 caught 0 at 2.5 and 3.</summary>
         public const float MaxCubicSplineSupportRatio = 2.25f;
 
-        /// <summary>The only support, in spacings, DFSPH is allowed with either kernel: at wider supports its walls let the
-        /// fluid through. Measured in the same resting tank under DFSPH (0.1 % tolerance, 1 s), the clamp caught 22 particles
-        /// with the cubic spline at 2 spacings and 943 at 2.25; with Wendland C2, 0 at 2, 583 at 2.5 and 2 766 at 4 (the last
-        /// with 2.9 J of kinetic energy in a tank at rest), and 10 143 at 3 in 2 s. That was before the wall particles became
-        /// unknowns of the solves. Probed again after (Wendland C2 at 2.85 spacings, the check off): the full Jacobi step
-        /// diverges within 0.05 s (the lattice's stiffest wave has lambda_max 5.4, <see cref="SphFluid.Simulation.SolverRelaxation"/>); relaxed to
-        /// 0.5 the resting tank holds (0.08 % average compression, no clamp hit in 1 s), but in the oil-and-water container
-        /// the first constant-density solve runs out of its 100 iterations and lifts the whole fluid (a mean upward 0.70 m/s
-        /// after one 4 ms sub-step at relaxation 0.35, walls 0.2; 0.22 m/s in the resting tank at the same 15 mm spacing). Not
-        /// the lattice's waves: at their 1 / lambda_max (0.186) with the walls' step at 0.05 and 1000 iterations allowed the
-        /// first solve still ran 970 iterations and left the fluid rising at 1.27 m/s (with a 1.5 ms step and the walls at 0.5,
-        /// 766 iterations and 6.2 m/s). So something beyond the lattice's waves drives it; the operator near the walls and the
-        /// free surface, whose diagonal differs from the lattice's, is the next suspect.</summary>
-        public const float MaxDivergenceFreeSupportRatio = 2f;
+        /// <summary>The widest support, in spacings, DFSPH takes, with Wendland C2 only (the cubic spline: 2 spacings). Above 2
+        /// spacings the solve also needs <see cref="SolverRelaxation"/> within <see cref="SphFluid.Simulation.SolverRelaxation.StableLimit"/>.
+        /// Before the wall particles became unknowns of the solves, DFSPH let the fluid through the walls at any wider support
+        /// (the resting tank, 0.1 % tolerance, 1 s: with the cubic spline 943 particles caught by the clamp at 2.25 spacings;
+        /// with Wendland C2 583 at 2.5, 10 143 at 3 in 2 s and 2 766 at 4). After it, two things held Wendland C2 at 2.85
+        /// spacings back: the full Jacobi step diverges within 0.05 s (the lattice's stiffest wave has lambda_max 5.4), and
+        /// in the oil-and-water container the walls, weighed at the lattice's rest number density instead of the fluid's
+        /// (SphBoundary.hlsl's WallWeight), asked for a density no motion of the fluid could give and the first solve lifted
+        /// the whole fluid (0.70 m/s after one 4 ms sub-step). With the walls weighed at the fluid's rest and the step at
+        /// 0.3, the oil-and-water scene runs with no clamp hit (README, Known limits). 2.9 is the top of the band where
+        /// Wendland C2's lattice is stable (<see cref="SmoothingKernel"/>); only 2.85 has been run.</summary>
+        public const float MaxDivergenceFreeSupportRatio = 2.9f;
 
         const string Particles = "Particles", Pressure = "Pressure", Forces = "Forces", Stepping = "Time stepping";
 
@@ -46,7 +44,7 @@ namespace SphFluid.Simulation
 
         // 2 spacings by default: the cubic spline then recovers a linear pressure gradient to 2 % on the lattice at the
         // lowest cost (SmoothingKernels.LatticeGradientReproduction).
-        [Setting(Particles, 0.002, 4, "m", "Kernel support radius H (= grid cell size), 2 to 4 particle spacings (the cubic spline up to 2.25, DFSPH 2 only): wider is smoother and slower.")]
+        [Setting(Particles, 0.002, 4, "m", "Kernel support radius H (= grid cell size), 2 to 4 particle spacings (the cubic spline up to 2.25; DFSPH: the cubic spline at 2, Wendland C2 up to 2.9): wider is smoother and slower.")]
         public float SmoothingRadius = 0.04f;
 
         [Setting(Particles, 0, 1, "", "Kernel family of every SPH sum: 0 = CubicSpline (cheapest; support 2 to 2.25 spacings; a fluid at rest keeps creeping), 1 = WendlandC2 (no particle pairing; at 2.8 to 2.9 spacings its particle lattice is stable under pressure, so with DeltaSph a fluid at rest comes to rest, at about 3 times the neighbours).")]
@@ -69,9 +67,10 @@ namespace SphFluid.Simulation
 
         // 1 by default, the papers' step and the cheapest. At 0.355 the resting tank's largest compression fell from 0.56 %
         // to 0.23 % and its divergence error from 5.6 to 0.55 %/s at 2.4 times the wall time (21.6 constant-density
-        // iterations per sub-step against 6.6), and DFSPH's oil and water left 15 % of its floor layer oil at 4.5 s against
-        // 21.9 % at 6 s (SolverRelaxation says why).
-        [Setting(Pressure, 0.05, 1, "", "DFSPH: fraction of each Jacobi step the fluid particles take. 1 = Bender and Koschier's full step, which overshoots the lattice's stiffest pressure waves; at or below 1 / lambda_max (0.355 for the cubic spline at 2 spacings, 0.384 for Wendland C2) none overshoots, at about 1 / value times the iterations.")]
+        // iterations per sub-step against 6.6), and, before the walls counted at the fluid's rest number density, DFSPH's oil
+        // and water with the cubic spline left 15 % of its floor layer oil at 4.5 s against 21.9 % at 6 s (SolverRelaxation
+        // says why). Above 2 spacings validation keeps it within SolverRelaxation.StableLimit; OilAndWater runs 0.3.
+        [Setting(Pressure, 0.05, 1, "", "DFSPH: fraction of each Jacobi step the fluid particles take. 1 = Bender and Koschier's full step, which overshoots the lattice's stiffest pressure waves; at or below 1 / lambda_max (0.355 for the cubic spline at 2 spacings, 0.384 for Wendland C2) none overshoots, at about 1 / value times the iterations. Above 2 spacings (Wendland C2) at most 2 / lambda_max (0.372 at 2.85), beyond which the stiffest wave grows.")]
         public float SolverRelaxation = 1f;
 
         // The scene narrows the stiffness: c must exceed the scene's fastest speed and stay within 100 times it
@@ -134,9 +133,7 @@ namespace SphFluid.Simulation
             if (spacingOk && !errors.Exists(e => e.Field == path + nameof(SmoothingRadius)))
             {
                 if (PressureSolver == PressureSolver.Dfsph)
-                    ValidationRules.InRange(errors, owner, path, nameof(SmoothingRadius), SmoothingRadius,
-                        MinSupportRatio * ParticleSpacing, MaxDivergenceFreeSupportRatio * ParticleSpacing,
-                        "m (2 particle spacings with the Dfsph pressure solver, whose walls let the fluid through at wider supports)");
+                    ValidateDivergenceFreeSupport(errors, owner, path);
                 else if (SmoothingKernel == KernelFamily.CubicSpline)
                     ValidationRules.InRange(errors, owner, path, nameof(SmoothingRadius), SmoothingRadius,
                         MinSupportRatio * ParticleSpacing, MaxCubicSplineSupportRatio * ParticleSpacing,
@@ -145,6 +142,27 @@ namespace SphFluid.Simulation
                     ValidationRules.InRange(errors, owner, path, nameof(SmoothingRadius), SmoothingRadius,
                         MinSupportRatio * ParticleSpacing, MaxSupportRatio * ParticleSpacing, "m (2 to 4 particle spacings)");
             }
+        }
+
+        /// <summary>DFSPH's support (<see cref="MaxDivergenceFreeSupportRatio"/>) and, above 2 spacings, its relaxation: at 2
+        /// spacings the tests measure the papers' full step, whose overshoot of the stiffest wave (lambda_max 2.82 for the cubic
+        /// spline) the compression-only solve cuts short; wider, lambda_max grows (5.4 for Wendland C2 at 2.85) and the full
+        /// step diverges, so the step must keep omega lambda_max within 2, where every lattice wave's residual shrinks.</summary>
+        void ValidateDivergenceFreeSupport(List<ValidationError> errors, string owner, string path)
+        {
+            bool cubic = SmoothingKernel == KernelFamily.CubicSpline;
+            if (!ValidationRules.InRange(errors, owner, path, nameof(SmoothingRadius), SmoothingRadius,
+                    MinSupportRatio * ParticleSpacing, (cubic ? MinSupportRatio : MaxDivergenceFreeSupportRatio) * ParticleSpacing,
+                    cubic ? "m (2 particle spacings for the CubicSpline kernel with the Dfsph pressure solver; 2 to 2.9 with WendlandC2)"
+                          : "m (2 to 2.9 particle spacings for the WendlandC2 kernel with the Dfsph pressure solver)"))
+                return;
+            if (SmoothingRadius <= MinSupportRatio * ParticleSpacing * (1f + 1e-4f) || errors.Exists(e => e.Field == path + nameof(SolverRelaxation)))
+                return;
+            float limit = (float)global::SphFluid.Simulation.SolverRelaxation.StableLimit(SmoothingKernel, ParticleSpacing, SmoothingRadius);
+            ValidationRules.InRange(errors, owner, path, nameof(SolverRelaxation), SolverRelaxation, 0.05f, Math.Max(0.05f, limit),
+                string.Format(System.Globalization.CultureInfo.InvariantCulture,
+                    "(2 / lambda_max of the Dfsph solve's Jacobi step with {0} at {1:G3} particle spacings: beyond it the lattice's stiffest pressure wave grows)",
+                    SmoothingKernel, SmoothingRadius / ParticleSpacing));
         }
     }
 }

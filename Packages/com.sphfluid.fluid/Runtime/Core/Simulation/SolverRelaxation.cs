@@ -17,9 +17,10 @@ namespace SphFluid.Simulation
     /// 2.82, at k near (1/3, 1/3, 0.3) pi / s, a wavelength of about 3.6 spacings; Wendland C2 2.61). The papers' step, omega = 1 (Bender and Koschier 2017,
     /// "Divergence-Free SPH for Incompressible and Viscous Fluids"), overshoots those waves and makes them grow with
     /// every iteration. The solves correct compression only, so the expansion an overshoot leaves is never taken back:
-    /// the tighter the tolerance, the more iterations, the more pressure noise. That is part of what holds the oil of the
-    /// oil-and-water scene in the floor's edges under DFSPH, the more so the stiffer the solve: relaxed to 1 / lambda_max
-    /// its floor oil fell from 22 % to 15 % (README, Known limits).
+    /// the tighter the tolerance, the more iterations, the more pressure noise. Under DFSPH with the cubic spline, before
+    /// the walls counted at the fluid's rest number density, relaxing to 1 / lambda_max took the oil-and-water scene's
+    /// floor oil from 22 % to 15 %. Above 2 spacings omega lambda_max must stay within 2 (<see cref="StableLimit"/>):
+    /// Wendland C2 at 2.85 spacings (lambda_max 5.38) diverged with the full step and layers the oil and water at 0.3.
     /// </para>
     /// <para>
     /// omega = 1 / lambda_max brings every lattice wave's residual down without changing its sign. It costs
@@ -34,6 +35,10 @@ namespace SphFluid.Simulation
         /// <summary>omega = 1 / lambda_max, capped at the papers' 1.</summary>
         public static double For(KernelFamily kind, double spacing, double support) =>
             Math.Min(1.0, 1.0 / StiffestMode(kind, spacing, support));
+
+        /// <summary>2 / lambda_max: the largest omega at which every lattice wave's residual shrinks, the Jacobi step's
+        /// stability bound (FluidSettings requires it of DFSPH above 2 spacings).</summary>
+        public static double StableLimit(KernelFamily kind, double spacing, double support) => 2.0 / StiffestMode(kind, spacing, support);
 
         /// <summary>lambda_max, the largest lambda(k) over the zone.</summary>
         public static double StiffestMode(KernelFamily kind, double spacing, double support)

@@ -47,18 +47,35 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(Messages(scene), Has.None.Contains("SmoothingRadius"));
         }
 
-        [TestCase(KernelFamily.CubicSpline, 0.045f)]
-        [TestCase(KernelFamily.WendlandC2, 0.06f)]
-        public void ADfsphSupportWiderThanTwoSpacings_IsRefusedWithTheReason(KernelFamily kernel, float radius)
+        [TestCase(KernelFamily.CubicSpline, 0.045f, "[0.04, 0.04] m (2 particle spacings for the CubicSpline kernel with the Dfsph pressure solver; 2 to 2.9 with WendlandC2)")]
+        [TestCase(KernelFamily.WendlandC2, 0.06f, "[0.04, 0.058] m (2 to 2.9 particle spacings for the WendlandC2 kernel with the Dfsph pressure solver)")]
+        public void ADfsphSupportTooWideForItsKernel_IsRefusedWithTheRange(KernelFamily kernel, float radius, string range)
         {
             var scene = SimulationTestScenes.OilOnWater();
             scene.Settings.PressureSolver = PressureSolver.Dfsph;
             scene.Settings.SmoothingKernel = kernel;
             Assert.That(Messages(scene), Has.None.Contains("SmoothingRadius"), "2 spacings");
             scene.Settings.SmoothingRadius = radius;
-            Assert.That(Messages(scene), Has.Some.Contains(
-                "FluidSettings: SmoothingRadius must be in [0.04, 0.04] m (2 particle spacings with the Dfsph pressure solver, " +
-                "whose walls let the fluid through at wider supports)").And.Contains($"(was {radius.ToString(System.Globalization.CultureInfo.InvariantCulture)})"));
+            Assert.That(Messages(scene), Has.Some.Contains("FluidSettings: SmoothingRadius must be in " + range)
+                .And.Contains($"(was {radius.ToString(System.Globalization.CultureInfo.InvariantCulture)})"));
+        }
+
+        /// <summary>Wendland C2 at 2.85 spacings (the OilAndWater scene's support) has lambda_max 5.38: DFSPH's full step makes
+        /// the stiffest lattice wave grow, and the relaxation must stay within 2 / 5.38.</summary>
+        [Test]
+        public void AWideDfsphSupport_NeedsTheRelaxationWithinTheJacobiStepsStabilityBound()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.Settings.PressureSolver = PressureSolver.Dfsph;
+            scene.Settings.SmoothingKernel = KernelFamily.WendlandC2;
+            scene.Settings.SmoothingRadius = 2.85f * scene.Settings.ParticleSpacing;
+            Assert.That(Messages(scene), Has.Some.Contains("FluidSettings: SolverRelaxation must be in [0.05, 0.372")
+                .And.Contains("(2 / lambda_max of the Dfsph solve's Jacobi step with WendlandC2 at 2.85 particle spacings: beyond it the lattice's stiffest pressure wave grows) (was 1)"));
+            scene.Settings.SolverRelaxation = 0.3f;
+            Assert.That(Messages(scene), Has.None.Contains("SolverRelaxation").And.None.Contains("SmoothingRadius"));
+            scene.Settings.SmoothingRadius = 2f * scene.Settings.ParticleSpacing;
+            scene.Settings.SolverRelaxation = 1f;
+            Assert.That(Messages(scene), Has.None.Contains("SolverRelaxation"), "at 2 spacings the papers' full step is measured");
         }
 
         [TestCase("Stiffness", "Stiffness must be in [1, 1E+09] Pa (was -1)")]

@@ -15,8 +15,8 @@ namespace SphFluid.Tests.Core.Simulation
     {
         const double Spacing = 1.0, Support = 2.0;
 
-        /// <summary>Wendland C2 at 2.85 spacings, the support WCSPH's resting scenes use and DFSPH is refused, is checked too: its
-        /// stiffest wave is what FluidSettings.MaxDivergenceFreeSupportRatio's probe quotes.</summary>
+        /// <summary>Wendland C2 at 2.85 spacings, the support of the RestingTank and OilAndWater scenes, is checked too: its
+        /// stiffest wave sets DFSPH's relaxation limit there (SolverRelaxation.StableLimit, 2 / 5.38).</summary>
         [TestCase(KernelFamily.CubicSpline, 2.0, 2.82)]
         [TestCase(KernelFamily.WendlandC2, 2.0, 2.61)]
         [TestCase(KernelFamily.WendlandC2, 2.85, 5.38)]
