@@ -1,6 +1,4 @@
 using System;
-using System.Globalization;
-using System.Numerics;
 using NUnit.Framework;
 using SphFluid.Headless.Cli;
 using SphFluid.Headless.Output;
@@ -15,7 +13,8 @@ namespace SphFluid.Tests.Physics
     /// file with <c>settings.PressureSolver: 1</c> (the int Unity serialises the enum as), so the scene key is read as Unity
     /// writes it. Oil and water runs WCSPH and is switched as <c>--solver dfsph</c> switches it (SolverChoice.FitSupport: its
     /// DFSPH settings, Wendland C2 at 2.85 spacings relaxed to 0.3, fit, so it keeps them). The dam break must stay finite and
-    /// lose nothing; the oil and water must layer as <see cref="SeparationTests"/> asks of WCSPH.
+    /// lose nothing; the oil and water must layer and clear the floor as <see cref="SeparationTests"/> asks of WCSPH (not its
+    /// flatness bar, which DFSPH misses: see the test).
     /// </summary>
     public sealed class DivergenceFreeSceneTests
     {
@@ -51,52 +50,33 @@ namespace SphFluid.Tests.Physics
             Assert.That(report.TotalMass, Is.GreaterThan(0.0));
         }
 
-        /// <summary>Issue #8's bar for DFSPH, #5's layering: measured 0.950 at 2.5 s with 0.6 % of the floor layer oil and no clamp
-        /// hit (WCSPH: 5.0 s). It stood ignored at 21.9 % floor oil (0.870 at 6 s) while the walls were weighed at the lattice's
-        /// rest number density instead of the fluid's (SphBoundary.hlsl's WallWeight) and DFSPH was held to the cubic spline
-        /// at 2 spacings; with the fix, that configuration leaves 9.4 % (0.898) and the scene's own, Wendland C2 at 2.85
-        /// spacings relaxed to 0.3, passes (0.992 and 0.00 % at 6 s). Explicit: it took 21 m 57 s of lavapipe on 2 cores, beyond CI's budget;
-        /// run it with <c>bash Headless/test.sh --filter "FullyQualifiedName~DefaultOilAndWater_LayersFully"</c>.</summary>
-        [Test, Explicit("about 22 minutes on lavapipe: beyond CI's budget")]
-        public void DefaultOilAndWater_LayersFullyWithin6Seconds_AndNoOilStaysOnTheFloor()
+        /// <summary>Issue #8's bar for DFSPH, #5's layering: index at least 0.95 and under 2 % of the floor layer oil within 6 s,
+        /// with no clamp hit (measured: both at 2.5 s, 0.950 and 0.0 %; WCSPH takes 5.0 s). It stood ignored at 21.9 % floor
+        /// oil (0.870 at 6 s) while the walls were weighed at the lattice's rest number density instead of the fluid's
+        /// (SphBoundary.hlsl's WallWeight) and DFSPH was held to the cubic spline at 2 spacings; with that fixed, that
+        /// configuration leaves 9.4 % (0.898) and the scene's own, Wendland C2 at 2.85 spacings relaxed to 0.3, passes. It
+        /// then took 22 minutes of lavapipe for 6 s and ran only by hand; with the neighbour lists (SphNeighbourhood.hlsl) a
+        /// sub-step costs a third, and the run stops at the first measure that meets both bars, as SeparationTests' does.
+        /// #5's third bar, the interface within a spacing of flat, DFSPH does not meet within 6 s: its interface rocks
+        /// (64 mm of tilt at 3.5 s, 17 mm at 6 s), where WCSPH's settles to 6.9 mm by 5 s; the test prints the tilt it stopped
+        /// at and does not assert it.</summary>
+        [Test]
+        public void DefaultOilAndWater_LayersWithin6Seconds_AndNoOilStaysOnTheFloor()
         {
             var scene = SceneLoader.Load(RunnerPaths.Scene("OilAndWater"), RunnerPaths.Project).Description;
             Assert.That(new SolverChoice { Solver = PressureSolver.Dfsph }.ApplyTo(scene, "DFSPH OilAndWater"), Is.Null, "the scene's own DFSPH settings");
-            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
-            double reached = double.NaN, next = 0.5;
-            FluidMeasures? last = null;
-            int water = Phase(sim, "Water"), oil = Phase(sim, "Oil");
-            var particles = new Particle[sim.ParticleCount];
-            var densities = new Vector4[sim.ParticleCount];
-            var s = scene.Settings;
-            while (sim.SimulatedTime < 6.0 - 1e-6)
-            {
-                sim.Step(Frame);
-                if (sim.SimulatedTime < next - 1e-6) continue;
-                next += 0.5;
-                sim.Particles.GetData(particles);
-                sim.Densities.GetData(densities);
-                last = FluidMeasures.Measure(sim.SimulatedTime, particles, densities, sim.PhaseRows, scene.Container, s.Gravity, s.ParticleSpacing, s.SmoothingRadius);
-                TestContext.Progress.WriteLine(string.Format(CultureInfo.InvariantCulture, "t={0:F2} s layering {1:F3} oil floor {2:F1} %, {3}",
-                    sim.SimulatedTime, last.LayeringIndex, 100 * last.Phases[oil].FloorShare, sim.LastStep));
-                if (double.IsNaN(reached) && last.LayeringIndex >= 0.95) reached = sim.SimulatedTime;
-            }
-            var report = sim.ReadDiagnostics();
-            Assert.That(last, Is.Not.Null, "measured every half second");
-            TestContext.Progress.WriteLine($"DFSPH OilAndWater: layering 0.95 reached at {reached:F2} s; at 6 s {last.LayeringIndex:F3}, " +
-                $"oil floor share {100 * last.Phases[oil].FloorShare:F2} %; {report}");
-            Assert.That(reached, Is.LessThanOrEqualTo(6.0 + 1e-5), "layering index >= 0.95 within 6 simulated seconds");
-            Assert.That(last.Phases[oil].FloorShare, Is.LessThan(0.02), "less than 2 % of the floor layer is oil");
+            int water = SeparationTests.Phase(scene, "Water"), oil = SeparationTests.Phase(scene, "Oil");
+            var (doneAt, last, report) = SeparationTests.RunUntil(scene, 6.0,
+                m => m.LayeringIndex >= 0.95 && m.Phases[oil].FloorShare < 0.02);
+            TestContext.Progress.WriteLine($"DFSPH OilAndWater: layering >= 0.95 and floor oil < 2 % at {doneAt:F2} s: layering {last.LayeringIndex:F3}, " +
+                $"oil floor share {100 * last.Phases[oil].FloorShare:F2} %, interface tilt {1000 * last.InterfaceTilt:F1} mm; {report}");
+            Assert.That(doneAt, Is.LessThanOrEqualTo(6.0 + 1e-5),
+                $"within 6 simulated seconds: layering index >= 0.95 (at 6 s {last.LayeringIndex:F3}) and less than 2 % of the floor layer oil " +
+                $"({100 * last.Phases[oil].FloorShare:F2} %)");
             Assert.That(last.Phases[oil].MeanHeight, Is.GreaterThan(last.Phases[water].MeanHeight));
             Assert.That(report.OutsideCount, Is.EqualTo(0));
             Assert.That(report.NanCount, Is.EqualTo(0));
             Assert.That(report.ClampHits, Is.EqualTo(0));
-        }
-
-        static int Phase(FluidSimulation sim, string name)
-        {
-            for (int k = 0; k < sim.Phases.Count; k++) if (sim.Phases[k].Name == name) return k;
-            throw new ArgumentException(name);
         }
     }
 }

@@ -33,7 +33,7 @@ namespace SphFluid.Tests.Physics
         /// <summary>Runs for at most <paramref name="seconds"/>, measuring every half second, and stops at the first measure
         /// that meets <paramref name="done"/>: the criteria are "within" a time, so the run need not go on once they hold.
         /// Returns that time (NaN if never) and the measures it stopped on (the last ones if never).</summary>
-        static (double DoneAt, FluidMeasures Last, DiagnosticsReport Report) RunUntil(FluidSceneDescription scene, double seconds, Func<FluidMeasures, bool> done)
+        internal static (double DoneAt, FluidMeasures Last, DiagnosticsReport Report) RunUntil(FluidSceneDescription scene, double seconds, Func<FluidMeasures, bool> done)
         {
             using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
             double next = 0.5;
@@ -100,7 +100,7 @@ namespace SphFluid.Tests.Physics
             Assert.That(report.OutsideCount, Is.EqualTo(0));
         }
 
-        static int Phase(FluidSceneDescription scene, string name)
+        internal static int Phase(FluidSceneDescription scene, string name)
         {
             var phases = scene.Phases();
             for (int k = 0; k < phases.Count; k++) if (phases[k].Name == name) return k;

@@ -14,7 +14,9 @@ namespace SphFluid.Tests.Solver
     /// velocities and positions after the sub-step must match to 1e-4 of each quantity's scale. The two-phase block also takes
     /// a relaxed Jacobi step (SolverRelaxation 0.355, the cubic spline's 1 / lambda_max), so the constant reaches the kernels,
     /// and its boxes are 3.9 spacings tall, so their 4 rows stand for 2.5 % less than s^3 and the walls count at a rest number
-    /// density other than the lattice's (PhaseProperties.WallWeightScale, SphBoundary.hlsl's WallWeight).
+    /// density other than the lattice's (PhaseProperties.WallWeightScale, SphBoundary.hlsl's WallWeight). A third block is
+    /// squeezed to 75 % of its spacing, so that inside it a particle has more neighbours than its list holds and walks the
+    /// grid (SphNeighbourhood.hlsl) while those at its edges read their lists: both paths in one solve.
     /// </summary>
     public sealed class DivergenceFreeKernelTests
     {
@@ -35,9 +37,9 @@ namespace SphFluid.Tests.Solver
                 SolverScenes.Box("B", multiphase ? SolverScenes.Oil(0.02f) : SolverScenes.Water(0.1f), new Vector3(0f, 0.08f - 0.5f * height, 0f), half));
         }
 
-        /// <summary>Compressed by 3 % towards the floor's centre line and scattered, with random velocities: every solve has work,
-        /// and the drift stays clear of the clamp (a discontinuity tested on its own).</summary>
-        static Particle[] Compressed(FluidSceneDescription scene, int count)
+        /// <summary>Compressed to <paramref name="squeeze"/> of the spacing towards the floor's centre line and scattered, with
+        /// random velocities: every solve has work, and the drift stays clear of the clamp (a discontinuity tested on its own).</summary>
+        static Particle[] Compressed(FluidSceneDescription scene, int count, float squeeze)
         {
             var rng = new SolverScenes.Rng(4242);
             var spawn = SpawnLayout.Generate(scene);
@@ -45,21 +47,31 @@ namespace SphFluid.Tests.Solver
             for (int i = 0; i < count; i++)
             {
                 var x = spawn[i].Position;
-                x = new Vector3(0.97f * x.X, -0.08f + 0.97f * (x.Y + 0.08f), 0.97f * x.Z) + rng.InBox(new Vector3(0.002f));
+                x = new Vector3(squeeze * x.X, -0.08f + squeeze * (x.Y + 0.08f), squeeze * x.Z) + rng.InBox(new Vector3(0.002f));
                 particles[i] = new Particle(x, rng.InBox(new Vector3(0.3f)), spawn[i].Phase, spawn[i].Id);
             }
             return particles;
         }
 
-        [TestCase(false, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_SinglePhase")]
-        [TestCase(true, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_TwoPhasesXsphRelaxed")]
-        public void OneIterationOfEachSolveMatchesReference(bool multiphase)
+        [TestCase(false, 0.97f, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_SinglePhase")]
+        [TestCase(true, 0.97f, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_TwoPhasesXsphRelaxed")]
+        [TestCase(false, 0.75f, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_CrowdedPastTheNeighbourLists")]
+        public void OneIterationOfEachSolveMatchesReference(bool multiphase, float squeeze)
         {
             var scene = Block(multiphase);
             using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
             Assert.That(sim.PhaseRows[0].WallWeightScale, multiphase ? Is.EqualTo(0.08 / 0.078).Within(1e-4) : Is.EqualTo(1.0).Within(1e-6));
-            var input = Compressed(scene, sim.ParticleCount);
+            var input = Compressed(scene, sim.ParticleCount, squeeze);
             sim.SetParticles(input);
+            var counts = new uint[sim.ParticleCount + sim.BoundaryCount];
+            sim.NeighbourCounts.GetData(counts);
+            int walking = 0;
+            for (int i = 0; i < sim.ParticleCount; i++) if (counts[i] == uint.MaxValue) walking++;
+            TestContext.Progress.WriteLine($"squeezed to {squeeze}: {walking} of {sim.ParticleCount} particles have more neighbours than the {sim.NeighbourListCapacity} entries of a list");
+            if (squeeze < 0.9f)
+                Assert.That(walking, Is.GreaterThan(0).And.LessThan(sim.ParticleCount), "some particles walk the grid, the others read their lists");
+            else
+                Assert.That(walking, Is.EqualTo(0), "every particle reads its list");
             var before = GpuState.Read(sim);
             var start = before.ByIdParticles(input);
             const float dt = 0.001f;

@@ -60,6 +60,8 @@ cbuffer FluidConstants
     uint _SmoothingKernel;                  // SphKernels: 0 cubic spline, 1 Wendland C2
     uint _WallContactAtAnyDensity;          // SphBoundary: 1 (delta-SPH) wall contact by distance alone, 0 below rest density too
     float _SolverRelaxation;                // DivergenceFreeSolver: omega of the fluid particles' Jacobi step (SolverRelaxation.cs)
+
+    uint _NeighbourCapacity;                // SphNeighbourhood: entries of each neighbour list, 0 for no lists (NeighbourCapacity.cs)
 };
 
 // Grid.hlsl reads its three values from here instead of declaring its own.

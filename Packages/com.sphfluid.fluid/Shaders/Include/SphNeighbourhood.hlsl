@@ -11,11 +11,29 @@
 // of the bookkeeping and longer, better-predicted inner loops. Fluid and boundary particles live in the
 // same grid, each sorted into its own buffer with its own CellStart/CellCount.
 // Usage: for (uint row = 0u; row < 9u; row++) { uint2 range = NeighbourRowRange(home, row); for (j in range) ... }
+//
+// Neighbour lists. DFSPH's solves visit every particle's neighbourhood twice per iteration, at positions that do not
+// change between the sort and the next drift, so (as Bender & Koschier 2017, "Divergence-Free SPH for Incompressible
+// and Viscous Fluids", do with the result of their neighbour search) the neighbours are found once per sort
+// (FluidSolver.compute's FindNeighbours) and read from a list by every pass until the next drift. A wide support makes
+// the difference: at 2.85 spacings the 27 cells hold about 6 candidates per neighbour. Each list owner (fluid particle
+// i, or wall particle b as owner _ParticleCount + b) has _NeighbourCapacity entries; entry k of owner o is at
+// k * (_ParticleCount + _BoundaryCount) + o, so that the threads of a group read neighbouring words. Fluid neighbours
+// (the particle itself among them, as in the grid walk) fill the entries from the front, wall neighbours from the
+// back. An owner with more neighbours than entries is marked NO_NEIGHBOUR_LIST and walks the grid, so a crowded
+// particle costs time, never a neighbour; so does every particle when _NeighbourCapacity is 0 (WCSPH, no lists).
+// Usage: NeighbourList list = ListOf(i); for (uint row = 0u; row < NeighbourRows(list); row++)
+//            { uint2 range = FluidNeighbours(list, home, row); for (k in range) { uint j = Neighbour(list, k); ... } }
 
 StructuredBuffer<uint> _CellStart;         // fluid: first sorted particle of each cell (exclusive prefix sum of the counts)
 StructuredBuffer<uint> _CellCount;         // fluid: particles in each cell
 StructuredBuffer<uint> _BoundaryCellStart; // boundary particles: the same per cell
 StructuredBuffer<uint> _BoundaryCellCount;
+
+RWStructuredBuffer<uint> _NeighbourCounts; // per owner: fluid neighbours | wall neighbours << 16, or NO_NEIGHBOUR_LIST
+RWStructuredBuffer<uint> _NeighbourLists;  // sorted indices of the owners' neighbours (layout above)
+
+#define NO_NEIGHBOUR_LIST 0xFFFFFFFFu
 
 // First and last cell of row `row` (0..8: dy, dz in -1..1) around cell `home`; false outside the grid.
 bool NeighbourRowCells(int3 home, uint row, out uint firstCell, out uint lastCell)
@@ -49,6 +67,56 @@ uint2 BoundaryRowRange(int3 home, uint row)
     if (!NeighbourRowCells(home, row, firstCell, lastCell))
         return uint2(0u, 0u);
     return uint2(_BoundaryCellStart[firstCell], _BoundaryCellStart[lastCell] + _BoundaryCellCount[lastCell]);
+}
+
+// The list of owner `owner` (fluid particle i, or _ParticleCount + wall particle b).
+struct NeighbourList
+{
+    bool listed;  // false: walk the grid's 9 rows
+    uint fluid;   // fluid neighbours in entries [0, fluid)
+    uint walls;   // wall neighbours in entries [_NeighbourCapacity - walls, _NeighbourCapacity)
+    uint owner;
+};
+
+NeighbourList ListOf(uint owner)
+{
+    NeighbourList list;
+    uint word = _NeighbourCapacity > 0u ? _NeighbourCounts[owner] : NO_NEIGHBOUR_LIST;
+    list.listed = word != NO_NEIGHBOUR_LIST;
+    list.fluid = word & 0xFFFFu;
+    list.walls = word >> 16;
+    list.owner = owner;
+    return list;
+}
+
+// The list's entries are one range, the grid's nine rows.
+uint NeighbourRows(NeighbourList list)
+{
+    return list.listed ? 1u : 9u;
+}
+
+// Entries (listed) or sorted fluid particles (grid) of row `row`: Neighbour(list, k) for k in [x, y).
+uint2 FluidNeighbours(NeighbourList list, int3 home, uint row)
+{
+    return list.listed ? uint2(0u, list.fluid) : NeighbourRowRange(home, row);
+}
+
+// The same for the wall particles.
+uint2 WallNeighbours(NeighbourList list, int3 home, uint row)
+{
+    return list.listed ? uint2(_NeighbourCapacity - list.walls, _NeighbourCapacity) : BoundaryRowRange(home, row);
+}
+
+// The sorted index of entry k: read from the list, or k itself on the grid.
+uint Neighbour(NeighbourList list, uint k)
+{
+    return list.listed ? _NeighbourLists[k * (_ParticleCount + _BoundaryCount) + list.owner] : k;
+}
+
+// Writes entry k of owner `owner` (FindNeighbours).
+void StoreNeighbour(uint owner, uint k, uint index)
+{
+    _NeighbourLists[k * (_ParticleCount + _BoundaryCount) + owner] = index;
 }
 
 #endif

@@ -17,7 +17,7 @@ namespace SphFluid.Simulation
     public struct FluidConstants
     {
         /// <summary>The cbuffer's size in bytes, whole 16-byte rows (HLSL rounds a part row up).</summary>
-        public const int Bytes = 400;
+        public const int Bytes = 416;
 
         public Matrix4x4 WorldToContainer;
         public Matrix4x4 ContainerToWorld;
@@ -64,5 +64,7 @@ namespace SphFluid.Simulation
         public uint SmoothingKernel;
         public uint WallContactAtAnyDensity;
         public float SolverRelaxation;
+
+        public uint NeighbourCapacity;
     }
 }

@@ -48,7 +48,7 @@ namespace SphFluid.Simulation
         readonly IComputeProgram _solver, _diagnostics;
         readonly int _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep;
         readonly int _densityFactor, _nonPressureForces, _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError,
-            _solveFinal, _applyStiffness, _drift, _divergenceRate;
+            _solveFinal, _applyStiffness, _drift, _divergenceRate, _findNeighbours, _wallNumberDensity;
         readonly bool _divergenceFree;
         readonly int _particleShift, _applyShift, _boundaryDensityFactor, _boundaryBeginSolve, _boundarySolveError, _clearBoundaryWarmStart;
         readonly int _densityRate, _continuityDensity; // delta-SPH (SphDensityDiffusion.hlsl)
@@ -65,6 +65,9 @@ namespace SphFluid.Simulation
         CellGrid _grid;
         bool _containerChanged = true;
         bool _boundaryMoved = true;
+        // DFSPH: the walls were sorted again since the last FindNeighbours, so the neighbour lists and the walls' solve state
+        // (kept per sorted slot) belong to other wall particles.
+        bool _wallsResorted;
         int _boundaryCount;
         IReadbackRequest _motionReadback, _diagnosticsReadback;
         double _diagnosticsRequestTime;
@@ -120,6 +123,8 @@ namespace SphFluid.Simulation
             _applyStiffness = _solver.FindKernel("ApplyStiffness");
             _drift = _solver.FindKernel("Drift");
             _divergenceRate = _solver.FindKernel("DivergenceRate");
+            _findNeighbours = _solver.FindKernel("FindNeighbours");
+            _wallNumberDensity = _solver.FindKernel("WallNumberDensity");
             _divergenceFree = _scene.Settings.PressureSolver == PressureSolver.Dfsph;
             _particleShift = _solver.FindKernel("ParticleShift");
             _applyShift = _solver.FindKernel("ApplyShift");
@@ -135,6 +140,7 @@ namespace SphFluid.Simulation
                 _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep, _densityFactor, _nonPressureForces,
                 _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError, _solveFinal, _applyStiffness, _drift, _divergenceRate,
                 _particleShift, _applyShift, _densityRate, _continuityDensity, _boundaryDensityFactor, _boundaryBeginSolve, _boundarySolveError, _clearBoundaryWarmStart,
+                _findNeighbours, _wallNumberDensity,
             };
             _motionPartial = _diagnostics.FindKernel("MotionPartial");
             _motionFinal = _diagnostics.FindKernel("MotionFinal");
@@ -201,6 +207,14 @@ namespace SphFluid.Simulation
         /// <summary>The boundary particles (<see cref="BoundaryParticle"/>) in world space, sorted by grid cell.</summary>
         public IComputeBuffer BoundaryParticles => _buffers.BoundarySorted;
 
+        /// <summary>DFSPH, per fluid particle (sorted) and then per sorted boundary particle: the neighbours its list holds, fluid
+        /// ones in the low 16 bits and wall ones in the high 16, or <see cref="uint.MaxValue"/> for a particle with more than
+        /// <see cref="NeighbourListCapacity"/> that walks the grid instead (SphNeighbourhood.hlsl).</summary>
+        public IComputeBuffer NeighbourCounts => _buffers.NeighbourCounts;
+
+        /// <summary>Entries of each neighbour list; 0 without lists (WCSPH; see <see cref="Simulation.NeighbourCapacity"/>).</summary>
+        public int NeighbourListCapacity => (int)_constants[0].NeighbourCapacity;
+
         /// <summary>Number of boundary particles (container walls and obstacles).</summary>
         public int BoundaryCount => _boundaryCount;
 
@@ -247,7 +261,7 @@ namespace SphFluid.Simulation
         {
             PassNames.UploadContainer, PassNames.PlaceBoundary, PassNames.DensityRate, PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals,
             PassNames.Forces, PassNames.FullStep, PassNames.NonPressureForces, PassNames.PredictVelocity, PassNames.DensitySolve, PassNames.Drift,
-            PassNames.DensityFactor, PassNames.DivergenceSolve, PassNames.ParticleShift, PassNames.ApplyShift, PassNames.MotionReduction, PassNames.Diagnostics,
+            PassNames.FindNeighbours, PassNames.DensityFactor, PassNames.DivergenceSolve, PassNames.ParticleShift, PassNames.ApplyShift, PassNames.MotionReduction, PassNames.Diagnostics,
         };
 
         /// <summary>Advances the simulation by one frame of <paramref name="frameSeconds"/> real time, in as
@@ -329,7 +343,12 @@ namespace SphFluid.Simulation
                 _device.BeginSample(PassNames.PlaceBoundary);
                 _device.DispatchThreads(_solver, _placeBoundary, _boundaryCount);
                 _buffers.BoundarySorter.Sort(_grid, _buffers.BoundaryPlaced, _buffers.BoundarySorted, _boundaryCount);
-                if (_divergenceFree) _device.DispatchThreads(_solver, _clearBoundaryWarmStart, _boundaryCount);
+                if (_divergenceFree)
+                {
+                    _device.DispatchThreads(_solver, _clearBoundaryWarmStart, _boundaryCount);
+                    _device.DispatchThreads(_solver, _wallNumberDensity, _boundaryCount);
+                    _wallsResorted = true;
+                }
                 _device.EndSample(PassNames.PlaceBoundary);
                 _boundaryMoved = false;
             }
@@ -382,6 +401,11 @@ namespace SphFluid.Simulation
         /// constant-density solve, drift, re-sort, density and factor, divergence-free solve.</summary>
         void DivergenceFreeSubstep()
         {
+            if (_wallsResorted)
+            {
+                FindNeighbours();
+                _device.DispatchThreads(_solver, _boundaryDensityFactor, _boundaryCount);
+            }
             if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _normals);
             SolverPass(PassNames.NonPressureForces, _nonPressureForces);
 
@@ -488,6 +512,9 @@ namespace SphFluid.Simulation
         {
             if (_divergenceFree)
             {
+                _device.BeginSample(PassNames.FindNeighbours);
+                FindNeighbours();
+                _device.EndSample(PassNames.FindNeighbours);
                 SolverPass(PassNames.DensityFactor, _densityFactor);
                 _device.DispatchThreads(_solver, _boundaryDensityFactor, _boundaryCount);
                 if (!withForces) return;
@@ -503,6 +530,15 @@ namespace SphFluid.Simulation
             if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _normals);
 
             SolverPass(PassNames.Forces, _forces);
+        }
+
+        /// <summary>The neighbour lists (SphNeighbourhood.hlsl) of every fluid and boundary particle, after a sort of either;
+        /// without lists (<see cref="NeighbourCapacity"/> 0) the kernels walk the grid and nothing is dispatched.</summary>
+        void FindNeighbours()
+        {
+            if (_constants[0].NeighbourCapacity > 0)
+                _device.DispatchThreads(_solver, _findNeighbours, ParticleCount + _boundaryCount);
+            _wallsResorted = false;
         }
 
         /// <summary>One timed solver pass: the kernel over <paramref name="threads"/> items (default: every particle),
@@ -579,8 +615,10 @@ namespace SphFluid.Simulation
         {
             var rest = BoundarySampling.Sample(_scene);
             _boundaryCount = rest.Length;
-            _buffers.MakeBoundary(rest, _grid.CellCount);
+            int capacity = NeighbourCapacity.For(_scene.Settings, ParticleCount + _boundaryCount);
+            _buffers.MakeBoundary(rest, _grid.CellCount, capacity);
             _constants[0].BoundaryCount = (uint)_boundaryCount;
+            _constants[0].NeighbourCapacity = (uint)capacity;
             _constantsChanged = true;
             _boundaryMoved = true;
         }

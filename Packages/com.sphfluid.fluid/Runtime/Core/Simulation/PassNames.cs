@@ -17,6 +17,7 @@ namespace SphFluid.Simulation
         public const string PredictVelocity = "PredictVelocity";
         public const string DensitySolve = "DensitySolve";
         public const string Drift = "Drift";
+        public const string FindNeighbours = "FindNeighbours";
         public const string DensityFactor = "DensityFactor";
         public const string DivergenceSolve = "DivergenceSolve";
         public const string ParticleShift = "ParticleShift";

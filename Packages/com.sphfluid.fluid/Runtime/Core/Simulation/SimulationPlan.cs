@@ -87,6 +87,7 @@ namespace SphFluid.Simulation
                 passes.Add(PassNames.DensitySolve);
                 passes.Add(PassNames.Drift);
                 passes.Add(PassNames.Sort);
+                passes.Add(PassNames.FindNeighbours);
                 passes.Add(PassNames.DensityFactor);
                 passes.Add(PassNames.DivergenceSolve);
             }

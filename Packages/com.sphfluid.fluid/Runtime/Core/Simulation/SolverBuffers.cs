@@ -16,7 +16,7 @@ namespace SphFluid.Simulation
     /// cell-sorted current state. Per particle (indexed like the current particles): density and pressure, normals,
     /// accelerations, XSPH corrections and shifts; the DFSPH factor, stiffness and (by particle id) warm start. Then the
     /// phase table, the obstacles, the fluid's and the boundary's CellStart/CellCount, the boundary particles (rest frame,
-    /// placed, cell-sorted) and their pressures, the clamp-hit counter, the reductions' partials and totals, the solver
+    /// placed, cell-sorted) and their pressures, the neighbour lists of fluid and boundary particles (DFSPH), the clamp-hit counter, the reductions' partials and totals, the solver
     /// state and its indirect arguments, and the constant buffer (Include/FluidConstants.hlsl).
     /// </remarks>
     sealed class SolverBuffers : IDisposable
@@ -95,6 +95,9 @@ namespace SphFluid.Simulation
             new Binding("_BoundaryWarmStart", b => b.BoundaryWarmStart, Readers.Solver, Group.Boundary),
             new Binding("_BoundaryCellStart", b => b.BoundarySorter.CellStart, Readers.Solver, Group.Boundary),
             new Binding("_BoundaryCellCount", b => b.BoundarySorter.CellCount, Readers.Solver, Group.Boundary),
+            new Binding("_WallNumberDensities", b => b.WallNumberDensities, Readers.Solver, Group.Boundary),
+            new Binding("_NeighbourCounts", b => b.NeighbourCounts, Readers.Solver, Group.Boundary),
+            new Binding("_NeighbourLists", b => b.NeighbourLists, Readers.Solver, Group.Boundary),
             new Binding(ParticleSorter.CellStartProperty, b => b.Sorter.CellStart, Readers.Solver, Group.Cells),
             new Binding(ParticleSorter.CellCountProperty, b => b.Sorter.CellCount, Readers.Solver, Group.Cells),
         };
@@ -110,7 +113,8 @@ namespace SphFluid.Simulation
         public IComputeBuffer Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
         public IComputeBuffer NumberDensities, NumberDensitiesHalf, DensityRates; // delta-SPH (SphDensityDiffusion.hlsl)
         public IComputeBuffer MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
-        public IComputeBuffer BoundaryRest, BoundaryPlaced, BoundarySorted, BoundaryPressures, BoundarySolve, BoundaryWarmStart;
+        public IComputeBuffer BoundaryRest, BoundaryPlaced, BoundarySorted, BoundaryPressures, BoundarySolve, BoundaryWarmStart, WallNumberDensities;
+        public IComputeBuffer NeighbourCounts, NeighbourLists; // per fluid and boundary particle (SphNeighbourhood.hlsl)
         public IComputeBuffer Constants;
         public ParticleSorter Sorter, BoundarySorter;
 
@@ -210,8 +214,10 @@ namespace SphFluid.Simulation
             Bind(Group.Particles);
         }
 
-        /// <summary>New boundary buffers for these boundary particles (in their owners' frames) and a sorter for them.</summary>
-        public void MakeBoundary(BoundaryParticle[] rest, int cellCount)
+        /// <summary>New boundary buffers for these boundary particles (in their owners' frames), a sorter for them, and neighbour
+        /// lists of <paramref name="neighbourCapacity"/> entries for every fluid and boundary particle (one word each for 0:
+        /// no lists, the kernels walk the grid).</summary>
+        public void MakeBoundary(BoundaryParticle[] rest, int cellCount, int neighbourCapacity)
         {
             ReleaseBoundary();
             int count = rest.Length;
@@ -222,7 +228,11 @@ namespace SphFluid.Simulation
             BoundaryPressures = Zeroed("FluidSimulation.BoundaryPressures", count, 4);
             BoundarySolve = Zeroed("FluidSimulation.BoundarySolve", count, 16);
             BoundaryWarmStart = Zeroed("FluidSimulation.BoundaryWarmStart", count, 8);
+            WallNumberDensities = Zeroed("FluidSimulation.WallNumberDensities", count, 4);
             BoundarySorter = new ParticleSorter(_device, count, cellCount);
+            int owners = neighbourCapacity > 0 ? _particleCount + count : 1;
+            NeighbourCounts = _device.CreateBuffer("FluidSimulation.NeighbourCounts", owners, 4);
+            NeighbourLists = _device.CreateBuffer("FluidSimulation.NeighbourLists", owners * Math.Max(neighbourCapacity, 1), 4);
             Bind(Group.Boundary);
         }
 
@@ -253,8 +263,12 @@ namespace SphFluid.Simulation
             BoundaryPressures?.Dispose();
             BoundarySolve?.Dispose();
             BoundaryWarmStart?.Dispose();
+            WallNumberDensities?.Dispose();
             BoundarySorter?.Dispose();
-            BoundaryRest = BoundaryPlaced = BoundarySorted = BoundaryPressures = BoundarySolve = BoundaryWarmStart = null;
+            NeighbourCounts?.Dispose();
+            NeighbourLists?.Dispose();
+            BoundaryRest = BoundaryPlaced = BoundarySorted = BoundaryPressures = BoundarySolve = BoundaryWarmStart = WallNumberDensities = null;
+            NeighbourCounts = NeighbourLists = null;
             BoundarySorter = null;
         }
 

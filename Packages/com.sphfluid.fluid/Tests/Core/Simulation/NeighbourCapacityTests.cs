@@ -1,0 +1,56 @@
+using NUnit.Framework;
+using SphFluid.Simulation;
+
+namespace SphFluid.Tests.Core.Simulation
+{
+    /// <summary>
+    /// The entries of DFSPH's neighbour lists (NeighbourCapacity): half as many again as a particle of the spawn lattice has
+    /// neighbours within the support, none for WCSPH, and none where the lists would not fit in one buffer.
+    /// </summary>
+    public sealed class NeighbourCapacityTests
+    {
+        static FluidSettings Settings(PressureSolver solver, KernelFamily kernel, float supportRatio)
+        {
+            var s = new FluidSettings { PressureSolver = solver, SmoothingKernel = kernel, ParticleSpacing = 0.01f };
+            s.SmoothingRadius = supportRatio * s.ParticleSpacing;
+            return s;
+        }
+
+        /// <summary>Points of the cubic lattice of spacing 1 closer than <paramref name="ratio"/> to one of them, itself included.</summary>
+        static int LatticeNeighbours(double ratio)
+        {
+            int reach = (int)ratio, count = 0;
+            for (int x = -reach; x <= reach; x++)
+                for (int y = -reach; y <= reach; y++)
+                    for (int z = -reach; z <= reach; z++)
+                        if (x * x + y * y + z * z < ratio * ratio) count++;
+            return count;
+        }
+
+        [TestCase(KernelFamily.CubicSpline, 2f, 51)]
+        [TestCase(KernelFamily.WendlandC2, 2.85f, 146)]
+        public void AListHoldsHalfAsManyAgainAsTheLatticeNeighbours(KernelFamily kernel, float supportRatio, int expected)
+        {
+            int capacity = NeighbourCapacity.For(Settings(PressureSolver.Dfsph, kernel, supportRatio), 10000);
+            int atRest = LatticeNeighbours(supportRatio);
+            TestContext.Progress.WriteLine($"{kernel} at {supportRatio} spacings: {atRest} lattice neighbours, {capacity} entries");
+            Assert.That(capacity, Is.EqualTo(expected));
+            Assert.That(capacity, Is.GreaterThanOrEqualTo(1.45 * atRest));
+        }
+
+        [Test]
+        public void WcsphKeepsNoLists()
+        {
+            Assert.That(NeighbourCapacity.For(Settings(PressureSolver.Wcsph, KernelFamily.CubicSpline, 2f), 10000), Is.EqualTo(0));
+        }
+
+        [Test]
+        public void ListsLargerThanOneBufferAreNotKept()
+        {
+            var settings = Settings(PressureSolver.Dfsph, KernelFamily.WendlandC2, 2.85f);
+            int fits = (int)(NeighbourCapacity.MaxListBytes / (4 * 146));
+            Assert.That(NeighbourCapacity.For(settings, fits), Is.EqualTo(146));
+            Assert.That(NeighbourCapacity.For(settings, fits + 1), Is.EqualTo(0), "the particles walk the grid instead");
+        }
+    }
+}
