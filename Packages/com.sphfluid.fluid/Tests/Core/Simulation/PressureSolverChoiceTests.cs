@@ -54,14 +54,15 @@ namespace SphFluid.Tests.Core.Simulation
         {
             var scene = SimulationTestScenes.OilOnWater();
             var wcsph = PipelinePlanner.Plan(scene, false);
-            Assert.That(wcsph.SubstepPasses, Does.Contain(PassNames.Forces).And.Contain(PassNames.DensityPressure).And.Not.Contain(PassNames.DensitySolve));
+            Assert.That(wcsph.SubstepPasses, Does.Contain(PassNames.Forces).And.Contain(PassNames.DensityPressure)
+                .And.Not.Contain(PassNames.DensitySolve).And.Not.Contain(PassNames.FindNeighbours));
             scene.Settings.PressureSolver = PressureSolver.Dfsph;
             var dfsph = PipelinePlanner.Plan(scene, false);
             Assert.That(dfsph.PressureSolver, Is.EqualTo(PressureSolver.Dfsph));
             Assert.That(dfsph.SubstepPasses, Is.EqualTo(new[]
             {
                 PassNames.NonPressureForces, PassNames.PredictVelocity, PassNames.DensitySolve, PassNames.Drift,
-                PassNames.Sort, PassNames.DensityFactor, PassNames.DivergenceSolve,
+                PassNames.Sort, PassNames.FindNeighbours, PassNames.DensityFactor, PassNames.DivergenceSolve,
             }));
             Assert.That(dfsph.ToString(), Does.Contain("solver: DFSPH"));
         }
