@@ -78,10 +78,14 @@ struct NeighbourList
     uint owner;
 };
 
+// The buffer reads below sit in branches, not in ?: (whose operands HLSL evaluates both): without lists the buffers hold
+// one word, and an index past it reads out of bounds, which Vulkan and Metal leave undefined.
 NeighbourList ListOf(uint owner)
 {
     NeighbourList list;
-    uint word = _NeighbourCapacity > 0u ? _NeighbourCounts[owner] : NO_NEIGHBOUR_LIST;
+    uint word = NO_NEIGHBOUR_LIST;
+    if (_NeighbourCapacity > 0u)
+        word = _NeighbourCounts[owner];
     list.listed = word != NO_NEIGHBOUR_LIST;
     list.fluid = word & 0xFFFFu;
     list.walls = word >> 16;
@@ -110,7 +114,9 @@ uint2 WallNeighbours(NeighbourList list, int3 home, uint row)
 // The sorted index of entry k: read from the list, or k itself on the grid.
 uint Neighbour(NeighbourList list, uint k)
 {
-    return list.listed ? _NeighbourLists[k * (_ParticleCount + _BoundaryCount) + list.owner] : k;
+    if (list.listed)
+        return _NeighbourLists[k * (_ParticleCount + _BoundaryCount) + list.owner];
+    return k;
 }
 
 // Writes entry k of owner `owner` (FindNeighbours).
