@@ -54,7 +54,7 @@ namespace SphFluid.Tests.Physics
         /// with no clamp hit (measured: both at 2.5 s, 0.950 and 0.0 %; WCSPH takes 5.0 s). It stood ignored at 21.9 % floor
         /// oil (0.870 at 6 s) while the walls were weighed at the lattice's rest number density instead of the fluid's
         /// (SphBoundary.hlsl's WallWeight) and DFSPH was held to the cubic spline at 2 spacings; with that fixed, that
-        /// configuration leaves 9.4 % (0.898) and the scene's own, Wendland C2 at 2.85 spacings relaxed to 0.3, passes. It
+        /// configuration leaves 8.7 % (0.907) and the scene's own, Wendland C2 at 2.85 spacings relaxed to 0.3, passes. It
         /// then took 22 minutes of lavapipe for 6 s and ran only by hand; with the neighbour lists (SphNeighbourhood.hlsl) a
         /// sub-step costs a third, and the run stops at the first measure that meets both bars, as SeparationTests' does.
         /// #5's third bar, the interface within a spacing of flat, DFSPH does not meet within 6 s: its interface rocks
