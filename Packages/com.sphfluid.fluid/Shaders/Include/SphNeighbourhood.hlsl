@@ -30,8 +30,12 @@ StructuredBuffer<uint> _CellCount;         // fluid: particles in each cell
 StructuredBuffer<uint> _BoundaryCellStart; // boundary particles: the same per cell
 StructuredBuffer<uint> _BoundaryCellCount;
 
-RWStructuredBuffer<uint> _NeighbourCounts; // per owner: fluid neighbours | wall neighbours << 16, or NO_NEIGHBOUR_LIST
-RWStructuredBuffer<uint> _NeighbourLists;  // sorted indices of the owners' neighbours (layout above)
+// Read-only where the lists are read, so that they take no UAV slot there (D3D11 gives a kernel 8); FindNeighbours
+// writes the same two buffers under the names below.
+StructuredBuffer<uint> _NeighbourCounts;       // per owner: fluid neighbours | wall neighbours << 16, or NO_NEIGHBOUR_LIST
+StructuredBuffer<uint> _NeighbourLists;        // sorted indices of the owners' neighbours (layout above)
+RWStructuredBuffer<uint> _FoundNeighbourCounts;
+RWStructuredBuffer<uint> _FoundNeighbourLists;
 
 #define NO_NEIGHBOUR_LIST 0xFFFFFFFFu
 
@@ -122,7 +126,7 @@ uint Neighbour(NeighbourList list, uint k)
 // Writes entry k of owner `owner` (FindNeighbours).
 void StoreNeighbour(uint owner, uint k, uint index)
 {
-    _NeighbourLists[k * (_ParticleCount + _BoundaryCount) + owner] = index;
+    _FoundNeighbourLists[k * (_ParticleCount + _BoundaryCount) + owner] = index;
 }
 
 #endif

@@ -98,6 +98,8 @@ namespace SphFluid.Simulation
             new Binding("_WallNumberDensities", b => b.WallNumberDensities, Readers.Solver, Group.Boundary),
             new Binding("_NeighbourCounts", b => b.NeighbourCounts, Readers.Solver, Group.Boundary),
             new Binding("_NeighbourLists", b => b.NeighbourLists, Readers.Solver, Group.Boundary),
+            new Binding("_FoundNeighbourCounts", b => b.NeighbourCounts, Readers.Solver, Group.Boundary), // FindNeighbours writes them
+            new Binding("_FoundNeighbourLists", b => b.NeighbourLists, Readers.Solver, Group.Boundary),
             new Binding(ParticleSorter.CellStartProperty, b => b.Sorter.CellStart, Readers.Solver, Group.Cells),
             new Binding(ParticleSorter.CellCountProperty, b => b.Sorter.CellCount, Readers.Solver, Group.Cells),
         };
