@@ -64,8 +64,9 @@ namespace SphFluid.Tests
 
         /// <summary>
         /// A second device on the same driver without the validation layers, for the runs of hundreds of frames
-        /// (SeparationTests) whose passes the validated tests already record in the same scenes' configurations for a
-        /// few frames (SimulateRunTests, ParticleExportRunTests, the solver kernel tests): a long run repeats that
+        /// (SeparationTests, and DFSPH's oil and water in DivergenceFreeSceneTests) whose passes the validated tests already
+        /// record in the same scenes' configurations for a few frames (SimulateRunTests, ParticleExportRunTests, the solver
+        /// kernel tests, DFSPH's dam break): a long run repeats that
         /// recording, and the layers cost it 12 % (OilAndWater's separation test: 362 s with them, 319 s without, on
         /// lavapipe, the measured figures identical). Created on first use and released with <see cref="Shared"/>;
         /// ignored, like it, where no Vulkan driver exists.

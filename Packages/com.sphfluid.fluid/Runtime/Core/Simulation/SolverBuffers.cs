@@ -16,8 +16,9 @@ namespace SphFluid.Simulation
     /// cell-sorted current state. Per particle (indexed like the current particles): density and pressure, normals,
     /// accelerations, XSPH corrections and shifts; the DFSPH factor, stiffness and (by particle id) warm start. Then the
     /// phase table, the obstacles, the fluid's and the boundary's CellStart/CellCount, the boundary particles (rest frame,
-    /// placed, cell-sorted) and their pressures, the neighbour lists of fluid and boundary particles (DFSPH), the clamp-hit counter, the reductions' partials and totals, the solver
-    /// state and its indirect arguments, and the constant buffer (Include/FluidConstants.hlsl).
+    /// placed, cell-sorted) and their pressures, the neighbour lists of fluid and boundary particles (DFSPH), the
+    /// clamp-hit counter, the reductions' partials and totals, the solver state and its indirect arguments, and the
+    /// constant buffer (Include/FluidConstants.hlsl).
     /// </remarks>
     sealed class SolverBuffers : IDisposable
     {
