@@ -1,7 +1,5 @@
-using System;
 using NUnit.Framework;
 using SphFluid.Headless.Cli;
-using SphFluid.Headless.Output;
 using SphFluid.Headless.Scenes;
 using SphFluid.Simulation;
 using SphFluid.Tests.Runner;
