@@ -83,7 +83,8 @@ struct NeighbourList
 };
 
 // The buffer reads below sit in branches, not in ?: (whose operands HLSL evaluates both): without lists the buffers hold
-// one word, and an index past it reads out of bounds, which Vulkan and Metal leave undefined.
+// one word, and an index past it reads out of bounds, which Vulkan and Metal leave undefined; and a listed particle
+// need not look up the grid's cells.
 NeighbourList ListOf(uint owner)
 {
     NeighbourList list;
@@ -106,13 +107,17 @@ uint NeighbourRows(NeighbourList list)
 // Entries (listed) or sorted fluid particles (grid) of row `row`: Neighbour(list, k) for k in [x, y).
 uint2 FluidNeighbours(NeighbourList list, int3 home, uint row)
 {
-    return list.listed ? uint2(0u, list.fluid) : NeighbourRowRange(home, row);
+    if (list.listed)
+        return uint2(0u, list.fluid);
+    return NeighbourRowRange(home, row);
 }
 
 // The same for the wall particles.
 uint2 WallNeighbours(NeighbourList list, int3 home, uint row)
 {
-    return list.listed ? uint2(_NeighbourCapacity - list.walls, _NeighbourCapacity) : BoundaryRowRange(home, row);
+    if (list.listed)
+        return uint2(_NeighbourCapacity - list.walls, _NeighbourCapacity);
+    return BoundaryRowRange(home, row);
 }
 
 // The sorted index of entry k: read from the list, or k itself on the grid.
