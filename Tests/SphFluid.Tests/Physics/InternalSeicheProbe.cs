@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Linq;
 using System.Numerics;
 using NUnit.Framework;
+using SphFluid.Headless.Cli;
 using SphFluid.Headless.Output;
 using SphFluid.Headless.Scenes;
 using SphFluid.Simulation;
@@ -12,45 +13,54 @@ namespace SphFluid.Tests.Physics
 {
     /// <summary>
     /// Whether the OilAndWater interface settles as a liquid's would: a measurement run by name,
-    /// `bash Headless/test.sh --filter FullyQualifiedName~InternalSeicheProbe`, which CI does not run.
+    /// `bash Headless/test.sh --filter FullyQualifiedName~InternalSeicheProbe`, which CI does not run (each fixture
+    /// simulates 12 s: 12 to 14 minutes of lavapipe).
     /// <para>
     /// Once the lock exchange has laid the oil over the water, the interface is left tilted and should rock as the
-    /// fundamental internal seiche of the tank, decaying to flat. Two layers of depths h1 (oil, rho1) over h2 (water,
-    /// rho2) with a free surface, in a tank of length L, rock at the slow root of
-    ///   omega^4 (rho2 coth(k h1) coth(k h2) + rho1) - omega^2 rho2 g k (coth(k h1) + coth(k h2)) + (rho2 - rho1) g^2 k^2 = 0,
-    /// k = pi / L (Lamb, "Hydrodynamics", art. 231). The depths are the layers' measured volumes over the floor.
+    /// tank's fundamental internal seiche, at the period and with the laminar viscous decay of <see cref="InternalSeiche"/>
+    /// for the layers' measured depths (their volumes over the floor). The interface's signed rise along the tank
+    /// (<see cref="InterfaceTilt.Rises"/>) is sampled every 50 ms from 2 s on; a damped oscillation fitted to it gives the
+    /// measured period and decay, and its zero crossings and the extremes between them are printed too.
     /// </para>
     /// <para>
-    /// The interface's signed rise along the tank (<see cref="InterfaceTilt.Rises"/>) is sampled every 50 ms from 2 s
-    /// on; its zero crossings give the period, its extremes between them the decay. Two fixtures: the scene as shipped
-    /// (the RestingTank configuration: delta-SPH, Wendland C2 at 2.85 spacings, LatticeStability) and the scene in its
-    /// previous configuration (summation, the cubic spline at 2 spacings), whose interface froze tilted.
+    /// Fixtures: the scene as shipped (WCSPH: delta-SPH, Wendland C2 at 2.85 spacings); its previous configuration
+    /// (summation, the cubic spline at 2 spacings), whose interface froze tilted; and DFSPH (the scene's own DFSPH
+    /// settings, as <c>--solver dfsph</c> runs it) as it is, with a tenth of each liquid's viscosity and with free-slip
+    /// walls, which tell the liquids' viscous damping and the walls' from the method's own.
     /// </para>
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]
-    [TestFixture(false)]
-    [TestFixture(true)]
+    [TestFixture("shipped")]
+    [TestFixture("cubic spline")]
+    [TestFixture("dfsph")]
+    [TestFixture("dfsph, viscosity / 10")]
+    [TestFixture("dfsph, free-slip walls")]
     public sealed class InternalSeicheProbe
     {
         const double Seconds = 12.0, Sample = 0.05, Settled = 2.0;
-        readonly bool _cubicSpline;
+        readonly string _configuration;
 
-        public InternalSeicheProbe(bool cubicSpline) => _cubicSpline = cubicSpline;
+        public InternalSeicheProbe(string configuration) => _configuration = configuration;
 
         [Test]
         public void TheInterfaceRocksAtTheSeichePeriod()
         {
             var scene = SceneLoader.Load(RunnerPaths.Scene("OilAndWater"), RunnerPaths.Project).Description;
+            if (_configuration.StartsWith("dfsph")) new SolverChoice { Solver = PressureSolver.Dfsph }.ApplyTo(scene, "DFSPH OilAndWater");
+            if (_configuration.EndsWith("viscosity / 10"))
+                foreach (var phase in scene.SpawnBoxes.Select(b => b.Phase).Distinct()) phase.Viscosity /= 10;
+            if (_configuration.EndsWith("free-slip walls")) scene.Container.Friction = WallFriction.Slip;
             var s = scene.Settings;
-            if (_cubicSpline)
+            if (_configuration == "cubic spline")
             {
                 s.SmoothingKernel = KernelFamily.CubicSpline;
                 s.SmoothingRadius = 2f * s.ParticleSpacing;
                 s.WcsphDensity = WcsphDensity.Summation;
             }
-            string name = $"OilAndWater, {s.WcsphDensity}, {s.SmoothingKernel} at {s.SmoothingRadius / s.ParticleSpacing:F2} spacings";
+            string solver = s.PressureSolver == PressureSolver.Dfsph ? "DFSPH" : $"WCSPH with {s.WcsphDensity} density";
+            string name = $"OilAndWater ({_configuration}): {solver}, {s.SmoothingKernel} at {s.SmoothingRadius / s.ParticleSpacing:F2} spacings";
 
-            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
             var particles = new Particle[sim.ParticleCount];
             var densities = new Vector4[sim.ParticleCount];
             var times = new List<double>();
@@ -67,6 +77,7 @@ namespace SphFluid.Tests.Physics
                 last = FluidMeasures.Measure(sim.SimulatedTime, particles, densities, sim.PhaseRows, scene.Container, s.Gravity, s.ParticleSpacing, s.SmoothingRadius);
                 times.Add(sim.SimulatedTime);
                 rises.Add(last.InterfaceRises[0].AlongU);
+                if (times.Count % 10 == 1) TestContext.Progress.WriteLine($"t={sim.SimulatedTime:F2} s rise {1000 * rises[^1]:F1} mm");
             }
             Assert.That(last, Is.Not.Null);
             var report = sim.ReadDiagnostics();
@@ -78,7 +89,11 @@ namespace SphFluid.Tests.Physics
             for (int i = 0; i < particles.Length; i++)
                 depth[particles[i].Phase] += phases[(int)particles[i].Phase].ParticleMass / densities[i].X / floorArea;
             int water = phases[0].RestDensity > phases[1].RestDensity ? 0 : 1, oil = 1 - water;
-            double period = TwoLayerSeichePeriod(scene.Container.Size.X, depth[oil], phases[oil].RestDensity, depth[water], phases[water].RestDensity, s.Gravity.Length());
+            var tank = new InternalSeiche.Tank(scene.Container.Size.X, scene.Container.Size.Z, s.Gravity.Length(),
+                depth[oil], phases[oil].RestDensity, phases[oil].Viscosity, depth[water], phases[water].RestDensity, phases[water].Viscosity,
+                scene.Container.Friction == WallFriction.NoSlip);
+            double omega = InternalSeiche.AngularFrequency(tank), decay = InternalSeiche.DecayRate(tank);
+            var fit = InternalSeiche.FitDampedOscillation(times, rises);
 
             var crossings = new List<double>();
             for (int i = 1; i < rises.Count; i++)
@@ -89,22 +104,13 @@ namespace SphFluid.Tests.Physics
                 extremes.Add(Enumerable.Range(0, rises.Count).Where(i => times[i] > crossings[c] && times[i] < crossings[c + 1]).Max(i => Math.Abs(rises[i])));
 
             string measured = crossings.Count >= 2
-                ? $"crossings at {string.Join(", ", crossings.Select(t => t.ToString("F2")))} s: period {2 * (crossings[^1] - crossings[0]) / (crossings.Count - 1):F2} s; " +
+                ? $"crossings at {string.Join(", ", crossings.Select(t => t.ToString("F2")))} s; " +
                   $"swings {string.Join(", ", extremes.Select(a => (1000 * a).ToString("F1")))} mm"
-                : $"{crossings.Count} crossing(s) after {Settled} s: the tilt holds";
-            TestContext.Progress.WriteLine($"internal seiche ({name}): layers {1000 * depth[oil]:F1} mm oil over {1000 * depth[water]:F1} mm water, " +
-                $"theory {period:F2} s; {measured}; rise along the tank at {Settled} s {1000 * rises[0]:F1} mm, at {Seconds} s {1000 * rises[^1]:F1} mm; " +
+                : $"{crossings.Count} crossing(s) after {Settled} s: no swing back";
+            TestContext.Progress.WriteLine($"internal seiche ({name}): layers {1000 * depth[oil]:F1} mm oil over {1000 * depth[water]:F1} mm water; " +
+                $"theory: period {2 * Math.PI / omega:F2} s, laminar decay {decay:F3}/s; fitted from {Settled} s: period {2 * Math.PI / fit.Omega:F2} s, " +
+                $"decay {fit.Gamma:F3}/s (RMS residual {1000 * fit.Residual:F1} mm); {measured}; rise along the tank at {Settled} s {1000 * rises[0]:F1} mm, at {Seconds} s {1000 * rises[^1]:F1} mm; " +
                 $"max speed at {Seconds} s {1000 * report.MaxSpeed:F1} mm/s; clamp hits {report.ClampHits}");
-        }
-
-        /// <summary>The fundamental internal seiche's period, s: the slow root of the two-layer dispersion relation with a
-        /// free surface at k = pi / L.</summary>
-        static double TwoLayerSeichePeriod(double length, double upperDepth, double upperDensity, double lowerDepth, double lowerDensity, double g)
-        {
-            double k = Math.PI / length, cu = 1 / Math.Tanh(k * upperDepth), cl = 1 / Math.Tanh(k * lowerDepth);
-            double a = lowerDensity * cu * cl + upperDensity, b = lowerDensity * g * k * (cu + cl), c = (lowerDensity - upperDensity) * g * g * k * k;
-            double omega2 = (b - Math.Sqrt(b * b - 4 * a * c)) / (2 * a);
-            return 2 * Math.PI / Math.Sqrt(omega2);
         }
     }
 }

@@ -1,0 +1,63 @@
+using System;
+using System.Collections.Generic;
+using NUnit.Framework;
+
+namespace SphFluid.Tests.Physics
+{
+    /// <summary>The seiche theory and fit the <see cref="InternalSeicheProbe"/> measures the OilAndWater interface with.</summary>
+    public sealed class InternalSeicheTests
+    {
+        // OilAndWater's layers as the lock exchange leaves them: 98.4 mm of oil over 96.0 mm of water in a 0.6 x 0.12 m tank.
+        static readonly InternalSeiche.Tank OilAndWater = new(0.6, 0.12, 9.81, 0.0984, 900, 0.1, 0.0960, 1000, 0.05);
+
+        [Test]
+        public void DeepLayers_RockAtTheInterfacialWaveFrequency()
+        {
+            // Both layers deep beside the wavelength: omega^2 = g k (rho2 - rho1) / (rho2 + rho1) (Lamb, art. 231).
+            var deep = OilAndWater with { UpperDepth = 10, LowerDepth = 10 };
+            double k = Math.PI / deep.Length;
+            double expected = Math.Sqrt(deep.Gravity * k * (1000 - 900) / (1000 + 900.0));
+            Assert.That(InternalSeiche.AngularFrequency(deep), Is.EqualTo(expected).Within(1e-6 * expected));
+        }
+
+        /// <summary>0.1060/s is what integrating the same slips and the interior's strain rate numerically over the tank's
+        /// faces and volume gives (trapezoidal rule on a 2001 x 801 grid per layer), so the closed forms are checked
+        /// against an independent sum.</summary>
+        [Test]
+        public void OilAndWater_RocksOnceIn5Point6Seconds_AndDecaysOverTenSeconds()
+        {
+            double period = 2 * Math.PI / InternalSeiche.AngularFrequency(OilAndWater);
+            double decay = InternalSeiche.DecayRate(OilAndWater);
+            TestContext.Progress.WriteLine($"OilAndWater internal seiche: period {period:F3} s, laminar decay {decay:F4}/s");
+            Assert.That(period, Is.EqualTo(5.635).Within(0.005));
+            Assert.That(decay, Is.EqualTo(0.1060).Within(0.0005));
+        }
+
+        [Test]
+        public void DecayRate_ScalesAsTheSquareRootOfViscosity_WhereBoundaryLayersDominate()
+        {
+            // The Stokes layers' share goes as sqrt(mu), the interior's as mu: at a hundredth of the viscosity the interior
+            // is negligible and the rate falls tenfold.
+            var thin = OilAndWater with { UpperViscosity = 1e-3, LowerViscosity = 5e-4 };
+            var thinner = OilAndWater with { UpperViscosity = 1e-5, LowerViscosity = 5e-6 };
+            Assert.That(InternalSeiche.DecayRate(thin) / InternalSeiche.DecayRate(thinner), Is.EqualTo(10).Within(0.05));
+        }
+
+        [Test]
+        public void Fit_RecoversADampedOscillation_ThroughNoise()
+        {
+            var random = new Random(5);
+            var times = new List<double>();
+            var values = new List<double>();
+            for (double t = 2; t <= 12 + 1e-9; t += 0.05)
+            {
+                times.Add(t);
+                values.Add(0.06 * Math.Exp(-0.1 * (t - 2)) * Math.Cos(1.1 * (t - 2) + 0.7) + 0.002 + 0.003 * (random.NextDouble() - 0.5));
+            }
+            var (omega, gamma, residual) = InternalSeiche.FitDampedOscillation(times, values);
+            Assert.That(omega, Is.EqualTo(1.1).Within(0.005));
+            Assert.That(gamma, Is.EqualTo(0.1).Within(0.005));
+            Assert.That(residual, Is.LessThan(0.0015));
+        }
+    }
+}
