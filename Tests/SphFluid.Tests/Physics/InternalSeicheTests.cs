@@ -33,6 +33,14 @@ namespace SphFluid.Tests.Physics
             Assert.That(decay, Is.EqualTo(0.1060).Within(0.0005));
         }
 
+        /// <summary>Free-slip walls leave the interface's Stokes layer and the interior: 0.0391/s by the same independent
+        /// integration without the floor's and walls' terms.</summary>
+        [Test]
+        public void FreeSlipWalls_LeaveTheInterfaceAndInteriorDamping()
+        {
+            Assert.That(InternalSeiche.DecayRate(OilAndWater with { NoSlipWalls = false }), Is.EqualTo(0.0391).Within(0.0005));
+        }
+
         [Test]
         public void DecayRate_ScalesAsTheSquareRootOfViscosity_WhereBoundaryLayersDominate()
         {
