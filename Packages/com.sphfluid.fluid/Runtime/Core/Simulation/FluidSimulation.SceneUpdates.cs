@@ -135,6 +135,23 @@ namespace SphFluid.Simulation
             _constants[0].ObstacleCount = (uint)count;
             _constantsChanged = true;
             _boundaryMoved = true;
+            _obstaclesMoved = true;
+        }
+
+        /// <summary>The spheres carried on by their velocities for <paramref name="elapsed"/> seconds past this frame's
+        /// centres, recorded in order with the sub-steps' dispatches (<see cref="AdvanceWalls"/>).</summary>
+        void WriteObstacles(float elapsed)
+        {
+            int count = _scene.Obstacles == null ? 0 : _scene.Obstacles.Count;
+            if (count == 0) return;
+            var rows = _obstacleRows;
+            for (int i = 0; i < count; i++)
+            {
+                var sphere = _scene.Obstacles[i];
+                rows[i] = new Obstacle(sphere) { Center = sphere.Center + sphere.Velocity * elapsed };
+            }
+            _device.UpdateBuffer(_buffers.Obstacles, rows);
+            _boundaryMoved = true;
         }
 
         static string Join(List<ValidationError> errors)

@@ -47,7 +47,7 @@ namespace SphFluid.Simulation
         readonly TimeStepController _timeStep;
         readonly IComputeProgram _solver, _diagnostics;
         readonly int _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep;
-        readonly int _densityFactor, _nonPressureForces, _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError,
+        readonly int _densityFactor, _wallMovedDensityFactor, _nonPressureForces, _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError,
             _solveFinal, _applyStiffness, _drift, _divergenceRate, _findNeighbours, _wallNumberDensity;
         readonly bool _divergenceFree;
         readonly int _particleShift, _applyShift, _boundaryDensityFactor, _boundaryBeginSolve, _boundarySolveError, _clearBoundaryWarmStart;
@@ -68,6 +68,13 @@ namespace SphFluid.Simulation
         // DFSPH: the walls were sorted again since the last FindNeighbours, so the neighbour lists and the walls' solve state
         // (kept per sorted slot) belong to other wall particles.
         bool _wallsResorted;
+        // Walls whose placement this frame came with a velocity (a carried container, a driven sphere) follow it through the
+        // frame's sub-steps, placed again before every sort: the seconds they have moved since the frame's placement, and the
+        // container transform they are at, which the grid follows at the next sort (_gridBehind until it has).
+        bool _wallsFollowVelocity, _obstaclesMoved, _gridBehind;
+        float _wallTime;
+        Vector3 _containerPosition;
+        Quaternion _containerRotation;
         int _boundaryCount;
         IReadbackRequest _motionReadback, _diagnosticsReadback;
         double _diagnosticsRequestTime;
@@ -113,6 +120,7 @@ namespace SphFluid.Simulation
             _forces = _solver.FindKernel("Forces");
             _fullStep = _solver.FindKernel("FullStep");
             _densityFactor = _solver.FindKernel("DensityFactor");
+            _wallMovedDensityFactor = _solver.FindKernel("WallMovedDensityFactor");
             _nonPressureForces = _solver.FindKernel("NonPressureForces");
             _predictVelocity = _solver.FindKernel("PredictVelocity");
             _beginDensitySolve = _solver.FindKernel("BeginDensitySolve");
@@ -140,7 +148,7 @@ namespace SphFluid.Simulation
                 _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep, _densityFactor, _nonPressureForces,
                 _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError, _solveFinal, _applyStiffness, _drift, _divergenceRate,
                 _particleShift, _applyShift, _densityRate, _continuityDensity, _boundaryDensityFactor, _boundaryBeginSolve, _boundarySolveError, _clearBoundaryWarmStart,
-                _findNeighbours, _wallNumberDensity,
+                _findNeighbours, _wallNumberDensity, _wallMovedDensityFactor,
             };
             _motionPartial = _diagnostics.FindKernel("MotionPartial");
             _motionFinal = _diagnostics.FindKernel("MotionFinal");
@@ -331,27 +339,57 @@ namespace SphFluid.Simulation
             Plan = plan;
             foreach (string keyword in SolverKeywords.All)
                 _device.SetKeyword(_solver, keyword, Plan.IsKeywordEnabled(keyword));
-            if (Plan.UploadContainerTransform)
+            var container = _scene.Container;
+            bool containerCarried = _containerChanged && (container.Velocity != Vector3.Zero || container.AngularVelocity != Vector3.Zero);
+            bool obstaclesCarried = false;
+            if (_obstaclesMoved)
+                foreach (var sphere in _scene.Obstacles) obstaclesCarried |= sphere.Velocity != Vector3.Zero;
+            // Walls that followed their velocity through the last frame go back to this frame's placement first.
+            bool rewind = _wallTime > 0f;
+            _wallTime = 0f;
+            if (Plan.UploadContainerTransform || rewind)
             {
                 _device.BeginSample(PassNames.UploadContainer);
-                WriteContainer();
+                WriteContainer(0f);
                 _device.EndSample(PassNames.UploadContainer);
             }
+            if (rewind) WriteObstacles(0f);
+            _wallsFollowVelocity = containerCarried || obstaclesCarried;
+            _obstaclesMoved = false;
             PushConstants();
-            if (_boundaryMoved)
+            if (_boundaryMoved) PlaceWalls();
+        }
+
+        /// <summary>Places the boundary particles in the world and sorts them on the grid (DFSPH: their solve state starts
+        /// again, and the next neighbour search sees them).</summary>
+        void PlaceWalls()
+        {
+            _device.BeginSample(PassNames.PlaceBoundary);
+            _device.DispatchThreads(_solver, _placeBoundary, _boundaryCount);
+            _buffers.BoundarySorter.Sort(_grid, _buffers.BoundaryPlaced, _buffers.BoundarySorted, _boundaryCount);
+            if (_divergenceFree)
             {
-                _device.BeginSample(PassNames.PlaceBoundary);
-                _device.DispatchThreads(_solver, _placeBoundary, _boundaryCount);
-                _buffers.BoundarySorter.Sort(_grid, _buffers.BoundaryPlaced, _buffers.BoundarySorted, _boundaryCount);
-                if (_divergenceFree)
-                {
-                    _device.DispatchThreads(_solver, _clearBoundaryWarmStart, _boundaryCount);
-                    _device.DispatchThreads(_solver, _wallNumberDensity, _boundaryCount);
-                    _wallsResorted = true;
-                }
-                _device.EndSample(PassNames.PlaceBoundary);
-                _boundaryMoved = false;
+                _device.DispatchThreads(_solver, _clearBoundaryWarmStart, _boundaryCount);
+                _device.DispatchThreads(_solver, _wallNumberDensity, _boundaryCount);
+                _wallsResorted = true;
             }
+            _device.EndSample(PassNames.PlaceBoundary);
+            _boundaryMoved = false;
+        }
+
+        /// <summary>
+        /// Walls carried with a velocity move on by <paramref name="dt"/>, to where they are at the end of the sub-step
+        /// whose drift just ran: the container's transform and the spheres' centres advance as rigid motions, and
+        /// <see cref="Sort"/> places the walls there. Placed once per frame instead, a carried tank's fluid drifted a
+        /// frame's travel into its leading wall between placements (CarriedTankTests).
+        /// </summary>
+        void AdvanceWalls(float dt)
+        {
+            if (!_wallsFollowVelocity) return;
+            _wallTime += dt;
+            if (_scene.Container.Velocity != Vector3.Zero || _scene.Container.AngularVelocity != Vector3.Zero)
+                WriteContainer(_wallTime);
+            WriteObstacles(_wallTime);
         }
 
         /// <summary>One sub-step of the chosen pressure solver.</summary>
@@ -381,6 +419,7 @@ namespace SphFluid.Simulation
 
             SolverPass(PassNames.HalfStep, _halfStep);
 
+            AdvanceWalls(_constants[0].TimeStep);
             SortAndComputeForces();
 
             SolverPass(PassNames.FullStep, _fullStep);
@@ -403,7 +442,9 @@ namespace SphFluid.Simulation
         {
             if (_wallsResorted)
             {
+                // The fluid's density and factor were last summed with the walls where they stood before this frame.
                 FindNeighbours();
+                _device.DispatchThreads(_solver, _wallMovedDensityFactor, ParticleCount);
                 _device.DispatchThreads(_solver, _boundaryDensityFactor, _boundaryCount);
             }
             if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _normals);
@@ -417,6 +458,7 @@ namespace SphFluid.Simulation
 
             SolverPass(PassNames.Drift, _drift);
 
+            AdvanceWalls(_constants[0].TimeStep);
             SortAndComputeForces(false);
 
             _device.BeginSample(PassNames.DivergenceSolve);
@@ -498,9 +540,20 @@ namespace SphFluid.Simulation
             DensityAndForces(withForces);
         }
 
-        /// <summary>Counting sort of the particles by grid cell (ParticleSort.compute) into the other particle buffer.</summary>
+        /// <summary>Counting sort of the particles by grid cell (ParticleSort.compute) into the other particle buffer. The grid
+        /// follows the container here and nowhere else, since every neighbour loop reads the fluid in the order of its last
+        /// sort; walls that moved are placed and sorted on the same grid first.</summary>
         void Sort()
         {
+            if (_gridBehind)
+            {
+                _grid.Place(_containerPosition, _containerRotation);
+                WriteGrid();
+                _gridBehind = false;
+                _boundaryMoved = true;
+            }
+            PushConstants();
+            if (_boundaryMoved) PlaceWalls();
             _device.BeginSample(PassNames.Sort);
             _buffers.Sorter.Sort(_grid, _buffers.Particles, _buffers.ParticlesOther, ParticleCount);
             _buffers.SwapParticles();
@@ -629,6 +682,7 @@ namespace SphFluid.Simulation
             var c = _scene.Container;
             _grid = new CellGrid(c.Position, c.Rotation, c.Size, _scene.Settings.SmoothingRadius);
             _buffers.MakeSorter(_grid.CellCount);
+            WriteGrid();
             _containerChanged = true;
         }
 
@@ -668,27 +722,56 @@ namespace SphFluid.Simulation
             _constantsChanged = true;
         }
 
-        /// <summary>The container's transform and motion, and the grid built on it, into the constants.</summary>
-        void WriteContainer()
+        /// <summary>The container's transform and motion into the constants: as placed for this frame, carried on by its
+        /// velocity and angular velocity (about its centre) for <paramref name="elapsed"/> seconds.</summary>
+        void WriteContainer(float elapsed)
         {
             var container = _scene.Container;
             var rotation = Quaternion.Normalize(container.Rotation);
+            float spin = container.AngularVelocity.Length() * elapsed;
+            if (spin > 0f)
+                rotation = Quaternion.Normalize(Quaternion.Concatenate(rotation,
+                    Quaternion.CreateFromAxisAngle(Vector3.Normalize(container.AngularVelocity), spin)));
+            var position = container.Position + container.Velocity * elapsed;
+            _containerPosition = position;
+            _containerRotation = rotation;
+            _gridBehind |= GridOffset(position, rotation, container.Size) > GridSlack * _grid.CellSize;
             ref FluidConstants c = ref _constants[0];
             c.WorldToContainer = Matrix4x4.Transpose(
-                Matrix4x4.CreateTranslation(-container.Position) * Matrix4x4.CreateFromQuaternion(Quaternion.Conjugate(rotation)));
+                Matrix4x4.CreateTranslation(-position) * Matrix4x4.CreateFromQuaternion(Quaternion.Conjugate(rotation)));
             c.ContainerToWorld = Matrix4x4.Transpose(
-                Matrix4x4.CreateFromQuaternion(rotation) * Matrix4x4.CreateTranslation(container.Position));
-            c.ContainerCenter = container.Position;
+                Matrix4x4.CreateFromQuaternion(rotation) * Matrix4x4.CreateTranslation(position));
+            c.ContainerCenter = position;
             c.ContainerClampExtent = container.Size * 0.5f - new Vector3(ClampInset * _scene.Settings.ParticleSpacing);
             c.ContainerHalfSize = container.Size * 0.5f;
             c.ContainerVelocity = container.Velocity;
             c.ContainerAngularVelocity = container.AngularVelocity;
+            _constantsChanged = true;
+            _containerChanged = false;
+            _boundaryMoved = true;
+        }
+
+        /// <summary>How far the grid may lag its container, in cells, before the next sort places it again: well inside its
+        /// margin cell, and a container that moves slowly or only wobbles does not make every sub-step sort its walls again.</summary>
+        const float GridSlack = 0.25f;
+
+        /// <summary>An upper bound on how far any point of the container (<paramref name="size"/>) at this placement lies
+        /// from where the grid's placement puts it, m: the centre's offset plus the turn between them times the half-diagonal.</summary>
+        float GridOffset(Vector3 position, Quaternion rotation, Vector3 size)
+        {
+            float cosHalf = Math.Min(1f, Math.Abs(Quaternion.Dot(rotation, _grid.Rotation)));
+            float turn = 2f * (float)Math.Acos(cosHalf);
+            return Vector3.Distance(position, _grid.Centre) + turn * 0.5f * size.Length();
+        }
+
+        /// <summary>The grid as <see cref="Sort"/> last placed it into the constants.</summary>
+        void WriteGrid()
+        {
+            ref FluidConstants c = ref _constants[0];
             c.WorldToGrid = _grid.WorldToGrid;
             c.GridDims = new UInt3((uint)_grid.DimX, (uint)_grid.DimY, (uint)_grid.DimZ);
             c.GridCellCount = (uint)_grid.CellCount;
             _constantsChanged = true;
-            _containerChanged = false;
-            _boundaryMoved = true;
         }
 
         /// <summary>Records the constants' upload when a value changed since the last one: the dispatches recorded after it

@@ -30,16 +30,9 @@ namespace SphFluid.Sorting
             if (!(cellSize > 0f) || !float.IsFinite(cellSize))
                 throw new ArgumentOutOfRangeException(nameof(cellSize), cellSize,
                     Format("CellGrid: cell size (the smoothing radius h) must be a finite number > 0 m (was {0})", cellSize));
-            if (!IsFinite(containerCentre))
-                throw new ArgumentOutOfRangeException(nameof(containerCentre), containerCentre,
-                    Format("CellGrid: container centre must be finite (was {0})", containerCentre));
             if (!(containerSize.X > 0f && containerSize.Y > 0f && containerSize.Z > 0f) || !IsFinite(containerSize))
                 throw new ArgumentOutOfRangeException(nameof(containerSize), containerSize,
                     Format("CellGrid: container size must be finite and > 0 m on every axis (was {0})", containerSize));
-            float rotationLength = containerRotation.Length();
-            if (!(rotationLength > 1e-6f) || !float.IsFinite(rotationLength))
-                throw new ArgumentOutOfRangeException(nameof(containerRotation), containerRotation,
-                    Format("CellGrid: container rotation must be a non-zero finite quaternion (was {0})", containerRotation));
 
             double dx = CellsAlong(containerSize.X, cellSize);
             double dy = CellsAlong(containerSize.Y, cellSize);
@@ -51,30 +44,45 @@ namespace SphFluid.Sorting
                            "(one margin cell per side included), more than the {6} allowed; raise the smoothing radius or shrink the container",
                         containerSize, cellSize, dx, dy, dz, cells, MaxCellCount));
 
-            Centre = containerCentre;
-            Rotation = Quaternion.Normalize(containerRotation);
             Size = containerSize;
             CellSize = cellSize;
             DimX = (int)dx;
             DimY = (int)dy;
             DimZ = (int)dz;
             CellCount = DimX * DimY * DimZ;
+            Place(containerCentre, containerRotation);
+        }
+
+        /// <summary>Moves the grid with its container (same size and cells): a container that moves or turns keeps its
+        /// fluid inside the grid instead of clamped into the border cells. Particles sorted on the old placement must be
+        /// sorted again before a neighbour loop reads them.</summary>
+        public void Place(Vector3 containerCentre, Quaternion containerRotation)
+        {
+            if (!IsFinite(containerCentre))
+                throw new ArgumentOutOfRangeException(nameof(containerCentre), containerCentre,
+                    Format("CellGrid: container centre must be finite (was {0})", containerCentre));
+            float rotationLength = containerRotation.Length();
+            if (!(rotationLength > 1e-6f) || !float.IsFinite(rotationLength))
+                throw new ArgumentOutOfRangeException(nameof(containerRotation), containerRotation,
+                    Format("CellGrid: container rotation must be a non-zero finite quaternion (was {0})", containerRotation));
+            Centre = containerCentre;
+            Rotation = Quaternion.Normalize(containerRotation);
 
             // Composed in System.Numerics' row-vector order (applied left to right), then transposed into
             // the interface's column-vector convention (translation in M14/M24/M34).
-            Vector3 originOffset = containerSize * 0.5f + new Vector3(MarginCells * cellSize);
+            Vector3 originOffset = Size * 0.5f + new Vector3(MarginCells * CellSize);
             Matrix4x4 rowVector = Matrix4x4.CreateTranslation(-containerCentre)
                                   * Matrix4x4.CreateFromQuaternion(Quaternion.Conjugate(Rotation))
                                   * Matrix4x4.CreateTranslation(originOffset)
-                                  * Matrix4x4.CreateScale(1f / cellSize);
+                                  * Matrix4x4.CreateScale(1f / CellSize);
             worldToGridRows = rowVector;
             WorldToGrid = Matrix4x4.Transpose(rowVector);
         }
 
-        public Vector3 Centre { get; }
+        public Vector3 Centre { get; private set; }
 
         /// <summary>The container's rotation, normalised.</summary>
-        public Quaternion Rotation { get; }
+        public Quaternion Rotation { get; private set; }
 
         public Vector3 Size { get; }
 
@@ -89,9 +97,9 @@ namespace SphFluid.Sorting
         public int CellCount { get; }
 
         /// <summary>World to grid units for column vectors (<c>mul(_WorldToGrid, float4(x, 1))</c>).</summary>
-        public Matrix4x4 WorldToGrid { get; }
+        public Matrix4x4 WorldToGrid { get; private set; }
 
-        private readonly Matrix4x4 worldToGridRows;
+        private Matrix4x4 worldToGridRows;
         private IComputeDevice idsDevice;
         private int worldToGridId, gridDimsId, gridCellCountId;
         // SetInts takes params int[]: one array for the grid's lifetime, not one per sub-step.

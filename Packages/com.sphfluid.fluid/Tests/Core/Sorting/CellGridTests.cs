@@ -45,6 +45,26 @@ namespace SphFluid.Tests.Core.Sorting
             Assert.That(grid.CellIndexOf(world), Is.EqualTo(2 + grid.DimX * (5 + grid.DimY * 3)));
         }
 
+        /// <summary>A grid placed again with its container keeps mapping the container's own points to the same cells
+        /// (FluidSimulation moves it with a carried or turning container), with its dims unchanged.</summary>
+        [Test]
+        public void PlacedAgainTheGridFollowsItsContainer()
+        {
+            var size = new Vector3(0.8f, 0.4f, 0.6f);
+            var grid = new CellGrid(Vector3.Zero, Quaternion.Identity, size, 0.1f);
+            var local = new Vector3(2.5f, 5.5f, 3.5f) * 0.1f - new Vector3(0.1f) - size * 0.5f;
+            int cells = grid.CellCount;
+            var centre = new Vector3(0.7f, -0.2f, 1.3f);
+            Quaternion rotation = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, 1.2f);
+
+            grid.Place(centre, rotation);
+            grid.CellCoordOf(centre + Vector3.Transform(local, rotation), out int x, out int y, out int z);
+
+            Assert.That(new[] { x, y, z }, Is.EqualTo(new[] { 2, 5, 3 }));
+            Assert.That(grid.CellCount, Is.EqualTo(cells));
+            Assert.That(grid.Centre, Is.EqualTo(centre));
+        }
+
         [Test]
         public void WorldToGridIsWrittenForColumnVectorsWithTranslationInTheLastColumn()
         {
