@@ -124,12 +124,14 @@ BoundaryParticle PlaceBoundaryParticle(BoundaryParticle rest)
 }
 
 // The wall's outward normal at a placed boundary particle (from the fluid into the wall): the faces it lies
-// beyond for the container (edges and corners get the diagonal), towards the centre for a sphere.
-float3 WallNormal(BoundaryParticle wall)
+// beyond for the container (edges and corners get the diagonal), towards the centre for a sphere. q is the
+// particle's place in its owner's frame, its rest position: the same point as ContainerLocal(wall.position)
+// without the round trip through the world. (Mesa 22.3's lavapipe, which CI runs, also rebuilt the whole Forces
+// kernel at every dispatch while it read _WorldToContainer here, and kept every copy: Headless/SphFluid.Vulkan/README.md.)
+float3 WallNormal(BoundaryParticle wall, float3 q)
 {
     if (wall.owner == BOUNDARY_OWNER_CONTAINER)
     {
-        float3 q = ContainerLocal(wall.position);
         float3 beyond = max(abs(q) - _ContainerHalfSize, 0.0) * sign(q);
         float length2 = dot(beyond, beyond);
         return length2 > 0.0 ? ContainerDirectionToWorld(beyond * rsqrt(length2)) : float3(0.0, 0.0, 0.0);

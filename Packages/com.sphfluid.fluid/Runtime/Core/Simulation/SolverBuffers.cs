@@ -91,6 +91,7 @@ namespace SphFluid.Simulation
             new Binding("_BoundaryRest", b => b.BoundaryRest, Readers.Solver, Group.Boundary),
             new Binding("_BoundaryPlaced", b => b.BoundaryPlaced, Readers.Solver, Group.Boundary),
             new Binding("_BoundaryParticles", b => b.BoundarySorted, Readers.Solver, Group.Boundary),
+            new Binding("_BoundarySortedSource", b => b.BoundarySorter.SortedSource, Readers.Solver, Group.Boundary),
             new Binding("_BoundaryPressures", b => b.BoundaryPressures, Readers.Solver, Group.Boundary),
             new Binding("_BoundarySolve", b => b.BoundarySolve, Readers.Solver, Group.Boundary),
             new Binding("_BoundaryWarmStart", b => b.BoundaryWarmStart, Readers.Solver, Group.Boundary),
