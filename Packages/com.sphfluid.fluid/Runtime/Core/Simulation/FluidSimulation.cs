@@ -50,7 +50,7 @@ namespace SphFluid.Simulation
         readonly int _densityFactor, _wallMovedDensityFactor, _nonPressureForces, _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError,
             _solveFinal, _applyStiffness, _drift, _divergenceRate, _findNeighbours, _wallNumberDensity;
         readonly bool _divergenceFree;
-        readonly int _particleShift, _applyShift, _boundaryDensityFactor, _boundaryBeginSolve, _boundarySolveError, _clearBoundaryWarmStart;
+        readonly int _particleShift, _applyShift, _boundaryDensityFactor, _boundaryBeginSolve, _boundarySolveError;
         readonly int _densityRate, _continuityDensity; // delta-SPH (SphDensityDiffusion.hlsl)
         readonly bool _deltaSph;
         readonly float[] _spawnNumberDensities;
@@ -65,8 +65,8 @@ namespace SphFluid.Simulation
         CellGrid _grid;
         bool _containerChanged = true;
         bool _boundaryMoved = true;
-        // DFSPH: the walls were sorted again since the last FindNeighbours, so the neighbour lists and the walls' solve state
-        // (kept per sorted slot) belong to other wall particles.
+        // DFSPH: the walls were sorted again since the last FindNeighbours, so the neighbour lists and the walls' density and
+        // factor (kept per sorted slot) belong to other wall particles; their warm start is kept by boundary id and follows them.
         bool _wallsResorted;
         // Walls whose placement this frame came with a velocity (a carried container, a driven sphere) follow it through the
         // frame's sub-steps, placed again before every sort: the seconds they have moved since the frame's placement, and the
@@ -139,7 +139,6 @@ namespace SphFluid.Simulation
             _boundaryDensityFactor = _solver.FindKernel("BoundaryDensityFactor");
             _boundaryBeginSolve = _solver.FindKernel("BoundaryBeginSolve");
             _boundarySolveError = _solver.FindKernel("BoundarySolveError");
-            _clearBoundaryWarmStart = _solver.FindKernel("ClearBoundaryWarmStart");
             _densityRate = _solver.FindKernel("DensityRate");
             _continuityDensity = _solver.FindKernel("ContinuityDensity");
             _deltaSph = !_divergenceFree && _scene.Settings.WcsphDensity == WcsphDensity.DeltaSph;
@@ -147,7 +146,7 @@ namespace SphFluid.Simulation
             {
                 _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep, _densityFactor, _nonPressureForces,
                 _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError, _solveFinal, _applyStiffness, _drift, _divergenceRate,
-                _particleShift, _applyShift, _densityRate, _continuityDensity, _boundaryDensityFactor, _boundaryBeginSolve, _boundarySolveError, _clearBoundaryWarmStart,
+                _particleShift, _applyShift, _densityRate, _continuityDensity, _boundaryDensityFactor, _boundaryBeginSolve, _boundarySolveError,
                 _findNeighbours, _wallNumberDensity, _wallMovedDensityFactor,
             };
             _motionPartial = _diagnostics.FindKernel("MotionPartial");
@@ -360,8 +359,8 @@ namespace SphFluid.Simulation
             if (_boundaryMoved) PlaceWalls();
         }
 
-        /// <summary>Places the boundary particles in the world and sorts them on the grid (DFSPH: their solve state starts
-        /// again, and the next neighbour search sees them).</summary>
+        /// <summary>Places the boundary particles in the world and sorts them on the grid (DFSPH: their density and factor are
+        /// summed again where they now stand, and the next neighbour search sees them).</summary>
         void PlaceWalls()
         {
             _device.BeginSample(PassNames.PlaceBoundary);
@@ -369,7 +368,6 @@ namespace SphFluid.Simulation
             _buffers.BoundarySorter.Sort(_grid, _buffers.BoundaryPlaced, _buffers.BoundarySorted, _boundaryCount);
             if (_divergenceFree)
             {
-                _device.DispatchThreads(_solver, _clearBoundaryWarmStart, _boundaryCount);
                 _device.DispatchThreads(_solver, _wallNumberDensity, _boundaryCount);
                 _wallsResorted = true;
             }

@@ -1,0 +1,65 @@
+using NUnit.Framework;
+using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
+using SphFluid.Tests.Runner;
+
+namespace SphFluid.Tests.Physics
+{
+    /// <summary>
+    /// DFSPH's walls keep their warm start through every re-sort. A turning container's wall particles are placed and
+    /// sorted again every sub-step; their summed stiffness (the next solve's warm start) is kept by boundary id, so it
+    /// follows each wall particle to its new slot (it was kept per sorted slot, and cleared after every re-sort). The
+    /// shipped RotatingContainer scene under DFSPH, driven by its own spin (45 deg/s from 1 s): the divergence-free solve
+    /// then ends about as close to its tolerance while the container turns as while it stands. The mean divergence error
+    /// over every frame of the turn's first two seconds is compared with its mean over the rest from 0.3 s (after the
+    /// spawn's settling) to 1 s: 1.75 times with the warm start cleared, 1.13 times kept. (The water-only tank of
+    /// <see cref="RotatingContainerTests"/>, turned at 90 deg/s under DFSPH, was not helped, 2.33 and 2.36 times: something
+    /// other than the walls' warm start bounds its solve's error there.)
+    /// </summary>
+    public sealed class TurningWallsWarmStartTests
+    {
+        const int Frames = 180; // 3 s at 60 Hz
+        double _atRest, _turning, _tolerance;
+        int _clampHits, _lost;
+
+        [OneTimeSetUp]
+        public void StandThenTurn()
+        {
+            var loaded = SceneLoader.Load(RunnerPaths.Scene("RotatingContainer"), RunnerPaths.Project);
+            var scene = loaded.Description;
+            scene.Settings.PressureSolver = PressureSolver.Dfsph;
+            _tolerance = scene.Settings.DivergenceTolerance;
+            var rest = scene.Container.Clone();
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            int count = sim.ParticleCount;
+            double restSum = 0, turnSum = 0;
+            int restFrames = 0, turnFrames = 0;
+            for (int frame = 1; frame <= Frames; frame++)
+            {
+                double t = frame / 60.0;
+                sim.UpdateContainer(loaded.Motion.ContainerAt(rest, t));
+                sim.Step(1f / 60f);
+                var report = sim.ReadDiagnostics();
+                if (t >= 0.3 && t <= 1.0) { restSum += report.DivergenceError; restFrames++; }
+                if (t > 1.05) { turnSum += report.DivergenceError; turnFrames++; }
+                _clampHits = report.ClampHits;
+                _lost = count - report.ParticleCount + report.OutsideCount + report.NanCount;
+            }
+            _atRest = restSum / restFrames;
+            _turning = turnSum / turnFrames;
+            TestContext.Progress.WriteLine($"RotatingContainer under DFSPH, N = {count}: mean divergence error {_atRest:F2} %/s at rest, " +
+                $"{_turning:F2} %/s turning ({_turning / _atRest:F2} times); tolerance {_tolerance} %/s; clamp hits {_clampHits}");
+        }
+
+        [Test]
+        public void TurningTheDivergenceSolveEndsWithinAQuarterOfItsErrorAtRest() =>
+            Assert.That(_turning, Is.LessThanOrEqualTo(1.25 * _atRest));
+
+        [Test]
+        public void NothingIsLostOrClamped()
+        {
+            Assert.That(_lost, Is.EqualTo(0));
+            Assert.That(_clampHits, Is.EqualTo(0));
+        }
+    }
+}
