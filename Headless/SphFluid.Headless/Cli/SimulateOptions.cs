@@ -1,5 +1,6 @@
 using System;
 using System.CommandLine;
+using SphFluid.Headless.Runs;
 
 namespace SphFluid.Headless.Cli;
 
@@ -99,8 +100,8 @@ the back wall, spray ignored.
         "simulated seconds between particle exports, in [0.0001, 3600] (default: none). Each writes particles_NNNN.vtu (ParaView; inline "
         + "base64 binary) and particles_NNNN.ply (Blender, MeshLab; binary little-endian) with position, velocity, phase, density and "
         + "pressure, and particles.pvd indexes the .vtu files by time");
-    readonly Option<double> _particlesScale = OptionKinds.Number(Verb, "--particles-scale", 0.01, 100, false, "", "F",
-        "multiply the particle count by F, in [0.01, 100] (spacing and support shrink by F^(1/3))", 1.0);
+    readonly Option<double> _particlesScale = OptionKinds.Number(Verb, "--particles-scale", 0.01, ParticleScaling.MaxFactor, false, "", "F",
+        "multiply the particle count by F, in [0.01, 4096] (spacing and support shrink by F^(1/3))", 1.0);
     readonly Option<double> _cpuParticlesScale = OptionKinds.Number(Verb, "--cpu-particles-scale", 0.01, 1, false, "", "F",
         "on a CPU Vulkan device (lavapipe) only, multiply the particle count by F as well, in [0.01, 1]; printed when applied "
         + "(Headless/simulate.sh without arguments passes 0.5)", 1.0);

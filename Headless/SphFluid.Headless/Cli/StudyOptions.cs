@@ -1,5 +1,6 @@
 using System.Collections.Generic;
 using System.CommandLine;
+using SphFluid.Headless.Runs;
 
 namespace SphFluid.Headless.Cli;
 
@@ -70,8 +71,8 @@ real-time factor. Writes study.csv, study.md (the same table in Markdown) and st
         "DFSPH runs: density tolerances, each in [0.001, 10] % (default 1 0.1 0.01)",
         text => Ranges.ParseDouble(Verb, "--density-tolerances", text, 0.001, 10, false, "%"));
     readonly Option<List<double>> _scales = OptionKinds.List(Verb, "--particles-scales", "F",
-        "resolutions: particle-count multipliers, each in [0.01, 100] (default 0.5 1; --quick 0.25 0.5)",
-        text => Ranges.ParseDouble(Verb, "--particles-scales", text, 0.01, 100, false, ""));
+        "resolutions: particle-count multipliers, each in [0.01, 4096] (default 0.5 1; --quick 0.25 0.5)",
+        text => Ranges.ParseDouble(Verb, "--particles-scales", text, 0.01, ParticleScaling.MaxFactor, false, ""));
     readonly Option<List<double>> _cfl = OptionKinds.List(Verb, "--cfl", "C",
         "CFL numbers, each in (0, 1] (default: the scene's CflNumber and half of it; --quick the scene's)",
         text => Ranges.ParseDouble(Verb, "--cfl", text, 0, 1, true, ""));

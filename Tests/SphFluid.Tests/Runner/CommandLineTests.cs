@@ -35,7 +35,7 @@ namespace SphFluid.Tests.Runner
 
         [TestCase("--steps", "0", "--steps must be in [1, 1000000] (was 0)")]
         [TestCase("--frames-every", "abc", "--frames-every must be a number in [0.0001, 3600] s (was 'abc')")]
-        [TestCase("--particles-scale", "1000", "--particles-scale must be in [0.01, 100] (was 1000)")]
+        [TestCase("--particles-scale", "5000", "--particles-scale must be in [0.01, 4096] (was 5000)")]
         [TestCase("--cpu-particles-scale", "2", "--cpu-particles-scale must be in [0.01, 1] (was 2)")]
         [TestCase("--out", null, "option --out needs a value")]
         public void OutOfRangeValuesAreRefusedWithTheirRange(string option, string? value, string message)
