@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Prints the GPU figures issue #8 asks for, on a lent GPU machine (the device tool), from the repository root, with
+# the kit of Headless/gpu-kit.sh carried:  run(command: "bash Headless/gpu-figures.sh", carry: [".gpu"], timeout_s: 600)
+#
+#   realtime  OilAndWater at about 100k, 250k, 1M and 2M particles (--particles-scales 24 60 240 481), WCSPH at the
+#             scene's stiffness and DFSPH at 0.1 %, 1 simulated second each: density error, wall ms per simulated
+#             second and the real-time factor (sphfluid study); then bench at 1M particles for each solver, the
+#             per-pass and per-kernel milliseconds that show where the time goes, and (WCSPH) the planner's savings.
+#   pareto    the accuracy-for-time matrix at 100k, 250k and 1M: WCSPH x1 and x4 stiffness, DFSPH at 1, 0.1 and
+#             0.01 %, the scene's CFL number; its table, CSV and Pareto chart.
+#   all       both, realtime first (the default). Each step has a time limit, so a slow step costs only itself.
+#
+# Writes into $OUT (the device tool's folder that comes back; else Output/gpu): gpu-figures.log (everything printed),
+# realtime.md/.csv, pareto.md/.csv/.png/.svg: seven files, within the tool's eight. Unpacks the kit into a temporary
+# folder it removes, and copies the charts' font to /usr/share/fonts/truetype/dejavu/ only where none is there.
+# The sizes can be made small to try the script on lavapipe here (Headless/gpu-kit.sh first):
+#   REALTIME_SCALES="0.25 0.5" PARETO_SCALES="0.25" BENCH_PARTICLES=2000 RUN_SECONDS=0.1 OUT=/tmp/gpu bash Headless/gpu-figures.sh
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+stage="${1:-all}"
+case "$stage" in realtime|pareto|all) ;; *) echo "gpu-figures: the stage is realtime, pareto or all, not '$stage'" >&2; exit 2 ;; esac
+realtime_scales="${REALTIME_SCALES:-24 60 240 481}"
+pareto_scales="${PARETO_SCALES:-24 60 240}"
+bench_particles="${BENCH_PARTICLES:-1000000}"
+seconds="${RUN_SECONDS:-1}"
+scene="Assets/FluidDemo/Scenes/OilAndWater.unity"
+cfl="$(awk '/^    CflNumber:/ { print $2; exit }' "$root/$scene")" # the scene's own, so the study runs one CFL number
+
+kit="$root/.gpu/sphfluid-gpu.tar.xz"
+[ -f "$kit" ] || { echo "gpu-figures: $kit is missing: run Headless/gpu-kit.sh here and carry .gpu" >&2; exit 2; }
+out="${OUT:-$root/Output/gpu}"
+mkdir -p "$out"
+log="$out/gpu-figures.log"
+: >"$log"
+say() { echo "$*" | tee -a "$log"; }
+
+unpacked="$(mktemp -d)"
+trap 'rm -rf "$unpacked"' EXIT
+tar -C "$unpacked" -xJf "$kit"
+home="$unpacked/sphfluid-gpu"
+export PATH="$home/bin:$PATH" LD_LIBRARY_PATH="$home/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+# No ICU on that machine is assumed; sphfluid formats with the invariant culture throughout.
+export DOTNET_SYSTEM_GLOBALIZATION_INVARIANT=1 DOTNET_CLI_TELEMETRY_OPTOUT=1 SPHFLUID_SHADER_CACHE="$unpacked/spirv"
+nvidia_icd=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
+if [ -z "${VK_DRIVER_FILES:-}${VK_ICD_FILENAMES:-}" ] && [ -f "$nvidia_icd" ]; then export VK_DRIVER_FILES="$nvidia_icd"; fi
+font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
+if [ ! -f "$font" ]; then mkdir -p "$(dirname "$font")" && cp "$home/DejaVuSans.ttf" "$font"; fi
+
+say "gpu-figures: sphfluid at $(cat "$home/commit"), stage $stage, $(date -u +%FT%TZ)"
+command -v nvidia-smi >/dev/null && nvidia-smi -L | tee -a "$log" || true
+
+step() { # seconds allowed, then sphfluid's arguments
+    local limit=$1; shift
+    say "\$ sphfluid $*"
+    local code=0
+    timeout --kill-after=10 "$limit" "$home/app/sphfluid" "$@" >>"$log" 2>&1 || code=$?
+    say "exit $code"
+}
+
+scratch="$unpacked/runs"
+if [ "$stage" != pareto ]; then
+    # shellcheck disable=SC2086 # the scale lists are word lists
+    step 300 study "$scene" --particles-scales $realtime_scales --stiffness-factors 1 --density-tolerances 0.1 \
+        --cfl "$cfl" --seconds "$seconds" --out "$scratch/realtime"
+    for f in study.md study.csv; do
+        if [ -f "$scratch/realtime/$f" ]; then cp "$scratch/realtime/$f" "$out/realtime.${f#study.}"; fi
+    done
+    step 90 bench "$scene" --particles "$bench_particles" --solver dfsph --skip-savings --out "$scratch/bench-dfsph"
+    step 120 bench "$scene" --particles "$bench_particles" --solver wcsph --out "$scratch/bench-wcsph"
+fi
+if [ "$stage" != realtime ]; then
+    # shellcheck disable=SC2086
+    step 300 study "$scene" --particles-scales $pareto_scales --stiffness-factors 1 4 --density-tolerances 1 0.1 0.01 \
+        --cfl "$cfl" --seconds "$seconds" --out "$scratch/pareto"
+    for f in study.md study.csv study-pareto.png study-pareto.svg; do
+        name="${f/study-pareto/study}" # study-pareto.png -> pareto.png
+        if [ -f "$scratch/pareto/$f" ]; then cp "$scratch/pareto/$f" "$out/pareto${name#study}"; fi
+    done
+fi
+say "gpu-figures: done, $(date -u +%FT%TZ); files in $out: $(cd "$out" && ls | tr '\n' ' ')"
