@@ -70,6 +70,20 @@ namespace SphFluid.Tests.Physics
         }
 
         /// <summary>
+        /// The largest rise of a plane interface along the tank (m) that a particle lattice of shear strength yieldRatio times
+        /// the pressure (<see cref="SphFluid.Simulation.LatticeShearStrength"/>) holds still. A rise R gives the lower
+        /// layer a horizontal pressure gradient (rho2 - rho1) g R / L, a push of (rho2 - rho1) g R d2 / L per unit floor
+        /// area that the planes bounding the layer must carry as shear: at most yieldRatio times the pressure at the
+        /// interface, rho1 g d1, plus yieldRatio times that at the floor, rho1 g d1 + rho2 g d2 (a limit analysis: any
+        /// split of the push between them stands). So
+        ///   R_max = yieldRatio (2 rho1 d1 + rho2 d2) L / ((rho2 - rho1) d2),
+        /// whatever g. An interface tilted by more cannot stand still; one within it can (and may still creep into place).
+        /// </summary>
+        internal static double HeldRise(Tank t, double yieldRatio) =>
+            yieldRatio * (2 * t.UpperDensity * t.UpperDepth + t.LowerDensity * t.LowerDepth) * t.Length
+            / ((t.LowerDensity - t.UpperDensity) * t.LowerDepth);
+
+        /// <summary>
         /// Least-squares fit of y(t) = exp(-gamma (t - t0)) (A cos(omega (t - t0)) + B sin(omega (t - t0))) + C to samples
         /// (t0 the first time): for each (omega, gamma) the rest is linear, so a grid over omega in [pi / span, 10] rad/s
         /// (span: the samples' time span) and gamma in [0, 2] 1/s, refined twice around its best point, finds the global fit without a starting

@@ -30,7 +30,9 @@ namespace SphFluid.Tests.Physics
     /// start from rest with the layers already in place and the interface displaced by the seiche's own mode
     /// (<see cref="TiltLayers"/>), sampled from the first frame: no lock exchange or bore comes before the seiche, and the
     /// swing starts small. One of them sets the oil's rest density to 500 kg/m^3 instead of 900, which multiplies the buoyancy that
-    /// drives the seiche by five.
+    /// drives the seiche by five; one tightens DFSPH's density tolerance tenfold, to 0.01 %; one takes the cubic spline
+    /// at 2 spacings, whose lattice is about three times as strong in shear (<see cref="LatticeShearStrength"/>). Each
+    /// fixture also prints the largest plane tilt its lattice holds still (<see cref="InternalSeiche.HeldRise"/>).
     /// </para>
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]
@@ -43,6 +45,8 @@ namespace SphFluid.Tests.Physics
     [TestFixture("dfsph, layers tilted by 1 spacing")]
     [TestFixture("dfsph, layers tilted by 2 spacings")]
     [TestFixture("dfsph, oil at 500 kg/m3, layers tilted by 1 spacing")]
+    [TestFixture("dfsph at 0.01 %, layers tilted by 1 spacing")]
+    [TestFixture("dfsph, cubic spline at 2 spacings, layers tilted by 1 spacing")]
     public sealed class InternalSeicheProbe
     {
         const double Seconds = 12.0, Sample = 0.05;
@@ -103,9 +107,10 @@ namespace SphFluid.Tests.Physics
             if (_configuration.Contains("oil at 500 kg/m3"))
                 scene.SpawnBoxes.First(b => b.Phase.Name == "Oil").Phase.RestDensity = 500f;
             if (_tilt > 0) TiltLayers(scene, _tilt);
+            if (_configuration.Contains("at 0.01 %")) scene.Settings.DensityTolerance = 0.01f;
             double settled = _tilt > 0 ? 0.0 : 2.0;
             var s = scene.Settings;
-            if (_configuration == "cubic spline")
+            if (_configuration == "cubic spline" || _configuration.Contains("cubic spline at 2 spacings"))
             {
                 s.SmoothingKernel = KernelFamily.CubicSpline;
                 s.SmoothingRadius = 2f * s.ParticleSpacing;
@@ -148,6 +153,8 @@ namespace SphFluid.Tests.Physics
                 scene.Container.Friction == WallFriction.NoSlip);
             double omega = InternalSeiche.AngularFrequency(tank), decay = InternalSeiche.DecayRate(tank);
             var fit = InternalSeiche.FitDampedOscillation(times, rises);
+            double strength = LatticeShearStrength.YieldRatio(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius);
+            double held = InternalSeiche.HeldRise(tank, strength);
 
             var crossings = new List<double>();
             for (int i = 1; i < rises.Count; i++)
@@ -164,7 +171,8 @@ namespace SphFluid.Tests.Physics
             TestContext.Progress.WriteLine($"internal seiche ({name}): layers {1000 * depth[oil]:F1} mm oil over {1000 * depth[water]:F1} mm water; " +
                 $"theory: period {2 * Math.PI / omega:F2} s, laminar decay {decay:F3}/s; fitted from {settled} s: period {2 * Math.PI / fit.Omega:F2} s, " +
                 $"decay {fit.Gamma:F3}/s (RMS residual {1000 * fit.Residual:F1} mm); {measured}; rise along the tank at {settled} s {1000 * rises[0]:F1} mm, at {Seconds} s {1000 * rises[^1]:F1} mm; " +
-                $"max speed at {Seconds} s {1000 * report.MaxSpeed:F1} mm/s; clamp hits {report.ClampHits}");
+                $"max speed at {Seconds} s {1000 * report.MaxSpeed:F1} mm/s; clamp hits {report.ClampHits}; " +
+                $"the lattice's shear strength, {strength:E2} of the pressure, can hold a plane interface still at a tilt of up to {1000 * held:F1} mm");
         }
     }
 }
