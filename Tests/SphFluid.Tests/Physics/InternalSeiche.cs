@@ -71,7 +71,7 @@ namespace SphFluid.Tests.Physics
 
         /// <summary>
         /// The largest rise of a plane interface along the tank (m) that a particle lattice of shear strength yieldRatio times
-        /// the pressure (<see cref="SphFluid.Simulation.LatticeShearStrength"/>) holds still. A rise R gives the lower
+        /// the pressure (<see cref="SphFluid.Simulation.LatticeShearStrength"/>) can hold still. A rise R gives the lower
         /// layer a horizontal pressure gradient (rho2 - rho1) g R / L, a push of (rho2 - rho1) g R d2 / L per unit floor
         /// area that the planes bounding the layer must carry as shear: at most yieldRatio times the pressure at the
         /// interface, rho1 g d1, plus yieldRatio times that at the floor, rho1 g d1 + rho2 g d2 (a limit analysis: any

@@ -32,7 +32,7 @@ namespace SphFluid.Tests.Physics
     /// swing starts small. One of them sets the oil's rest density to 500 kg/m^3 instead of 900, which multiplies the buoyancy that
     /// drives the seiche by five; one tightens DFSPH's density tolerance tenfold, to 0.01 %; one takes the cubic spline
     /// at 2 spacings, whose lattice is about three times as strong in shear (<see cref="LatticeShearStrength"/>). Each
-    /// fixture also prints the largest plane tilt its lattice holds still (<see cref="InternalSeiche.HeldRise"/>).
+    /// fixture also prints the largest plane tilt its lattice can hold still (<see cref="InternalSeiche.HeldRise"/>).
     /// </para>
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]
