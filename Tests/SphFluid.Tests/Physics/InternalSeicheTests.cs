@@ -18,13 +18,13 @@ namespace SphFluid.Tests.Physics
         /// start crept from 40.8 mm to 11.3 mm at 8 s and held (11.2 mm at 12 s) and the two-spacing start stopped at
         /// 5.6 to 6.3 mm, within 18 mm; with oil at 500 kg/m^3 the same start rocked and came within 0.5 mm of flat,
         /// within 2.6 mm. With the cubic spline at 2 spacings, whose lattice is about three times as strong, the one-spacing
-        /// start crept to 33.8 mm within 1 s and was still at 33.6 mm at 1.5 s (where that run was stopped), within 59 mm.
+        /// start crept to 33.8 mm within 1 s and held there (33.7 mm at 12 s), within 59 mm.
         /// Prints each held rise.
         /// </summary>
         [TestCase(900.0, KernelFamily.WendlandC2, 2.85, 0.0113)]
         [TestCase(900.0, KernelFamily.WendlandC2, 2.85, 0.0063)]
         [TestCase(500.0, KernelFamily.WendlandC2, 2.85, 0.0005)]
-        [TestCase(900.0, KernelFamily.CubicSpline, 2.0, 0.0336)]
+        [TestCase(900.0, KernelFamily.CubicSpline, 2.0, 0.0337)]
         public void TheTiltedStartsStopWithinWhatTheLatticeHolds(double oilDensity, KernelFamily kind, double supportRatio, double measured)
         {
             const double spacing = 0.015;
@@ -33,6 +33,22 @@ namespace SphFluid.Tests.Physics
             TestContext.Progress.WriteLine($"oil at {oilDensity} kg/m^3, {kind} at {supportRatio} spacings: the lattice can hold a plane interface " +
                 $"still at a tilt of up to {1000 * held:F1} mm; measured stop {1000 * measured:F1} mm");
             Assert.That(measured, Is.LessThanOrEqualTo(held));
+        }
+
+        /// <summary>Issue #5's flatness bar, a spacing (15 mm), against the same bound for equal layers: Wendland C2's lattice
+        /// at the scene's 2.85 spacings can hold the interface still above the bar, at 2.9 spacings (the top of DFSPH's
+        /// band, a quarter weaker) it cannot. Prints both.</summary>
+        [Test]
+        public void OnlyTheWeakerLatticeCannotHoldATiltAboveTheFlatnessBar()
+        {
+            const double spacing = 0.015, bar = spacing;
+            var layers = OilAndWater with { UpperDepth = 7 * spacing, LowerDepth = 7 * spacing };
+            double Held(double supportRatio) =>
+                InternalSeiche.HeldRise(layers, LatticeShearStrength.YieldRatio(KernelFamily.WendlandC2, spacing, supportRatio * spacing));
+            TestContext.Progress.WriteLine($"equal layers, Wendland C2: the lattice can hold a plane interface still at a tilt of up to " +
+                $"{1000 * Held(2.85):F1} mm at 2.85 spacings and {1000 * Held(2.9):F1} mm at 2.9");
+            Assert.That(Held(2.85), Is.GreaterThan(bar));
+            Assert.That(Held(2.9), Is.LessThan(bar));
         }
 
         [Test]
