@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Packs what a lent GPU machine (the device tool) needs to run sphfluid. That machine has an NVIDIA driver but no
 # .NET, no glslang, no Vulkan loader and no network, and it receives only the working tree (64 MiB) and the ignored
-# paths a call carries. So this builds, here, one archive .gpu/sphfluid-gpu.tar.xz (about 35 MB; .gpu/ is ignored by
+# paths a call carries. So this builds, here, one archive .gpu/sphfluid-gpu.tar.xz (about 34 MB; .gpu/ is ignored by
 # git) holding a self-contained linux-x64 build of sphfluid, glslangValidator and spirv-val (they compile the
 # .compute kernels there, as here), the Vulkan loader and the charts' font. Headless/gpu-figures.sh unpacks it there
 # and prints the GPU figures; a device call carries it with `carry: [".gpu"]`.

@@ -14,7 +14,7 @@ namespace SphFluid.Simulation
     ///   tau(u) = (2 q / s^2) d/du sum_{n >= 1} n sum_{(a, b) in the plane} W(|(a s + u, n s, b s)|),
     /// where n counts the pairs of rows n spacings apart across the plane (n of them for each column). tau is periodic
     /// in u with period s and odd about 0 and s / 2, so its largest magnitude tau_y is the stress the slip must get past:
-    /// below it the lattice stands as a solid would, with no motion at all. tau_y is proportional to p, and tau_y / p
+    /// below it the lattice can stand as a solid would. tau_y is proportional to p, and tau_y / p
     /// depends only on the kernel and the support in spacings, not on the resolution: a finer spacing at the same
     /// support ratio holds the same fraction of the pressure. It comes from the lattice sum of W at a shifted row, a
     /// Fourier coefficient of the kernel at the lattice's period, and so falls and rises with the support.
@@ -22,7 +22,8 @@ namespace SphFluid.Simulation
     /// <para>
     /// It is an estimate: a perfect lattice and a rigid plane, where a real slip starts at a defect and spreads. It
     /// agrees with the tilted-layers fixtures of InternalSeicheProbe (README: "From a tilted start: a threshold, not a
-    /// damping"): a tilt whose buoyancy the lattice can carry as shear stands still, one whose buoyancy exceeds it moves.
+    /// damping"): every measured start stopped at a tilt whose buoyancy the lattice can carry as shear, though a start
+    /// within that bound may still creep some way before it stops (the cubic spline's, 7 mm in its first second).
     /// </para>
     /// </summary>
     public static class LatticeShearStrength
