@@ -9,7 +9,7 @@
 struct BoundaryParticle
 {
     float3 position; // m
-    float weight;    // omega = V_b delta0: how many fluid particles at rest density it stands for
+    float weight;    // omega = V_b / s^3: how many fluid particles on the rest lattice it stands for
     float3 velocity; // m/s (the wall's velocity at that point)
     uint owner;      // BOUNDARY_OWNER_CONTAINER, or the obstacle index
 };

@@ -13,7 +13,7 @@
 // in density and pressure (Akinci, Ihmsen, Akinci, Solenthaler & Teschner 2012, "Versatile rigid-fluid
 // coupling for incompressible SPH", SIGGRAPH 2012: a boundary particle b adds its volume to the fluid's
 // density sum and receives a pressure force), with each particle's volume V_b carried as the weight
-// omega_b = V_b delta0 (1 for a shell on the fluid's lattice):
+// omega_b = V_b / s^3, the lattice cells it stands for (1 for a shell on the fluid's lattice):
 //   delta_i += sum_b omega_ib W(r_ib)
 //   F_i^p   += -sum_b omega_ib (p_i + p_b) / delta_i^2 gradW(r_ib)
 // where omega_ib = omega_b (delta0_i / delta0) fills the wall particle's volume at fluid particle i's own rest number

@@ -20,7 +20,7 @@ namespace SphFluid.Simulation
         /// world space once placed.</summary>
         public Vector3 Position;
 
-        /// <summary>omega = V_b delta0: the number of fluid particles at rest density it stands for.</summary>
+        /// <summary>omega = V_b / s^3: the number of fluid particles on the rest lattice it stands for (BoundarySampling).</summary>
         public float Weight;
 
         /// <summary>World velocity once placed, m/s (the wall's velocity there).</summary>
