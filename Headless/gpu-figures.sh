@@ -4,11 +4,16 @@
 #
 #   realtime  OilAndWater at about 100k, 250k, 1M and 2M particles (--particles-scales 24 60 240 481), WCSPH at the
 #             scene's stiffness and DFSPH at 0.1 %, 1 simulated second each: density error, wall ms per simulated
-#             second and the real-time factor (sphfluid study); then bench at 1M particles for each solver, the
-#             per-pass and per-kernel milliseconds that show where the time goes, and (WCSPH) the planner's savings.
-#   pareto    the accuracy-for-time matrix at 100k, 250k and 1M: WCSPH x1 and x4 stiffness, DFSPH at 1, 0.1 and
-#             0.01 %, the scene's CFL number; its table, CSV and Pareto chart.
-#   all       both, realtime first (the default). Each step has a time limit, so a slow step costs only itself.
+#             second and the real-time factor (sphfluid study).
+#   bench     bench at 1M particles for each solver: the per-pass and per-kernel milliseconds that show where the time
+#             goes, and (WCSPH) the planner's savings.
+#   pareto    the accuracy-for-time matrix at 100k and 250k: WCSPH x1 and x4 stiffness, DFSPH at 1, 0.1 and 0.01 %,
+#             the scene's CFL number; its table, CSV and Pareto chart. With 1M (PARETO_SCALES="24 60 240") it outran
+#             300 s on an H200: each DFSPH row at 1M spends 100 iterations a sub-step until it turns unhealthy.
+# The stages are named as arguments, run in the order given (default: realtime bench pareto). Each step has a time
+# limit, so a slow step costs only itself. The environment can change the sizes, the solvers the bench stage times and
+# each step's limit in seconds: REALTIME_SCALES, PARETO_SCALES, BENCH_PARTICLES, BENCH_SOLVERS ("dfsph wcsph"),
+# RUN_SECONDS, REALTIME_LIMIT (300), BENCH_LIMIT (120 each), PARETO_LIMIT (300).
 #
 # Writes into $OUT (the device tool's folder that comes back; else Output/gpu): gpu-figures.log (everything printed),
 # realtime.md/.csv, pareto.md/.csv/.png/.svg: seven files, within the tool's eight. Unpacks the kit into a temporary
@@ -17,11 +22,18 @@
 #   REALTIME_SCALES="0.25 0.5" PARETO_SCALES="0.25" BENCH_PARTICLES=2000 RUN_SECONDS=0.1 OUT=/tmp/gpu bash Headless/gpu-figures.sh
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-stage="${1:-all}"
-case "$stage" in realtime|pareto|all) ;; *) echo "gpu-figures: the stage is realtime, pareto or all, not '$stage'" >&2; exit 2 ;; esac
+stages=("$@")
+[ ${#stages[@]} -gt 0 ] || stages=(realtime bench pareto)
+for stage in "${stages[@]}"; do
+    case "$stage" in realtime|bench|pareto) ;; *) echo "gpu-figures: a stage is realtime, bench or pareto, not '$stage'" >&2; exit 2 ;; esac
+done
 realtime_scales="${REALTIME_SCALES:-24 60 240 481}"
-pareto_scales="${PARETO_SCALES:-24 60 240}"
+pareto_scales="${PARETO_SCALES:-24 60}"
 bench_particles="${BENCH_PARTICLES:-1000000}"
+bench_solvers="${BENCH_SOLVERS:-dfsph wcsph}"
+realtime_limit="${REALTIME_LIMIT:-300}"
+bench_limit="${BENCH_LIMIT:-120}"
+pareto_limit="${PARETO_LIMIT:-300}"
 seconds="${RUN_SECONDS:-1}"
 scene="Assets/FluidDemo/Scenes/OilAndWater.unity"
 cfl="$(awk '/^    CflNumber:/ { print $2; exit }' "$root/$scene")" # the scene's own, so the study runs one CFL number
@@ -46,7 +58,7 @@ if [ -z "${VK_DRIVER_FILES:-}${VK_ICD_FILENAMES:-}" ] && [ -f "$nvidia_icd" ]; t
 font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
 if [ ! -f "$font" ]; then mkdir -p "$(dirname "$font")" && cp "$home/DejaVuSans.ttf" "$font"; fi
 
-say "gpu-figures: sphfluid at $(cat "$home/commit"), stage $stage, $(date -u +%FT%TZ)"
+say "gpu-figures: sphfluid at $(cat "$home/commit"), stages ${stages[*]}, $(date -u +%FT%TZ)"
 command -v nvidia-smi >/dev/null && nvidia-smi -L | tee -a "$log" || true
 
 step() { # seconds allowed, then sphfluid's arguments
@@ -58,23 +70,34 @@ step() { # seconds allowed, then sphfluid's arguments
 }
 
 scratch="$unpacked/runs"
-if [ "$stage" != pareto ]; then
-    # shellcheck disable=SC2086 # the scale lists are word lists
-    step 300 study "$scene" --particles-scales $realtime_scales --stiffness-factors 1 --density-tolerances 0.1 \
-        --cfl "$cfl" --seconds "$seconds" --out "$scratch/realtime"
-    for f in study.md study.csv; do
-        if [ -f "$scratch/realtime/$f" ]; then cp "$scratch/realtime/$f" "$out/realtime.${f#study.}"; fi
-    done
-    step 90 bench "$scene" --particles "$bench_particles" --solver dfsph --skip-savings --out "$scratch/bench-dfsph"
-    step 120 bench "$scene" --particles "$bench_particles" --solver wcsph --out "$scratch/bench-wcsph"
-fi
-if [ "$stage" != realtime ]; then
-    # shellcheck disable=SC2086
-    step 300 study "$scene" --particles-scales $pareto_scales --stiffness-factors 1 4 --density-tolerances 1 0.1 0.01 \
-        --cfl "$cfl" --seconds "$seconds" --out "$scratch/pareto"
-    for f in study.md study.csv study-pareto.png study-pareto.svg; do
-        name="${f/study-pareto/study}" # study-pareto.png -> pareto.png
-        if [ -f "$scratch/pareto/$f" ]; then cp "$scratch/pareto/$f" "$out/pareto${name#study}"; fi
-    done
-fi
+for stage in "${stages[@]}"; do
+    case "$stage" in
+    realtime)
+        # shellcheck disable=SC2086 # the scale lists are word lists
+        step "$realtime_limit" study "$scene" --particles-scales $realtime_scales --stiffness-factors 1 --density-tolerances 0.1 \
+            --cfl "$cfl" --seconds "$seconds" --out "$scratch/realtime"
+        for f in study.md study.csv; do
+            if [ -f "$scratch/realtime/$f" ]; then cp "$scratch/realtime/$f" "$out/realtime.${f#study.}"; fi
+        done
+        ;;
+    bench)
+        for solver in $bench_solvers; do
+            # The planner's savings are timed once, with the scene's own solver's plan.
+            savings=--skip-savings
+            if [ "$solver" = wcsph ]; then savings=; fi
+            # shellcheck disable=SC2086 # empty or one flag
+            step "$bench_limit" bench "$scene" --particles "$bench_particles" --solver "$solver" $savings --out "$scratch/bench-$solver"
+        done
+        ;;
+    pareto)
+        # shellcheck disable=SC2086
+        step "$pareto_limit" study "$scene" --particles-scales $pareto_scales --stiffness-factors 1 4 --density-tolerances 1 0.1 0.01 \
+            --cfl "$cfl" --seconds "$seconds" --out "$scratch/pareto"
+        for f in study.md study.csv study-pareto.png study-pareto.svg; do
+            name="${f/study-pareto/study}" # study-pareto.png -> pareto.png
+            if [ -f "$scratch/pareto/$f" ]; then cp "$scratch/pareto/$f" "$out/pareto${name#study}"; fi
+        done
+        ;;
+    esac
+done
 say "gpu-figures: done, $(date -u +%FT%TZ); files in $out: $(cd "$out" && ls | tr '\n' ' ')"

@@ -17,6 +17,12 @@ public sealed class BenchOptions(string scenePath)
     /// <summary>Untimed sub-steps first (shader compilation, caches, the fluid leaving its lattice).</summary>
     public int Warmup { get; set; } = 5;
 
+    /// <summary>Wall seconds the untimed sub-steps last at least: a GPU idling at a low clock takes a while under load
+    /// to reach its working clock, and rows timed before it did read slower than the rows after them.</summary>
+    public double WarmupSeconds { get; set; } = DefaultWarmupSeconds;
+
+    public const double DefaultWarmupSeconds = 0.5;
+
     /// <summary>Case-insensitive substring of the Vulkan adapter name; null = SPHFLUID_VULKAN_DEVICE, else the best.</summary>
     public string? DeviceName { get; set; }
 
@@ -53,6 +59,9 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
         text => Ranges.ParseInt(Verb, "--particles", text, 64, 16_777_216));
     readonly Option<int> _steps = OptionKinds.Whole(Verb, "--steps", 1, 100_000, "N", "timed sub-steps per count, in [1, 100000]", 20);
     readonly Option<int> _warmup = OptionKinds.Whole(Verb, "--warmup", 0, 100_000, "N", "untimed sub-steps before timing, in [0, 100000]", 5);
+    readonly Option<double> _warmupSeconds = OptionKinds.Number(Verb, "--warmup-seconds", 0, 60, false, "s", "S",
+        "keep warming up until at least S wall seconds have passed (a GPU reaches its working clock under load), in [0, 60]",
+        BenchOptions.DefaultWarmupSeconds);
     readonly Option<string> _device = OptionKinds.Text(Verb, "--device", "NAME", SphfluidCommandLine.DeviceHelp);
     readonly Option<string> _out = OptionKinds.Text(Verb, "--out", "DIR",
         "folder for bench-scaling.png/.svg, milliseconds per sub-step against particles (default Output/<scene name>-bench; "
@@ -69,6 +78,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
         Add(_particles);
         Add(_steps);
         Add(_warmup);
+        Add(_warmupSeconds);
         Add(_device);
         Add(_out);
         Add(_skipSavings);
@@ -82,6 +92,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
         {
             Steps = r.GetValue(_steps),
             Warmup = r.GetValue(_warmup),
+            WarmupSeconds = r.GetValue(_warmupSeconds),
             DeviceName = r.GetValue(_device),
             OutputDirectory = r.GetValue(_out),
             SkipSavings = r.GetValue(_skipSavings),
