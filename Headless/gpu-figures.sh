@@ -10,14 +10,22 @@
 #   pareto    the accuracy-for-time matrix at 100k and 250k: WCSPH x1 and x4 stiffness, DFSPH at 1, 0.1 and 0.01 %,
 #             the scene's CFL number; its table, CSV and Pareto chart. With 1M (PARETO_SCALES="24 60 240") it outran
 #             300 s on an H200: each DFSPH row at 1M spends 100 iterations a sub-step until it turns unhealthy.
+#   scenes    60 Hz sizing: bench of every shipped demo scene at its own particle count and at 2 to 64 times it
+#             (--particles-scales), each under its own solver and OilAndWater under DFSPH too, GPU ms per 60 Hz frame
+#             and the largest count whose frame fits half of 16.7 ms, here and on a GPU with BANDWIDTH_RATIO (16.7: an
+#             H200's 4.8 TB/s against a GeForce RTX 4060 Ti's 288 GB/s) times less memory bandwidth.
+#   layering  OilAndWater at its own size for 6.5 simulated seconds under each solver, diagnostics every 0.5 s: the
+#             interface's tilt and the layering of issue #5, at a speed lavapipe cannot give (sphfluid simulate).
 # The stages are named as arguments, run in the order given (default: realtime bench pareto). Each step has a time
 # limit, so a slow step costs only itself. The environment can change the sizes, the solvers the bench stage times and
 # each step's limit in seconds: REALTIME_SCALES, PARETO_SCALES, BENCH_PARTICLES, BENCH_SOLVERS ("dfsph wcsph"),
-# RUN_SECONDS, REALTIME_LIMIT (300), BENCH_LIMIT (120 each), PARETO_LIMIT (300).
+# RUN_SECONDS, REALTIME_LIMIT (300), BENCH_LIMIT (120 each), PARETO_LIMIT (300), SCENE_SCALES, BANDWIDTH_RATIO,
+# SCENES_LIMIT (90 each), LAYERING_SECONDS (6.5), LAYERING_LIMIT (150 each).
 #
 # Writes into $OUT (the device tool's folder that comes back; else Output/gpu): gpu-figures.log (everything printed),
-# realtime.md/.csv, pareto.md/.csv/.png/.svg: seven files, within the tool's eight. Unpacks the kit into a temporary
-# folder it removes, and copies the charts' font to /usr/share/fonts/truetype/dejavu/ only where none is there.
+# realtime.md/.csv, pareto.md/.csv/.png/.svg and layering-wcsph.csv/-dfsph.csv: nine files with every stage, over the
+# tool's eight, so one call runs at most two of realtime, pareto and layering (scenes and bench print to the log only).
+# Unpacks the kit into a temporary folder it removes, and copies the charts' font to /usr/share/fonts/truetype/dejavu/ only where none is there.
 # The sizes can be made small to try the script on lavapipe here (Headless/gpu-kit.sh first):
 #   REALTIME_SCALES="0.25 0.5" PARETO_SCALES="0.25" BENCH_PARTICLES=2000 RUN_SECONDS=0.1 OUT=/tmp/gpu bash Headless/gpu-figures.sh
 set -euo pipefail
@@ -25,7 +33,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 stages=("$@")
 [ ${#stages[@]} -gt 0 ] || stages=(realtime bench pareto)
 for stage in "${stages[@]}"; do
-    case "$stage" in realtime|bench|pareto) ;; *) echo "gpu-figures: a stage is realtime, bench or pareto, not '$stage'" >&2; exit 2 ;; esac
+    case "$stage" in realtime|bench|pareto|scenes|layering) ;; *) echo "gpu-figures: a stage is realtime, bench, pareto, scenes or layering, not '$stage'" >&2; exit 2 ;; esac
 done
 realtime_scales="${REALTIME_SCALES:-24 60 240 481}"
 pareto_scales="${PARETO_SCALES:-24 60}"
@@ -35,6 +43,11 @@ realtime_limit="${REALTIME_LIMIT:-300}"
 bench_limit="${BENCH_LIMIT:-120}"
 pareto_limit="${PARETO_LIMIT:-300}"
 seconds="${RUN_SECONDS:-1}"
+scene_scales="${SCENE_SCALES:-1 2 4 8 16 32 64}"
+bandwidth_ratio="${BANDWIDTH_RATIO:-16.7}"
+scenes_limit="${SCENES_LIMIT:-90}"
+layering_seconds="${LAYERING_SECONDS:-6.5}"
+layering_limit="${LAYERING_LIMIT:-150}"
 scene="Assets/FluidDemo/Scenes/OilAndWater.unity"
 cfl="$(awk '/^    CflNumber:/ { print $2; exit }' "$root/$scene")" # the scene's own, so the study runs one CFL number
 
@@ -96,6 +109,23 @@ for stage in "${stages[@]}"; do
         for f in study.md study.csv study-pareto.png study-pareto.svg; do
             name="${f/study-pareto/study}" # study-pareto.png -> pareto.png
             if [ -f "$scratch/pareto/$f" ]; then cp "$scratch/pareto/$f" "$out/pareto${name#study}"; fi
+        done
+        ;;
+    scenes)
+        for name in OilAndWater DamBreak Splash RotatingContainer SphereWake RestingTank; do
+            # shellcheck disable=SC2086
+            step "$scenes_limit" bench "Assets/FluidDemo/Scenes/$name.unity" --particles-scales $scene_scales --skip-savings \
+                --bandwidth-ratio "$bandwidth_ratio" --out "$scratch/scenes-$name"
+        done
+        # shellcheck disable=SC2086
+        step "$scenes_limit" bench "$scene" --solver dfsph --particles-scales $scene_scales --skip-savings \
+            --bandwidth-ratio "$bandwidth_ratio" --out "$scratch/scenes-OilAndWater-dfsph"
+        ;;
+    layering)
+        for solver in wcsph dfsph; do
+            step "$layering_limit" simulate "$scene" --solver "$solver" --seconds "$layering_seconds" --diagnostics-every 0.5 \
+                --out "$scratch/layering-$solver"
+            if [ -f "$scratch/layering-$solver/diagnostics.csv" ]; then cp "$scratch/layering-$solver/diagnostics.csv" "$out/layering-$solver.csv"; fi
         done
         ;;
     esac

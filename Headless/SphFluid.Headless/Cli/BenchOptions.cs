@@ -11,6 +11,16 @@ public sealed class BenchOptions(string scenePath)
     /// <summary>Particle counts to measure (the spawn spacing is scaled to reach each); empty = the scene as it is.</summary>
     public List<int> Particles { get; } = new();
 
+    /// <summary>Particle-count multipliers of the scene's own count to measure instead (1 = the scene as it is).</summary>
+    public List<double> ParticleScales { get; } = new();
+
+    /// <summary>How many times less memory bandwidth the GPU has whose 60 Hz sizing is estimated besides this device's
+    /// (<see cref="Runs.FrameSizing"/>); null: this device's sizing only.</summary>
+    public double? BandwidthRatio { get; set; }
+
+    /// <summary>GPU milliseconds of a 60 Hz frame the simulation may spend (<see cref="Runs.FrameSizing"/>).</summary>
+    public double FrameBudgetMs { get; set; } = Runs.FrameSizing.DefaultBudgetMs;
+
     /// <summary>Timed sub-steps per particle count.</summary>
     public int Steps { get; set; } = 20;
 
@@ -57,6 +67,17 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
         "particle counts to measure, each in [64, 16777216] (also N,N,...); the scene's spawn spacing and support radius are scaled "
         + "to reach them (default: the scene as it is)",
         text => Ranges.ParseInt(Verb, "--particles", text, 64, 16_777_216));
+    readonly Option<List<double>> _scales = OptionKinds.List(Verb, "--particles-scales", "F",
+        "particle-count multipliers of the scene's own count to measure instead of --particles, each in [0.01, "
+        + Runs.ParticleScaling.MaxFactor.ToString(System.Globalization.CultureInfo.InvariantCulture) + "]; 1 is the scene as it is",
+        text => Ranges.ParseDouble(Verb, "--particles-scales", text, 0.01, Runs.ParticleScaling.MaxFactor, false, ""));
+    readonly Option<double> _frameBudget = OptionKinds.Number(Verb, "--frame-budget", 0.1, 1000, false, "ms", "MS",
+        "GPU milliseconds of a 60 Hz frame the simulation may spend; the bench prints the largest particle count whose frame "
+        + "(GPU ms per sub-step x the sub-steps of 1/60 s) fits, interpolated between the counts measured, in [0.1, 1000] "
+        + "(default: half of the frame's 16.7 ms, the rest left to drawing)", Runs.FrameSizing.DefaultBudgetMs);
+    readonly Option<double> _bandwidthRatio = OptionKinds.Number(Verb, "--bandwidth-ratio", 1, 1000, false, "", "R",
+        "also estimate that particle count for a GPU with R times less memory bandwidth than this device, its GPU time taken "
+        + "as this device's times R, in [1, 1000]");
     readonly Option<int> _steps = OptionKinds.Whole(Verb, "--steps", 1, 100_000, "N", "timed sub-steps per count, in [1, 100000]", 20);
     readonly Option<int> _warmup = OptionKinds.Whole(Verb, "--warmup", 0, 100_000, "N", "untimed sub-steps before timing, in [0, 100000]", 5);
     readonly Option<double> _warmupSeconds = OptionKinds.Number(Verb, "--warmup-seconds", 0, 60, false, "s", "S",
@@ -76,6 +97,9 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
     {
         Add(_scene);
         Add(_particles);
+        Add(_scales);
+        Add(_frameBudget);
+        Add(_bandwidthRatio);
         Add(_steps);
         Add(_warmup);
         Add(_warmupSeconds);
@@ -97,8 +121,13 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
             OutputDirectory = r.GetValue(_out),
             SkipSavings = r.GetValue(_skipSavings),
             Solver = _solver.Read(r),
+            FrameBudgetMs = r.GetValue(_frameBudget),
         };
         if (OptionKinds.Given(r, _particles) is { } particles) options.Particles.AddRange(particles);
+        if (OptionKinds.Given(r, _scales) is { } scales) options.ParticleScales.AddRange(scales);
+        if (options.Particles.Count > 0 && options.ParticleScales.Count > 0)
+            throw new UsageException($"{Verb}: give either --particles or --particles-scales, not both");
+        if (r.GetResult(_bandwidthRatio) is { Implicit: false }) options.BandwidthRatio = r.GetValue(_bandwidthRatio);
         return options;
     }
 }

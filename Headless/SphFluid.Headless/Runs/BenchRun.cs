@@ -35,7 +35,11 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
     /// together, as the simulation steps a frame: the host cost of a submit and wait is shared by the frame.</param>
     /// <param name="FrameSubsteps">Sub-steps of dt in one 60 Hz frame.</param>
     public sealed record Row(int Particles, string Plan, double WallMs, double GpuMs, IReadOnlyDictionary<string, double> PassMs,
-        IReadOnlyList<(string Kernel, int Dispatches, double Ms)> Kernels, float TimeStep, bool Finite, double FrameWallMs, int FrameSubsteps);
+        IReadOnlyList<(string Kernel, int Dispatches, double Ms)> Kernels, float TimeStep, bool Finite, double FrameWallMs, int FrameSubsteps)
+    {
+        /// <summary>GPU ms a 60 Hz frame costs: the sub-step's GPU time times the frame's sub-steps.</summary>
+        public double FrameGpuMs => GpuMs * FrameSubsteps;
+    }
 
     public List<Row> Rows { get; } = new();
 
@@ -50,8 +54,9 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         var scene = SceneLoader.Load(options.ScenePath);
         // Every requested count is turned into a scene before the device opens, so an impossible one is refused
         // (exit 2, naming --particles) without measuring the others first.
-        var targets = options.Particles.Count > 0 ? options.Particles.Select(n => (int?)n).ToList() : new List<int?> { null };
-        var descriptions = targets.Select(target => Scaled(scene, target)).ToList();
+        var descriptions = options.Particles.Count > 0 ? options.Particles.Select(n => ScaledTo(n)).ToList()
+            : options.ParticleScales.Count > 0 ? options.ParticleScales.Select(f => ScaledBy(f)).ToList()
+            : new List<FluidSceneDescription> { ScaledBy(1) };
         var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name + "-bench"), "--out", "bench");
         IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "bench", out IDisposable? owned);
         try
@@ -70,6 +75,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
                 stderr.WriteLine(string.Format(C, "bench: {0} particles: {1:F3} ms/sub-step wall, {2:F3} ms GPU", row.Particles, row.WallMs, row.GpuMs));
             }
             stdout.Write(Table(scene.Name, device.DeviceName));
+            stdout.Write(SizingText());
             if (!options.SkipSavings) MeasureSavings(descriptions[^1], device);
             stdout.Write(SavingsTable());
             BenchScalingChart.Build(scene.Name, device.DeviceName, SolverName, Rows.Select(r => (r.Particles, r.WallMs, r.GpuMs)).ToList())
@@ -131,15 +137,54 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         return b.ToString();
     }
 
-    /// <summary>The scene's description, rescaled to about <paramref name="target"/> particles when one is given.</summary>
-    FluidSceneDescription Scaled(LoadedScene scene, int? target)
+    /// <summary>The scene's description (a fresh load: each row owns its copy) rescaled to about <paramref name="target"/> particles.</summary>
+    FluidSceneDescription ScaledTo(int target)
     {
-        var description = target.HasValue ? SceneLoader.Load(options.ScenePath).Description : scene.Description;
-        _solverNote = options.Solver.ApplyTo(description, "bench");
-        if (!target.HasValue) return description;
-        ParticleScaling.ScaleTo(description, target.Value);
-        SceneFit.RequireScaled(description, "bench", "--particles", target.Value.ToString(C));
+        var description = WithSolver();
+        ParticleScaling.ScaleTo(description, target);
+        SceneFit.RequireScaled(description, "bench", "--particles", target.ToString(C));
         return description;
+    }
+
+    /// <summary>The scene's description with its particle count multiplied by <paramref name="factor"/> (1: as it is).</summary>
+    FluidSceneDescription ScaledBy(double factor)
+    {
+        var description = WithSolver();
+        ParticleScaling.ScaleBy(description, factor);
+        SceneFit.RequireScaled(description, "bench", "--particles-scales", factor.ToString("G6", C));
+        return description;
+    }
+
+    FluidSceneDescription WithSolver()
+    {
+        var description = SceneLoader.Load(options.ScenePath).Description;
+        _solverNote = options.Solver.ApplyTo(description, "bench");
+        return description;
+    }
+
+    /// <summary>The largest particle count whose 60 Hz frame fits the GPU budget on this device (<see cref="FrameSizing"/>).</summary>
+    public FrameSizing.Fit? DeviceFit { get; private set; }
+
+    /// <summary>The same for a GPU with --bandwidth-ratio times less memory bandwidth; null without it.</summary>
+    public FrameSizing.Fit? SlowerGpuFit { get; private set; }
+
+    string SizingText()
+    {
+        if (Rows.Count == 0 || Rows.Any(r => r.GpuMs <= 0)) return "";
+        double ratio = options.BandwidthRatio ?? 1;
+        DeviceFit = FrameSizing.Largest(Rows.Select(r => (r.Particles, r.FrameGpuMs)).ToList(), options.FrameBudgetMs);
+        var b = new StringBuilder();
+        b.AppendLine();
+        b.AppendLine(string.Format(C, "60 Hz sizing ({0}): a frame's GPU ms is the GPU ms per sub-step times the sub-steps of 1/60 s; within {1:G3} ms of GPU time a frame",
+            SolverName, options.FrameBudgetMs));
+        b.AppendLine(string.Format(C, "- on this device: {0}", DeviceFit));
+        if (options.BandwidthRatio.HasValue)
+        {
+            SlowerGpuFit = FrameSizing.Largest(Rows.Select(r => (r.Particles, r.FrameGpuMs * ratio)).ToList(), options.FrameBudgetMs);
+            b.AppendLine(string.Format(C, "- on a GPU with {0:G3} times less memory bandwidth (this device's GPU ms x {0:G3}; small scenes, which wait on dispatch latency more than on memory, are overstated): {1}",
+                ratio, SlowerGpuFit));
+        }
+        return b.ToString();
     }
 
     /// <summary>
@@ -186,7 +231,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
                 }
         }
         // The same sub-steps again, a frame at a time: what a running simulation pays per sub-step.
-        int frameSubsteps = Math.Max(1, (int)Math.Ceiling(1.0 / 60.0 / dt));
+        int frameSubsteps = Math.Max(1, (int)Math.Ceiling(FrameSizing.FrameSeconds / dt));
         int frames = Math.Max(1, options.Steps / frameSubsteps);
         var frameClock = Stopwatch.StartNew();
         for (int i = 0; i < frames; i++) StepAndWait(sim, device, dt, frameSubsteps);
@@ -215,10 +260,10 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         b.AppendLine();
         b.AppendLine($"Scene {sceneName}, device {deviceName}, {SolverName}: milliseconds per sub-step (mean of {options.Steps}; GPU = sum of the pass ranges)");
         b.AppendLine();
-        b.AppendLine("| particles | dt (ms) | wall ms | GPU ms | wall ms in a frame (sub-steps) | " + string.Join(" | ", passes) + " |");
-        b.AppendLine("|---:|---:|---:|---:|---:|" + string.Concat(passes.Select(_ => "---:|")));
+        b.AppendLine("| particles | dt (ms) | wall ms | GPU ms | wall ms in a frame (sub-steps) | GPU ms per 60 Hz frame | " + string.Join(" | ", passes) + " |");
+        b.AppendLine("|---:|---:|---:|---:|---:|---:|" + string.Concat(passes.Select(_ => "---:|")));
         foreach (var r in Rows)
-            b.AppendLine(string.Format(C, "| {0} | {1:F3} | {2:F3} | {3:F3} | {4:F3} ({5}) | ", r.Particles, r.TimeStep * 1000, r.WallMs, r.GpuMs, r.FrameWallMs, r.FrameSubsteps)
+            b.AppendLine(string.Format(C, "| {0} | {1:F3} | {2:F3} | {3:F3} | {4:F3} ({5}) | {6:F3} | ", r.Particles, r.TimeStep * 1000, r.WallMs, r.GpuMs, r.FrameWallMs, r.FrameSubsteps, r.FrameGpuMs)
                 + string.Join(" | ", passes.Select(p => r.PassMs.TryGetValue(p, out double ms) ? ms.ToString("F3", C) : "-")) + " |");
         var last = Rows.LastOrDefault();
         if (last != null && last.Kernels.Count > 0)

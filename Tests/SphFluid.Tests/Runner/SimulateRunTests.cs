@@ -132,7 +132,8 @@ namespace SphFluid.Tests.Runner
         {
             var stdout = new StringWriter();
             string outDir = RunnerPaths.ScratchFolder("bench");
-            var bench = new BenchRun(BenchOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--steps", "2", "--warmup", "1", "--particles", "150", "400", "--out", outDir }), stdout, new StringWriter())
+            var bench = new BenchRun(BenchOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--steps", "2", "--warmup", "1", "--particles", "150", "400",
+                "--bandwidth-ratio", "10", "--out", outDir }), stdout, new StringWriter())
             {
                 Device = GpuTestDevice.Shared,
             };
@@ -147,7 +148,13 @@ namespace SphFluid.Tests.Runner
             {
                 Assert.That(row.FrameSubsteps, Is.EqualTo((int)Math.Ceiling(1.0 / 60.0 / row.TimeStep)), "a 60 Hz frame's sub-steps");
                 Assert.That(row.FrameWallMs, Is.GreaterThan(0).And.LessThan(double.PositiveInfinity));
+                Assert.That(row.FrameGpuMs, Is.EqualTo(row.GpuMs * row.FrameSubsteps).Within(1e-9), "a 60 Hz frame's GPU ms");
             }
+            // A GPU with ten times less bandwidth fits no more particles in the same budget than this device.
+            Assert.That(bench.DeviceFit, Is.Not.Null);
+            Assert.That(bench.SlowerGpuFit, Is.Not.Null);
+            Assert.That(bench.SlowerGpuFit!.Particles, Is.LessThanOrEqualTo(bench.DeviceFit!.Particles));
+            Assert.That(stdout.ToString(), Does.Contain("60 Hz sizing (WCSPH)").And.Contain("- on a GPU with 10 times less memory bandwidth"));
             Assert.That(stdout.ToString(), Does.Contain($"| {bench.Rows[1].Particles} |"));
             ChartFiles.Check(outDir, "bench-scaling", "Bench scaling: PlayModeTest, WCSPH", "particles", "milliseconds per sub-step (ms)",
                 "wall clock per sub-step", "GPU per sub-step");

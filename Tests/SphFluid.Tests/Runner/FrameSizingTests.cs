@@ -1,0 +1,51 @@
+using System;
+using NUnit.Framework;
+using SphFluid.Headless.Runs;
+
+namespace SphFluid.Tests.Runner
+{
+    /// <summary>The 60 Hz sizing of bench (issue #8, item 5): the particle count whose frame spends the GPU budget,
+    /// interpolated between measured counts.</summary>
+    public sealed class FrameSizingTests
+    {
+        [Test]
+        public void APowerLawIsInterpolatedExactly()
+        {
+            // Frame time growing as N^(4/3) (N times the sub-steps, which grow as N^(1/3)): 2 ms at 1000, 2 * 8^(4/3) = 32 ms at 8000.
+            var rows = new[] { (1000, 2.0), (8000, 32.0), (64000, 512.0) };
+
+            var fit = FrameSizing.Largest(rows, 8.0);
+
+            Assert.That(fit.BelowRange, Is.False);
+            Assert.That(fit.AboveRange, Is.False);
+            Assert.That(fit.Particles, Is.EqualTo(1000 * Math.Pow(4, 0.75)).Within(1e-6));
+            Assert.That(fit.ToString(), Is.EqualTo("about 2,800 particles"));
+        }
+
+        [Test]
+        public void ABudgetOutsideTheMeasuredCountsSaysSo()
+        {
+            var rows = new[] { (4000, 3.0), (16000, 15.0) };
+
+            Assert.That(FrameSizing.Largest(rows, 1.0).ToString(), Is.EqualTo("fewer than 4,000 particles (the fewest measured)"));
+            Assert.That(FrameSizing.Largest(rows, 100.0).ToString(), Is.EqualTo("more than 16,000 particles (the most measured)"));
+        }
+
+        [Test]
+        public void ARowBeyondTheFirstOverBudgetIsNotConsulted()
+        {
+            // 16000 is over budget; a noisy 32000 that reads under it must not move the fit past 16000.
+            var rows = new[] { (32000, 5.0), (4000, 2.0), (16000, 12.0) };
+
+            var fit = FrameSizing.Largest(rows, 8.0);
+
+            Assert.That(fit.Particles, Is.GreaterThan(4000).And.LessThan(16000));
+        }
+
+        [Test]
+        public void TheDefaultBudgetIsHalfASixtiethOfASecond()
+        {
+            Assert.That(FrameSizing.DefaultBudgetMs, Is.EqualTo(8.333).Within(0.001));
+        }
+    }
+}
