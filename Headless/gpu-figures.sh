@@ -10,7 +10,7 @@
 #   pareto    the accuracy-for-time matrix at 100k and 250k: WCSPH x1 and x4 stiffness, DFSPH at 1, 0.1 and 0.01 %,
 #             the scene's CFL number; its table, CSV and Pareto chart. With 1M (PARETO_SCALES="24 60 240") it outran
 #             300 s on an H200: each DFSPH row at 1M spends 100 iterations a sub-step until it turns unhealthy.
-#   scenes    60 Hz sizing: bench of every shipped demo scene at its own particle count and at 2 to 64 times it
+#   scenes    60 Hz sizing: bench of every shipped demo scene at its own particle count and at 1/4 to 64 times it
 #             (--particles-scales), each under its own solver and OilAndWater under DFSPH too, GPU ms per 60 Hz frame
 #             and the largest count whose frame fits half of 16.7 ms, here and on a GPU with BANDWIDTH_RATIO (16.7: an
 #             H200's 4.8 TB/s against a GeForce RTX 4060 Ti's 288 GB/s) times less memory bandwidth.
@@ -43,7 +43,7 @@ realtime_limit="${REALTIME_LIMIT:-300}"
 bench_limit="${BENCH_LIMIT:-120}"
 pareto_limit="${PARETO_LIMIT:-300}"
 seconds="${RUN_SECONDS:-1}"
-scene_scales="${SCENE_SCALES:-1 2 4 8 16 32 64}"
+scene_scales="${SCENE_SCALES:-0.25 0.5 1 2 4 8 16 32 64}"
 bandwidth_ratio="${BANDWIDTH_RATIO:-16.7}"
 scenes_limit="${SCENES_LIMIT:-90}"
 layering_seconds="${LAYERING_SECONDS:-6.5}"

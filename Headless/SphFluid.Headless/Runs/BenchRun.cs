@@ -180,9 +180,13 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         b.AppendLine(string.Format(C, "- on this device: {0}", DeviceFit));
         if (options.BandwidthRatio.HasValue)
         {
-            SlowerGpuFit = FrameSizing.Largest(Rows.Select(r => (r.Particles, r.FrameGpuMs * ratio)).ToList(), options.FrameBudgetMs);
-            b.AppendLine(string.Format(C, "- on a GPU with {0:G3} times less memory bandwidth (this device's GPU ms x {0:G3}; small scenes, which wait on dispatch latency more than on memory, are overstated): {1}",
-                ratio, SlowerGpuFit));
+            var cost = FrameSizing.SplitCost(Rows.Select(r => (r.Particles, r.GpuMs)).ToList());
+            SlowerGpuFit = FrameSizing.Largest(Rows.Select(r => (r.Particles, r.FrameSubsteps * (cost.FixedMs + ratio * cost.MsPerParticle * r.Particles))).ToList(),
+                options.FrameBudgetMs);
+            var allScaled = FrameSizing.Largest(Rows.Select(r => (r.Particles, r.FrameGpuMs * ratio)).ToList(), options.FrameBudgetMs);
+            b.AppendLine(string.Format(C, "- on a GPU with {0:G3} times less memory bandwidth: {1}, its sub-step taken as this device's fixed {2:F4} ms plus {0:G3} x {3:G3} ms per 1000 particles "
+                + "(least squares over the rows); {4} if all of this device's GPU time is multiplied by {0:G3}",
+                ratio, SlowerGpuFit, cost.FixedMs, cost.MsPerParticle * 1000, allScaled));
         }
         return b.ToString();
     }

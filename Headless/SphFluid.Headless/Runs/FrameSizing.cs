@@ -10,8 +10,9 @@ namespace SphFluid.Headless.Runs;
 /// milliseconds per frame (a sub-step's GPU time times the sub-steps of dt a 60 Hz frame takes) measured at several
 /// particle counts, interpolated to the count that spends a budget. Another GPU is estimated by multiplying the measured
 /// milliseconds by how many times less memory bandwidth it has (issue #8: the neighbour loops that are most of a
-/// sub-step stream particles, so they scale with bandwidth). That overstates the time of small scenes, whose GPU time is
-/// mostly dispatch latency that a slower card does not multiply, so the estimate errs towards fewer particles.
+/// sub-step stream particles, so they scale with bandwidth). Scaling all of it overstates small scenes, whose GPU time
+/// is mostly the fixed cost of a sub-step's dispatches, which a slower card does not multiply; so a sub-step's GPU time
+/// is also split into a fixed part and a part per particle (<see cref="SplitCost"/>) and only the latter is scaled.
 /// </summary>
 public static class FrameSizing
 {
@@ -56,6 +57,36 @@ public static class FrameSizing
             return new Fit(n0 * Math.Exp(slope * Math.Log(budgetMs / t0)), false, false);
         }
         return new Fit(sorted[^1].Particles, false, true);
+    }
+
+    /// <summary>
+    /// A sub-step's GPU time as <paramref name="FixedMs"/> plus <paramref name="MsPerParticle"/> times the particles: the
+    /// least-squares fit of the measured rows in relative error (each row weighs alike, whatever its size), neither
+    /// part below zero. One row, or rows of one count, give no split: all of it is per particle.
+    /// </summary>
+    public sealed record Cost(double FixedMs, double MsPerParticle)
+    {
+        public double SubstepMs(double particles) => FixedMs + MsPerParticle * particles;
+    }
+
+    public static Cost SplitCost(IReadOnlyList<(int Particles, double SubstepMs)> rows)
+    {
+        if (rows.Count == 0) throw new ArgumentException("no measured rows", nameof(rows));
+        // Minimise sum ((a + b n - t) / t)^2: the normal equations of x = (1/t, n/t) against 1.
+        double s11 = 0, s12 = 0, s22 = 0, r1 = 0, r2 = 0;
+        foreach (var (n, t) in rows)
+        {
+            if (!(t > 0)) continue;
+            double x1 = 1 / t, x2 = n / t;
+            s11 += x1 * x1; s12 += x1 * x2; s22 += x2 * x2; r1 += x1; r2 += x2;
+        }
+        double det = s11 * s22 - s12 * s12;
+        double perParticleOnly = s22 > 0 ? r2 / s22 : 0;
+        if (!(Math.Abs(det) > 1e-12 * s11 * s22)) return new Cost(0, perParticleOnly);
+        double a = (r1 * s22 - r2 * s12) / det, b = (s11 * r2 - s12 * r1) / det;
+        if (a < 0) return new Cost(0, perParticleOnly);
+        if (b < 0) return new Cost(r1 / s11, 0);
+        return new Cost(a, b);
     }
 
     static double RoundToTwoFigures(double x)

@@ -43,6 +43,31 @@ namespace SphFluid.Tests.Runner
         }
 
         [Test]
+        public void ASubstepSplitsIntoAFixedPartAndAPartPerParticle()
+        {
+            // 0.1 ms of dispatches plus 2 microseconds per 1000 particles, exactly.
+            var rows = new[] { (4000, 0.108), (16000, 0.132), (64000, 0.228) };
+
+            var cost = FrameSizing.SplitCost(rows);
+
+            Assert.That(cost.FixedMs, Is.EqualTo(0.1).Within(1e-9));
+            Assert.That(cost.MsPerParticle, Is.EqualTo(2e-6).Within(1e-12));
+            Assert.That(cost.SubstepMs(1000), Is.EqualTo(0.102).Within(1e-9));
+        }
+
+        [Test]
+        public void ASplitNeverGoesBelowZero()
+        {
+            // Time falling with the count (noise) has no positive per-particle part; time that grows faster than the
+            // count would need a negative fixed part. Neither is returned.
+            Assert.That(FrameSizing.SplitCost(new[] { (1000, 0.2), (2000, 0.1) }).MsPerParticle, Is.EqualTo(0));
+            var steep = FrameSizing.SplitCost(new[] { (1000, 0.1), (2000, 0.4) });
+            Assert.That(steep.FixedMs, Is.EqualTo(0));
+            Assert.That(steep.MsPerParticle, Is.GreaterThan(0));
+            Assert.That(FrameSizing.SplitCost(new[] { (1000, 0.5) }).SubstepMs(1000), Is.EqualTo(0.5).Within(1e-12));
+        }
+
+        [Test]
         public void TheDefaultBudgetIsHalfASixtiethOfASecond()
         {
             Assert.That(FrameSizing.DefaultBudgetMs, Is.EqualTo(8.333).Within(0.001));
