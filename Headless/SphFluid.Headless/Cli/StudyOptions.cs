@@ -52,8 +52,8 @@ average and max density error per phase (|rho/rho0 - 1|, GPU diagnostics, averag
 samples), the divergence error (DFSPH), the energy drift ((E_end - E_0) / E_0, kinetic + potential), the
 scene's observables at the end (layering index, surge front, column height at the back wall) and their
 error against the finest configuration run (largest particle scale, smallest CFL, tightest solver), the
-pressure-solver iterations per sub-step and the share of DFSPH solves cut off at the iteration limit
-(above 0, the density error can exceed the tolerance; a line under the table names those rows),
+pressure-solver iterations per sub-step and the shares of DFSPH density and divergence solves cut off at
+the iteration limit (above 0, that error can exceed its tolerance; a line under the table names the rows),
 sub-steps, GPU ms and wall ms per simulated second and the real-time factor. Writes study.csv, study.md
 (the same table in Markdown) and study-pareto.png/.svg (observable error against wall time per
 simulated second, log axes, one series per solver) into --out.

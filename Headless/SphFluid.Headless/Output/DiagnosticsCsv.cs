@@ -19,8 +19,9 @@ public sealed record DiagnosticsRow(double Time, int Frame, StepReport Step, Dia
 /// potential_energy_J (<see cref="FluidMeasures"/>); then clamp_hits (particles the last-resort wall clamp caught since spawn:
 /// 0 while the boundary particles hold the fluid); then density_iterations and divergence_iterations (DFSPH: mean
 /// corrections per solve since the previous row; 0 with WCSPH) and divergence_error_pct_per_s (mean |D rho / Dt| / rho0,
-/// either solver); then solves_cut_off_share (DFSPH: share, 0 to 1, of the solves of both kinds since the previous row
-/// that ran out of rounds before their tolerance; 0 with WCSPH), last so that the columns before it keep their places.
+/// either solver); then density_solves_cut_off and divergence_solves_cut_off (DFSPH: share, 0 to 1, of each kind's solves
+/// since the previous row that ran out of rounds before their tolerance; 0 with WCSPH), last so that the columns before
+/// them keep their places.
 /// NaN where a figure does not exist (an empty phase, no pair to order).
 /// </summary>
 public sealed class DiagnosticsCsv : IDisposable
@@ -38,7 +39,7 @@ public sealed class DiagnosticsCsv : IDisposable
         var header = new StringBuilder("time_s,frame,substeps,dt_s,particles,total_mass_kg,kinetic_energy_J,max_speed_mps,nan_count,outside_count");
         foreach (string n in ColumnPrefixes(phases))
             foreach (string column in PhaseColumns) header.Append(',').Append(n).Append('_').Append(column);
-        header.Append(",layering_index,interface_tilt_m,surge_front_m,back_wall_column_m,potential_energy_J,clamp_hits,density_iterations,divergence_iterations,divergence_error_pct_per_s,solves_cut_off_share");
+        header.Append(",layering_index,interface_tilt_m,surge_front_m,back_wall_column_m,potential_energy_J,clamp_hits,density_iterations,divergence_iterations,divergence_error_pct_per_s,density_solves_cut_off,divergence_solves_cut_off");
         _writer.WriteLine(header);
     }
 
@@ -58,9 +59,9 @@ public sealed class DiagnosticsCsv : IDisposable
                 q?.CompressionAverage ?? double.NaN, q?.CompressionMax ?? double.NaN, q?.ExpansionAverage ?? double.NaN, q?.ExpansionMax ?? double.NaN,
                 q?.MeanHeight ?? double.NaN, q?.Bottom ?? double.NaN, q?.Top ?? double.NaN, q?.FloorShare ?? double.NaN, q?.WallShare ?? double.NaN));
         }
-        line.Append(string.Format(c, ",{0:G6},{1:G6},{2:G6},{3:G6},{4:G6},{5},{6:G4},{7:G4},{8:G6},{9:G4}",
+        line.Append(string.Format(c, ",{0:G6},{1:G6},{2:G6},{3:G6},{4:G6},{5},{6:G4},{7:G4},{8:G6},{9:G4},{10:G4}",
             m?.LayeringIndex ?? double.NaN, m?.InterfaceTilt ?? double.NaN, m?.SurgeFront ?? double.NaN, m?.BackWallColumn ?? double.NaN, m?.PotentialEnergy ?? double.NaN, r.ClampHits,
-            r.DensitySolveIterations, r.DivergenceSolveIterations, r.DivergenceError, r.SolvesCutOffShare));
+            r.DensitySolveIterations, r.DivergenceSolveIterations, r.DivergenceError, r.DensitySolvesCutOff, r.DivergenceSolvesCutOff));
         _writer.WriteLine(line);
         _writer.Flush();
     }

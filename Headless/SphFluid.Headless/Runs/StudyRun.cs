@@ -45,9 +45,13 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         public readonly double[] DensityErrorAverage = new double[phaseNames.Length], DensityErrorMax = new double[phaseNames.Length];
         public double DivergenceError, EnergyDrift, SolverIterations;
 
-        /// <summary>DFSPH: mean over the samples of the share of solves cut off at their rounds before their tolerance
-        /// (DiagnosticsReport.SolvesCutOffShare); 0 with WCSPH. Above 0 the row's density error is not the tolerance's.</summary>
-        public double SolvesCutOffShare;
+        /// <summary>DFSPH: mean over the samples of the share of constant-density solves cut off at their rounds before
+        /// their tolerance (DiagnosticsReport.DensitySolvesCutOff); 0 with WCSPH. Above 0 the row's density error is not
+        /// the tolerance's.</summary>
+        public double DensitySolvesCutOff;
+
+        /// <summary>The same for the divergence-free solves (DiagnosticsReport.DivergenceSolvesCutOff).</summary>
+        public double DivergenceSolvesCutOff;
         public double Layering, SurgeFront, Column;
         public double LayeringError, FrontError, ColumnError, ObservableError;
 
@@ -151,7 +155,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         int phases = sim.Phases.Count;
         var row = new Row(config, sim.ParticleCount, sim.Phases.Select(p => p.Name).ToArray());
         int samples = 0;
-        double energy0 = double.NaN, energy = double.NaN, divergence = 0, iterations = 0, cutOff = 0;
+        double energy0 = double.NaN, energy = double.NaN, divergence = 0, iterations = 0, densityCutOff = 0, divergenceCutOff = 0;
         FluidMeasures Sample()
         {
             var report = sim.ReadDiagnostics();
@@ -165,7 +169,8 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
             }
             divergence += report.DivergenceError;
             iterations += report.DensitySolveIterations + report.DivergenceSolveIterations;
-            cutOff += report.SolvesCutOffShare;
+            densityCutOff += report.DensitySolvesCutOff;
+            divergenceCutOff += report.DivergenceSolvesCutOff;
             energy = report.KineticEnergy + measures.PotentialEnergy;
             if (double.IsNaN(energy0)) energy0 = energy;
             samples++;
@@ -206,7 +211,8 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         for (int k = 0; k < phases; k++) row.DensityErrorAverage[k] /= samples;
         row.DivergenceError = divergence / samples;
         row.SolverIterations = iterations / samples;
-        row.SolvesCutOffShare = cutOff / samples;
+        row.DensitySolvesCutOff = densityCutOff / samples;
+        row.DivergenceSolvesCutOff = divergenceCutOff / samples;
         row.EnergyDrift = Math.Abs(energy0) > 0 ? (energy - energy0) / Math.Abs(energy0) : 0;
         row.Layering = last.LayeringIndex;
         row.SurgeFront = last.SurgeFront;
@@ -246,15 +252,15 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         b.Append("solver,stiffness_factor,density_tolerance_pct,particles_scale,cfl,particles");
         foreach (string p in Rows[0].PhaseNames) b.Append(C, $",{p.ToLowerInvariant()}_density_error_avg,{p.ToLowerInvariant()}_density_error_max");
         b.AppendLine(",divergence_error,energy_drift,layering_index,surge_front_m,column_m,layering_error,front_error,column_error,observable_error,"
-            + "solver_iterations_per_step,solves_cut_off_share,substeps_per_s,gpu_ms_per_s,wall_ms_per_s,real_time_factor,finest,status");
+            + "solver_iterations_per_step,density_solves_cut_off,divergence_solves_cut_off,substeps_per_s,gpu_ms_per_s,wall_ms_per_s,real_time_factor,finest,status");
         foreach (var r in Rows)
         {
             b.Append(string.Format(C, "{0},{1:G6},{2:G6},{3:G6},{4:G6},{5}", SolverChoice.ShortName(r.Config.Solver), r.Config.StiffnessFactor,
                 r.Config.Solver == PressureSolver.Dfsph ? r.Config.DensityTolerance : double.NaN, r.Config.ParticleScale, r.Config.Cfl, r.Particles));
             for (int k = 0; k < phases; k++) b.Append(string.Format(C, ",{0:G6},{1:G6}", r.DensityErrorAverage[k], r.DensityErrorMax[k]));
-            b.AppendLine(string.Format(C, ",{0:G6},{1:G6},{2:G6},{3:G6},{4:G6},{5:G6},{6:G6},{7:G6},{8:G6},{9:G6},{10:G6},{11:G6},{12:G6},{13:G6},{14:G6},{15},{16}",
+            b.AppendLine(string.Format(C, ",{0:G6},{1:G6},{2:G6},{3:G6},{4:G6},{5:G6},{6:G6},{7:G6},{8:G6},{9:G6},{10:G6},{11:G6},{12:G6},{13:G6},{14:G6},{15:G6},{16},{17}",
                 r.DivergenceError, r.EnergyDrift, r.Layering, r.SurgeFront, r.Column, r.LayeringError, r.FrontError, r.ColumnError, r.ObservableError,
-                r.SolverIterations, r.SolvesCutOffShare, r.SubstepsPerSecond, r.GpuMsPerSecond, r.WallMsPerSecond, r.RealTimeFactor, r == Finest ? "yes" : "no",
+                r.SolverIterations, r.DensitySolvesCutOff, r.DivergenceSolvesCutOff, r.SubstepsPerSecond, r.GpuMsPerSecond, r.WallMsPerSecond, r.RealTimeFactor, r == Finest ? "yes" : "no",
                 r.Failure == null ? "ok" : "failed: " + r.Failure.Replace(',', ';')));
         }
         return b.ToString();
@@ -267,12 +273,13 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         b.AppendLine(string.Format(C, "Study of {0} on {1}: {2:G3} s simulated per configuration; density error |rho/rho0 - 1| avg / max per phase; "
             + "observable error = largest of |layering - ref| / 2, |front - ref| / length, |column - ref| / height against the finest run (ref)", sceneName, deviceName, options.Seconds));
         b.AppendLine();
-        b.AppendLine("| configuration | scale | CFL | particles | density error avg / max | div. error | energy drift | layering | front m | column m | obs. error | iter/step | cut off | sub-steps/s | GPU ms/s | wall ms/s | real time |");
+        b.AppendLine("| configuration | scale | CFL | particles | density error avg / max | div. error | energy drift | layering | front m | column m | obs. error | iter/step | cut off (density / div.) | sub-steps/s | GPU ms/s | wall ms/s | real time |");
         b.AppendLine("|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
         foreach (var r in Rows)
         {
             string density = string.Join("; ", r.PhaseNames.Select((p, k) => string.Format(C, "{0} {1:P2} / {2:P2}", p, r.DensityErrorAverage[k], r.DensityErrorMax[k])));
-            string cutOff = r.Config.Solver == PressureSolver.Dfsph ? r.SolvesCutOffShare.ToString("P1", C) : "-";
+            string cutOff = r.Config.Solver == PressureSolver.Dfsph
+                ? r.DensitySolvesCutOff.ToString("P1", C) + " / " + r.DivergenceSolvesCutOff.ToString("P1", C) : "-";
             b.AppendLine(string.Format(C, "| {0}{1} | {2:G3} | {3:G3} | {4} | {5} | {6:G3} | {7:P2} | {8:F2} | {9:F3} | {10:F3} | {11:G3} | {12:F1} | {13} | {14:F0} | {15:F0} | {16:F0} | {17:G3}x |",
                 r.Config.Label, r == Finest ? " (ref)" : r.Failure != null ? " (FAILED)" : "", r.Config.ParticleScale, r.Config.Cfl, r.Particles, density,
                 r.DivergenceError, r.EnergyDrift, r.Layering, r.SurgeFront, r.Column, r.ObservableError, r.SolverIterations, cutOff, r.SubstepsPerSecond,
@@ -291,10 +298,11 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
     /// it a tight tolerance's row reads as if it met its tolerance, at the same cost as a looser one that did.</summary>
     public static string? CutOffNote(IEnumerable<Row> rows)
     {
-        var cut = rows.Where(r => r.Config.Solver == PressureSolver.Dfsph && r.SolvesCutOffShare > 0).ToList();
+        var cut = rows.Where(r => r.Config.Solver == PressureSolver.Dfsph && (r.DensitySolvesCutOff > 0 || r.DivergenceSolvesCutOff > 0)).ToList();
         if (cut.Count == 0) return null;
         string names = string.Join(", ", cut.Select(r => string.Format(C, "{0} (scale {1:G3}, CFL {2:G3})", r.Config.Label, r.Config.ParticleScale, r.Config.Cfl)));
         return "Cut off: these DFSPH rows stopped solves at the iteration limit (MaxSolverIterations or the frame's budget of rounds) "
-            + "before their tolerance, so their density error can be above the tolerance asked for: " + names + ".";
+            + "before their tolerance, so their density error (density solves) or divergence error (divergence solves) can be above the "
+            + "tolerance asked for: " + names + ".";
     }
 }

@@ -59,7 +59,7 @@ namespace SphFluid.Tests.Runner
             ChartFiles.Check(outDir, "layering", "Layering over time: OilAndWater", "simulated time (s)", "mean height above the floor (m)",
                 "layering index", "Water mean height", "Oil mean height");
             Assert.That(File.Exists(Path.Combine(outDir, "top_0000.png")), Is.True);
-            Assert.That(File.ReadAllLines(Path.Combine(outDir, "diagnostics.csv"))[0], Does.EndWith("oil_mean_height_m,oil_bottom_m,oil_top_m,oil_floor_share,oil_wall_share,layering_index,interface_tilt_m,surge_front_m,back_wall_column_m,potential_energy_J,clamp_hits,density_iterations,divergence_iterations,divergence_error_pct_per_s,solves_cut_off_share"));
+            Assert.That(File.ReadAllLines(Path.Combine(outDir, "diagnostics.csv"))[0], Does.EndWith("oil_mean_height_m,oil_bottom_m,oil_top_m,oil_floor_share,oil_wall_share,layering_index,interface_tilt_m,surge_front_m,back_wall_column_m,potential_energy_J,clamp_hits,density_iterations,divergence_iterations,divergence_error_pct_per_s,density_solves_cut_off,divergence_solves_cut_off"));
             Assert.That(stdout.ToString(), Does.Contain("scaled x0.1"));
             Assert.That(run.Summary.OrFail("the run's summary").Frames, Is.EqualTo(2));
         }

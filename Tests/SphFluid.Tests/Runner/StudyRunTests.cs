@@ -38,14 +38,14 @@ namespace SphFluid.Tests.Runner
             Assert.That(csv.Length, Is.EqualTo(9));
             Assert.That(csv[0], Does.StartWith("solver,stiffness_factor,density_tolerance_pct,particles_scale,cfl,particles,water_density_error_avg"));
             Assert.That(csv.Count(l => l.EndsWith(",yes,ok", StringComparison.Ordinal)), Is.EqualTo(1), "one finest run");
-            Assert.That(csv[0], Does.Contain(",solver_iterations_per_step,solves_cut_off_share,substeps_per_s,"));
+            Assert.That(csv[0], Does.Contain(",solver_iterations_per_step,density_solves_cut_off,divergence_solves_cut_off,substeps_per_s,"));
             string markdown = File.ReadAllText(Path.Combine(outDir, "study.md"));
             Assert.That(markdown, Does.Contain("| DFSPH 0.01 % (ref) | 0.5 |"));
-            Assert.That(markdown, Does.Contain("| iter/step | cut off | sub-steps/s |"));
+            Assert.That(markdown, Does.Contain("| iter/step | cut off (density / div.) | sub-steps/s |"));
             foreach (var row in run.Rows)
-                TestContext.Progress.WriteLine($"{row.Config.Label}, scale {row.Config.ParticleScale}: {row.SolverIterations:F1} iterations per sub-step, {row.SolvesCutOffShare:P1} of solves cut off");
-            Assert.That(run.Rows.Where(r => r.Config.Solver == PressureSolver.Wcsph).Select(r => r.SolvesCutOffShare), Is.All.EqualTo(0.0));
-            Assert.That(markdown.Contains("Cut off: these DFSPH rows"), Is.EqualTo(run.Rows.Any(r => r.SolvesCutOffShare > 0)), "the note under the table");
+                TestContext.Progress.WriteLine($"{row.Config.Label}, scale {row.Config.ParticleScale}: {row.SolverIterations:F1} iterations per sub-step, {row.DensitySolvesCutOff:P1} / {row.DivergenceSolvesCutOff:P1} of density / divergence solves cut off");
+            Assert.That(run.Rows.Where(r => r.Config.Solver == PressureSolver.Wcsph).Select(r => r.DensitySolvesCutOff + r.DivergenceSolvesCutOff), Is.All.EqualTo(0.0));
+            Assert.That(markdown.Contains("Cut off: these DFSPH rows"), Is.EqualTo(run.Rows.Any(r => r.DensitySolvesCutOff + r.DivergenceSolvesCutOff > 0)), "the note under the table");
             ChartFiles.Check(outDir, "study-pareto", "Accuracy for time: PlayModeTest", "wall time per simulated second (ms, log)",
                 "observable error vs finest run (relative, log)", "WCSPH", "DFSPH");
         }
@@ -85,12 +85,12 @@ namespace SphFluid.Tests.Runner
         public void TheCutOffNoteNamesOnlyTheDfsphRowsThatCutSolvesOff()
         {
             StudyRun.Row Row(PressureSolver solver, double tolerance, double share) =>
-                new StudyRun.Row(new StudyRun.Configuration(solver, 1, tolerance, 0.5, 0.4), 100, new[] { "Water" }) { SolvesCutOffShare = share };
+                new StudyRun.Row(new StudyRun.Configuration(solver, 1, tolerance, 0.5, 0.4), 100, new[] { "Water" }) { DensitySolvesCutOff = share };
 
             Assert.That(StudyRun.CutOffNote(new[] { Row(PressureSolver.Wcsph, 0, 0), Row(PressureSolver.Dfsph, 1, 0) }), Is.Null);
             string? note = StudyRun.CutOffNote(new[] { Row(PressureSolver.Dfsph, 1, 0), Row(PressureSolver.Dfsph, 0.01, 0.25), Row(PressureSolver.Dfsph, 0.001, 1) });
             Assert.That(note, Does.StartWith("Cut off: these DFSPH rows stopped solves at the iteration limit")
-                .And.Contain("density error can be above the tolerance asked for")
+                .And.Contain("density error (density solves) or divergence error (divergence solves) can be above the tolerance asked for")
                 .And.EndWith(": DFSPH 0.01 % (scale 0.5, CFL 0.4), DFSPH 0.001 % (scale 0.5, CFL 0.4)."));
         }
 

@@ -68,11 +68,14 @@ namespace SphFluid.Simulation
         /// 0 with WCSPH.</summary>
         public float DivergenceSolveIterations { get; internal set; }
 
-        /// <summary>DFSPH: share (0 to 1) of the solves of both kinds since the previous report that ran out of their
-        /// recorded rounds (MaxSolverIterations, or fewer by FluidSimulation.SolveBudget) before reaching their tolerance;
-        /// 0 with WCSPH. Above 0 the density error may exceed DensityTolerance, and a tighter tolerance buys nothing
-        /// but the same capped cost, which the iteration means alone do not tell.</summary>
-        public float SolvesCutOffShare { get; internal set; }
+        /// <summary>DFSPH: share (0 to 1) of the constant-density solves since the previous report that ran out of their
+        /// recorded rounds (MaxSolverIterations, or fewer by FluidSimulation.SolveBudget) before reaching DensityTolerance;
+        /// 0 with WCSPH. Above 0 the density error may exceed the tolerance, and a tighter tolerance buys nothing but the
+        /// same capped cost, which the iteration means alone do not tell.</summary>
+        public float DensitySolvesCutOff { get; internal set; }
+
+        /// <summary>DFSPH: the same share for the divergence-free solves and DivergenceTolerance.</summary>
+        public float DivergenceSolvesCutOff { get; internal set; }
 
         /// <summary>Average |D rho / Dt| / rho0 over the fluid, %/s: how far the velocity field is from
         /// divergence-free (the divergence error of the accuracy study).</summary>
@@ -128,8 +131,8 @@ namespace SphFluid.Simulation
                 SimulatedTime, TotalMass, KineticEnergy, MaxSpeed, NanCount, OutsideCount, ClampHits);
             b.AppendFormat(CultureInfo.InvariantCulture, " div={0:G3} %/s", DivergenceError);
             if (PressureSolver == PressureSolver.Dfsph)
-                b.AppendFormat(CultureInfo.InvariantCulture, " DFSPH iterations density {0:F1} divergence {1:F1} cut off {2:P0}",
-                    DensitySolveIterations, DivergenceSolveIterations, SolvesCutOffShare);
+                b.AppendFormat(CultureInfo.InvariantCulture, " DFSPH iterations density {0:F1} ({1:P0} cut off) divergence {2:F1} ({3:P0} cut off)",
+                    DensitySolveIterations, DensitySolvesCutOff, DivergenceSolveIterations, DivergenceSolvesCutOff);
             foreach (var p in Phases) b.Append(" | ").Append(p);
             return b.ToString();
         }

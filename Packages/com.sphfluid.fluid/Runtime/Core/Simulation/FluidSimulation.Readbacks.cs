@@ -88,8 +88,8 @@ namespace SphFluid.Simulation
         }
 
         /// <summary>Rows of DiagnosticsFinal: [0] KE, vmax, NaN count, outside count; [1 + k] phase k's count,
-        /// mean and max compression; [1 + phases] clamp hits; [2 + phases] mean |D delta / Dt| / delta0 (1/s), the
-        /// DFSPH solves' mean corrections per solve and the share of the solves cut off.</summary>
+        /// mean and max compression; [1 + phases] clamp hits and the shares of the DFSPH solves cut off; [2 + phases]
+        /// mean |D delta / Dt| / delta0 (1/s) and the DFSPH solves' mean corrections per solve.</summary>
         void Refill(DiagnosticsReport report, PhaseDiagnostics[] phases, Vector4[] rows, double time)
         {
             double mass = 0;
@@ -106,7 +106,8 @@ namespace SphFluid.Simulation
             report.DivergenceError = 100f * solves.X;
             report.DensitySolveIterations = solves.Y;
             report.DivergenceSolveIterations = solves.Z;
-            report.SolvesCutOffShare = solves.W;
+            report.DensitySolvesCutOff = rows[1 + _phases.Count].Y;
+            report.DivergenceSolvesCutOff = rows[1 + _phases.Count].Z;
             report.PressureSolver = _scene.Settings.PressureSolver;
         }
 
