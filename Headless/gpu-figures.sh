@@ -20,7 +20,8 @@
 # limit, so a slow step costs only itself. The environment can change the sizes, the solvers the bench stage times and
 # each step's limit in seconds: REALTIME_SCALES, PARETO_SCALES, BENCH_PARTICLES, BENCH_SOLVERS ("dfsph wcsph"),
 # RUN_SECONDS, REALTIME_LIMIT (300), BENCH_LIMIT (120 each), PARETO_LIMIT (300), SCENE_SCALES, BANDWIDTH_RATIO,
-# SCENES_LIMIT (90 each), LAYERING_SECONDS (6.5), LAYERING_LIMIT (150 each).
+# SCENES (the demo scenes the scenes stage benches), SCENES_LIMIT (90 each), LAYERING_SECONDS (6.5), LAYERING_LIMIT
+# (150 each).
 #
 # Writes into $OUT (the device tool's folder that comes back; else Output/gpu): gpu-figures.log (everything printed),
 # realtime.md/.csv, pareto.md/.csv/.png/.svg and layering-wcsph.csv/-dfsph.csv: nine files with every stage, over the
@@ -43,6 +44,7 @@ realtime_limit="${REALTIME_LIMIT:-300}"
 bench_limit="${BENCH_LIMIT:-120}"
 pareto_limit="${PARETO_LIMIT:-300}"
 seconds="${RUN_SECONDS:-1}"
+scene_names="${SCENES:-OilAndWater DamBreak Splash RotatingContainer SphereWake RestingTank}"
 scene_scales="${SCENE_SCALES:-0.25 0.5 1 2 4 8 16 32 64}"
 bandwidth_ratio="${BANDWIDTH_RATIO:-16.7}"
 scenes_limit="${SCENES_LIMIT:-90}"
@@ -112,7 +114,7 @@ for stage in "${stages[@]}"; do
         done
         ;;
     scenes)
-        for name in OilAndWater DamBreak Splash RotatingContainer SphereWake RestingTank; do
+        for name in $scene_names; do
             # shellcheck disable=SC2086
             step "$scenes_limit" bench "Assets/FluidDemo/Scenes/$name.unity" --particles-scales $scene_scales --skip-savings \
                 --bandwidth-ratio "$bandwidth_ratio" --out "$scratch/scenes-$name"
