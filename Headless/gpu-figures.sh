@@ -12,14 +12,15 @@
 #             300 s on an H200: each DFSPH row at 1M spends 100 iterations a sub-step until it turns unhealthy.
 #   scenes    60 Hz sizing: bench of every shipped demo scene at its own particle count and at 1/4 to 64 times it
 #             (--particles-scales), each under its own solver and OilAndWater under DFSPH too, GPU ms per 60 Hz frame
-#             and the largest count whose frame fits half of 16.7 ms, here and on a GPU with BANDWIDTH_RATIO (16.7: an
-#             H200's 4.8 TB/s against a GeForce RTX 4060 Ti's 288 GB/s) times less memory bandwidth.
+#             and the largest count whose frame fits half of 16.7 ms, here and on GPUs SLOWER_GPUS times slower per
+#             particle: 3 (a GeForce RTX 4060 Ti's 22 FP32 TFLOPS against an H100's or H200's 67) and 16.7 (its 288 GB/s
+#             against an H200's 4.8 TB/s of memory bandwidth, an upper bound: an H100 costs what an H200 does).
 #   layering  OilAndWater at its own size for 6.5 simulated seconds under each solver, diagnostics every 0.5 s: the
 #             interface's tilt and the layering of issue #5, at a speed lavapipe cannot give (sphfluid simulate).
 # The stages are named as arguments, run in the order given (default: realtime bench pareto). Each step has a time
 # limit, so a slow step costs only itself. The environment can change the sizes, the solvers the bench stage times and
 # each step's limit in seconds: REALTIME_SCALES, PARETO_SCALES, BENCH_PARTICLES, BENCH_SOLVERS ("dfsph wcsph"),
-# RUN_SECONDS, REALTIME_LIMIT (300), BENCH_LIMIT (120 each), PARETO_LIMIT (300), SCENE_SCALES, BANDWIDTH_RATIO,
+# RUN_SECONDS, REALTIME_LIMIT (300), BENCH_LIMIT (120 each), PARETO_LIMIT (300), SCENE_SCALES, SLOWER_GPUS,
 # SCENES (the demo scenes the scenes stage benches), SCENES_LIMIT (90 each), LAYERING_SECONDS (6.5), LAYERING_LIMIT
 # (150 each).
 #
@@ -46,7 +47,7 @@ pareto_limit="${PARETO_LIMIT:-300}"
 seconds="${RUN_SECONDS:-1}"
 scene_names="${SCENES:-OilAndWater DamBreak Splash RotatingContainer SphereWake RestingTank}"
 scene_scales="${SCENE_SCALES:-0.25 0.5 1 2 4 8 16 32 64}"
-bandwidth_ratio="${BANDWIDTH_RATIO:-16.7}"
+slower_gpus="${SLOWER_GPUS:-3 16.7}"
 scenes_limit="${SCENES_LIMIT:-90}"
 layering_seconds="${LAYERING_SECONDS:-6.5}"
 layering_limit="${LAYERING_LIMIT:-150}"
@@ -115,13 +116,13 @@ for stage in "${stages[@]}"; do
         ;;
     scenes)
         for name in $scene_names; do
-            # shellcheck disable=SC2086
+            # shellcheck disable=SC2086 # the scale and ratio lists are word lists
             step "$scenes_limit" bench "Assets/FluidDemo/Scenes/$name.unity" --particles-scales $scene_scales --skip-savings \
-                --bandwidth-ratio "$bandwidth_ratio" --out "$scratch/scenes-$name"
+                --slower-gpus $slower_gpus --out "$scratch/scenes-$name"
         done
         # shellcheck disable=SC2086
         step "$scenes_limit" bench "$scene" --solver dfsph --particles-scales $scene_scales --skip-savings \
-            --bandwidth-ratio "$bandwidth_ratio" --out "$scratch/scenes-OilAndWater-dfsph"
+            --slower-gpus $slower_gpus --out "$scratch/scenes-OilAndWater-dfsph"
         ;;
     layering)
         for solver in wcsph dfsph; do

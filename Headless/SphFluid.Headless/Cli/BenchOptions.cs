@@ -14,9 +14,9 @@ public sealed class BenchOptions(string scenePath)
     /// <summary>Particle-count multipliers of the scene's own count to measure instead (1 = the scene as it is).</summary>
     public List<double> ParticleScales { get; } = new();
 
-    /// <summary>How many times less memory bandwidth the GPU has whose 60 Hz sizing is estimated besides this device's
-    /// (<see cref="Runs.FrameSizing"/>); null: this device's sizing only.</summary>
-    public double? BandwidthRatio { get; set; }
+    /// <summary>Other GPUs whose 60 Hz sizing is estimated besides this device's, each as how many times longer it takes
+    /// per particle (<see cref="Runs.FrameSizing"/>); empty: this device's sizing only.</summary>
+    public List<double> SlowerGpus { get; } = new();
 
     /// <summary>GPU milliseconds of a 60 Hz frame the simulation may spend (<see cref="Runs.FrameSizing"/>).</summary>
     public double FrameBudgetMs { get; set; } = Runs.FrameSizing.DefaultBudgetMs;
@@ -75,9 +75,10 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
         "GPU milliseconds of a 60 Hz frame the simulation may spend; the bench prints the largest particle count whose frame "
         + "(GPU ms per sub-step x the sub-steps of 1/60 s) fits, interpolated between the counts measured, in [0.1, 1000] "
         + "(default: half of the frame's 16.7 ms, the rest left to drawing)", Runs.FrameSizing.DefaultBudgetMs);
-    readonly Option<double> _bandwidthRatio = OptionKinds.Number(Verb, "--bandwidth-ratio", 1, 1000, false, "", "R",
-        "also estimate that particle count for a GPU with R times less memory bandwidth than this device, its GPU time taken "
-        + "as this device's times R, in [1, 1000]");
+    readonly Option<List<double>> _slowerGpus = OptionKinds.List(Verb, "--slower-gpus", "R",
+        "also estimate that particle count for GPUs R times slower than this device per particle (its throughput over "
+        + "theirs), each in [1, 1000]: a sub-step is taken as this device's fixed cost plus R times its cost per particle",
+        text => Ranges.ParseDouble(Verb, "--slower-gpus", text, 1, 1000, false, ""));
     readonly Option<int> _steps = OptionKinds.Whole(Verb, "--steps", 1, 100_000, "N", "timed sub-steps per count, in [1, 100000]", 20);
     readonly Option<int> _warmup = OptionKinds.Whole(Verb, "--warmup", 0, 100_000, "N", "untimed sub-steps before timing, in [0, 100000]", 5);
     readonly Option<double> _warmupSeconds = OptionKinds.Number(Verb, "--warmup-seconds", 0, 60, false, "s", "S",
@@ -99,7 +100,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
         Add(_particles);
         Add(_scales);
         Add(_frameBudget);
-        Add(_bandwidthRatio);
+        Add(_slowerGpus);
         Add(_steps);
         Add(_warmup);
         Add(_warmupSeconds);
@@ -127,7 +128,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
         if (OptionKinds.Given(r, _scales) is { } scales) options.ParticleScales.AddRange(scales);
         if (options.Particles.Count > 0 && options.ParticleScales.Count > 0)
             throw new UsageException($"{Verb}: give either --particles or --particles-scales, not both");
-        if (r.GetResult(_bandwidthRatio) is { Implicit: false }) options.BandwidthRatio = r.GetValue(_bandwidthRatio);
+        if (OptionKinds.Given(r, _slowerGpus) is { } slower) options.SlowerGpus.AddRange(slower);
         return options;
     }
 }

@@ -165,28 +165,29 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
     /// <summary>The largest particle count whose 60 Hz frame fits the GPU budget on this device (<see cref="FrameSizing"/>).</summary>
     public FrameSizing.Fit? DeviceFit { get; private set; }
 
-    /// <summary>The same for a GPU with --bandwidth-ratio times less memory bandwidth; null without it.</summary>
-    public FrameSizing.Fit? SlowerGpuFit { get; private set; }
+    /// <summary>The same for each GPU of --slower-gpus, in its order.</summary>
+    public List<FrameSizing.Fit> SlowerGpuFits { get; } = new();
 
     string SizingText()
     {
         if (Rows.Count == 0 || Rows.Any(r => r.GpuMs <= 0)) return "";
-        double ratio = options.BandwidthRatio ?? 1;
         DeviceFit = FrameSizing.Largest(Rows.Select(r => (r.Particles, r.FrameGpuMs)).ToList(), options.FrameBudgetMs);
         var b = new StringBuilder();
         b.AppendLine();
         b.AppendLine(string.Format(C, "60 Hz sizing ({0}): a frame's GPU ms is the GPU ms per sub-step times the sub-steps of 1/60 s; within {1:G3} ms of GPU time a frame",
             SolverName, options.FrameBudgetMs));
         b.AppendLine(string.Format(C, "- on this device: {0}", DeviceFit));
-        if (options.BandwidthRatio.HasValue)
+        if (options.SlowerGpus.Count == 0) return b.ToString();
+        var cost = FrameSizing.SplitCost(Rows.Select(r => (r.Particles, r.GpuMs)).ToList());
+        b.AppendLine(string.Format(C, "- a sub-step here: a fixed {0:F4} ms plus {1:G3} ms per 1000 particles (least squares over the rows)", cost.FixedMs, cost.MsPerParticle * 1000));
+        foreach (double ratio in options.SlowerGpus)
         {
-            var cost = FrameSizing.SplitCost(Rows.Select(r => (r.Particles, r.GpuMs)).ToList());
-            SlowerGpuFit = FrameSizing.Largest(Rows.Select(r => (r.Particles, r.FrameSubsteps * (cost.FixedMs + ratio * cost.MsPerParticle * r.Particles))).ToList(),
+            var fit = FrameSizing.Largest(Rows.Select(r => (r.Particles, r.FrameSubsteps * (cost.FixedMs + ratio * cost.MsPerParticle * r.Particles))).ToList(),
                 options.FrameBudgetMs);
+            SlowerGpuFits.Add(fit);
             var allScaled = FrameSizing.Largest(Rows.Select(r => (r.Particles, r.FrameGpuMs * ratio)).ToList(), options.FrameBudgetMs);
-            b.AppendLine(string.Format(C, "- on a GPU with {0:G3} times less memory bandwidth: {1}, its sub-step taken as this device's fixed {2:F4} ms plus {0:G3} x {3:G3} ms per 1000 particles "
-                + "(least squares over the rows); {4} if all of this device's GPU time is multiplied by {0:G3}",
-                ratio, SlowerGpuFit, cost.FixedMs, cost.MsPerParticle * 1000, allScaled));
+            b.AppendLine(string.Format(C, "- on a GPU {0:G3} times slower per particle: {1} (the same fixed cost, {0:G3} times the cost per particle); {2} if its fixed cost is {0:G3} times this one too",
+                ratio, fit, allScaled));
         }
         return b.ToString();
     }

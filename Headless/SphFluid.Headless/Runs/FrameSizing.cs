@@ -8,11 +8,12 @@ namespace SphFluid.Headless.Runs;
 /// <summary>
 /// How many particles a scene can have and still simulate a 60 Hz frame's worth of time in a frame: the GPU
 /// milliseconds per frame (a sub-step's GPU time times the sub-steps of dt a 60 Hz frame takes) measured at several
-/// particle counts, interpolated to the count that spends a budget. Another GPU is estimated by multiplying the measured
-/// milliseconds by how many times less memory bandwidth it has (issue #8: the neighbour loops that are most of a
-/// sub-step stream particles, so they scale with bandwidth). Scaling all of it overstates small scenes, whose GPU time
-/// is mostly the fixed cost of a sub-step's dispatches, which a slower card does not multiply; so a sub-step's GPU time
-/// is also split into a fixed part and a part per particle (<see cref="SplitCost"/>) and only the latter is scaled.
+/// particle counts, interpolated to the count that spends a budget. Another GPU is estimated from how many times slower
+/// it is per particle. Only that part is scaled: a sub-step's GPU time is split into a fixed part and a part per
+/// particle (<see cref="SplitCost"/>), and the fixed part, which is most of a small scene's, is each pass's longest
+/// thread walking its neighbourhood one candidate after another, a latency a smaller card of similar clock shares.
+/// Which throughput sets the ratio is measured, not assumed: an H100 and an H200, the same chip with 1.43 times the
+/// memory bandwidth apart, cost the same per particle (README), so the ratio is not the memory bandwidth's.
 /// </summary>
 public static class FrameSizing
 {

@@ -68,16 +68,16 @@ namespace SphFluid.Tests.Runner
         [Test]
         public void BenchTakesParticleScalesOrCountsButNotBoth()
         {
-            var options = BenchOptions.Parse(new[] { "x.unity", "--particles-scales", "1", "4", "--bandwidth-ratio", "16.7", "--frame-budget", "4" });
+            var options = BenchOptions.Parse(new[] { "x.unity", "--particles-scales", "1", "4", "--slower-gpus", "3", "16.7", "--frame-budget", "4" });
             Assert.That(options.ParticleScales, Is.EqualTo(new[] { 1.0, 4.0 }));
-            Assert.That(options.BandwidthRatio, Is.EqualTo(16.7));
+            Assert.That(options.SlowerGpus, Is.EqualTo(new[] { 3.0, 16.7 }));
             Assert.That(options.FrameBudgetMs, Is.EqualTo(4.0));
-            Assert.That(BenchOptions.Parse(new[] { "x.unity" }).BandwidthRatio, Is.Null);
+            Assert.That(BenchOptions.Parse(new[] { "x.unity" }).SlowerGpus, Is.Empty);
 
             Assert.That(Run(out _, out string err, "bench", "x.unity", "--particles", "1000", "--particles-scales", "2"), Is.EqualTo(ExitCodes.BadArguments));
             Assert.That(err, Does.Contain("bench: give either --particles or --particles-scales, not both"));
-            Assert.That(Run(out _, out err, "bench", "x.unity", "--bandwidth-ratio", "0.5"), Is.EqualTo(ExitCodes.BadArguments));
-            Assert.That(err, Does.Contain("--bandwidth-ratio must be in [1, 1000]"));
+            Assert.That(Run(out _, out err, "bench", "x.unity", "--slower-gpus", "0.5"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain("--slower-gpus must be in [1, 1000]"));
             Assert.That(Run(out _, out err, "bench", "x.unity", "--particles-scales", "5000"), Is.EqualTo(ExitCodes.BadArguments));
             Assert.That(err, Does.Contain("--particles-scales must be in [0.01, 4096]"));
         }
