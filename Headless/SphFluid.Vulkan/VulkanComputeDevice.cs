@@ -75,6 +75,9 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
     public string DeviceName { get; }
     /// <summary>Vulkan device type: DiscreteGpu, IntegratedGpu, VirtualGpu, Cpu or Other.</summary>
     public string DeviceType { get; }
+
+    public bool RunsOnCpu => DeviceType == nameof(PhysicalDeviceType.Cpu);
+
     /// <summary>Vulkan API version the device reports, e.g. "1.3.230".</summary>
     public string ApiVersion { get; }
     public ShaderCompiler Compiler { get; }

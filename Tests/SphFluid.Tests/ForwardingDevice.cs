@@ -17,6 +17,7 @@ namespace SphFluid.Tests
         protected virtual IComputeBuffer Unwrap(IComputeBuffer buffer) => buffer;
 
         public string DeviceName => Inner.DeviceName;
+        public bool RunsOnCpu => Inner.RunsOnCpu;
         public virtual IComputeProgram LoadProgram(string name) => Inner.LoadProgram(name);
         public virtual IComputeBuffer CreateBuffer(string name, int count, int stride) => Inner.CreateBuffer(name, count, stride);
         public virtual IComputeBuffer CreateConstantBuffer(string name, int bytes) => Inner.CreateConstantBuffer(name, bytes);

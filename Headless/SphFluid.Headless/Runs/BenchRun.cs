@@ -35,7 +35,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
     /// together, as the simulation steps a frame: the host cost of a submit and wait is shared by the frame.</param>
     /// <param name="FrameSubsteps">Sub-steps of dt in one 60 Hz frame.</param>
     public sealed record Row(int Particles, string Plan, double WallMs, double GpuMs, IReadOnlyDictionary<string, double> PassMs,
-        IReadOnlyList<(string Kernel, int Dispatches, double Ms)> Kernels, float TimeStep, bool Finite, double FrameWallMs, int FrameSubsteps)
+        IReadOnlyList<(string Kernel, int Dispatches, double Ms)> Kernels, float TimeStep, bool Finite, double FrameWallMs, int FrameSubsteps, int Lanes)
     {
         /// <summary>GPU ms a 60 Hz frame costs: the sub-step's GPU time times the frame's sub-steps.</summary>
         public double FrameGpuMs => GpuMs * FrameSubsteps;
@@ -247,7 +247,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         return new Row(sim.ParticleCount, sim.Plan.ToString(), wall / n, gpu / n,
             pass.Where(p => sim.Plan.Runs(p.Key)).ToDictionary(p => p.Key, p => p.Value / n),
             kernels.OrderByDescending(k => k.Value.Ms).Select(k => (k.Key, (int)Math.Round((double)k.Value.Dispatches / n), k.Value.Ms / n)).ToList(),
-            dt, report.NanCount == 0 && report.OutsideCount == 0, frameWall, frameSubsteps);
+            dt, report.NanCount == 0 && report.OutsideCount == 0, frameWall, frameSubsteps, sim.LanesPerParticle);
     }
 
     static void StepAndWait(FluidSimulation sim, IComputeDevice device, float dt, int substeps = 1)
@@ -263,12 +263,13 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         var b = new StringBuilder();
         var passes = Passes.Where(p => Rows.Any(r => r.PassMs.ContainsKey(p))).ToList();
         b.AppendLine();
-        b.AppendLine($"Scene {sceneName}, device {deviceName}, {SolverName}: milliseconds per sub-step (mean of {options.Steps}; GPU = sum of the pass ranges)");
+        b.AppendLine($"Scene {sceneName}, device {deviceName}, {SolverName}: milliseconds per sub-step (mean of {options.Steps}; GPU = sum of the pass ranges; "
+            + "lanes = threads per particle in the neighbour loops, NeighbourLanes)");
         b.AppendLine();
-        b.AppendLine("| particles | dt (ms) | wall ms | GPU ms | wall ms in a frame (sub-steps) | GPU ms per 60 Hz frame | " + string.Join(" | ", passes) + " |");
-        b.AppendLine("|---:|---:|---:|---:|---:|---:|" + string.Concat(passes.Select(_ => "---:|")));
+        b.AppendLine("| particles | lanes | dt (ms) | wall ms | GPU ms | wall ms in a frame (sub-steps) | GPU ms per 60 Hz frame | " + string.Join(" | ", passes) + " |");
+        b.AppendLine("|---:|---:|---:|---:|---:|---:|---:|" + string.Concat(passes.Select(_ => "---:|")));
         foreach (var r in Rows)
-            b.AppendLine(string.Format(C, "| {0} | {1:F3} | {2:F3} | {3:F3} | {4:F3} ({5}) | {6:F3} | ", r.Particles, r.TimeStep * 1000, r.WallMs, r.GpuMs, r.FrameWallMs, r.FrameSubsteps, r.FrameGpuMs)
+            b.AppendLine(string.Format(C, "| {0} | {7} | {1:F3} | {2:F3} | {3:F3} | {4:F3} ({5}) | {6:F3} | ", r.Particles, r.TimeStep * 1000, r.WallMs, r.GpuMs, r.FrameWallMs, r.FrameSubsteps, r.FrameGpuMs, r.Lanes)
                 + string.Join(" | ", passes.Select(p => r.PassMs.TryGetValue(p, out double ms) ? ms.ToString("F3", C) : "-")) + " |");
         var last = Rows.LastOrDefault();
         if (last != null && last.Kernels.Count > 0)

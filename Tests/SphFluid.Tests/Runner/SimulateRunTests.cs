@@ -143,7 +143,7 @@ namespace SphFluid.Tests.Runner
             Assert.That(code, Is.EqualTo(ExitCodes.Ok));
             Assert.That(bench.Rows.Count, Is.EqualTo(2));
             Assert.That(bench.Rows[0].Particles, Is.EqualTo(150).Within(15));
-            Assert.That(stdout.ToString(), Does.Contain("| particles | dt (ms) | wall ms | GPU ms | wall ms in a frame (sub-steps) |"));
+            Assert.That(stdout.ToString(), Does.Contain("| particles | lanes | dt (ms) | wall ms | GPU ms | wall ms in a frame (sub-steps) | GPU ms per 60 Hz frame |"));
             foreach (var row in bench.Rows)
             {
                 Assert.That(row.FrameSubsteps, Is.EqualTo((int)Math.Ceiling(1.0 / 60.0 / row.TimeStep)), "a 60 Hz frame's sub-steps");

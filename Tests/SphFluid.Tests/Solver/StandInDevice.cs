@@ -18,6 +18,7 @@ namespace SphFluid.Tests.Solver
         readonly Dictionary<string, int> _ids = new Dictionary<string, int>();
 
         public string DeviceName => "stand-in (no GPU work)";
+        public bool RunsOnCpu => false;
 
         /// <summary>Dispatches recorded so far: a frame that did nothing would also allocate nothing.</summary>
         public long Dispatches { get; private set; }

@@ -38,6 +38,9 @@ namespace SphFluid.Runtime
 
         public string DeviceName => SystemInfo.graphicsDeviceName;
 
+        /// <summary>False: Unity's compute shaders run on the graphics device.</summary>
+        public bool RunsOnCpu => false;
+
         /// <summary>Buffers of this device not yet released.</summary>
         public int LiveBufferCount => _buffers.Count;
 

@@ -62,6 +62,7 @@ cbuffer FluidConstants
     float _SolverRelaxation;                // DivergenceFreeSolver: omega of the fluid particles' Jacobi step (SolverRelaxation.cs)
 
     uint _NeighbourCapacity;                // SphNeighbourhood: entries of each neighbour list, 0 for no lists (NeighbourCapacity.cs)
+    uint _NeighbourLanes;                   // NeighbourLanes: threads per particle in the laned neighbour loops, 1, 2, 4 or 8
 };
 
 // Grid.hlsl reads its three values from here instead of declaring its own.

@@ -20,6 +20,11 @@ namespace SphFluid.Compute
         /// <summary>Human-readable adapter name, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".</summary>
         string DeviceName { get; }
 
+        /// <summary>True for a device that runs kernels on CPU cores (lavapipe): each thread's loop runs on a core that
+        /// hides no latency behind other threads, so the simulation walks each neighbourhood with one thread
+        /// (Simulation.NeighbourLanes).</summary>
+        bool RunsOnCpu { get; }
+
         /// <summary>Loads a compute shader by its asset name, the file name without extension
         /// (e.g. "ParticleSort" for Packages/com.sphfluid.fluid/Shaders/ParticleSort.compute). Unity resolves it to
         /// a ComputeShader asset the component references; the headless backend compiles the file.

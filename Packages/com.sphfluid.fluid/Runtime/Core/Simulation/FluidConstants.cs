@@ -66,5 +66,6 @@ namespace SphFluid.Simulation
         public float SolverRelaxation;
 
         public uint NeighbourCapacity;
+        public uint NeighbourLanes;
     }
 }

@@ -225,6 +225,21 @@ namespace SphFluid.Simulation
         /// <summary>Number of boundary particles (container walls and obstacles).</summary>
         public int BoundaryCount => _boundaryCount;
 
+        /// <summary>Threads per particle in the neighbour loops of density, wall pressure and forces: <see
+        /// cref="NeighbourLanes.For"/> of the particle count and the device, or a count set here (1, 2, 4 or 8; tests
+        /// compare them). Results differ only by float rounding.</summary>
+        public int LanesPerParticle
+        {
+            get => (int)_constants[0].NeighbourLanes;
+            set
+            {
+                if (!NeighbourLanes.IsValid(value))
+                    throw new ArgumentOutOfRangeException(nameof(value), value, $"lanes per particle must be 1, 2, 4 or 8 (at most {NeighbourLanes.Max})");
+                _constants[0].NeighbourLanes = (uint)value;
+                _constantsChanged = true;
+            }
+        }
+
         /// <summary>The neighbour grid (container-local cells of size h).</summary>
         public CellGrid Grid => _grid;
 
@@ -413,7 +428,7 @@ namespace SphFluid.Simulation
         /// <summary>One WCSPH Velocity Verlet sub-step: kick-drift, re-sort, forces, kick.</summary>
         void VerletSubstep()
         {
-            if (_deltaSph) SolverPass(PassNames.DensityRate, _densityRate);
+            if (_deltaSph) LanedPass(PassNames.DensityRate, _densityRate, ParticleCount);
 
             SolverPass(PassNames.HalfStep, _halfStep);
 
@@ -446,7 +461,7 @@ namespace SphFluid.Simulation
                 _device.DispatchThreads(_solver, _boundaryDensityFactor, _boundaryCount);
             }
             if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _normals);
-            SolverPass(PassNames.NonPressureForces, _nonPressureForces);
+            LanedPass(PassNames.NonPressureForces, _nonPressureForces, ParticleCount);
 
             SolverPass(PassNames.PredictVelocity, _predictVelocity);
 
@@ -570,17 +585,17 @@ namespace SphFluid.Simulation
                 _device.DispatchThreads(_solver, _boundaryDensityFactor, _boundaryCount);
                 if (!withForces) return;
                 if (Plan.SurfaceTension) _device.DispatchThreads(_solver, _normals, ParticleCount);
-                _device.DispatchThreads(_solver, _nonPressureForces, ParticleCount);
+                _device.DispatchThreads(_solver, _nonPressureForces, ParticleCount * LanesPerParticle);
                 return;
             }
 
-            SolverPass(PassNames.DensityPressure, _deltaSph ? _continuityDensity : _densityPressure);
+            LanedPass(PassNames.DensityPressure, _deltaSph ? _continuityDensity : _densityPressure, ParticleCount);
 
-            SolverPass(PassNames.WallPressure, _wallPressure, _boundaryCount);
+            LanedPass(PassNames.WallPressure, _wallPressure, _boundaryCount);
 
             if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _normals);
 
-            SolverPass(PassNames.Forces, _forces);
+            LanedPass(PassNames.Forces, _forces, ParticleCount);
         }
 
         /// <summary>The neighbour lists (SphNeighbourhood.hlsl) of every fluid and boundary particle, after a sort of either;
@@ -601,6 +616,10 @@ namespace SphFluid.Simulation
             _device.EndSample(pass);
         }
 
+        /// <summary>One timed pass of a laned kernel (NeighbourLanes.hlsl): <see cref="LanesPerParticle"/> threads for each
+        /// of <paramref name="owners"/> particles.</summary>
+        void LanedPass(string pass, int kernel, int owners) => SolverPass(pass, kernel, owners * LanesPerParticle);
+
         /// <summary>Re-sorts and recomputes density, pressure and accelerations for the current particles
         /// without moving them (tests compare these with the CPU reference).</summary>
         public void ComputeForces()
@@ -613,7 +632,7 @@ namespace SphFluid.Simulation
                 // rates, and nothing moves before the density and forces.
                 SetTimeStep(0f);
                 Sort();
-                SolverPass(PassNames.DensityRate, _densityRate);
+                LanedPass(PassNames.DensityRate, _densityRate, ParticleCount);
                 DensityAndForces();
             }
             else
@@ -692,6 +711,7 @@ namespace SphFluid.Simulation
             double h = s.SmoothingRadius;
             ref FluidConstants c = ref _constants[0];
             c.ParticleCount = (uint)ParticleCount;
+            c.NeighbourLanes = (uint)NeighbourLanes.For(ParticleCount, _device.RunsOnCpu);
             c.PhaseCount = (uint)_phases.Count;
             c.ReductionGroupCount = (uint)_reductionGroups;
             c.ParticleSpacing = s.ParticleSpacing;
