@@ -80,6 +80,26 @@ namespace SphFluid.Tests.Runner
                 Assert.That(stdout.ToString(), Does.Not.Contain("DFSPH refuses"));
         }
 
+        /// <summary>With at most two iterations every DFSPH solve makes exactly two corrections and is cut off (SolveFinal
+        /// declares convergence only after two), so the row must read 4 iterations per sub-step (2 of each solve) and every
+        /// solve cut off: the solver's figures average the samples that follow sub-steps, not the spawn's.</summary>
+        [Test]
+        public void SolverFiguresAverageOnlyTheSamplesThatFollowSubsteps()
+        {
+            string scene = RunnerPaths.EditedScene("PlayModeTest", "    MaxSolverIterations: 100", "    MaxSolverIterations: 2");
+            var run = new StudyRun(StudyOptions.Parse(new[] { scene, "--quick", "--solvers", "dfsph", "--density-tolerances", "1",
+                "--particles-scales", "0.25", "--out", RunnerPaths.ScratchFolder("study-two-iterations") }), new StringWriter(), new StringWriter())
+            {
+                Device = GpuTestDevice.Shared,
+            };
+
+            Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok));
+            var row = run.Rows.Single();
+            Assert.That(row.SolverIterations, Is.EqualTo(4.0).Within(1e-6));
+            Assert.That(row.DensitySolvesCutOff, Is.EqualTo(1.0).Within(1e-6));
+            Assert.That(row.DivergenceSolvesCutOff, Is.EqualTo(1.0).Within(1e-6));
+        }
+
         /// <summary>Only DFSPH rows that cut solves off are named under the table, each with its scale and CFL.</summary>
         [Test]
         public void TheCutOffNoteNamesOnlyTheDfsphRowsThatCutSolvesOff()
