@@ -75,6 +75,21 @@ font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
 if [ ! -f "$font" ]; then mkdir -p "$(dirname "$font")" && cp "$home/DejaVuSans.ttf" "$font"; fi
 
 say "gpu-figures: sphfluid at $(cat "$home/commit"), stages ${stages[*]}, $(date -u +%FT%TZ)"
+# The device tool stops a command after 600 s; say so up front when the chosen stages' limits add up past that, so a
+# call is not spent finding out (the default three stages can: 300 + 2 x 120 + 300 s).
+budget=0
+for stage in "${stages[@]}"; do
+    case "$stage" in
+    realtime) budget=$((budget + realtime_limit)) ;;
+    bench) budget=$((budget + bench_limit * $(echo "$bench_solvers" | wc -w))) ;;
+    pareto) budget=$((budget + pareto_limit)) ;;
+    scenes) budget=$((budget + scenes_limit * ($(echo "$scene_names" | wc -w) + 1))) ;;
+    layering) budget=$((budget + 2 * layering_limit)) ;;
+    esac
+done
+if [ "$budget" -gt 600 ]; then
+    say "gpu-figures: warning: the stages' limits add up to $budget s, past the device tool's 600 s a call; the last may be cut off (set *_LIMIT or run fewer stages)"
+fi
 command -v nvidia-smi >/dev/null && nvidia-smi -L | tee -a "$log" || true
 
 step() { # seconds allowed, then sphfluid's arguments
