@@ -216,6 +216,11 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         }
         if (phases.Count > 1) line += string.Format(C, " | layering {0:F2} tilt {1:F3} m", m.LayeringIndex, m.InterfaceTilt);
         line += string.Format(C, " | front {0:F3} m column {1:F3} m", m.SurgeFront, m.BackWallColumn);
+        // A solve cut off at its iteration limit leaves the error above the tolerance; said where it happens, not only
+        // in diagnostics.csv.
+        if (r.PressureSolver == PressureSolver.Dfsph)
+            line += string.Format(C, " | DFSPH iterations density {0:F1} ({1:P0} cut off) divergence {2:F1} ({3:P0} cut off)",
+                r.DensitySolveIterations, r.DensitySolvesCutOff, r.DivergenceSolveIterations, r.DivergenceSolvesCutOff);
         return line;
     }
 }

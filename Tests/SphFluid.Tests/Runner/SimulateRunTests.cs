@@ -102,6 +102,8 @@ namespace SphFluid.Tests.Runner
                 "--out", RunnerPaths.ScratchFolder("dfsph-support"));
             Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
             Assert.That(stdout.ToString(), Does.Not.Contain("DFSPH refuses").And.Contain("relaxation 0.3"));
+            // The printed diagnostics say how the solves went, as diagnostics.csv does.
+            Assert.That(stdout.ToString(), Does.Match(@"\| DFSPH iterations density [0-9.]+ \([0-9]+ % cut off\) divergence [0-9.]+ \([0-9]+ % cut off\)"));
         }
 
         // The GPU figure is the sum of the sub-step's timed ranges. It once listed them by hand and missed the δ-SPH
