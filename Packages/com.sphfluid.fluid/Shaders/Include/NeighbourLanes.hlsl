@@ -12,10 +12,10 @@
 // the lanes from the particle count (NeighbourLanes.cs), and 1 on a CPU device, whose cores do not hide latency
 // behind other threads. The sums are the same up to float rounding, in another order.
 // Usage, in a kernel dispatched over owners * _NeighbourLanes threads of PARTICLE_THREADS (a multiple of the lanes):
-//   uint owner = LaneOwner(id.x), lane = LaneOf(id.x); owner = min(owner, count - 1u) for the reads;
+//   uint owner = min(LaneOwner(id.x), count - 1u), lane = FirstCandidate(id.x, count);
 //   for (uint k = range.x + lane; k < range.y; k += _NeighbourLanes) ...;
 //   float4 sum = SumOverLanes(partial, groupThread);   // every thread of the group, no early return before it
-//   if (LaneOwner(id.x) < count && lane == 0u) write.
+//   if (lane == 0u) write.
 
 #define MAX_NEIGHBOUR_LANES 8u
 
@@ -29,6 +29,18 @@ uint LaneOwner(uint thread)
 uint LaneOf(uint thread)
 {
     return thread & (_NeighbourLanes - 1u);
+}
+
+// A start past the end of every candidate range (which hold fewer than 2^31 entries, so the sum cannot wrap).
+#define IDLE_LANE 0x7fffffffu
+
+// The offset of this thread's first candidate in each range: its lane, or IDLE_LANE for a thread with nothing to walk
+// (past the last of `owners`, in the last group, or an owner left out of the pass), which must still reach
+// SumOverLanes's barriers but would otherwise walk the last owner's neighbourhood for nothing. Only a lane 0 of an owner
+// with work gets 0, so `lane == 0u` alone picks the thread that writes.
+uint FirstCandidate(uint thread, uint owners)
+{
+    return LaneOwner(thread) < owners ? LaneOf(thread) : IDLE_LANE;
 }
 
 // The sum of `partial` over the lanes of this thread's owner, returned to all of them. A tree over aligned runs of

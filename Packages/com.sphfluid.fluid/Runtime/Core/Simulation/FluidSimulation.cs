@@ -225,7 +225,8 @@ namespace SphFluid.Simulation
         /// <summary>Number of boundary particles (container walls and obstacles).</summary>
         public int BoundaryCount => _boundaryCount;
 
-        /// <summary>Threads per particle in the neighbour loops of density, wall pressure and forces: <see
+        /// <summary>Threads per particle in the neighbour loops of density, wall pressure and forces, and of DFSPH's factor,
+        /// error and correction passes: <see
         /// cref="NeighbourLanes.For"/> of the particle count and the device, or a count set here (1, 2, 4 or 8; tests
         /// compare them). Results differ only by float rounding.</summary>
         public int LanesPerParticle
@@ -457,8 +458,8 @@ namespace SphFluid.Simulation
             {
                 // The fluid's density and factor were last summed with the walls where they stood before this frame.
                 FindNeighbours();
-                _device.DispatchThreads(_solver, _wallMovedDensityFactor, ParticleCount);
-                _device.DispatchThreads(_solver, _boundaryDensityFactor, _boundaryCount);
+                _device.DispatchThreads(_solver, _wallMovedDensityFactor, ParticleCount * LanesPerParticle);
+                _device.DispatchThreads(_solver, _boundaryDensityFactor, _boundaryCount * LanesPerParticle);
             }
             if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _normals);
             LanedPass(PassNames.NonPressureForces, _nonPressureForces, ParticleCount);
@@ -534,7 +535,7 @@ namespace SphFluid.Simulation
             int rounds = _solveRounds[slot];
             _device.Dispatch(_solver, beginKernel, 1, 1, 1);
             _device.DispatchThreads(_solver, _boundaryBeginSolve, _boundaryCount);
-            _device.DispatchThreads(_solver, _applyStiffness, ParticleCount);
+            _device.DispatchThreads(_solver, _applyStiffness, ParticleCount * LanesPerParticle);
             for (int l = 0; l < rounds; l++)
             {
                 _device.DispatchIndirect(_solver, errorKernel, _buffers.SolverArguments, 0);
@@ -581,8 +582,8 @@ namespace SphFluid.Simulation
                 _device.BeginSample(PassNames.FindNeighbours);
                 FindNeighbours();
                 _device.EndSample(PassNames.FindNeighbours);
-                SolverPass(PassNames.DensityFactor, _densityFactor);
-                _device.DispatchThreads(_solver, _boundaryDensityFactor, _boundaryCount);
+                LanedPass(PassNames.DensityFactor, _densityFactor, ParticleCount);
+                _device.DispatchThreads(_solver, _boundaryDensityFactor, _boundaryCount * LanesPerParticle);
                 if (!withForces) return;
                 if (Plan.SurfaceTension) _device.DispatchThreads(_solver, _normals, ParticleCount);
                 _device.DispatchThreads(_solver, _nonPressureForces, ParticleCount * LanesPerParticle);
