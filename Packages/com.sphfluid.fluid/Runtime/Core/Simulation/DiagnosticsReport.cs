@@ -60,12 +60,12 @@ namespace SphFluid.Simulation
         /// (each catch once per integration half-step); zero in a healthy run.</summary>
         public int ClampHits { get; private set; }
 
-        /// <summary>DFSPH: mean iterations of the constant-density solve per sub-step since the previous report;
-        /// 0 with WCSPH.</summary>
+        /// <summary>DFSPH: mean iterations per constant-density solve since the previous report (the shader counts per solve;
+        /// a sub-step runs one solve of each kind, so this is also per sub-step); 0 with WCSPH.</summary>
         public float DensitySolveIterations { get; internal set; }
 
-        /// <summary>DFSPH: mean iterations of the divergence-free solve per sub-step since the previous report;
-        /// 0 with WCSPH.</summary>
+        /// <summary>DFSPH: mean iterations per divergence-free solve since the previous report (the shader counts per solve;
+        /// a sub-step runs one solve of each kind, so this is also per sub-step); 0 with WCSPH.</summary>
         public float DivergenceSolveIterations { get; internal set; }
 
         /// <summary>DFSPH: share (0 to 1) of the constant-density solves since the previous report that ran out of their
