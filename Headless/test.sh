@@ -9,61 +9,27 @@ source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 
 results="$root/TestResults"
 rm -rf "$results"
-core="Tests/SphFluid.Tests.Core/SphFluid.Tests.Core.csproj"
-gpu="Tests/SphFluid.Tests/SphFluid.Tests.csproj"
+# project file, then the name of its trx file under $results
+projects=(
+    "Tests/SphFluid.Tests.Core/SphFluid.Tests.Core.csproj" results-core.trx
+    "Tests/SphFluid.Tests/SphFluid.Tests.csproj" results.trx
+)
 status=0
-# Every project runs even when one fails; the first failure's code is the script's.
-record() { if [ "$status" -eq 0 ]; then status=$1; fi; }
-
-# dotnet test of project $1 writing $results/$2, with the rest of the arguments.
-run_tests() {
-    local project=$1 trx=$2
-    shift 2
-    dotnet test "$root/$project" -c Release \
-        --logger "trx;LogFileName=$trx" --logger "console;verbosity=normal" \
+for ((i = 0; i < ${#projects[@]}; i += 2)); do
+    set +e
+    dotnet test "$root/${projects[i]}" -c Release \
+        --logger "trx;LogFileName=${projects[i + 1]}" --logger "console;verbosity=normal" \
         --results-directory "$results" "$@"
-}
-
-set +e
-run_tests "$core" results-core.trx "$@"
-record $?
-set -e
-
-if [ $# -gt 0 ]; then
-    # A chosen subset (a --filter, say): one process.
-    trxs=(results-core.trx results.trx)
-    set +e
-    run_tests "$gpu" results.trx "$@"
-    record $?
+    code=$?
     set -e
-else
-    # The whole GPU suite, CI's run, as two processes at once. Lavapipe keeps only about one and a half of CI's two
-    # cores busy, and four fixtures hold half the suite's time: the long layering runs of SeparationTests and the
-    # resolutions, sphere and turning container of the next three. They run in one process and every other test in the
-    # second; the two filters are complements, so each test runs exactly once. Each process has its own device and its
-    # own temp folder, so that a test that checks the temp folder sees only its own process's files.
-    trxs=(results-core.trx results-long.trx results-rest.trx)
-    long="FullyQualifiedName~SphFluid.Tests.Physics.SeparationTests|FullyQualifiedName~SphFluid.Tests.Physics.DamBreakConvergenceTests"
-    long+="|FullyQualifiedName~SphFluid.Tests.Physics.SphereThroughPoolTests|FullyQualifiedName~SphFluid.Tests.Physics.RotatingContainerTests"
-    rest=$(echo "$long" | sed 's/FullyQualifiedName~/FullyQualifiedName!~/g; s/|/\&/g')
-    dotnet build "$root/$gpu" -c Release
-    scratch=$(mktemp -d)
-    mkdir -p "$scratch/long" "$scratch/rest"
-    set +e
-    TMPDIR="$scratch/long" run_tests "$gpu" results-long.trx --no-build --filter "$long" 2>&1 | sed -u 's/^/[long] /' &
-    long_pid=$!
-    TMPDIR="$scratch/rest" run_tests "$gpu" results-rest.trx --no-build --filter "$rest" 2>&1 | sed -u 's/^/[rest] /'
-    record "${PIPESTATUS[0]}"
-    wait "$long_pid"
-    record $?
-    set -e
-    rm -rf "$scratch"
-fi
+    # Both projects run even when the first fails; the first failure's code is the script's.
+    if [ "$status" -eq 0 ]; then status=$code; fi
+done
 
 # One plain closing line that any CI reader understands, summed over the projects that wrote results.
 passed=0; failed=0; skipped=0; found=0
-for name in "${trxs[@]}"; do
-    trx="$results/$name"
+for ((i = 1; i < ${#projects[@]}; i += 2)); do
+    trx="$results/${projects[i]}"
     [ -f "$trx" ] || continue
     found=1
     counters=$(grep -o '<Counters [^>]*>' "$trx" | head -n 1)
