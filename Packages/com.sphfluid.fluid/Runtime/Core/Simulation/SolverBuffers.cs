@@ -162,7 +162,6 @@ namespace SphFluid.Simulation
             Shifts = Zeroed("FluidSimulation.Shifts", n, 16);
             Obstacles = device.CreateBuffer("FluidSimulation.Obstacles", FluidSceneDescription.MaxObstacles, Obstacle.Stride);
             ClampHits = Zeroed("FluidSimulation.ClampHits", 1, 4);
-            int particleGroups = ComputeDispatch.GroupsFor(n, ParticleThreads);
             Factors = Zeroed("FluidSimulation.DivergenceFreeFactors", n, 4);
             SolverStiffness = Zeroed("FluidSimulation.SolverStiffness", n, 4);
             WarmStart = Zeroed("FluidSimulation.WarmStart", n, 8);
@@ -170,7 +169,9 @@ namespace SphFluid.Simulation
             SolverPartials = Zeroed("FluidSimulation.SolverPartials", ComputeDispatch.GroupsFor(n * NeighbourLanes.Max, ParticleThreads), 4);
             SolverState = Zeroed("FluidSimulation.SolverState", SolverStateWords, 4);
             SolverArguments = device.CreateArgumentsBuffer("FluidSimulation.SolverArguments", 6);
-            SolverArguments.SetData(new uint[] { (uint)particleGroups, 1u, 1u, 0u, 1u, 1u });
+            // The solve's laned group counts come from BeginSolve on the GPU before any dispatch reads them; until
+            // then they dispatch nothing.
+            SolverArguments.SetData(new uint[] { 0u, 1u, 1u, 0u, 1u, 1u });
             DivergenceRates = Zeroed("FluidSimulation.DivergenceRates", n, 4);
             NumberDensities = device.CreateBuffer("FluidSimulation.NumberDensities", n, 4);
             NumberDensities.SetData(spawnNumberDensities);
