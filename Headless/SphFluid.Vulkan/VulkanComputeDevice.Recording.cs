@@ -385,7 +385,15 @@ public sealed unsafe partial class VulkanComputeDevice
             }
             if (AccumulateDispatchTimings) _accumulatedTimings.AddRange(timings);
         }
-        foreach (var (name, begin, end) in f.Samples) _sampleResults[name] = Ms(begin, end);
+        // A name timed more than once in one submit (a pass that runs twice in a sub-step, or in every sub-step of a
+        // frame) reports the sum, as Unity's GPU recorders do over a frame.
+        _submitSampleSums.Clear();
+        foreach (var (name, begin, end) in f.Samples)
+        {
+            _submitSampleSums.TryGetValue(name, out double sum);
+            _submitSampleSums[name] = sum + Ms(begin, end);
+        }
+        foreach (var (name, ms) in _submitSampleSums) _sampleResults[name] = ms;
     }
 
     /// <summary>GPU time of every dispatch of the last submit that recorded any, in order (waits for it).

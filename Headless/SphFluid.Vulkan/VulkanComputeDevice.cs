@@ -66,6 +66,7 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
     readonly List<VulkanBuffer> _deferredRelease = new();
     readonly Dictionary<string, KernelVariant> _variantCache = new(StringComparer.Ordinal);
     readonly Dictionary<string, double> _sampleResults = new(StringComparer.Ordinal);
+    readonly Dictionary<string, double> _submitSampleSums = new(StringComparer.Ordinal);
     readonly Dictionary<string, ulong> _sampleSerial = new(StringComparer.Ordinal);
     readonly Dictionary<string, uint> _openSamples = new(StringComparer.Ordinal);
     IReadOnlyList<(string Kernel, double Milliseconds)> _lastDispatchTimings = Array.Empty<(string, double)>();

@@ -32,6 +32,34 @@ namespace SphFluid.Tests.Backend
             }
         }
 
+        /// <summary>A range name recorded twice in one submit (FindNeighbours before delta-SPH's rate and after the sort)
+        /// reports both ranges: the bench sums the passes' times into a sub-step's GPU time.</summary>
+        [Test]
+        public void ANameTimedTwiceInOneSubmitReportsTheSum()
+        {
+            var device = GpuTestDevice.Shared;
+            var program = device.LoadProgram("BackendBuffers");
+            int kernel = program.FindKernel("AddOne");
+            const int count = 100000;
+            using (var counter = device.CreateBuffer("Counter", count, sizeof(uint)))
+            {
+                device.SetBuffer(program, kernel, device.PropertyId("_Counter"), counter);
+                device.SetInt(program, device.PropertyId("_ItemCount"), count);
+                device.BeginSample("BackendTwice");
+                for (int i = 0; i < 3; i++) device.DispatchThreads(program, kernel, count);
+                device.EndSample("BackendTwice");
+                device.BeginSample("BackendTwice");
+                device.DispatchThreads(program, kernel, 1);
+                device.EndSample("BackendTwice");
+                device.Submit();
+
+                Assert.That(device.TryGetSampleMilliseconds("BackendTwice", out double ms), Is.True);
+                var timings = device.LastDispatchTimings;
+                Assert.That(timings.Count, Is.EqualTo(4));
+                Assert.That(ms, Is.GreaterThanOrEqualTo(timings.Sum(t => t.Milliseconds) * 0.99 - 0.01), "the first range's three dispatches count");
+            }
+        }
+
         [Test]
         public void AccumulatedTimingsCoverEverySubmit()
         {

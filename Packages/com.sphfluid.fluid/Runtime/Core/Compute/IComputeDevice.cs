@@ -92,8 +92,8 @@ namespace SphFluid.Compute
         /// <summary>Runs everything recorded since the last submit, in order.</summary>
         void Submit();
 
-        /// <summary>GPU time of the last completed range with this name, in milliseconds;
-        /// false where the device cannot time it (yet).</summary>
+        /// <summary>GPU time of the ranges with this name in the last completed submit (or frame) that recorded it,
+        /// summed, in milliseconds; false where the device cannot time it (yet).</summary>
         bool TryGetSampleMilliseconds(string name, out double milliseconds);
 
         /// <summary>Starts an asynchronous read-back of a buffer (Unity: <c>AsyncGPUReadback</c>).</summary>
