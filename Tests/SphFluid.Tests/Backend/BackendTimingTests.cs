@@ -7,29 +7,35 @@ namespace SphFluid.Tests.Backend
     /// <summary>GPU timestamp queries time named ranges and every dispatch.</summary>
     public sealed class BackendTimingTests
     {
+        const int Items = 100000;
+
+        /// <summary>BackendBuffers' AddOne bound to a new buffer of <see cref="Items"/> counters, which the caller disposes.</summary>
+        static IComputeBuffer BindAddOne(IComputeDevice device, out IComputeProgram program, out int kernel)
+        {
+            program = device.LoadProgram("BackendBuffers");
+            kernel = program.FindKernel("AddOne");
+            var counter = device.CreateBuffer("Counter", Items, sizeof(uint));
+            device.SetBuffer(program, kernel, device.PropertyId("_Counter"), counter);
+            device.SetInt(program, device.PropertyId("_ItemCount"), Items);
+            return counter;
+        }
+
         [Test]
         public void SampleRangeAndEachDispatchHaveAPositiveGpuTime()
         {
             var device = GpuTestDevice.Shared;
-            var program = device.LoadProgram("BackendBuffers");
-            int kernel = program.FindKernel("AddOne");
-            const int count = 100000;
-            using (var counter = device.CreateBuffer("Counter", count, sizeof(uint)))
-            {
-                device.SetBuffer(program, kernel, device.PropertyId("_Counter"), counter);
-                device.SetInt(program, device.PropertyId("_ItemCount"), count);
-                device.BeginSample("BackendTiming");
-                for (int i = 0; i < 3; i++) device.DispatchThreads(program, kernel, count);
-                device.EndSample("BackendTiming");
-                device.Submit();
+            using var counter = BindAddOne(device, out var program, out int kernel);
+            device.BeginSample("BackendTiming");
+            for (int i = 0; i < 3; i++) device.DispatchThreads(program, kernel, Items);
+            device.EndSample("BackendTiming");
+            device.Submit();
 
-                Assert.That(device.TryGetSampleMilliseconds("BackendTiming", out double ms), Is.True);
-                Assert.That(ms, Is.GreaterThan(0.0));
-                var timings = device.LastDispatchTimings;
-                Assert.That(timings.Select(t => t.Kernel), Is.EqualTo(new[] { "AddOne", "AddOne", "AddOne" }));
-                Assert.That(timings.Select(t => t.Milliseconds), Is.All.GreaterThan(0.0));
-                Assert.That(timings.Sum(t => t.Milliseconds), Is.LessThanOrEqualTo(ms * 1.01 + 0.01));
-            }
+            Assert.That(device.TryGetSampleMilliseconds("BackendTiming", out double ms), Is.True);
+            Assert.That(ms, Is.GreaterThan(0.0));
+            var timings = device.LastDispatchTimings;
+            Assert.That(timings.Select(t => t.Kernel), Is.EqualTo(new[] { "AddOne", "AddOne", "AddOne" }));
+            Assert.That(timings.Select(t => t.Milliseconds), Is.All.GreaterThan(0.0));
+            Assert.That(timings.Sum(t => t.Milliseconds), Is.LessThanOrEqualTo(ms * 1.01 + 0.01));
         }
 
         /// <summary>A range name recorded twice in one submit (FindNeighbours before delta-SPH's rate and after the sort)
@@ -38,26 +44,19 @@ namespace SphFluid.Tests.Backend
         public void ANameTimedTwiceInOneSubmitReportsTheSum()
         {
             var device = GpuTestDevice.Shared;
-            var program = device.LoadProgram("BackendBuffers");
-            int kernel = program.FindKernel("AddOne");
-            const int count = 100000;
-            using (var counter = device.CreateBuffer("Counter", count, sizeof(uint)))
-            {
-                device.SetBuffer(program, kernel, device.PropertyId("_Counter"), counter);
-                device.SetInt(program, device.PropertyId("_ItemCount"), count);
-                device.BeginSample("BackendTwice");
-                for (int i = 0; i < 3; i++) device.DispatchThreads(program, kernel, count);
-                device.EndSample("BackendTwice");
-                device.BeginSample("BackendTwice");
-                device.DispatchThreads(program, kernel, 1);
-                device.EndSample("BackendTwice");
-                device.Submit();
+            using var counter = BindAddOne(device, out var program, out int kernel);
+            device.BeginSample("BackendTwice");
+            for (int i = 0; i < 3; i++) device.DispatchThreads(program, kernel, Items);
+            device.EndSample("BackendTwice");
+            device.BeginSample("BackendTwice");
+            device.DispatchThreads(program, kernel, 1);
+            device.EndSample("BackendTwice");
+            device.Submit();
 
-                Assert.That(device.TryGetSampleMilliseconds("BackendTwice", out double ms), Is.True);
-                var timings = device.LastDispatchTimings;
-                Assert.That(timings.Count, Is.EqualTo(4));
-                Assert.That(ms, Is.GreaterThanOrEqualTo(timings.Sum(t => t.Milliseconds) * 0.99 - 0.01), "the first range's three dispatches count");
-            }
+            Assert.That(device.TryGetSampleMilliseconds("BackendTwice", out double ms), Is.True);
+            var timings = device.LastDispatchTimings;
+            Assert.That(timings.Count, Is.EqualTo(4));
+            Assert.That(ms, Is.GreaterThanOrEqualTo(timings.Sum(t => t.Milliseconds) * 0.99 - 0.01), "the first range's three dispatches count");
         }
 
         [Test]
