@@ -16,15 +16,12 @@
 // change between the sort and the next drift, so (as Bender & Koschier 2017, "Divergence-Free SPH for Incompressible
 // and Viscous Fluids", do with the result of their neighbour search) the neighbours are found once per sort
 // (FluidSolver.compute's FindNeighbours) and read from a list by every pass until the next drift. A wide support makes
-// the difference: at 2.85 spacings the 27 cells hold about 6 candidates per neighbour. WCSPH's four neighbour passes of a
-// sub-step (density, wall pressure, forces, and delta-SPH's rate before the next drift) read the same lists when each
-// particle's loops run in one lane; with more lanes (NeighbourLanes.hlsl) the walk is already split, and FindNeighbours,
-// one thread per owner, would add a whole walk to the sub-step (NeighbourCapacity.cs). Each list owner (fluid particle
+// the difference: at 2.85 spacings the 27 cells hold about 6 candidates per neighbour. Each list owner (fluid particle
 // i, or wall particle b as owner _ParticleCount + b) has _NeighbourCapacity entries; entry k of owner o is at
 // k * (_ParticleCount + _BoundaryCount) + o, so that the threads of a group read neighbouring words. Fluid neighbours
 // (the particle itself among them, as in the grid walk) fill the entries from the front, wall neighbours from the
 // back. An owner with more neighbours than entries is marked NO_NEIGHBOUR_LIST and walks the grid, so a crowded
-// particle costs time, never a neighbour; so does every particle when _NeighbourCapacity is 0 (no lists in use).
+// particle costs time, never a neighbour; so does every particle when _NeighbourCapacity is 0 (WCSPH, no lists).
 // Usage: NeighbourList list = ListOf(i); for (uint row = 0u; row < NeighbourRows(list); row++)
 //            { uint2 range = FluidNeighbours(list, home, row); for (k in range) { uint j = Neighbour(list, k); ... } }
 
