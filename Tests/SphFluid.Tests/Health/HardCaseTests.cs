@@ -181,22 +181,39 @@ namespace SphFluid.Tests.Health
         [Test]
         public void ObstacleDrivenAtFiveTimesTheWaveSpeed_StaysHealthy()
         {
+            var run = SphereDrivenThroughThePool(5f);
+            AssertHealthy(run);
+            Assert.That(run.Check.ObstacleSpeed, Is.EqualTo(5f * WaveSpeed).Within(1e-4f));
+        }
+
+        /// <summary>How near its bound the case above runs: its fastest particle driven a little slower and faster (README,
+        /// Known limits). A measurement, not a check: the splashes are chaotic.</summary>
+        [Explicit, TestCase(4.9f), TestCase(5f), TestCase(5.05f), TestCase(5.1f), TestCase(5.2f)]
+        public void ObstacleDrivenNearFiveTimesTheWaveSpeed_Margin(float waveSpeeds)
+        {
+            var run = SphereDrivenThroughThePool(waveSpeeds);
+            TestContext.Progress.WriteLine($"driven at {waveSpeeds} wave speeds: fastest {run.FastestSeen:F1} m/s, bound {run.Check.SpeedBound:F1} m/s; {run.Problem?.Message ?? "healthy"}");
+        }
+
+        // Shallow-water wave speed over the 0.16 m pool, 1.25 m/s.
+        static readonly float WaveSpeed = MathF.Sqrt(9.81f * 0.16f);
+
+        /// <summary>A 5 cm sphere driven back and forth across the pool at <paramref name="waveSpeeds"/> times the wave
+        /// speed, turning at the ends, for 0.3 s.</summary>
+        static HealthRun SphereDrivenThroughThePool(float waveSpeeds)
+        {
             var scene = Pool();
-            float wave = MathF.Sqrt(9.81f * 0.16f); // shallow-water wave speed over the 0.16 m pool, 1.25 m/s
-            float speed = 5f * wave;
+            float speed = waveSpeeds * WaveSpeed;
             var start = new Vector3(-0.16f, -0.12f, 0f);
             scene.Obstacles.Add(new RigidSphere(start, 0.05f, Vector3.Zero));
-            var run = HealthRun.Of(scene, 0.3, drive: (sim, t) =>
+            return HealthRun.Of(scene, 0.3, drive: (sim, t) =>
             {
-                // Back and forth across the pool at the full speed, turning at the ends.
                 double travel = 0.32, leg = travel / speed;
                 double phase = t % (2 * leg);
                 float x = (float)(phase < leg ? -0.16 + speed * phase : 0.16 - speed * (phase - leg));
                 float v = phase < leg ? speed : -speed;
                 sim.UpdateObstacles(new[] { new RigidSphere(new Vector3(x, start.Y, 0f), 0.05f, new Vector3(v, 0f, 0f)) });
             });
-            AssertHealthy(run);
-            Assert.That(run.Check.ObstacleSpeed, Is.EqualTo(speed).Within(1e-4f));
         }
 
         [TestCase(100f)]

@@ -11,7 +11,8 @@ namespace SphFluid.Tests.Solver
     /// the densities, accelerations, velocity corrections and delta-SPH rates of one thread per particle to 1e-5 of each
     /// quantity's scale, only the order of the sums differing. On lavapipe, a CPU device, the simulation takes one lane by
     /// itself (NeighbourLanes.For), so there every other GPU test checks the one-lane path against the reference; this one
-    /// sets the lanes by hand. The rule itself is tested in the package's Core tests (NeighbourLanesTests). Each laned kernel is covered: DensityPressure (summation), DensityRate and ContinuityDensity
+    /// sets the lanes by hand. Under WCSPH one lane reads the neighbour lists and more lanes walk the grid
+    /// (NeighbourCapacity.InUse), so the same comparison holds WCSPH's lists to the grid walk. The rule itself is tested in the package's Core tests (NeighbourLanesTests). Each laned kernel is covered: DensityPressure (summation), DensityRate and ContinuityDensity
     /// (delta-SPH), WallPressure and Forces (both), NonPressureForces (DFSPH); DFSPH's factor, error and correction passes are
     /// held to the double-precision reference with 8 lanes in DivergenceFreeKernelTests, and their stop decision here.
     /// </summary>

@@ -63,7 +63,8 @@ namespace SphFluid.Tests.Solver
             string NameOf(IComputeProgram program, int kernel)
             {
                 if (_names.Count == 0 || !_names.Keys.Any(k => k.Item1 == program))
-                    foreach (string name in new[] { "HalfStep", "PlaceBoundary", "DensityPressure", "WallPressure", "Normals", "Forces", "FullStep" })
+                    foreach (string name in new[] { "HalfStep", "PlaceBoundary", "DensityPressure", "WallPressure", "Normals", "Forces", "FullStep",
+                                                      "FindNeighbours", "DensityRate" })
                         _names[(program, program.FindKernel(name))] = name;
                 return _names.TryGetValue((program, kernel), out string? known) ? known : "kernel " + kernel;
             }
@@ -107,6 +108,35 @@ namespace SphFluid.Tests.Solver
             Assert.That(dispatches.Count(d => d.Kernel == "Normals"), Is.EqualTo(0), "normals pass without surface tension");
             Assert.That(dispatches.Count(d => d.Kernel == "PlaceBoundary"), Is.EqualTo(0), "walls placed again for a container at rest");
             Assert.That(dispatches.Count(d => d.Kernel == "Forces"), Is.EqualTo(4), "one force pass per sub-step");
+        }
+
+        /// <summary>WCSPH's neighbour lists (NeighbourCapacity.InUse): in one lane they are found once after each sort, and
+        /// again before delta-SPH's rate only when a shift moved the particles since; with lanes the passes walk the grid
+        /// and nothing searches. The plan lists the search exactly when it runs, so the bench's GPU time counts it.</summary>
+        [TestCase(1, false, false, 4)]
+        [TestCase(1, true, false, 4)]
+        [TestCase(1, true, true, 8)]
+        [TestCase(8, false, false, 0)]
+        [TestCase(8, true, true, 0)]
+        public void WcsphSearchesOncePerSortInOneLaneAndNeverWithLanes(int lanes, bool deltaSph, bool shifting, int searches)
+        {
+            var scene = PlainScene();
+            scene.Settings.WcsphDensity = deltaSph ? WcsphDensity.DeltaSph : WcsphDensity.Summation;
+            scene.Settings.ParticleShifting = shifting ? 2f : 0f;
+            var device = new DispatchCountingDevice(GpuTestDevice.Shared);
+            using (var sim = new FluidSimulation(device, scene) { LanesPerParticle = lanes })
+            {
+                sim.StepFixed(1, 1e-4f);
+                device.Dispatches.Clear();
+                sim.StepFixed(2, 1e-4f);
+                sim.StepFixed(2, 1e-4f);
+                Assert.That(sim.ReadsNeighbourLists, Is.EqualTo(lanes == 1));
+                Assert.That(sim.Plan.SubstepPasses, lanes == 1 ? Does.Contain(PassNames.FindNeighbours) : Does.Not.Contain(PassNames.FindNeighbours));
+            }
+            var dispatches = device.Dispatches;
+            Assert.That(dispatches.Count(d => d.Kernel == "Forces"), Is.EqualTo(4), "one force pass per sub-step");
+            Assert.That(dispatches.Count(d => d.Kernel == "DensityRate"), Is.EqualTo(deltaSph ? 4 : 0));
+            Assert.That(dispatches.Count(d => d.Kernel == "FindNeighbours"), Is.EqualTo(searches));
         }
 
         [TestCase("multiphase")]

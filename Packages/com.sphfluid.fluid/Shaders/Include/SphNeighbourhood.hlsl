@@ -16,12 +16,21 @@
 // change between the sort and the next drift, so (as Bender & Koschier 2017, "Divergence-Free SPH for Incompressible
 // and Viscous Fluids", do with the result of their neighbour search) the neighbours are found once per sort
 // (FluidSolver.compute's FindNeighbours) and read from a list by every pass until the next drift. A wide support makes
-// the difference: at 2.85 spacings the 27 cells hold about 6 candidates per neighbour. Each list owner (fluid particle
+// the difference: at 2.85 spacings the 27 cells hold about 6 candidates per neighbour. WCSPH's four neighbour passes of a
+// sub-step (density, wall pressure, forces, and delta-SPH's rate before the next drift) read the same lists when each
+// particle's loops run in one lane; with more lanes (NeighbourLanes.hlsl) the walk is already split, and FindNeighbours,
+// one thread per owner, would add a whole walk to the sub-step (NeighbourCapacity.cs). Each list owner (fluid particle
 // i, or wall particle b as owner _ParticleCount + b) has _NeighbourCapacity entries; entry k of owner o is at
-// k * (_ParticleCount + _BoundaryCount) + o, so that the threads of a group read neighbouring words. Fluid neighbours
-// (the particle itself among them, as in the grid walk) fill the entries from the front, wall neighbours from the
-// back. An owner with more neighbours than entries is marked NO_NEIGHBOUR_LIST and walks the grid, so a crowded
-// particle costs time, never a neighbour; so does every particle when _NeighbourCapacity is 0 (WCSPH, no lists).
+// k * (_ParticleCount + _BoundaryCount) + o, so that the threads of a group read neighbouring words. The entries come in
+// one of two orders (_NeighbourListRows, NeighbourCapacity.cs):
+//   1 (DFSPH)  fluid neighbours (the particle itself among them, as in the grid walk) fill the entries from the front,
+//              wall neighbours from the back: one range each;
+//   9 (WCSPH)  the grid walk's own order, row by row, each row's fluid neighbours and then its walls, after
+//              NEIGHBOUR_ROW_WORDS words that hold where each row's fluid and walls end. A pass then visits the
+//              neighbours in the order the grid walk would, and sums them in that order, so reading a list changes no
+//              result, not even by rounding: in one lane WCSPH gives the grid walk's results to the bit.
+// An owner with more neighbours than entries is marked NO_NEIGHBOUR_LIST and walks the grid, so a crowded particle
+// costs time, never a neighbour; so does every particle when _NeighbourCapacity is 0 (no lists in use).
 // Usage: NeighbourList list = ListOf(i); for (uint row = 0u; row < NeighbourRows(list); row++)
 //            { uint2 range = FluidNeighbours(list, home, row); for (k in range) { uint j = Neighbour(list, k); ... } }
 
@@ -38,6 +47,9 @@ RWStructuredBuffer<uint> _FoundNeighbourCounts;
 RWStructuredBuffer<uint> _FoundNeighbourLists;
 
 #define NO_NEIGHBOUR_LIST 0xFFFFFFFFu
+
+// The row order's first words: entry r holds the end of row r's fluid neighbours | the end of its walls << 16.
+#define NEIGHBOUR_ROW_WORDS 9u
 
 // First and last cell of row `row` (0..8: dy, dz in -1..1) around cell `home`; false outside the grid.
 bool NeighbourRowCells(int3 home, uint row, out uint firstCell, out uint lastCell)
@@ -98,26 +110,40 @@ NeighbourList ListOf(uint owner)
     return list;
 }
 
-// The list's entries are one range, the grid's nine rows.
+// The grid's nine rows, or a list's: one range (DFSPH's order) or nine (the grid walk's).
 uint NeighbourRows(NeighbourList list)
 {
-    return list.listed ? 1u : 9u;
+    return list.listed ? _NeighbourListRows : 9u;
+}
+
+// Where row `row`'s fluid neighbours and then its walls end, in a list of the grid walk's order.
+uint RowEnds(NeighbourList list, uint row)
+{
+    return _NeighbourLists[row * (_ParticleCount + _BoundaryCount) + list.owner];
 }
 
 // Entries (listed) or sorted fluid particles (grid) of row `row`: Neighbour(list, k) for k in [x, y).
 uint2 FluidNeighbours(NeighbourList list, int3 home, uint row)
 {
-    if (list.listed)
+    if (!list.listed)
+        return NeighbourRowRange(home, row);
+    if (_NeighbourListRows == 1u)
         return uint2(0u, list.fluid);
-    return NeighbourRowRange(home, row);
+    uint start = NEIGHBOUR_ROW_WORDS;
+    if (row > 0u)
+        start = RowEnds(list, row - 1u) >> 16;
+    return uint2(start, RowEnds(list, row) & 0xFFFFu);
 }
 
 // The same for the wall particles.
 uint2 WallNeighbours(NeighbourList list, int3 home, uint row)
 {
-    if (list.listed)
+    if (!list.listed)
+        return BoundaryRowRange(home, row);
+    if (_NeighbourListRows == 1u)
         return uint2(_NeighbourCapacity - list.walls, _NeighbourCapacity);
-    return BoundaryRowRange(home, row);
+    uint ends = RowEnds(list, row);
+    return uint2(ends & 0xFFFFu, ends >> 16);
 }
 
 // The sorted index of entry k: read from the list, or k itself on the grid.

@@ -67,5 +67,6 @@ namespace SphFluid.Simulation
 
         public uint NeighbourCapacity;
         public uint NeighbourLanes;
+        public uint NeighbourListRows;
     }
 }

@@ -48,6 +48,7 @@ namespace SphFluid.Simulation
         void DispatchDiagnostics()
         {
             PushConstants();
+            FindNeighbours(); // DivergenceRate reads them; after a shift they are found again
             _device.BeginSample(PassNames.Diagnostics);
             _device.DispatchThreads(_solver, _divergenceRate, ParticleCount);
             _device.Dispatch(_diagnostics, _diagnosticsPartial, _reductionGroups, 1, 1);

@@ -68,6 +68,13 @@ namespace SphFluid.Simulation
         // DFSPH: the walls were sorted again since the last FindNeighbours, so the neighbour lists and the walls' density and
         // factor (kept per sorted slot) belong to other wall particles; their warm start is kept by boundary id and follows them.
         bool _wallsResorted;
+        // The neighbour lists hold the neighbours of the particles and walls where they stand and in their sorted order:
+        // found since the last sort, wall placement or shift (FindNeighbours does nothing while this holds).
+        bool _neighboursFound;
+        // Entries per neighbour list in the buffers (NeighbourCapacity.For); the constants carry it while the passes read
+        // the lists (NeighbourCapacity.InUse at the present lanes), 0 while they walk the grid.
+        int _listCapacity;
+        bool _listsAllowed = true;
         // Walls whose placement this frame came with a velocity (a carried container, a driven sphere) follow it through the
         // frame's sub-steps, placed again before every sort: the seconds they have moved since the frame's placement, and the
         // container transform they are at, which the grid follows at the next sort (_gridBehind until it has).
@@ -238,6 +245,7 @@ namespace SphFluid.Simulation
                     throw new ArgumentOutOfRangeException(nameof(value), value, $"lanes per particle must be 1, 2, 4 or 8 (at most {NeighbourLanes.Max})");
                 _constants[0].NeighbourLanes = (uint)value;
                 _constantsChanged = true;
+                UseNeighbourLists();
             }
         }
 
@@ -345,12 +353,13 @@ namespace SphFluid.Simulation
 
         void BeginFrame()
         {
-            // The plan depends on the container's motion and the obstacle count alone (phases and settings are
-            // fixed for the simulation's lifetime): planned again only when those change.
+            // The plan depends on the container's motion, the obstacle count and whether the passes read neighbour lists
+            // (the lanes, which tests set) alone (phases and settings are fixed for the simulation's lifetime): planned
+            // again only when those change.
             int moved = _containerChanged ? 1 : 0;
             var plan = _plans[moved];
-            if (plan == null || plan.ObstacleCount != _scene.Obstacles.Count)
-                _plans[moved] = plan = PipelinePlanner.Plan(_scene, _containerChanged, _forcedEffects);
+            if (plan == null || plan.ObstacleCount != _scene.Obstacles.Count || plan.NeighbourLists != ReadsNeighbourLists)
+                _plans[moved] = plan = PipelinePlanner.Plan(_scene, _containerChanged, _forcedEffects, ReadsNeighbourLists);
             Plan = plan;
             foreach (string keyword in SolverKeywords.All)
                 _device.SetKeyword(_solver, keyword, Plan.IsKeywordEnabled(keyword));
@@ -382,6 +391,7 @@ namespace SphFluid.Simulation
             _device.BeginSample(PassNames.PlaceBoundary);
             _device.DispatchThreads(_solver, _placeBoundary, _boundaryCount);
             _buffers.BoundarySorter.Sort(_grid, _buffers.BoundaryPlaced, _buffers.BoundarySorted, _boundaryCount);
+            _neighboursFound = false;
             if (_divergenceFree)
             {
                 _device.DispatchThreads(_solver, _wallNumberDensity, _boundaryCount);
@@ -429,7 +439,11 @@ namespace SphFluid.Simulation
         /// <summary>One WCSPH Velocity Verlet sub-step: kick-drift, re-sort, forces, kick.</summary>
         void VerletSubstep()
         {
-            if (_deltaSph) LanedPass(PassNames.DensityRate, _densityRate, ParticleCount);
+            if (_deltaSph)
+            {
+                FindNeighbours(); // found after the last sort, unless a shift or the walls' placement moved them since
+                LanedPass(PassNames.DensityRate, _densityRate, ParticleCount);
+            }
 
             SolverPass(PassNames.HalfStep, _halfStep);
 
@@ -448,6 +462,7 @@ namespace SphFluid.Simulation
         {
             SolverPass(PassNames.ParticleShift, _particleShift);
             SolverPass(PassNames.ApplyShift, _applyShift);
+            _neighboursFound = false;
         }
 
         /// <summary>One DFSPH sub-step (Bender &amp; Koschier 2017, Algorithm 1): non-pressure forces, predicted velocity,
@@ -572,6 +587,7 @@ namespace SphFluid.Simulation
             _buffers.Sorter.Sort(_grid, _buffers.Particles, _buffers.ParticlesOther, ParticleCount);
             _buffers.SwapParticles();
             _device.EndSample(PassNames.Sort);
+            _neighboursFound = false;
         }
 
         /// <summary>The passes of <see cref="SortAndComputeForces"/> after the sort, for particles already sorted.</summary>
@@ -579,9 +595,7 @@ namespace SphFluid.Simulation
         {
             if (_divergenceFree)
             {
-                _device.BeginSample(PassNames.FindNeighbours);
                 FindNeighbours();
-                _device.EndSample(PassNames.FindNeighbours);
                 LanedPass(PassNames.DensityFactor, _densityFactor, ParticleCount);
                 _device.DispatchThreads(_solver, _boundaryDensityFactor, _boundaryCount * LanesPerParticle);
                 if (!withForces) return;
@@ -590,6 +604,7 @@ namespace SphFluid.Simulation
                 return;
             }
 
+            FindNeighbours();
             LanedPass(PassNames.DensityPressure, _deltaSph ? _continuityDensity : _densityPressure, ParticleCount);
 
             LanedPass(PassNames.WallPressure, _wallPressure, _boundaryCount);
@@ -599,13 +614,45 @@ namespace SphFluid.Simulation
             LanedPass(PassNames.Forces, _forces, ParticleCount);
         }
 
-        /// <summary>The neighbour lists (SphNeighbourhood.hlsl) of every fluid and boundary particle, after a sort of either;
-        /// without lists (<see cref="NeighbourCapacity"/> 0) the kernels walk the grid and nothing is dispatched.</summary>
+        /// <summary>The neighbour lists (SphNeighbourhood.hlsl) of every fluid and boundary particle where they stand, unless
+        /// they were found since the particles or walls last moved or were sorted; while no lists are in use
+        /// (<see cref="ReadsNeighbourLists"/>) the kernels walk the grid and nothing is dispatched.</summary>
         void FindNeighbours()
         {
-            if (_constants[0].NeighbourCapacity > 0)
+            if (!_neighboursFound && ReadsNeighbourLists)
+            {
+                _device.BeginSample(PassNames.FindNeighbours);
                 _device.DispatchThreads(_solver, _findNeighbours, ParticleCount + _boundaryCount);
+                _device.EndSample(PassNames.FindNeighbours);
+            }
+            _neighboursFound = true;
             _wallsResorted = false;
+        }
+
+        /// <summary>Whether the neighbour passes read the lists (<see cref="NeighbourCapacity.InUse"/> at the present lanes,
+        /// and lists that fit in a buffer) rather than walk the grid.</summary>
+        public bool ReadsNeighbourLists => _constants[0].NeighbourCapacity > 0;
+
+        /// <summary>False: every pass walks the grid, lists or not (tests compare the two). True by default.</summary>
+        public bool NeighbourListsAllowed
+        {
+            get => _listsAllowed;
+            set
+            {
+                _listsAllowed = value;
+                UseNeighbourLists();
+            }
+        }
+
+        /// <summary>Lists in use or not, for the solver at the present lanes: the constants say which to the kernels.</summary>
+        void UseNeighbourLists()
+        {
+            bool inUse = _listsAllowed && NeighbourCapacity.InUse(_scene.Settings.PressureSolver, LanesPerParticle);
+            uint capacity = inUse ? (uint)_listCapacity : 0u;
+            if (_constants[0].NeighbourCapacity == capacity) return;
+            _constants[0].NeighbourCapacity = capacity;
+            _constantsChanged = true;
+            _neighboursFound = false;
         }
 
         /// <summary>One timed solver pass: the kernel over <paramref name="threads"/> items (default: every particle),
@@ -633,6 +680,7 @@ namespace SphFluid.Simulation
                 // rates, and nothing moves before the density and forces.
                 SetTimeStep(0f);
                 Sort();
+                FindNeighbours();
                 LanedPass(PassNames.DensityRate, _densityRate, ParticleCount);
                 DensityAndForces();
             }
@@ -686,11 +734,11 @@ namespace SphFluid.Simulation
         {
             var rest = BoundarySampling.Sample(_scene);
             _boundaryCount = rest.Length;
-            int capacity = NeighbourCapacity.For(_scene.Settings, ParticleCount + _boundaryCount);
-            _buffers.MakeBoundary(rest, _grid.CellCount, capacity);
+            _listCapacity = NeighbourCapacity.For(_scene.Settings, ParticleCount + _boundaryCount);
+            _buffers.MakeBoundary(rest, _grid.CellCount, _listCapacity);
             _constants[0].BoundaryCount = (uint)_boundaryCount;
-            _constants[0].NeighbourCapacity = (uint)capacity;
             _constantsChanged = true;
+            UseNeighbourLists();
             _boundaryMoved = true;
         }
 
@@ -713,6 +761,8 @@ namespace SphFluid.Simulation
             ref FluidConstants c = ref _constants[0];
             c.ParticleCount = (uint)ParticleCount;
             c.NeighbourLanes = (uint)NeighbourLanes.For(ParticleCount, _device.RunsOnCpu);
+            c.NeighbourListRows = (uint)NeighbourCapacity.ListRows(s.PressureSolver);
+            UseNeighbourLists();
             c.PhaseCount = (uint)_phases.Count;
             c.ReductionGroupCount = (uint)_reductionGroups;
             c.ParticleSpacing = s.ParticleSpacing;

@@ -5,7 +5,8 @@ namespace SphFluid.Simulation
     {
         /// <param name="forced">Effects to run although the scene does not need them (the benchmark's measure of what
         /// each decision saves); null for none.</param>
-        public static SimulationPlan Plan(FluidSceneDescription scene, bool containerMoved, PlanOverrides forced = null)
+        /// <param name="neighbourLists">WCSPH's passes read neighbour lists found after each sort (NeighbourCapacity.InUse).</param>
+        public static SimulationPlan Plan(FluidSceneDescription scene, bool containerMoved, PlanOverrides forced = null, bool neighbourLists = false)
         {
             var phases = scene.Phases();
             bool tension = false;
@@ -17,10 +18,11 @@ namespace SphFluid.Simulation
             bool deltaSph = settings.WcsphDensity == WcsphDensity.DeltaSph;
             if (forced == null)
                 return new SimulationPlan(phases.Count, obstacles, tension, settings.XsphEpsilon > 0f,
-                    settings.VelocityDamping > 0f, containerMoved, settings.PressureSolver, shifting: shifting, deltaSph: deltaSph);
+                    settings.VelocityDamping > 0f, containerMoved, settings.PressureSolver, shifting: shifting, deltaSph: deltaSph,
+                    neighbourLists: neighbourLists);
             return new SimulationPlan(phases.Count, obstacles, tension || forced.SurfaceTension, settings.XsphEpsilon > 0f || forced.Xsph,
                 settings.VelocityDamping > 0f, containerMoved || forced.ContainerMoving, settings.PressureSolver, forced.Multiphase, forced.Obstacles,
-                shifting, deltaSph);
+                shifting, deltaSph, neighbourLists);
         }
     }
 }

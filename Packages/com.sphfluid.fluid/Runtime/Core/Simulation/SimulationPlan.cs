@@ -35,6 +35,10 @@ namespace SphFluid.Simulation
         /// with the DensityRate pass before the half step.</summary>
         public bool DeltaSph { get; }
 
+        /// <summary>WCSPH's neighbour passes read lists that FindNeighbours fills after each sort (NeighbourCapacity.InUse:
+        /// one lane per particle); DFSPH's always do.</summary>
+        public bool NeighbourLists { get; }
+
         /// <summary>VelocityDamping &gt; 0.</summary>
         public bool Damping { get; }
 
@@ -54,10 +58,12 @@ namespace SphFluid.Simulation
         /// <param name="forceObstacles">Run the OBSTACLES variant without spheres (<see cref="PlanOverrides"/>).</param>
         /// <param name="shifting">Run the particle-shifting passes after each WCSPH sub-step (ParticleShifting &gt; 0).</param>
         /// <param name="deltaSph">WCSPH carries the number density (WcsphDensity = DeltaSph).</param>
+        /// <param name="neighbourLists">WCSPH's passes read neighbour lists (DFSPH's always do).</param>
         public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform,
             PressureSolver pressureSolver = PressureSolver.Wcsph, bool forceMultiphase = false, bool forceObstacles = false, bool shifting = false,
-            bool deltaSph = false)
+            bool deltaSph = false, bool neighbourLists = false)
         {
+            NeighbourLists = neighbourLists || pressureSolver == PressureSolver.Dfsph;
             PressureSolver = pressureSolver;
             Shifting = shifting && pressureSolver == PressureSolver.Wcsph;
             DeltaSph = deltaSph && pressureSolver == PressureSolver.Wcsph;
@@ -96,6 +102,7 @@ namespace SphFluid.Simulation
                 if (DeltaSph) passes.Add(PassNames.DensityRate);
                 passes.Add(PassNames.HalfStep);
                 passes.Add(PassNames.Sort);
+                if (NeighbourLists) passes.Add(PassNames.FindNeighbours);
                 passes.Add(PassNames.DensityPressure);
                 passes.Add(PassNames.WallPressure);
                 if (SurfaceTension) passes.Add(PassNames.Normals);

@@ -4,8 +4,8 @@ using SphFluid.Simulation;
 namespace SphFluid.Tests.Core.Simulation
 {
     /// <summary>
-    /// The entries of DFSPH's neighbour lists (NeighbourCapacity): half as many again as a particle of the spawn lattice has
-    /// neighbours within the support, none for WCSPH, and none where the lists would not fit in one buffer.
+    /// The entries of the neighbour lists (NeighbourCapacity): half as many again as a particle of the spawn lattice has
+    /// neighbours within the support, and none where the lists would not fit in one buffer; WCSPH reads them in one lane only.
     /// </summary>
     public sealed class NeighbourCapacityTests
     {
@@ -39,9 +39,16 @@ namespace SphFluid.Tests.Core.Simulation
         }
 
         [Test]
-        public void WcsphKeepsNoLists()
+        public void WcsphHasTheSameListsAndReadsThemInOneLaneOnly()
         {
-            Assert.That(NeighbourCapacity.For(Settings(PressureSolver.Wcsph, KernelFamily.CubicSpline, 2f), 10000), Is.EqualTo(0));
+            Assert.That(NeighbourCapacity.For(Settings(PressureSolver.Wcsph, KernelFamily.CubicSpline, 2f), 10000), Is.EqualTo(51 + NeighbourCapacity.RowWords));
+            Assert.That(NeighbourCapacity.ListRows(PressureSolver.Wcsph), Is.EqualTo(9), "the grid walk's order");
+            Assert.That(NeighbourCapacity.ListRows(PressureSolver.Dfsph), Is.EqualTo(1));
+            Assert.That(NeighbourCapacity.InUse(PressureSolver.Wcsph, 1), Is.True);
+            Assert.That(NeighbourCapacity.InUse(PressureSolver.Wcsph, 2), Is.False);
+            Assert.That(NeighbourCapacity.InUse(PressureSolver.Wcsph, 8), Is.False);
+            Assert.That(NeighbourCapacity.InUse(PressureSolver.Dfsph, 1), Is.True);
+            Assert.That(NeighbourCapacity.InUse(PressureSolver.Dfsph, 8), Is.True);
         }
 
         [Test]
