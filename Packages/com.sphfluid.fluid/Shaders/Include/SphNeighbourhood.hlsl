@@ -89,9 +89,11 @@ uint2 BoundaryRowRange(int3 home, uint row)
 struct NeighbourList
 {
     bool listed;  // false: walk the grid's 9 rows
-    uint fluid;   // fluid neighbours in entries [0, fluid)
-    uint walls;   // wall neighbours in entries [_NeighbourCapacity - walls, _NeighbourCapacity)
+    uint fluid;   // fluid neighbours (DFSPH's order: in entries [0, fluid))
+    uint walls;   // wall neighbours (DFSPH's order: in entries [_NeighbourCapacity - walls, _NeighbourCapacity))
     uint owner;
+    uint ends;    // the grid walk's order: the row ends of row endsRow, read once per row
+    uint endsRow;
 };
 
 // The buffer reads below sit in branches, not in ?: (whose operands HLSL evaluates both): without lists the buffers hold
@@ -107,6 +109,8 @@ NeighbourList ListOf(uint owner)
     list.fluid = word & 0xFFFFu;
     list.walls = word >> 16;
     list.owner = owner;
+    list.ends = 0u;
+    list.endsRow = 0xFFFFFFFFu;
     return list;
 }
 
@@ -116,14 +120,17 @@ uint NeighbourRows(NeighbourList list)
     return list.listed ? _NeighbourListRows : 9u;
 }
 
-// Where row `row`'s fluid neighbours and then its walls end, in a list of the grid walk's order.
-uint RowEnds(NeighbourList list, uint row)
+// Row `row`'s ends in a list of the grid walk's order, kept in the list: a pass that visits the rows in order, each
+// row's fluid and then its walls, reads each row's word once.
+void ReadRowEnds(inout NeighbourList list, uint row)
 {
-    return _NeighbourLists[row * (_ParticleCount + _BoundaryCount) + list.owner];
+    if (list.endsRow != row)
+        list.ends = _NeighbourLists[row * (_ParticleCount + _BoundaryCount) + list.owner];
+    list.endsRow = row;
 }
 
 // Entries (listed) or sorted fluid particles (grid) of row `row`: Neighbour(list, k) for k in [x, y).
-uint2 FluidNeighbours(NeighbourList list, int3 home, uint row)
+uint2 FluidNeighbours(inout NeighbourList list, int3 home, uint row)
 {
     if (!list.listed)
         return NeighbourRowRange(home, row);
@@ -131,19 +138,23 @@ uint2 FluidNeighbours(NeighbourList list, int3 home, uint row)
         return uint2(0u, list.fluid);
     uint start = NEIGHBOUR_ROW_WORDS;
     if (row > 0u)
-        start = RowEnds(list, row - 1u) >> 16;
-    return uint2(start, RowEnds(list, row) & 0xFFFFu);
+    {
+        ReadRowEnds(list, row - 1u); // kept from the last row's walls when the rows come in order
+        start = list.ends >> 16;
+    }
+    ReadRowEnds(list, row);
+    return uint2(start, list.ends & 0xFFFFu);
 }
 
 // The same for the wall particles.
-uint2 WallNeighbours(NeighbourList list, int3 home, uint row)
+uint2 WallNeighbours(inout NeighbourList list, int3 home, uint row)
 {
     if (!list.listed)
         return BoundaryRowRange(home, row);
     if (_NeighbourListRows == 1u)
         return uint2(_NeighbourCapacity - list.walls, _NeighbourCapacity);
-    uint ends = RowEnds(list, row);
-    return uint2(ends & 0xFFFFu, ends >> 16);
+    ReadRowEnds(list, row);
+    return uint2(list.ends & 0xFFFFu, list.ends >> 16);
 }
 
 // The sorted index of entry k: read from the list, or k itself on the grid.
