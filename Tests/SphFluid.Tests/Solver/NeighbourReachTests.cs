@@ -1,0 +1,130 @@
+using System;
+using System.Numerics;
+using NUnit.Framework;
+using SphFluid.Simulation;
+using SphFluid.Sorting;
+
+namespace SphFluid.Tests.Solver
+{
+    /// <summary>
+    /// The neighbour walk leaves out the rows and cells that the support cannot reach from a particle (NeighbourRowCells,
+    /// SphNeighbourhood.hlsl), so it must still find every particle within h: the lists FindNeighbours makes from it hold
+    /// exactly the fluid and wall particles a search of all pairs finds. The container is rotated (the grid's cells are
+    /// not the world's axes) and holds a sphere, and the particles stand off the lattice, many of them near a cell's faces
+    /// and corners, where leaving out one cell too many would lose a neighbour.
+    /// </summary>
+    public sealed class NeighbourReachTests
+    {
+        // Pairs this close to h, relative in r^2, may round either way between the GPU and the CPU.
+        const float RoundingBand = 1e-5f;
+
+        [TestCase(PressureSolver.Wcsph, TestName = "TheWalkFindsEveryPairWithinTheSupport_GridWalkOrder")]
+        [TestCase(PressureSolver.Dfsph, TestName = "TheWalkFindsEveryPairWithinTheSupport_DfsphOrder")]
+        public void TheWalkFindsEveryPairWithinTheSupport(PressureSolver solver)
+        {
+            var scene = SolverKernelTests.RandomScene(true, false, false, true);
+            scene.Settings.PressureSolver = solver;
+            scene.Container.Size *= 1.25f; // room to scatter the particles at about the lattice's density: no list overflows
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene) { LanesPerParticle = 1 };
+            Assert.That(sim.ReadsNeighbourLists, Is.True);
+            var input = Scattered(scene, sim.ParticleCount);
+            PlacePairsAcrossCellBoundaries(input, scene);
+            sim.SetParticles(input);
+
+            var fluid = new Particle[sim.ParticleCount];
+            var walls = new BoundaryParticle[sim.BoundaryCount];
+            var counts = new uint[sim.ParticleCount + sim.BoundaryCount];
+            sim.Particles.GetData(fluid);
+            sim.BoundaryParticles.GetData(walls);
+            sim.NeighbourCounts.GetData(counts);
+            float h2 = scene.Settings.SmoothingRadius * scene.Settings.SmoothingRadius;
+
+            int pairs = 0, wallPairs = 0;
+            for (int owner = 0; owner < counts.Length; owner++)
+            {
+                Assert.That(counts[owner], Is.Not.EqualTo(uint.MaxValue), $"owner {owner} overflows its list");
+                bool fluidOwner = owner < fluid.Length;
+                var x = fluidOwner ? fluid[owner].Position : walls[owner - fluid.Length].Position;
+                var (fluidLow, fluidHigh) = Within(x, fluid.Length, j => fluid[j].Position, h2);
+                var (wallLow, wallHigh) = fluidOwner ? Within(x, walls.Length, b => walls[b].Position, h2) : (0, 0);
+                uint found = counts[owner] & 0xFFFFu, foundWalls = counts[owner] >> 16;
+                Assert.That((int)found, Is.InRange(fluidLow, fluidHigh), $"fluid neighbours of owner {owner}");
+                Assert.That((int)foundWalls, Is.InRange(wallLow, wallHigh), $"wall neighbours of owner {owner}");
+                pairs += (int)found;
+                wallPairs += (int)foundWalls;
+            }
+            TestContext.Progress.WriteLine($"{solver}: {counts.Length} owners, {pairs} fluid and {wallPairs} wall neighbours, as a search of all pairs finds");
+            Assert.That(wallPairs, Is.GreaterThan(fluid.Length), "the particles reach the container's and the sphere's walls");
+        }
+
+        /// <summary>The spawn's particles moved to independent uniform places in the container (outside the sphere): pairs at
+        /// every distance and every place in a cell, which a lattice, even a jittered one, does not give.</summary>
+        static Particle[] Scattered(FluidSceneDescription scene, int count)
+        {
+            var rng = new SolverScenes.Rng(11);
+            var spawn = SpawnLayout.Generate(scene);
+            var inner = 0.5f * scene.Container.Size - new Vector3(scene.Settings.ParticleSpacing);
+            var sphere = scene.Obstacles[0];
+            var particles = new Particle[count];
+            for (int i = 0; i < count; i++)
+            {
+                Vector3 position;
+                do position = scene.Container.Position + Vector3.Transform(rng.InBox(inner), scene.Container.Rotation);
+                while ((position - sphere.Center).Length() < sphere.Radius + scene.Settings.ParticleSpacing);
+                particles[i] = new Particle(position, Vector3.Zero, spawn[i].Phase, spawn[i].Id);
+            }
+            return particles;
+        }
+
+        /// <summary>
+        /// The first particles in pairs that only a walk reaching its full support finds: in each pair the owner stands
+        /// 0.9968 h from the nearest face, edge or corner of a neighbouring cell, and its partner 0.9985 h away in that
+        /// cell, beyond it. A walk that left out cells nearer than h (a reach of 0.99 h) would lose the partner.
+        /// </summary>
+        static void PlacePairsAcrossCellBoundaries(Particle[] particles, FluidSceneDescription scene)
+        {
+            var c = scene.Container;
+            var grid = new CellGrid(c.Position, c.Rotation, c.Size, scene.Settings.SmoothingRadius);
+            Assert.That(Matrix4x4.Invert(Matrix4x4.Transpose(grid.WorldToGrid), out var gridToWorld), Is.True);
+            var directions = new[]
+            {
+                new Vector3(0, -1, 0), new Vector3(0, 0, 1), new Vector3(-1, 0, 0), // faces
+                new Vector3(0, -1, -1), new Vector3(-1, 1, 0), new Vector3(1, 0, -1), // edges: rows left out, and cells along x
+                new Vector3(-1, -1, -1), new Vector3(1, 1, 1), new Vector3(1, -1, 1), // corners
+            };
+            int pairs = 0;
+            for (int z = 2; z <= 3; z++)
+            for (int y = 2; y <= 4; y++)
+            for (int x = 2; x <= 4; x++, pairs++)
+            {
+                var u = directions[pairs % directions.Length];
+                var axes = new Vector3(MathF.Abs(u.X), MathF.Abs(u.Y), MathF.Abs(u.Z));
+                float gap = 0.9968f / MathF.Sqrt(axes.X + axes.Y + axes.Z); // to the neighbouring cell, along each axis of u
+                // In the cell: gap from the face u points through, the middle along the axes u does not cross.
+                var inCell = new Vector3(0.5f) * (Vector3.One - axes) + axes * (0.5f * (Vector3.One + u) - u * gap);
+                var owner = new Vector3(x, y, z) + inCell;
+                var partner = owner + 0.9985f * Vector3.Normalize(u);
+                particles[2 * pairs] = Moved(particles[2 * pairs], Vector3.Transform(owner, gridToWorld));
+                particles[2 * pairs + 1] = Moved(particles[2 * pairs + 1], Vector3.Transform(partner, gridToWorld));
+            }
+            Assert.That(2 * pairs, Is.LessThan(particles.Length));
+        }
+
+        static Particle Moved(Particle p, Vector3 position) => new Particle(position, Vector3.Zero, p.Phase, p.Id);
+
+        /// <summary>How many of <paramref name="count"/> particles lie within h of <paramref name="x"/>, at least and at most
+        /// (those within the rounding band of h counted only in the second).</summary>
+        static (int low, int high) Within(Vector3 x, int count, System.Func<int, Vector3> position, float h2)
+        {
+            int low = 0, high = 0;
+            for (int j = 0; j < count; j++)
+            {
+                var r = x - position(j);
+                float r2 = Vector3.Dot(r, r);
+                if (r2 < h2 * (1f - RoundingBand)) low++;
+                if (r2 < h2 * (1f + RoundingBand)) high++;
+            }
+            return (low, high);
+        }
+    }
+}
