@@ -26,7 +26,8 @@ for ((i = 0; i < ${#projects[@]}; i += 2)); do
     if [ "$status" -eq 0 ]; then status=$code; fi
 done
 
-# One plain closing line that any CI reader understands, summed over the projects that wrote results.
+# One plain closing line that any CI reader understands, summed over the projects that wrote results, with the script's
+# wall time (installs and builds included): the README's CI times are this figure.
 passed=0; failed=0; skipped=0; found=0
 for ((i = 1; i < ${#projects[@]}; i += 2)); do
     trx="$results/${projects[i]}"
@@ -38,6 +39,6 @@ for ((i = 1; i < ${#projects[@]}; i += 2)); do
     skipped=$(( skipped + $(get total) - $(get executed) ))
 done
 if [ "$found" -eq 1 ]; then
-    echo "${passed} passed, ${failed} failed, ${skipped} skipped"
+    echo "${passed} passed, ${failed} failed, ${skipped} skipped in ${SECONDS} s"
 fi
 exit $status
