@@ -7,11 +7,11 @@ using SphFluid.Sorting;
 namespace SphFluid.Tests.Solver
 {
     /// <summary>
-    /// The neighbour walk leaves out the rows and cells that the support cannot reach from a particle (NeighbourRowCells,
-    /// SphNeighbourhood.hlsl), so it must still find every particle within h: the lists FindNeighbours makes from it hold
-    /// exactly the fluid and wall particles a search of all pairs finds. The container is rotated (the grid's cells are
-    /// not the world's axes) and holds a sphere, and the particles stand off the lattice, many of them near a cell's faces
-    /// and corners, where leaving out one cell too many would lose a neighbour.
+    /// The neighbour walk (the 27 cells about a particle's own, SphNeighbourhood.hlsl) must find every particle within h:
+    /// the lists FindNeighbours makes from it hold exactly the fluid and wall particles a search of all pairs finds. The
+    /// container is rotated (the grid's cells are not the world's axes) and holds a sphere, and the particles stand off
+    /// the lattice, some of them in pairs across a cell's faces, edges and corners, where a walk that reached one cell
+    /// too few, or a grid whose transform rounded a particle into the wrong cell, would lose a neighbour.
     /// </summary>
     public sealed class NeighbourReachTests
     {
@@ -79,7 +79,7 @@ namespace SphFluid.Tests.Solver
         /// <summary>
         /// The first particles in pairs that only a walk reaching its full support finds: in each pair the owner stands
         /// 0.9968 h from the nearest face, edge or corner of a neighbouring cell, and its partner 0.9985 h away in that
-        /// cell, beyond it. A walk that left out cells nearer than h (a reach of 0.99 h) would lose the partner.
+        /// cell, beyond it.
         /// </summary>
         static void PlacePairsAcrossCellBoundaries(Particle[] particles, FluidSceneDescription scene)
         {
@@ -89,7 +89,7 @@ namespace SphFluid.Tests.Solver
             var directions = new[]
             {
                 new Vector3(0, -1, 0), new Vector3(0, 0, 1), new Vector3(-1, 0, 0), // faces
-                new Vector3(0, -1, -1), new Vector3(-1, 1, 0), new Vector3(1, 0, -1), // edges: rows left out, and cells along x
+                new Vector3(0, -1, -1), new Vector3(-1, 1, 0), new Vector3(1, 0, -1), // edges
                 new Vector3(-1, -1, -1), new Vector3(1, 1, 1), new Vector3(1, -1, 1), // corners
             };
             int pairs = 0;

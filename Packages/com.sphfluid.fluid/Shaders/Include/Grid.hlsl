@@ -25,39 +25,15 @@ uint3 _GridDims;       // cells per local axis, margin included
 uint _GridCellCount;   // _GridDims.x * _GridDims.y * _GridDims.z
 #endif
 
-// worldPos in grid units.
-float3 GridPositionOf(float3 worldPos)
-{
-    return mul(_WorldToGrid, float4(worldPos, 1.0)).xyz;
-}
-
 // The cell holding world position worldPos. Clamps in float first (so huge coordinates cannot
 // overflow the int conversion) and again in int (so a NaN, whose conversion is undefined, still lands
 // in the grid).
 int3 GridCoordOf(float3 worldPos)
 {
-    float3 g = GridPositionOf(worldPos);
+    float3 g = mul(_WorldToGrid, float4(worldPos, 1.0)).xyz;
     int3 top = (int3)_GridDims - int3(1, 1, 1);
     int3 coord = (int3)clamp(floor(g), float3(0.0, 0.0, 0.0), (float3)top);
     return clamp(coord, int3(0, 0, 0), top);
-}
-
-// Where a neighbourhood is walked from: the cell of worldPos, and worldPos in grid units clamped to the grid's box
-// [0, _GridDims]. A particle outside the grid, sorted into a border cell, then stands on that cell's outer face. Clamping
-// moves no two points further apart, and a neighbour's clamped position lies in the cell it was sorted into, so the
-// cells within h of `at` hold every particle within h of worldPos (SphNeighbourhood.hlsl leaves out the others).
-struct GridHome
-{
-    int3 cell;
-    float3 at;
-};
-
-GridHome GridHomeOf(float3 worldPos)
-{
-    GridHome home;
-    home.cell = GridCoordOf(worldPos);
-    home.at = clamp(GridPositionOf(worldPos), float3(0.0, 0.0, 0.0), (float3)_GridDims);
-    return home;
 }
 
 bool GridCoordInside(int3 coord)

@@ -9,10 +9,8 @@
 // row (x-1, x, x+1 at fixed y, z) hold ONE contiguous range of sorted particles:
 // [CellStart[x-1], CellStart[x+1] + CellCount[x+1]). So the 27 cells are visited as 9 ranges, with a third
 // of the bookkeeping and longer, better-predicted inner loops. Fluid and boundary particles live in the
-// same grid, each sorted into its own buffer with its own CellStart/CellCount. Rows and cells the support cannot reach
-// from the particle are left out (NeighbourRowCells).
-// Usage: GridHome home = GridHomeOf(x);
-//        for (uint row = 0u; row < 9u; row++) { uint2 range = NeighbourRowRange(home, row); for (j in range) ... }
+// same grid, each sorted into its own buffer with its own CellStart/CellCount.
+// Usage: for (uint row = 0u; row < 9u; row++) { uint2 range = NeighbourRowRange(home, row); for (j in range) ... }
 //
 // Neighbour lists. DFSPH's solves visit every particle's neighbourhood twice per iteration, at positions that do not
 // change between the sort and the next drift, so (as Bender & Koschier 2017, "Divergence-Free SPH for Incompressible
@@ -53,40 +51,24 @@ RWStructuredBuffer<uint> _FoundNeighbourLists;
 // The row order's first words: entry r holds the end of row r's fluid neighbours | the end of its walls << 16.
 #define NEIGHBOUR_ROW_WORDS 9u
 
-// The support in grid units, with a margin far above the rounding of the grid transform (a few ulps of the coordinates,
-// under 1e-4 units for grids of thousands of cells), so that no cell a row leaves out can hold a particle within h.
-#define NEIGHBOUR_REACH 1.001
-
-// First and last cell of row `row` (0..8: dy, dz in -1..1) around `home`; false outside the grid, or when the row lies
-// beyond the support. A cube of 27 cells of size h holds 6.4 times the support's volume: a row is left out when its
-// cells' nearest face is further than h from the particle across y and z, and its three cells are trimmed to those the
-// support reaches along x at that distance. The neighbours stay the same: every particle left out is further than h,
-// where every kernel and every pair term of a pass is zero, so the sums are the same to the bit (in one lane; with
-// lanes the candidates fall to other lanes, and the sums differ by rounding).
-bool NeighbourRowCells(GridHome home, uint row, out uint firstCell, out uint lastCell)
+// First and last cell of row `row` (0..8: dy, dz in -1..1) around cell `home`; false outside the grid.
+bool NeighbourRowCells(int3 home, uint row, out uint firstCell, out uint lastCell)
 {
-    int3 c = home.cell + int3(0, (int)(row % 3u) - 1, (int)(row / 3u) - 1);
+    int3 c = home + int3(0, (int)(row % 3u) - 1, (int)(row / 3u) - 1);
     int top = (int)_GridDims.x - 1;
+    int3 first = int3(max(c.x - 1, 0), c.y, c.z);
+    int3 last = int3(min(c.x + 1, top), c.y, c.z);
     firstCell = 0u;
     lastCell = 0u;
-    if (!GridCoordInside(int3(0, c.y, c.z)))
+    if (!GridCoordInside(first))
         return false;
-    float2 gap = max(max((float2)c.yz - home.at.yz, home.at.yz - (float2)(c.yz + 1)), float2(0.0, 0.0));
-    float reach2 = NEIGHBOUR_REACH * NEIGHBOUR_REACH - dot(gap, gap);
-    if (reach2 < 0.0)
-        return false;
-    float reach = sqrt(reach2);
-    int first = max(max(c.x - 1, 0), (int)floor(home.at.x - reach));
-    int last = min(min(c.x + 1, top), (int)floor(home.at.x + reach));
-    if (first > last) // only for a position that is not a number
-        return false;
-    firstCell = CellIndexOf(int3(first, c.y, c.z));
-    lastCell = CellIndexOf(int3(last, c.y, c.z));
+    firstCell = CellIndexOf(first);
+    lastCell = CellIndexOf(last);
     return true;
 }
 
 // Sorted fluid-particle range [x, y) of row `row` around cell `home`; empty outside the grid.
-uint2 NeighbourRowRange(GridHome home, uint row)
+uint2 NeighbourRowRange(int3 home, uint row)
 {
     uint firstCell, lastCell;
     if (!NeighbourRowCells(home, row, firstCell, lastCell))
@@ -95,7 +77,7 @@ uint2 NeighbourRowRange(GridHome home, uint row)
 }
 
 // Sorted boundary-particle range [x, y) of row `row` around cell `home`; empty outside the grid.
-uint2 BoundaryRowRange(GridHome home, uint row)
+uint2 BoundaryRowRange(int3 home, uint row)
 {
     uint firstCell, lastCell;
     if (!NeighbourRowCells(home, row, firstCell, lastCell))
@@ -148,7 +130,7 @@ void ReadRowEnds(inout NeighbourList list, uint row)
 }
 
 // Entries (listed) or sorted fluid particles (grid) of row `row`: Neighbour(list, k) for k in [x, y).
-uint2 FluidNeighbours(inout NeighbourList list, GridHome home, uint row)
+uint2 FluidNeighbours(inout NeighbourList list, int3 home, uint row)
 {
     if (!list.listed)
         return NeighbourRowRange(home, row);
@@ -165,7 +147,7 @@ uint2 FluidNeighbours(inout NeighbourList list, GridHome home, uint row)
 }
 
 // The same for the wall particles.
-uint2 WallNeighbours(inout NeighbourList list, GridHome home, uint row)
+uint2 WallNeighbours(inout NeighbourList list, int3 home, uint row)
 {
     if (!list.listed)
         return BoundaryRowRange(home, row);
