@@ -11,7 +11,7 @@ namespace SphFluid.Headless.Runs;
 public static class ParticleScaling
 {
     /// <summary>The largest particle-count multiplier the commands take: a 4 096-particle scene (the shipped scenes hold
-    /// 4 000 to 4 200) scaled to the particle limit, 16 777 216. A larger scene scaled past that limit is refused by its
+    /// 1 440 to 8 008) scaled to the particle limit, 16 777 216. A larger scene scaled past that limit is refused by its
     /// own validation, which names MaxParticles. The GPU study runs OilAndWater's 4 160 particles at 1 M and 2 M (240 and
     /// 481; Headless/gpu-figures.sh).</summary>
     public const double MaxFactor = 4096;

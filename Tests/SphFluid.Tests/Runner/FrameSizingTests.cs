@@ -1,6 +1,13 @@
 using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Text.RegularExpressions;
 using NUnit.Framework;
 using SphFluid.Headless.Runs;
+using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
 
 namespace SphFluid.Tests.Runner
 {
@@ -8,6 +15,38 @@ namespace SphFluid.Tests.Runner
     /// interpolated between measured counts.</summary>
     public sealed class FrameSizingTests
     {
+        /// <summary>Each shipped scene spawns no more particles than the H200 figures allow it on a GPU with a sixteenth of
+        /// that card's memory bandwidth (the README's bandwidth bound, 16.7 times slower per particle), read from the
+        /// committed bench output, so a scene cannot outgrow the measurement it was sized by. WCSPH only: DFSPH is not a
+        /// 60 Hz solver at these sizes.</summary>
+        [Test]
+        public void EveryShippedSceneFitsItsBandwidthBound()
+        {
+            var bounds = BandwidthBounds(Path.Combine(GpuTestDevice.RepoRoot, "Headless", "figures", "gpu-h200-scenes.txt"));
+
+            foreach (string name in RunnerPaths.ShippedScenes.Where(n => n != "PlayModeTest"))
+            {
+                Assert.That(bounds.ContainsKey(name), Is.True, $"{name} has a bandwidth bound in gpu-h200-scenes.txt");
+                int count = SpawnLayout.TotalCount(SceneLoader.Load(RunnerPaths.Scene(name), RunnerPaths.Project).Description);
+                Assert.That(count, Is.LessThanOrEqualTo(bounds[name]), name);
+            }
+        }
+
+        static Dictionary<string, int> BandwidthBounds(string benchOutput)
+        {
+            var bounds = new Dictionary<string, int>();
+            string? scene = null;
+            foreach (string line in File.ReadLines(benchOutput))
+            {
+                var command = Regex.Match(line, @"^\$ sphfluid bench Assets/FluidDemo/Scenes/(\w+)\.unity");
+                if (command.Success) scene = line.Contains("--solver dfsph") ? null : command.Groups[1].Value;
+                var bound = Regex.Match(line, @"^- on a GPU 16\.7 times slower per particle: about ([\d,]+) particles");
+                if (bound.Success && scene != null)
+                    bounds[scene] = int.Parse(bound.Groups[1].Value, NumberStyles.AllowThousands, CultureInfo.InvariantCulture);
+            }
+            return bounds;
+        }
+
         [Test]
         public void APowerLawIsInterpolatedExactly()
         {

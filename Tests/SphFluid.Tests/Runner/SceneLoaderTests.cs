@@ -17,7 +17,7 @@ namespace SphFluid.Tests.Runner
             Assert.That(scene.Name, Is.EqualTo(name));
             Assert.That(scene.Description.Validate(), Is.Empty);
             Assert.That(scene.Description.SpawnBoxes.Count, Is.GreaterThan(0));
-            Assert.That(SpawnLayout.TotalCount(scene.Description), Is.InRange(100, 5000), "lavapipe-sized scenes");
+            Assert.That(SpawnLayout.TotalCount(scene.Description), Is.InRange(100, scene.Description.Settings.MaxParticles));
             Assert.That(scene.SimulatorObject, Is.EqualTo("Fluid"));
             Assert.That(scene.ContainerObject, Is.EqualTo("Container"));
         }
