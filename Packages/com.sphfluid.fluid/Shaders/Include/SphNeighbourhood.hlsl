@@ -15,7 +15,7 @@
 // Neighbour lists. DFSPH's solves visit every particle's neighbourhood twice per iteration, at positions that do not
 // change between the sort and the next drift, so (as Bender & Koschier 2017, "Divergence-Free SPH for Incompressible
 // and Viscous Fluids", do with the result of their neighbour search) the neighbours are found once per sort
-// (FluidSolver.compute's FindNeighbours) and read from a list by every pass until the next drift. A wide support makes
+// (FindNeighbours, Passes/NeighbourLists.hlsl) and read from a list by every pass until the next drift. A wide support makes
 // the difference: at 2.85 spacings the 27 cells hold about 6 candidates per neighbour. WCSPH's four neighbour passes of a
 // sub-step (density, wall pressure, forces, and delta-SPH's rate before the next drift) read the same lists when each
 // particle's loops run in one lane; with more lanes (NeighbourLanes.hlsl) the walk is already split, and FindNeighbours,

@@ -1,0 +1,454 @@
+#ifndef SPHFLUID_PASSES_DIVERGENCE_FREE_INCLUDED
+#define SPHFLUID_PASSES_DIVERGENCE_FREE_INCLUDED
+
+// FluidSolver.compute's divergence-free SPH passes (DivergenceFreeSolver.hlsl): the factors, the two Jacobi solves
+// with their stop decision kept on the GPU, the drift, and the per-particle divergence the diagnostics read.
+
+// rest number density delta0 = rho0 / m of particle p's phase.
+float RestNumberDensityOf(Particle p)
+{
+    PhaseProperties phase = _Phases[PHASE_OF(p)];
+    return phase.restDensity / phase.particleMass;
+}
+
+// delta, rho and the factor alpha of the fluid particle of thread `thread`, from its neighbours, fluid and wall.
+// Laned (NeighbourLanes.hlsl): every thread of the group calls it; true for the one thread that wrote.
+bool StoreDensityFactor(uint thread, uint groupThread)
+{
+    uint i = min(LaneOwner(thread), _ParticleCount - 1u);
+    uint lane = FirstCandidate(thread, _ParticleCount);
+    Particle pi = _Particles[i];
+    PhaseProperties phase = _Phases[PHASE_OF(pi)];
+    int3 home = GridCoordOf(pi.position);
+    NeighbourList list = ListOf(i);
+    float numberDensity = 0.0;
+    float3 gradientSum = float3(0.0, 0.0, 0.0);
+    float squaredGradients = 0.0;
+    for (uint row = 0u; row < NeighbourRows(list); row++)
+    {
+        uint2 range = FluidNeighbours(list, home, row);
+        for (uint k = range.x + lane; k < range.y; k += _NeighbourLanes)
+        {
+            uint j = Neighbour(list, k);
+            Particle pj = _Particles[j];
+            float3 rij = pi.position - pj.position;
+            float r2 = dot(rij, rij);
+            numberDensity += Kernel(r2);
+            if (r2 >= _SmoothingRadius2 || j == i)
+                continue;
+            float3 gradient = PairGradient(rij, sqrt(r2), pi.id, pj.id);
+            gradientSum += gradient;
+            squaredGradients += dot(gradient, gradient) / _Phases[PHASE_OF(pj)].particleMass;
+        }
+        uint2 walls = WallNeighbours(list, home, row);
+        for (uint kb = walls.x + lane; kb < walls.y; kb += _NeighbourLanes)
+        {
+            BoundaryParticle wall = _BoundaryParticles[Neighbour(list, kb)];
+            float3 rib = pi.position - wall.position;
+            float r2 = dot(rib, rib);
+            float weight = WallWeight(wall, phase);
+            numberDensity += weight * Kernel(r2);
+            if (r2 >= _SmoothingRadius2)
+                continue;
+            gradientSum += weight * PairGradient(rib, sqrt(r2), 1u, 0u);
+        }
+    }
+    float4 gradientsAndDensity = SumOverLanes(float4(gradientSum, numberDensity), groupThread);
+    squaredGradients = SumOverLanes(float4(squaredGradients, 0.0, 0.0, 0.0), groupThread).x;
+    if (lane != 0u)
+        return false;
+    gradientSum = gradientsAndDensity.xyz;
+    numberDensity = gradientsAndDensity.w;
+    _DivergenceFreeFactors[i] = DivergenceFreeFactor(gradientSum, squaredGradients, phase.particleMass);
+    // The pressure term the last constant-density solve applied, for the readouts (WCSPH's layout).
+    float q = _WarmStart[pi.id].x;
+    _Densities[i] = float4(phase.particleMass * numberDensity, q * numberDensity * numberDensity, numberDensity, q);
+    return true;
+}
+
+// After the drift and the sort: delta, rho, alpha, and the divergence solve's warm-start q. Laned.
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void DensityFactor(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
+{
+    if (!StoreDensityFactor(id.x, groupThread.x))
+        return;
+    uint i = LaneOwner(id.x);
+    uint particleId = _Particles[i].id;
+    _SolverStiffness[i] = WARM_START_FRACTION * _WarmStart[particleId].y;
+    _WarmStart[particleId] = float2(_WarmStart[particleId].x, 0.0); // ApplyStiffness counts the warm start as it applies it
+}
+
+// After the boundary moved (once per frame, before the first sub-step): the walls count at their new places in delta,
+// rho and alpha, which the non-pressure forces and the constant-density solve read. The fluid has not moved, so the
+// divergence solve's warm start stays where the last solve left it, for the next DensityFactor. Laned.
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void WallMovedDensityFactor(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
+{
+    StoreDensityFactor(id.x, groupThread.x);
+}
+
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void PredictVelocity(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= _ParticleCount)
+        return;
+    Particle p = _Particles[i];
+    p.velocity = PredictedVelocity(p.velocity, _Accelerations[i].xyz, _VelocityCorrections[i].xyz);
+    _Particles[i] = p;
+    float warm = WARM_START_FRACTION * _WarmStart[p.id].x;
+    _SolverStiffness[i] = warm;
+    _WarmStart[p.id] = float2(0.0, _WarmStart[p.id].y); // ApplyStiffness counts the warm start as it applies it
+}
+
+// Thread groups of a laned pass over `owners` particles (NeighbourLanes.hlsl).
+uint LanedGroups(uint owners)
+{
+    return (owners * _NeighbourLanes + PARTICLE_THREADS - 1u) / PARTICLE_THREADS;
+}
+
+// The slot of the solve under way: kept on the GPU (BeginSolve), so a sub-step's two solves change no constant.
+uint OpenSolve()
+{
+    return _SolverState[OPEN_SOLVE_WORD];
+}
+
+// Opens a solve: no iteration yet, not converged, the groups of every laned particle (fluid, then wall) in the
+// indirect arguments.
+void BeginSolve(uint solve)
+{
+    _SolverState[OPEN_SOLVE_WORD] = solve;
+    uint slot = solve * 8u;
+    _SolverState[slot] = 0u;
+    _SolverState[slot + 1u] = 0u;
+    _SolverState[slot + 3u] += 1u;
+    _SolverArguments[0] = LanedGroups(_ParticleCount);
+    _SolverArguments[1] = 1u;
+    _SolverArguments[2] = 1u;
+    _SolverArguments[3] = LanedGroups(_BoundaryCount);
+    _SolverArguments[4] = 1u;
+    _SolverArguments[5] = 1u;
+}
+
+[numthreads(1, 1, 1)]
+void BeginDensitySolve(uint3 id : SV_DispatchThreadID)
+{
+    BeginSolve(DENSITY_SOLVE);
+}
+
+[numthreads(1, 1, 1)]
+void BeginDivergenceSolve(uint3 id : SV_DispatchThreadID)
+{
+    BeginSolve(DIVERGENCE_SOLVE);
+}
+
+// Wall particle b as an unknown of the solves (DivergenceFreeSolver.hlsl, "Walls as unknowns"): delta_b, alpha_b, the rest
+// number density of the fluid around it, and the divergence-free solve's warm start. Laned.
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void BoundaryDensityFactor(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
+{
+    uint b = min(LaneOwner(id.x), _BoundaryCount - 1u);
+    uint lane = FirstCandidate(id.x, _BoundaryCount);
+    float3 xb = _BoundaryParticles[b].position;
+    int3 home = GridCoordOf(xb);
+    NeighbourList list = ListOf(_ParticleCount + b);
+    float fluidDensity = 0.0, squaredGradients = 0.0, restSum = 0.0, scaleSum = 0.0;
+    for (uint row = 0u; row < NeighbourRows(list); row++)
+    {
+        uint2 range = FluidNeighbours(list, home, row);
+        for (uint k = range.x + lane; k < range.y; k += _NeighbourLanes)
+        {
+            Particle pf = _Particles[Neighbour(list, k)];
+            float3 rfb = pf.position - xb;
+            float r2 = dot(rfb, rfb);
+            if (r2 >= _SmoothingRadius2)
+                continue;
+            float w = Kernel(r2);
+            fluidDensity += w;
+            restSum += w * RestNumberDensityOf(pf);
+            scaleSum += w * _Phases[PHASE_OF(pf)].wallWeightScale;
+            float3 gradient = PairGradient(rfb, sqrt(r2), 1u, 0u);
+            squaredGradients += dot(gradient, gradient) / _Phases[PHASE_OF(pf)].particleMass;
+        }
+    }
+    float4 sums = SumOverLanes(float4(fluidDensity, squaredGradients, restSum, scaleSum), groupThread.x);
+    if (lane != 0u)
+        return;
+    fluidDensity = sums.x;
+    squaredGradients = sums.y;
+    restSum = sums.z;
+    scaleSum = sums.w;
+    float wallDensity = _WallNumberDensities[b];
+    float rest = fluidDensity > 0.0 ? restSum / fluidDensity : 0.0;
+    // The walls around b filled at the rest number density of the fluid that meets b (WallWeight, Shepard-weighted).
+    float wallScale = fluidDensity > 0.0 ? scaleSum / fluidDensity : 1.0;
+    uint boundaryId = _BoundarySortedSource[b];
+    float2 warm = _BoundaryWarmStart[boundaryId];
+    _BoundarySolve[b] = float4(fluidDensity + wallScale * wallDensity, WallFactor(fluidDensity, rest, squaredGradients),
+        WARM_START_FRACTION * warm.y, rest);
+    _BoundaryWarmStart[boundaryId] = float2(warm.x, 0.0);
+}
+
+// Before a solve's first correction: the walls' warm start (the fluid's is set by PredictVelocity and DensityFactor).
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void BoundaryBeginSolve(uint3 id : SV_DispatchThreadID)
+{
+    uint b = id.x;
+    if (b >= _BoundaryCount || OpenSolve() != DENSITY_SOLVE)
+        return;
+    float4 solve = _BoundarySolve[b];
+    uint boundaryId = _BoundarySortedSource[b];
+    float2 warm = _BoundaryWarmStart[boundaryId];
+    solve.z = WARM_START_FRACTION * warm.x;
+    _BoundarySolve[b] = solve;
+    _BoundaryWarmStart[boundaryId] = float2(0.0, warm.y);
+}
+
+// One Jacobi step of a wall particle: q_b from its predicted compression (density solve) or its compression rate
+// (divergence solve), D delta_b / Dt = sum_f (v_f - v_b) . gradW_fb; the q_b the last correction applied is summed
+// into the warm start first. Laned; a wall particle without a factor (no fluid) walks nothing and gets q_b = 0.
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void BoundarySolveError(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
+{
+    uint b = min(LaneOwner(id.x), _BoundaryCount - 1u);
+    float4 solve = _BoundarySolve[b];
+    bool pushes = solve.y > 0.0;
+    uint lane = FirstCandidate(id.x, pushes ? _BoundaryCount : 0u);
+    BoundaryParticle wall = _BoundaryParticles[b];
+    int3 home = GridCoordOf(wall.position);
+    NeighbourList list = ListOf(_ParticleCount + b);
+    float rate = 0.0;
+    for (uint row = 0u; row < NeighbourRows(list); row++)
+    {
+        uint2 range = FluidNeighbours(list, home, row);
+        for (uint k = range.x + lane; k < range.y; k += _NeighbourLanes)
+        {
+            Particle pf = _Particles[Neighbour(list, k)];
+            float3 rfb = pf.position - wall.position;
+            float r2 = dot(rfb, rfb);
+            if (r2 >= _SmoothingRadius2)
+                continue;
+            rate += ContinuityPair(pf.velocity, wall.velocity, PairGradient(rfb, sqrt(r2), 1u, 0u));
+        }
+    }
+    rate = SumOverLanes(float4(rate, 0.0, 0.0, 0.0), groupThread.x).x;
+    if (LaneOwner(id.x) >= _BoundaryCount || LaneOf(id.x) != 0u)
+        return;
+    uint open = OpenSolve();
+    _BoundaryWarmStart[_BoundarySortedSource[b]] += open == DENSITY_SOLVE ? float2(solve.z, 0.0) : float2(0.0, solve.z);
+    float2 stiffness = open == DENSITY_SOLVE
+        ? DensityStiffness(solve.x, rate, solve.w, solve.y, _TimeStep)
+        : DivergenceStiffness(rate, solve.w, solve.y, _TimeStep);
+    solve.z = pushes ? WALL_RELAXATION * stiffness.x : 0.0;
+    _BoundarySolve[b] = solve;
+}
+
+// Sums the group's errors into _SolverPartials[group]; every thread of the group must call it.
+void StoreGroupError(uint t, uint group, float error)
+{
+    s_SolveErrors[t] = error;
+    GroupMemoryBarrierWithGroupSync();
+    for (uint stride = PARTICLE_THREADS / 2u; stride > 0u; stride >>= 1u)
+    {
+        if (t < stride)
+            s_SolveErrors[t] += s_SolveErrors[t + stride];
+        GroupMemoryBarrierWithGroupSync();
+    }
+    if (t == 0u)
+        _SolverPartials[group] = s_SolveErrors[0];
+}
+
+// D delta_i / Dt and the neighbours that gave it, for the fluid particle of thread `thread`, summed over its lanes
+// (every thread of the group calls it); the lane that writes gets `writes`.
+float2 LanedNumberDensityRate(uint thread, uint groupThread, out bool writes)
+{
+    uint i = min(LaneOwner(thread), _ParticleCount - 1u);
+    uint lane = FirstCandidate(thread, _ParticleCount);
+    uint neighbours;
+    float rate = NumberDensityRate(i, lane, _NeighbourLanes, neighbours);
+    writes = lane == 0u;
+    return SumOverLanes(float4(rate, (float)neighbours, 0.0, 0.0), groupThread).xy;
+}
+
+// Laned, as the correction (ApplyStiffness); only the lane that writes adds its particle's error to the group's.
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void DensitySolveError(uint3 id : SV_DispatchThreadID, uint3 groupId : SV_GroupID, uint3 threadId : SV_GroupThreadID)
+{
+    bool writes;
+    float rate = LanedNumberDensityRate(id.x, threadId.x, writes).x;
+    float error = 0.0;
+    if (writes)
+    {
+        uint i = LaneOwner(id.x);
+        float2 stiffness = DensityStiffness(_Densities[i].z, rate, RestNumberDensityOf(_Particles[i]), _DivergenceFreeFactors[i], _TimeStep);
+        _SolverStiffness[i] = _SolverRelaxation * stiffness.x;
+        error = stiffness.y;
+    }
+    StoreGroupError(threadId.x, groupId.x, error);
+}
+
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void DivergenceSolveError(uint3 id : SV_DispatchThreadID, uint3 groupId : SV_GroupID, uint3 threadId : SV_GroupThreadID)
+{
+    bool writes;
+    float2 rateAndNeighbours = LanedNumberDensityRate(id.x, threadId.x, writes);
+    float error = 0.0;
+    if (writes)
+    {
+        uint i = LaneOwner(id.x);
+        float rate = rateAndNeighbours.y >= (float)DIVERGENCE_MIN_NEIGHBOURS ? rateAndNeighbours.x : 0.0;
+        float2 stiffness = DivergenceStiffness(rate, RestNumberDensityOf(_Particles[i]), _DivergenceFreeFactors[i], _TimeStep);
+        _SolverStiffness[i] = _SolverRelaxation * stiffness.x;
+        error = stiffness.y;
+    }
+    StoreGroupError(threadId.x, groupId.x, error);
+}
+
+// Folds the error pass's group sums: the average error over all particles. Once a solve has made two corrections
+// and the average is within the open solve's tolerance it is converged, and the indirect arguments become zero groups.
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void SolveFinal(uint3 threadId : SV_GroupThreadID)
+{
+    uint t = threadId.x;
+    uint solve = OpenSolve();
+    uint slot = solve * 8u;
+    if (_SolverState[slot + 1u] != 0u)
+        return; // converged earlier: the error pass did not run, its sums are stale
+    uint groups = LanedGroups(_ParticleCount);
+    float sum = 0.0;
+    for (uint g = t; g < groups; g += PARTICLE_THREADS)
+        sum += _SolverPartials[g];
+    s_SolveErrors[t] = sum;
+    GroupMemoryBarrierWithGroupSync();
+    for (uint stride = PARTICLE_THREADS / 2u; stride > 0u; stride >>= 1u)
+    {
+        if (t < stride)
+            s_SolveErrors[t] += s_SolveErrors[t + stride];
+        GroupMemoryBarrierWithGroupSync();
+    }
+    if (t != 0u)
+        return;
+    float average = s_SolveErrors[0] / (float)max(_ParticleCount, 1u);
+    uint corrections = _SolverState[slot];
+    _SolverState[slot + 4u] = asuint(average);
+    float tolerance = solve == DENSITY_SOLVE ? _DensitySolveTolerance : _DivergenceSolveTolerance;
+    if (corrections >= 2u && average <= tolerance)
+    {
+        _SolverState[slot + 1u] = 1u;
+        _SolverArguments[0] = 0u;
+        _SolverArguments[3] = 0u;
+        _SolverState[slot + 5u] = max(_SolverState[slot + 5u], corrections);
+        return;
+    }
+    // The ApplyStiffness after this pass makes one more correction. In the last recorded round it is the solve's
+    // last: the solve ends unconverged, and the host learns it through the motion read-back and records more rounds.
+    _SolverState[slot] = corrections + 1u;
+    _SolverState[slot + 2u] += 1u;
+    if (corrections + 1u >= (solve == DENSITY_SOLVE ? _DensitySolveRounds : _DivergenceSolveRounds))
+    {
+        _SolverState[slot + 5u] = max(_SolverState[slot + 5u], corrections + 1u);
+        _SolverState[slot + 6u] += 1u;
+        _SolverState[slot + 7u] += 1u; // its own count: the motion reduction resets word 6 for the budget, not at reports
+    }
+}
+
+// Laned (NeighbourLanes.hlsl).
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void ApplyStiffness(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
+{
+    uint i = min(LaneOwner(id.x), _ParticleCount - 1u);
+    uint lane = FirstCandidate(id.x, _ParticleCount);
+    Particle pi = _Particles[i];
+    PhaseProperties phase = _Phases[PHASE_OF(pi)];
+    float dtOverMass = _TimeStep / phase.particleMass;
+    float qi = _SolverStiffness[i];
+    int3 home = GridCoordOf(pi.position);
+    NeighbourList list = ListOf(i);
+    float3 dv = float3(0.0, 0.0, 0.0);
+    for (uint row = 0u; row < NeighbourRows(list); row++)
+    {
+        uint2 range = FluidNeighbours(list, home, row);
+        for (uint k = range.x + lane; k < range.y; k += _NeighbourLanes)
+        {
+            uint j = Neighbour(list, k);
+            Particle pj = _Particles[j];
+            float3 rij = pi.position - pj.position;
+            float r2 = dot(rij, rij);
+            if (r2 >= _SmoothingRadius2 || j == i)
+                continue;
+            dv += StiffnessVelocityPair(qi, _SolverStiffness[j], PairGradient(rij, sqrt(r2), pi.id, pj.id), dtOverMass);
+        }
+        uint2 walls = WallNeighbours(list, home, row);
+        for (uint kb = walls.x + lane; kb < walls.y; kb += _NeighbourLanes)
+        {
+            uint b = Neighbour(list, kb);
+            BoundaryParticle wall = _BoundaryParticles[b];
+            float3 rib = pi.position - wall.position;
+            float r2 = dot(rib, rib);
+            if (r2 >= _SmoothingRadius2)
+                continue;
+            dv += StiffnessVelocityWall(qi, _BoundarySolve[b].z, WallWeight(wall, phase), PairGradient(rib, sqrt(r2), 1u, 0u), dtOverMass);
+        }
+    }
+    dv = SumOverLanes(float4(dv, 0.0), groupThread.x).xyz;
+    if (lane != 0u)
+        return;
+    _Particles[i].velocity = pi.velocity + dv;
+    // Only q that was applied becomes the next sub-step's warm start: the error pass of the round that converged
+    // computes a q that no ApplyStiffness uses, and counting it would push the next sub-step with a pressure the
+    // fluid never felt.
+    _WarmStart[pi.id] += OpenSolve() == DENSITY_SOLVE ? float2(qi, 0.0) : float2(0.0, qi);
+}
+
+// DivergenceFreeSolver.hlsl's wall contact for particle i (under-dense at the sub-step's start).
+float3 ContactLimitedVelocity(uint i, Particle p)
+{
+    if (_Densities[i].z >= RestNumberDensityOf(p))
+        return p.velocity;
+    PhaseProperties phase = _Phases[PHASE_OF(p)];
+    int3 home = GridCoordOf(p.position);
+    NeighbourList list = ListOf(i);
+    float3 wallGradients = float3(0.0, 0.0, 0.0);
+    float wallRate = 0.0;
+    for (uint row = 0u; row < NeighbourRows(list); row++)
+    {
+        uint2 walls = WallNeighbours(list, home, row);
+        for (uint kb = walls.x; kb < walls.y; kb++)
+        {
+            BoundaryParticle wall = _BoundaryParticles[Neighbour(list, kb)];
+            float3 rib = p.position - wall.position;
+            float r2 = dot(rib, rib);
+            if (r2 >= _SmoothingRadius2)
+                continue;
+            float3 gradient = WallWeight(wall, phase) * PairGradient(rib, sqrt(r2), 1u, 0u);
+            wallGradients += gradient;
+            wallRate += dot(wall.velocity, gradient);
+        }
+    }
+    return WallContactVelocity(p.velocity, wallGradients, wallRate);
+}
+
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void Drift(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= _ParticleCount)
+        return;
+    Particle p = _Particles[i];
+    p.velocity = ContactLimitedVelocity(i, p);
+    p.position = DriftedPosition(p.position, p.velocity);
+    LastResortClamp(p);
+    _Particles[i] = p;
+}
+
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void DivergenceRate(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= _ParticleCount)
+        return;
+    uint neighbours;
+    _DivergenceRates[i] = abs(NumberDensityRate(i, 0u, 1u, neighbours)) / RestNumberDensityOf(_Particles[i]);
+}
+
+#endif

@@ -1,0 +1,186 @@
+#ifndef SPHFLUID_PASSES_FORCES_INCLUDED
+#define SPHFLUID_PASSES_FORCES_INCLUDED
+
+// FluidSolver.compute's force passes: colour-field normals (SphSurfaceTension.hlsl) and every force on a fluid
+// particle from its fluid and wall neighbours (SphPressureForce.hlsl, SphViscosity.hlsl, SphXsph.hlsl, SphBoundary.hlsl's
+// wall contact); NonPressureForces is the same sum without pressure, for the divergence-free solver.
+
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void Normals(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= _ParticleCount)
+        return;
+    Particle pi = _Particles[i];
+    uint phaseI = PHASE_OF(pi);
+    int3 home = GridCoordOf(pi.position);
+    NeighbourList list = ListOf(i);
+    float3 normal = float3(0.0, 0.0, 0.0);
+    for (uint row = 0u; row < NeighbourRows(list); row++)
+    {
+        uint2 range = FluidNeighbours(list, home, row);
+        for (uint k = range.x; k < range.y; k++)
+        {
+            uint j = Neighbour(list, k);
+            Particle pj = _Particles[j];
+            float3 rij = pi.position - pj.position;
+            float r2 = dot(rij, rij);
+            if (r2 >= _SmoothingRadius2 || r2 <= 0.0 || PHASE_OF(pj) != phaseI)
+                continue;
+            normal += KernelGradient(rij, sqrt(r2)) / _Densities[j].z;
+        }
+    }
+    _Normals[i] = float4(_SmoothingRadius * normal, 0.0);
+}
+
+// What lane `lane` of particle i's neighbourhood (every _NeighbourLanes-th neighbour, NeighbourLanes.hlsl) adds to
+// the sums AccelerationOf turns into its acceleration.
+struct ForceSums
+{
+    float3 force;
+    float3 xsph;
+    float3 wallGradients;
+    float wallRate;
+    float wallNumberDensity;
+};
+
+ForceSums ForceSumsOf(uint i, bool withPressure, uint lane)
+{
+    Particle pi = _Particles[i];
+    uint phaseIndexI = PHASE_OF(pi);
+    PhaseProperties phaseI = _Phases[phaseIndexI];
+    float4 di = _Densities[i];
+#if SURFACE_TENSION
+    float3 normalI = _Normals[i].xyz;
+#endif
+    float3 force = float3(0.0, 0.0, 0.0);
+    float3 xsph = float3(0.0, 0.0, 0.0);
+    float3 wallGradients = float3(0.0, 0.0, 0.0);
+    float wallRate = 0.0;
+    float wallNumberDensity = 0.0;
+    int3 home = GridCoordOf(pi.position);
+    NeighbourList list = ListOf(i);
+    for (uint row = 0u; row < NeighbourRows(list); row++)
+    {
+        uint2 range = FluidNeighbours(list, home, row);
+        for (uint k = range.x + lane; k < range.y; k += _NeighbourLanes)
+        {
+            uint j = Neighbour(list, k);
+            Particle pj = _Particles[j];
+            float3 rij = pi.position - pj.position;
+            float r2 = dot(rij, rij);
+            if (r2 >= _SmoothingRadius2 || j == i)
+                continue;
+            float r = sqrt(r2);
+            float4 dj = _Densities[j];
+            uint phaseIndexJ = PHASE_OF(pj);
+#if MULTIPHASE
+            float muIJ = MixedViscosity(phaseI.viscosity, _Phases[phaseIndexJ].viscosity);
+#else
+            float muIJ = phaseI.viscosity;
+#endif
+            float3 gradient = PairGradient(rij, r, pi.id, pj.id);
+            if (withPressure)
+                force += PressureForcePair(di.w, dj.w, gradient);
+            force += ViscosityForcePair(muIJ, pi.velocity, pj.velocity, rij, r2, gradient, 1.0 / (di.z * dj.z));
+            if (withPressure)
+                force += ArtificialViscosityForcePair(pi.velocity, pj.velocity, rij, r2, gradient, 0.5 * (di.x + dj.x), 1.0 / (di.z * dj.z));
+#if SURFACE_TENSION
+            if (r > 0.0 && phaseIndexJ == phaseIndexI && phaseI.surfaceTension > 0.0)
+            {
+                force += SurfaceTensionForcePair(phaseI.surfaceTension, phaseI.restDensity,
+                    phaseI.particleMass, phaseI.particleMass, di.x, dj.x, normalI, _Normals[j].xyz, rij, r);
+            }
+#endif
+#if XSPH
+            xsph += XsphPair(pi.velocity, pj.velocity, r2, di.z, dj.z);
+#endif
+        }
+        uint2 walls = WallNeighbours(list, home, row);
+        for (uint kb = walls.x + lane; kb < walls.y; kb += _NeighbourLanes)
+        {
+            uint b = Neighbour(list, kb);
+            BoundaryParticle wall = _BoundaryParticles[b];
+            float3 rib = pi.position - wall.position;
+            float r2 = dot(rib, rib);
+            if (r2 >= _SmoothingRadius2)
+                continue;
+            float r = sqrt(r2);
+            float3 gradient = PairGradient(rib, r, 1u, 0u);
+            float weight = WallWeight(wall, phaseI);
+            if (withPressure)
+                force += BoundaryPressureForcePair(di.y, _BoundaryPressures[b], di.z, weight, gradient);
+            force += ViscosityForcePair(_WallFriction * phaseI.viscosity, pi.velocity, wall.velocity, rib, r2, gradient,
+                weight / (di.z * di.z));
+            if (withPressure)
+            {
+                force += ArtificialViscosityForcePair(pi.velocity, wall.velocity, rib, r2, gradient, di.x, weight / (di.z * di.z));
+                float3 intoWall = float3(0.0, 0.0, 0.0);
+                if (UnderDense(di.x, phaseI.restDensity))
+                    intoWall = IntoWallVelocity(pi.velocity - wall.velocity, WallNormal(wall, _BoundaryRest[_BoundarySortedSource[b]].position));
+                force += WallArtificialViscosityForcePair(intoWall, rib, r2, gradient, di.x, weight / (di.z * di.z));
+            }
+            wallGradients += weight * gradient;
+            wallNumberDensity += weight * Kernel(r2);
+            wallRate += weight * dot(wall.velocity, gradient);
+        }
+    }
+    ForceSums sums;
+    sums.force = force;
+    sums.xsph = xsph;
+    sums.wallGradients = wallGradients;
+    sums.wallRate = wallRate;
+    sums.wallNumberDensity = wallNumberDensity;
+    return sums;
+}
+
+// Every force on the particle of thread `thread` (laned: every thread of the group calls this, for SumOverLanes);
+// withPressure false (DFSPH) leaves out the pressure and the artificial viscosities, whose scale is the Tait fluid's
+// speed of sound: the solves keep the density instead.
+void AccelerationOf(uint thread, uint groupThread, bool withPressure)
+{
+    uint i = min(LaneOwner(thread), _ParticleCount - 1u);
+    uint lane = FirstCandidate(thread, _ParticleCount);
+    ForceSums sums = ForceSumsOf(i, withPressure, lane);
+    float4 forceAndRate = SumOverLanes(float4(sums.force, sums.wallRate), groupThread);
+    float4 xsphAndWallDensity = SumOverLanes(float4(sums.xsph, sums.wallNumberDensity), groupThread);
+    float3 wallGradients = SumOverLanes(float4(sums.wallGradients, 0.0), groupThread).xyz;
+    if (lane != 0u)
+        return;
+    float3 force = forceAndRate.xyz;
+    float wallRate = forceAndRate.w;
+    float3 xsph = xsphAndWallDensity.xyz;
+    float wallNumberDensity = xsphAndWallDensity.w;
+    Particle pi = _Particles[i];
+    PhaseProperties phaseI = _Phases[PHASE_OF(pi)];
+    float4 di = _Densities[i];
+    float3 a = force / phaseI.particleMass + _Gravity;
+    float3 correction = float3(0.0, 0.0, 0.0);
+#if XSPH
+    correction = _XsphEpsilon * xsph;
+#endif
+    // SphBoundary.hlsl's wall contact, on the velocity the particle drifts with next (DFSPH applies it in its drift
+    // instead: ContactLimitedVelocity).
+    if (withPressure && (_WallContactAtAnyDensity != 0u || di.x < phaseI.restDensity) && wallNumberDensity > _WallContactNumberDensity * phaseI.wallWeightScale)
+    {
+        float3 predicted = pi.velocity + a * _TimeStep + correction;
+        correction += WallContactVelocity(predicted, wallGradients, wallRate) - predicted;
+    }
+    _Accelerations[i] = float4(a, 0.0);
+    _VelocityCorrections[i] = float4(correction, 0.0);
+}
+
+// Laned (NeighbourLanes.hlsl), as NonPressureForces.
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void Forces(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
+{
+    AccelerationOf(id.x, groupThread.x, true);
+}
+
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void NonPressureForces(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
+{
+    AccelerationOf(id.x, groupThread.x, false);
+}
+
+#endif
