@@ -160,6 +160,49 @@ namespace SphFluid.Tests.Core.Simulation
         }
 
         [Test]
+        public void ASubmergedSphereCarriesTheFluidAboveIt()
+        {
+            // A particle above a submerged sphere moves down by the compression of the fluid between the sphere's top
+            // and itself only: the sphere displaces the fluid below that, so there is none to compress. Every other
+            // particle is lowered as in a box without a sphere.
+            var scene = SimulationTestScenes.SingleWater();
+            var box = scene.SpawnBoxes[0];
+            box.Jitter = 0f;
+            var sphere = new RigidSphere { Center = new Vector3(0.01f, -0.19f, -0.005f), Radius = 0.04f };
+            scene.Obstacles.Add(sphere);
+            var flat = SimulationTestScenes.SingleWater();
+            flat.SpawnBoxes[0].Jitter = 0f;
+            flat.Obstacles.Add(sphere);
+            flat.Settings.Gravity = Vector3.Zero;
+            var lowered = SpawnLayout.Generate(scene);
+            var lattice = SpawnLayout.Generate(flat);
+            Assert.That(lowered.Length, Is.EqualTo(lattice.Length));
+            double g = 9.81, k = scene.Settings.Stiffness, gamma = scene.Settings.Gamma, rho0 = box.Phase.RestDensity;
+            double bottom = box.Center.Y - 0.5 * box.Size.Y, top = box.Center.Y + 0.5 * box.Size.Y;
+            int carried = 0;
+            for (int i = 0; i < lattice.Length; i++)
+            {
+                var x = lattice[i].Position;
+                double from = bottom;
+                double dx = x.X - sphere.Center.X, dz = x.Z - sphere.Center.Z, r2 = (double)sphere.Radius * sphere.Radius;
+                if (dx * dx + dz * dz < r2 && x.Y > sphere.Center.Y)
+                {
+                    from = sphere.Center.Y + Math.Sqrt(r2 - dx * dx - dz * dz);
+                    carried++;
+                }
+                double expected = 0;
+                const int n = 4000;
+                for (int step = 0; step < n; step++)
+                {
+                    double y = from + (step + 0.5) * (x.Y - from) / n;
+                    expected += (1 - Math.Pow(1 + rho0 * g * (top - y) / k, -1 / gamma)) * (x.Y - from) / n;
+                }
+                Assert.That(x.Y - lowered[i].Position.Y, Is.EqualTo(expected).Within(1e-6), $"particle {i} at {x}");
+            }
+            Assert.That(carried, Is.GreaterThan(4), "particles rest on the sphere");
+        }
+
+        [Test]
         public void UnderDfsphTheSpawnStaysOnTheLatticeWithTheSamePressures()
         {
             // DFSPH holds every particle at the rest density: the first solve would expand a spawn compressed for the Tait fluid within one sub-step.
