@@ -82,7 +82,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         stdout.WriteLine(string.Format(C, "particles: {0}{1} (spacing {2:G4} m, support {3:G4} m); phases: {4}",
             sim.ParticleCount, scaled,
             settings.ParticleSpacing, settings.SmoothingRadius,
-            string.Join(", ", sim.Phases.Select((p, k) => string.Format(C, "{0} {1} rho0 {2:G4} kg/m^3 mu {3:G3} Pa s", p.Name, CountOf(description, settings, k, sim), p.RestDensity, p.Viscosity)))));
+            string.Join(", ", sim.Phases.Select((p, k) => string.Format(C, "{0} {1} rho0 {2:G4} kg/m^3 mu {3:G3} Pa s", p.Name, CountOf(description, k, sim), p.RestDensity, p.Viscosity)))));
         stdout.WriteLine(sim.Plan.ToString());
         stdout.WriteLine(SolverChoice.Describe(settings));
         if (_solverNote != null) stdout.WriteLine(_solverNote);
@@ -191,11 +191,11 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         return ExitCodes.Ok;
     }
 
-    static int CountOf(FluidSceneDescription scene, FluidSettings settings, int phase, FluidSimulation sim)
+    static int CountOf(FluidSceneDescription scene, int phase, FluidSimulation sim)
     {
         long n = 0;
         foreach (var box in scene.SpawnBoxes)
-            if (box.Phase.Name == sim.Phases[phase].Name) n += SpawnLayout.Count(settings, box);
+            if (box.Phase.Name == sim.Phases[phase].Name) n += SpawnLayout.SpawnedCount(scene, box);
         return (int)n;
     }
 

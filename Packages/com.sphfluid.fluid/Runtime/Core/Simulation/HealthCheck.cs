@@ -49,7 +49,7 @@ namespace SphFluid.Simulation
 
         /// <summary>Bounds for <paramref name="scene"/> (validated), whose particles the simulation spawned:
         /// <paramref name="spawnedCount"/> of them (FluidSimulation.ParticleCount: lattice points inside obstacles are not
-        /// spawned), or by default the lattice count of its boxes.</summary>
+        /// spawned), or by default the count its boxes spawn.</summary>
         public HealthCheck(FluidSceneDescription scene, int spawnedCount = -1)
         {
             if (scene == null) throw new ArgumentNullException(nameof(scene));
@@ -61,7 +61,7 @@ namespace SphFluid.Simulation
             {
                 long count = 0;
                 foreach (var box in scene.SpawnBoxes)
-                    if (box.Phase.Name == _phaseNames[k].Name) count += SpawnLayout.Count(scene.Settings, box);
+                    if (box.Phase.Name == _phaseNames[k].Name) count += SpawnLayout.SpawnedCount(scene, box);
                 _totalMass += count * (double)_phases[k].ParticleMass;
             }
 

@@ -66,18 +66,29 @@ namespace SphFluid.Simulation
             return count > 0 ? (double)box.Size.X * box.Size.Y * box.Size.Z / count : 0.0;
         }
 
-        /// <summary>Particles this box spawns.</summary>
+        /// <summary>Lattice points of this box: the particles it spawns unless a sphere obstacle displaces some
+        /// (<see cref="SpawnedCount"/>). Its particles' mass and volume go with this count (<see cref="CellVolume"/>).</summary>
         public static long Count(FluidSettings settings, FluidBlock box)
         {
             CountPerAxis(settings, box, out int nx, out int ny, out int nz);
             return (long)nx * ny * nz;
         }
 
+        /// <summary>Particles this box of <paramref name="scene"/> spawns: its lattice points less those inside a sphere
+        /// obstacle (<see cref="Generate(FluidSceneDescription)"/>).</summary>
+        public static long SpawnedCount(FluidSceneDescription scene, FluidBlock box)
+        {
+            if (scene.Obstacles == null || scene.Obstacles.Count == 0) return Count(scene.Settings, box);
+            long count = 0;
+            foreach (var _ in Positions(scene, box)) count++;
+            return count;
+        }
+
         /// <summary>Particles the whole scene spawns.</summary>
         public static int TotalCount(FluidSceneDescription scene)
         {
             long total = 0;
-            foreach (var box in scene.SpawnBoxes) total += Count(scene.Settings, box);
+            foreach (var box in scene.SpawnBoxes) total += SpawnedCount(scene, box);
             return (int)Math.Min(total, int.MaxValue);
         }
 
@@ -115,6 +126,18 @@ namespace SphFluid.Simulation
 
         static int Fill(FluidSceneDescription scene, FluidBlock box, uint phase, Particle[] particles, int next)
         {
+            foreach (var position in Positions(scene, box))
+            {
+                particles[next] = new Particle(position, box.InitialVelocity, phase, (uint)next);
+                next++;
+            }
+            return next;
+        }
+
+        /// <summary>The box's particle positions in spawn order, before the hydrostatic lowering: its lattice, jittered,
+        /// without the points inside a sphere obstacle.</summary>
+        static System.Collections.Generic.IEnumerable<Vector3> Positions(FluidSceneDescription scene, FluidBlock box)
+        {
             var settings = scene.Settings;
             CountPerAxis(settings, box, out int nx, out int ny, out int nz);
             float s = settings.ParticleSpacing;
@@ -134,11 +157,8 @@ namespace SphFluid.Simulation
                     local = Vector3.Clamp(local, -half, half);
                 }
                 var position = box.Center + Vector3.Transform(local, rotation);
-                if (InsideObstacle(scene, position, 0.5f * s)) continue;
-                particles[next] = new Particle(position, box.InitialVelocity, phase, (uint)next);
-                next++;
+                if (!InsideObstacle(scene, position, 0.5f * s)) yield return position;
             }
-            return next;
         }
 
         static bool InsideObstacle(FluidSceneDescription scene, Vector3 position, float margin)

@@ -160,6 +160,21 @@ namespace SphFluid.Tests.Core.Simulation
         }
 
         [Test]
+        public void TheCountLeavesOutWhatASphereDisplaces()
+        {
+            // What the inspector, the runner and the health check count must be what Generate spawns.
+            var scene = SimulationTestScenes.SingleWater();
+            scene.Obstacles.Add(new RigidSphere { Center = new Vector3(0f, -0.19f, 0f), Radius = 0.04f });
+            var box = scene.SpawnBoxes[0];
+
+            int spawned = SpawnLayout.Generate(scene).Length;
+
+            Assert.That(SpawnLayout.TotalCount(scene), Is.EqualTo(spawned));
+            Assert.That(SpawnLayout.SpawnedCount(scene, box), Is.EqualTo((long)spawned));
+            Assert.That(SpawnLayout.Count(scene.Settings, box), Is.GreaterThan((long)spawned), "the lattice holds the displaced points");
+        }
+
+        [Test]
         public void ASubmergedSphereCarriesTheFluidAboveIt()
         {
             // A particle above a submerged sphere moves down by the compression of the fluid between the sphere's top
