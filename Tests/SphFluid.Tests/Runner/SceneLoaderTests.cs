@@ -67,7 +67,7 @@ namespace SphFluid.Tests.Runner
             Assert.That(wake.Description.Obstacles.Count, Is.EqualTo(1));
             Assert.That(wake.Description.Obstacles[0].Radius, Is.EqualTo(0.045f).Within(1e-6f));
             var moved = wake.Motion.ObstaclesAt(wake.Description.Obstacles, 4.0)[0];
-            Assert.That(moved.Center.X, Is.EqualTo(-0.35f + 0.5f).Within(1e-4f), "half a period after the delay: the far end");
+            Assert.That(moved.Center.X, Is.EqualTo(-0.32f + 0.5f).Within(1e-4f), "half a period after the delay: the far end");
         }
 
         [Test]
