@@ -25,9 +25,9 @@ namespace SphFluid.Simulation
     /// unchanged.
     /// A sphere obstacle below the particle on that line holds the fluid above it: only the fluid between the
     /// sphere's top and the particle is compressed under it. (Taking the whole column lowered the particles resting on
-    /// a submerged sphere by the compression of fluid the sphere displaces, 0.14 spacings onto its surface in the
-    /// SphereWake scene, and those started 12 % compressed.) The pressure is still the weight of the boxes' fluid above,
-    /// the hydrostatic pressure at that depth, with or without a sphere there.
+    /// a submerged sphere by the compression of fluid the sphere displaces, 0.14 spacings inside the spawn's
+    /// half-spacing margin in the SphereWake scene, and those started 12 % compressed.) The pressure is still the
+    /// weight of the boxes' fluid above, the hydrostatic pressure at that depth, with or without a sphere there.
     /// </remarks>
     public static class HydrostaticSpawn
     {
