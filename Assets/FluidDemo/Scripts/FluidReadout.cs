@@ -102,9 +102,9 @@ namespace SphFluid.Demo
                 _text.AppendFormat(c, "vmax {0:F2} m/s   KE {1:G3} J   NaN {2}   outside {3}\n",
                     diagnostics.MaxSpeed, diagnostics.KineticEnergy, diagnostics.NanCount, diagnostics.OutsideCount);
                 if (diagnostics.PressureSolver == PressureSolver.Dfsph)
-                    _text.AppendFormat(c, "DFSPH iterations per sub-step: density {0:F1} ({1:P0} cut off), divergence {2:F1} ({3:P0} cut off)   divergence error {4:F2} %/s\n",
+                    _text.AppendFormat(c, "DFSPH {5} iterations per sub-step: density {0:F1} ({1:P0} cut off), divergence {2:F1} ({3:P0} cut off)   divergence error {4:F2} %/s\n",
                         diagnostics.DensitySolveIterations, diagnostics.DensitySolvesCutOff, diagnostics.DivergenceSolveIterations,
-                        diagnostics.DivergenceSolvesCutOff, diagnostics.DivergenceError);
+                        diagnostics.DivergenceSolvesCutOff, diagnostics.DivergenceError, target.Settings.SolverIteration);
                 else
                     _text.AppendFormat(c, "Divergence error {0:F2} %/s\n", diagnostics.DivergenceError);
             }

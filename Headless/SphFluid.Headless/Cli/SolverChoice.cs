@@ -16,6 +16,15 @@ public sealed class SolverChoice
     /// <summary>DFSPH density tolerance, %, instead of the scene's; null = the scene's.</summary>
     public double? DensityTolerance { get; init; }
 
+    /// <summary>How DFSPH's solves iterate instead of the scene's; null = the scene's.</summary>
+    public SolverIteration? Iteration { get; init; }
+
+    public static readonly IReadOnlyDictionary<string, SolverIteration> IterationWords = new Dictionary<string, SolverIteration>
+    {
+        ["jacobi"] = SolverIteration.Jacobi,
+        ["chebyshev"] = SolverIteration.Chebyshev,
+    };
+
     public static readonly IReadOnlyDictionary<string, PressureSolver> Words = new Dictionary<string, PressureSolver>
     {
         ["wcsph"] = PressureSolver.Wcsph,
@@ -35,6 +44,13 @@ public sealed class SolverChoice
                 throw new UsageException($"{command}: --density-tolerance applies to the DFSPH solver only; this run uses WCSPH "
                     + "(add --solver dfsph, or set Fluid.pressureSolver in the scene)");
             settings.DensityTolerance = (float)DensityTolerance.Value;
+        }
+        if (Iteration.HasValue)
+        {
+            if (settings.PressureSolver != PressureSolver.Dfsph)
+                throw new UsageException($"{command}: --solver-iteration applies to the DFSPH solver only; this run uses WCSPH "
+                    + "(add --solver dfsph, or set Fluid.pressureSolver in the scene)");
+            settings.SolverIteration = Iteration.Value;
         }
         scene.Settings = settings;
         return Solver.HasValue ? FitSupport(settings, command) : null;
@@ -66,18 +82,20 @@ public sealed class SolverChoice
 
     /// <summary>One line for the run header and summary.</summary>
     public static string Describe(FluidSettings settings) => settings.PressureSolver == PressureSolver.Dfsph
-        ? string.Format(C, "solver: DFSPH (density tolerance {0:G3} %, divergence tolerance {1:G3} %/s, at most {2} iterations per solve, relaxation {3:G3})",
-            settings.DensityTolerance, settings.DivergenceTolerance, settings.MaxSolverIterations, settings.SolverRelaxation)
+        ? string.Format(C, "solver: DFSPH (density tolerance {0:G3} %, divergence tolerance {1:G3} %/s, at most {2} iterations per solve, {3}, relaxation {4:G3})",
+            settings.DensityTolerance, settings.DivergenceTolerance, settings.MaxSolverIterations,
+            settings.SolverIteration == SolverIteration.Chebyshev ? "Chebyshev-accelerated" : "Jacobi", settings.SolverRelaxation)
         : string.Format(C, "solver: WCSPH (Tait stiffness {0:G4} Pa, gamma {1:G3})", settings.Stiffness, settings.Gamma);
 
     public static string ShortName(PressureSolver solver) => solver == PressureSolver.Dfsph ? "DFSPH" : "WCSPH";
 }
 
-/// <summary>The <c>--solver</c> and <c>--density-tolerance</c> options, shared by the commands that run the solver.</summary>
+/// <summary>The <c>--solver</c>, <c>--density-tolerance</c> and <c>--solver-iteration</c> options, shared by the commands that run the solver.</summary>
 public sealed class SolverOptions
 {
     readonly Option<PressureSolver> _solver;
     readonly Option<double> _densityTolerance;
+    readonly Option<SolverIteration> _iteration;
 
     public SolverOptions(string command)
     {
@@ -87,17 +105,22 @@ public sealed class SolverOptions
         _densityTolerance = OptionKinds.Number(command, "--density-tolerance", 0.001, 10, false, "%", "PCT",
             "DFSPH: largest average density error the pressure solve accepts, in [0.001, 10] % (default: the scene's; "
             + "refused when the run uses WCSPH)");
+        _iteration = OptionKinds.Choice(command, "--solver-iteration", SolverChoice.IterationWords,
+            "DFSPH: how each solve iterates, overriding the scene's Fluid.solverIteration: jacobi (compression-only relaxed "
+            + "Jacobi steps) or chebyshev (accelerated, projected steps; default: the scene's; refused when the run uses WCSPH)");
     }
 
     public void AddTo(Command command)
     {
         command.Add(_solver);
         command.Add(_densityTolerance);
+        command.Add(_iteration);
     }
 
     public SolverChoice Read(ParseResult r) => new()
     {
         Solver = r.GetResult(_solver) != null ? r.GetValue(_solver) : null,
         DensityTolerance = r.GetResult(_densityTolerance) != null ? r.GetValue(_densityTolerance) : null,
+        Iteration = r.GetResult(_iteration) != null ? r.GetValue(_iteration) : null,
     };
 }

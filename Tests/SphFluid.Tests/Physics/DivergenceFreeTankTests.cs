@@ -10,8 +10,14 @@ namespace SphFluid.Tests.Physics
     /// tank's average compression must stay within 0.1 %, at a sub-step at least five times WCSPH's at the same resolution
     /// (DFSPH's step is bounded by the flow speed, WCSPH's by the speed of sound).
     /// </summary>
+    [TestFixture(SolverIteration.Jacobi)]
+    [TestFixture(SolverIteration.Chebyshev)]
     public sealed class DivergenceFreeTankTests
     {
+        readonly SolverIteration _iteration;
+
+        public DivergenceFreeTankTests(SolverIteration iteration) => _iteration = iteration;
+
         const float Spacing = 0.025f, Floor = -0.2f;
         double _averageError, _dfsphStep, _wcsphStep, _densityIterations, _divergenceIterations, _divergenceError, _spawned, _height;
         DiagnosticsReport _report;
@@ -27,6 +33,7 @@ namespace SphFluid.Tests.Physics
             var scene = RestingTankTests.Tank(Spacing);
             scene.Settings.PressureSolver = PressureSolver.Dfsph;
             scene.Settings.DensityTolerance = 0.1f;
+            scene.Settings.SolverIteration = _iteration;
             using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
             var particles = new Particle[sim.ParticleCount];
             sim.Particles.GetData(particles);
@@ -48,7 +55,7 @@ namespace SphFluid.Tests.Physics
             _densityIterations = _report.DensitySolveIterations;
             _divergenceIterations = _report.DivergenceSolveIterations;
             _divergenceError = _report.DivergenceError;
-            TestContext.Progress.WriteLine($"DFSPH resting tank, N={sim.ParticleCount}: average compression {100 * _averageError:F4} %, " +
+            TestContext.Progress.WriteLine($"DFSPH resting tank ({_iteration}), N={sim.ParticleCount}: average compression {100 * _averageError:F4} %, " +
                 $"sub-step {1000 * _dfsphStep:F3} ms vs WCSPH {1000 * _wcsphStep:F3} ms ({_dfsphStep / _wcsphStep:F2} x), " +
                 $"iterations per sub-step density {_densityIterations:F2} divergence {_divergenceIterations:F2}, " +
                 $"divergence error {_divergenceError:F3} %/s, column {_height:F4} m at 1 s ({100 * (_height / _spawned - 1):F2} % of its spawned " +

@@ -24,11 +24,18 @@ namespace SphFluid.Tests.Solver
     {
         const double Tolerance = 1e-4;
 
-        static FluidSceneDescription Block(bool multiphase)
+        static FluidSceneDescription Block(bool multiphase, bool chebyshev = false)
         {
             var settings = SolverScenes.Coarse(0.02f);
             settings.PressureSolver = PressureSolver.Dfsph;
-            settings.MaxSolverIterations = 1;
+            settings.MaxSolverIterations = chebyshev ? ChebyshevRounds : 1;
+            if (chebyshev)
+            {
+                // The tightest tolerances, so that no solve stops before its last round.
+                settings.SolverIteration = SolverIteration.Chebyshev;
+                settings.DensityTolerance = 0.001f;
+                settings.DivergenceTolerance = 0.01f;
+            }
             settings.XsphEpsilon = multiphase ? 0.3f : 0f;
             settings.SolverRelaxation = multiphase ? 0.355f : 1f;
             var size = new Vector3(0.16f, 0.16f, 0.16f);
@@ -60,9 +67,25 @@ namespace SphFluid.Tests.Solver
         [TestCase(false, 0.75f, 1, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_CrowdedPastTheNeighbourLists")]
         [TestCase(true, 0.97f, 8, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_TwoPhasesEightLanes")]
         [TestCase(false, 0.75f, 8, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_CrowdedEightLanes")]
-        public void OneIterationOfEachSolveMatchesReference(bool multiphase, float squeeze, int lanes)
+        public void OneIterationOfEachSolveMatchesReference(bool multiphase, float squeeze, int lanes) =>
+            MatchesReference(Block(multiphase), multiphase, squeeze, lanes, 1);
+
+        /// <summary>Three rounds: the first takes d_0 = z_0 / theta, the next two carry the last step (beta_k d_{k-1}), and
+        /// the projection keeps each particle's summed q at or above zero (DivergenceFreeSolver.hlsl's Chebyshev acceleration).</summary>
+        const int ChebyshevRounds = 3;
+
+        [TestCase(true, 0.97f, 1, TestName = "Dfsph_ThreeChebyshevRoundsOfEachSolveMatchReference_TwoPhasesXsphRelaxed")]
+        [TestCase(false, 0.75f, 8, TestName = "Dfsph_ThreeChebyshevRoundsOfEachSolveMatchReference_CrowdedEightLanes")]
+        public void ThreeChebyshevRoundsOfEachSolveMatchReference(bool multiphase, float squeeze, int lanes)
         {
-            var scene = Block(multiphase);
+            var scene = Block(multiphase, chebyshev: true);
+            using (var sim = new FluidSimulation(GpuTestDevice.Shared, scene))
+                Assert.That(sim.SolveRounds, Is.EqualTo(new[] { ChebyshevRounds, ChebyshevRounds }), "every round is recorded");
+            MatchesReference(scene, multiphase, squeeze, lanes, ChebyshevRounds);
+        }
+
+        static void MatchesReference(FluidSceneDescription scene, bool multiphase, float squeeze, int lanes, int iterations)
+        {
             using var sim = new FluidSimulation(GpuTestDevice.Shared, scene) { LanesPerParticle = lanes };
             Assert.That(sim.PhaseRows[0].WallWeightScale, multiphase ? Is.EqualTo(0.08 / 0.078).Within(1e-4) : Is.EqualTo(1.0).Within(1e-6));
             var input = Compressed(scene, sim.ParticleCount, squeeze);
@@ -79,7 +102,7 @@ namespace SphFluid.Tests.Solver
             var before = GpuState.Read(sim);
             var start = before.ByIdParticles(input);
             const float dt = 0.001f;
-            var expected = new ReferenceSph(scene).DivergenceFreeSubstep(start, dt, sim.Plan.Xsph, 1, out var densityQ, out var divergenceQ, out var wallQ);
+            var expected = new ReferenceSph(scene).DivergenceFreeSubstep(start, dt, sim.Plan.Xsph, iterations, out var densityQ, out var divergenceQ, out var wallQ);
 
             sim.StepFixed(1, dt);
             var after = GpuState.Read(sim);

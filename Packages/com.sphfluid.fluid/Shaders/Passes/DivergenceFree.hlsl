@@ -122,6 +122,7 @@ void BeginSolve(uint solve)
     _SolverState[slot] = 0u;
     _SolverState[slot + 1u] = 0u;
     _SolverState[slot + 3u] += 1u;
+    _SolverState[CHEBYSHEV_WORD] = 0u;
     _SolverArguments[0] = LanedGroups(_ParticleCount);
     _SolverArguments[1] = 1u;
     _SolverArguments[2] = 1u;
@@ -204,6 +205,17 @@ void BoundaryBeginSolve(uint3 id : SV_DispatchThreadID)
     _BoundaryWarmStart[boundaryId] = float2(0.0, warm.y);
 }
 
+// The q a particle applies in this round: the Jacobi solve's compression-only step, or, with Chebyshev bounds set, the
+// accelerated, projected step (DivergenceFreeSolver.hlsl) from the q it applied so far in this solve, its last step and
+// the signed Jacobi step.
+float RoundStep(float compressionStep, float applied, float previousStep, float signedStep)
+{
+    if (_ChebyshevHigh <= 0.0)
+        return compressionStep;
+    float3 weights = ChebyshevWeights(asfloat(_SolverState[CHEBYSHEV_WORD]), _ChebyshevLow, _ChebyshevHigh);
+    return ProjectedChebyshevStep(applied, previousStep, signedStep, weights);
+}
+
 // One Jacobi step of a wall particle: q_b from its predicted compression (density solve) or its compression rate
 // (divergence solve), D delta_b / Dt = sum_f (v_f - v_b) . gradW_fb; the q_b the last correction applied is summed
 // into the warm start first. Laned; a wall particle without a factor (no fluid) walks nothing and gets q_b = 0.
@@ -235,11 +247,18 @@ void BoundarySolveError(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_G
     if (LaneOwner(id.x) >= _BoundaryCount || LaneOf(id.x) != 0u)
         return;
     uint open = OpenSolve();
-    _BoundaryWarmStart[_BoundarySortedSource[b]] += open == DENSITY_SOLVE ? float2(solve.z, 0.0) : float2(0.0, solve.z);
+    uint boundaryId = _BoundarySortedSource[b];
+    float2 summed = _BoundaryWarmStart[boundaryId] + (open == DENSITY_SOLVE ? float2(solve.z, 0.0) : float2(0.0, solve.z));
+    _BoundaryWarmStart[boundaryId] = summed;
     float2 stiffness = open == DENSITY_SOLVE
         ? DensityStiffness(solve.x, rate, solve.w, solve.y, _TimeStep)
         : DivergenceStiffness(rate, solve.w, solve.y, _TimeStep);
-    solve.z = pushes ? WALL_RELAXATION * stiffness.x : 0.0;
+    float signedStiffness = open == DENSITY_SOLVE
+        ? SignedDensityStiffness(solve.x, rate, solve.w, solve.y, _TimeStep)
+        : SignedDivergenceStiffness(rate, solve.y, _TimeStep);
+    float wallRelaxation = CHEBYSHEV_WALL_SHARE * _SolverRelaxation;
+    solve.z = pushes ? RoundStep(WALL_RELAXATION * stiffness.x, open == DENSITY_SOLVE ? summed.x : summed.y, solve.z,
+        wallRelaxation * signedStiffness) : 0.0;
     _BoundarySolve[b] = solve;
 }
 
@@ -280,8 +299,12 @@ void DensitySolveError(uint3 id : SV_DispatchThreadID, uint3 groupId : SV_GroupI
     if (writes)
     {
         uint i = LaneOwner(id.x);
-        float2 stiffness = DensityStiffness(_Densities[i].z, rate, RestNumberDensityOf(_Particles[i]), _DivergenceFreeFactors[i], _TimeStep);
-        _SolverStiffness[i] = _SolverRelaxation * stiffness.x;
+        Particle p = _Particles[i];
+        float rest = RestNumberDensityOf(p);
+        float factor = _DivergenceFreeFactors[i];
+        float2 stiffness = DensityStiffness(_Densities[i].z, rate, rest, factor, _TimeStep);
+        _SolverStiffness[i] = RoundStep(_SolverRelaxation * stiffness.x, _WarmStart[p.id].x, _SolverStiffness[i],
+            _SolverRelaxation * SignedDensityStiffness(_Densities[i].z, rate, rest, factor, _TimeStep));
         error = stiffness.y;
     }
     StoreGroupError(threadId.x, groupId.x, error);
@@ -297,8 +320,11 @@ void DivergenceSolveError(uint3 id : SV_DispatchThreadID, uint3 groupId : SV_Gro
     {
         uint i = LaneOwner(id.x);
         float rate = rateAndNeighbours.y >= (float)DIVERGENCE_MIN_NEIGHBOURS ? rateAndNeighbours.x : 0.0;
-        float2 stiffness = DivergenceStiffness(rate, RestNumberDensityOf(_Particles[i]), _DivergenceFreeFactors[i], _TimeStep);
-        _SolverStiffness[i] = _SolverRelaxation * stiffness.x;
+        Particle p = _Particles[i];
+        float factor = _DivergenceFreeFactors[i];
+        float2 stiffness = DivergenceStiffness(rate, RestNumberDensityOf(p), factor, _TimeStep);
+        _SolverStiffness[i] = RoundStep(_SolverRelaxation * stiffness.x, _WarmStart[p.id].y, _SolverStiffness[i],
+            _SolverRelaxation * SignedDivergenceStiffness(rate, factor, _TimeStep));
         error = stiffness.y;
     }
     StoreGroupError(threadId.x, groupId.x, error);
@@ -344,6 +370,7 @@ void SolveFinal(uint3 threadId : SV_GroupThreadID)
     // last: the solve ends unconverged, and the host learns it through the motion read-back and records more rounds.
     _SolverState[slot] = corrections + 1u;
     _SolverState[slot + 2u] += 1u;
+    _SolverState[CHEBYSHEV_WORD] = asuint(ChebyshevWeights(asfloat(_SolverState[CHEBYSHEV_WORD]), _ChebyshevLow, _ChebyshevHigh).z);
     if (corrections + 1u >= (solve == DENSITY_SOLVE ? _DensitySolveRounds : _DivergenceSolveRounds))
     {
         _SolverState[slot + 5u] = max(_SolverState[slot + 5u], corrections + 1u);

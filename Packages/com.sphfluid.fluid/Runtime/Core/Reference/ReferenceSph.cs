@@ -33,7 +33,13 @@ namespace SphFluid.Reference
             _h2 = _h * _h;
             _cohesion = 32.0 / (Math.PI * Math.Pow(_h, 9));
             _flatWallNumberDensity = SmoothingKernels.FlatWallNumberDensity(_settings.SmoothingKernel, _settings.ParticleSpacing, _h);
+            if (_settings.PressureSolver == PressureSolver.Dfsph && _settings.SolverIteration == SolverIteration.Chebyshev)
+                _chebyshev = ChebyshevBounds.For(_settings.SmoothingKernel, _settings.ParticleSpacing, _h, _settings.SolverRelaxation,
+                    ChebyshevBounds.Depth(SpawnLayout.Generate(scene), _settings.Gravity, _settings.ParticleSpacing));
         }
+
+        /// <summary>The accelerated solve's eigenvalue bounds as FluidSimulation sets them from the spawn; null for Jacobi.</summary>
+        readonly (double Low, double High)? _chebyshev;
 
         public IReadOnlyList<PhaseProperties> PhaseTable => _phases;
 
@@ -624,6 +630,29 @@ namespace SphFluid.Reference
         /// <summary>The relaxation of a wall particle's Jacobi step (DivergenceFreeSolver.hlsl's WALL_RELAXATION).</summary>
         public const double WallRelaxation = 0.5;
 
+        /// <summary>The wall particles' relaxation in the accelerated solve, as a share of the fluid's (CHEBYSHEV_WALL_SHARE).</summary>
+        public const double ChebyshevWallShare = 1.0 / 3.0;
+
+        /// <summary>One round's step for every unknown: the compression-only Jacobi step (<paramref name="jacobi"/>), or with
+        /// Chebyshev bounds the projected, accelerated one from the signed step, the unknown's last step (in
+        /// <paramref name="step"/>, overwritten) and the q it summed in this solve (DivergenceFreeSolver.hlsl).</summary>
+        void RoundSteps(double[] step, double[] summed, Func<int, double> jacobi, Func<int, double> signedStep, double weightBeta, double weightGamma)
+        {
+            for (int i = 0; i < step.Length; i++)
+                step[i] = _chebyshev.HasValue
+                    ? Math.Max(summed[i] + weightBeta * step[i] + weightGamma * signedStep(i), 0.0) - summed[i]
+                    : jacobi(i);
+        }
+
+        /// <summary>(beta, gamma, rho) of a Chebyshev round from the last round's rho (0 before the first).</summary>
+        static (double Beta, double Gamma, double Rho) ChebyshevWeights(double previousRho, double low, double high)
+        {
+            double theta = 0.5 * (high + low), delta = 0.5 * (high - low), sigma = theta / delta;
+            if (previousRho <= 0.0) return (0.0, 1.0 / theta, 1.0 / sigma);
+            double rho = 1.0 / (2.0 * sigma - previousRho);
+            return (rho * previousRho, 2.0 * rho / delta, rho);
+        }
+
         /// <summary>The fluid share of delta0 above which a wall particle takes a whole Jacobi step (WALL_FULL_SHARE).</summary>
         public const double WallFullShare = 0.25;
 
@@ -713,23 +742,34 @@ namespace SphFluid.Reference
                 v[i] = vi * damping;
             }
             double relaxation = _settings.SolverRelaxation;
+            double wallRelaxation = ChebyshevWallShare * relaxation;
             densityStiffness = new double[n];
             var q = new double[n];
             var walls = WallUnknowns(particles);
             wallStiffness = new double[walls.Q.Length];
+            var wallSummed = new double[walls.Q.Length];
+            double rho = 0.0;
             for (int l = 0; l < iterations; l++)
             {
                 var rates = NumberDensityRates(particles, v);
                 var wallRates = WallNumberDensityRates(particles, v);
+                var (beta, gamma, nextRho) = _chebyshev.HasValue ? ChebyshevWeights(rho, _chebyshev.Value.Low, _chebyshev.Value.High) : (0.0, 0.0, 0.0);
+                rho = nextRho;
+                double[] excess = new double[n], wallExcess = new double[walls.Q.Length];
                 for (int i = 0; i < n; i++)
-                {
-                    double excess = Math.Max(state.NumberDensity[i] + dt * rates[i] - RestNumberDensity(particles[i]), 0.0);
-                    q[i] = relaxation * excess * factors[i] / (dt * dt);
-                    densityStiffness[i] += q[i];
-                }
+                    excess[i] = state.NumberDensity[i] + dt * rates[i] - RestNumberDensity(particles[i]);
+                for (int b = 0; b < walls.Q.Length; b++)
+                    wallExcess[b] = walls.NumberDensity[b] + dt * wallRates[b] - walls.Rest[b];
+                var w = walls;
+                RoundSteps(q, densityStiffness, i => relaxation * Math.Max(excess[i], 0.0) * factors[i] / (dt * dt),
+                    i => relaxation * excess[i] * factors[i] / (dt * dt), beta, gamma);
+                RoundSteps(walls.Q, wallSummed, b => WallRelaxation * Math.Max(wallExcess[b], 0.0) * w.Factor[b] / (dt * dt),
+                    b => w.Factor[b] > 0.0 ? wallRelaxation * wallExcess[b] * w.Factor[b] / (dt * dt) : 0.0, beta, gamma);
+                for (int i = 0; i < n; i++) densityStiffness[i] += q[i];
                 for (int b = 0; b < walls.Q.Length; b++)
                 {
-                    walls.Q[b] = WallRelaxation * Math.Max(walls.NumberDensity[b] + dt * wallRates[b] - walls.Rest[b], 0.0) * walls.Factor[b] / (dt * dt);
+                    if (walls.Factor[b] <= 0.0) walls.Q[b] = 0.0;
+                    wallSummed[b] += walls.Q[b];
                     wallStiffness[b] += walls.Q[b];
                 }
                 ApplyStiffness(particles, v, q, walls.Q, dt);
@@ -747,19 +787,28 @@ namespace SphFluid.Reference
             factors = DivergenceFreeFactors(moved);
             walls = WallUnknowns(moved);
             divergenceStiffness = new double[n];
+            Array.Clear(q, 0, n);
+            wallSummed = new double[walls.Q.Length];
+            rho = 0.0;
             for (int l = 0; l < iterations; l++)
             {
                 var rates = NumberDensityRates(moved, v, out var neighbours);
                 var wallRates = WallNumberDensityRates(moved, v);
+                var (beta, gamma, nextRho) = _chebyshev.HasValue ? ChebyshevWeights(rho, _chebyshev.Value.Low, _chebyshev.Value.High) : (0.0, 0.0, 0.0);
+                rho = nextRho;
+                double[] rate = new double[n];
                 for (int i = 0; i < n; i++)
-                {
-                    double rate = neighbours[i] >= DivergenceMinNeighbours ? rates[i] : 0.0;
-                    q[i] = relaxation * Math.Max(rate, 0.0) * factors[i] / dt;
-                    divergenceStiffness[i] += q[i];
-                }
+                    rate[i] = neighbours[i] >= DivergenceMinNeighbours ? rates[i] : 0.0;
+                var w = walls;
+                RoundSteps(q, divergenceStiffness, i => relaxation * Math.Max(rate[i], 0.0) * factors[i] / dt,
+                    i => relaxation * rate[i] * factors[i] / dt, beta, gamma);
+                RoundSteps(walls.Q, wallSummed, b => WallRelaxation * Math.Max(wallRates[b], 0.0) * w.Factor[b] / dt,
+                    b => w.Factor[b] > 0.0 ? wallRelaxation * wallRates[b] * w.Factor[b] / dt : 0.0, beta, gamma);
+                for (int i = 0; i < n; i++) divergenceStiffness[i] += q[i];
                 for (int b = 0; b < walls.Q.Length; b++)
                 {
-                    walls.Q[b] = WallRelaxation * Math.Max(wallRates[b], 0.0) * walls.Factor[b] / dt;
+                    if (walls.Factor[b] <= 0.0) walls.Q[b] = 0.0;
+                    wallSummed[b] += walls.Q[b];
                     wallStiffness[b] += walls.Q[b];
                 }
                 ApplyStiffness(moved, v, q, walls.Q, dt);

@@ -17,7 +17,7 @@ namespace SphFluid.Simulation
     public struct FluidConstants
     {
         /// <summary>The cbuffer's size in bytes, whole 16-byte rows (HLSL rounds a part row up).</summary>
-        public const int Bytes = 416;
+        public const int Bytes = 432;
 
         public Matrix4x4 WorldToContainer;
         public Matrix4x4 ContainerToWorld;
@@ -68,5 +68,8 @@ namespace SphFluid.Simulation
         public uint NeighbourCapacity;
         public uint NeighbourLanes;
         public uint NeighbourListRows;
+        public float ChebyshevLow;
+
+        public float ChebyshevHigh;
     }
 }

@@ -776,6 +776,11 @@ namespace SphFluid.Simulation
             c.WallContactNumberDensity = (float)SmoothingKernels.FlatWallNumberDensity(s.SmoothingKernel, s.ParticleSpacing, h);
             c.WallContactAtAnyDensity = _deltaSph ? 1u : 0u;
             c.SolverRelaxation = s.SolverRelaxation;
+            var (low, high) = _divergenceFree && s.SolverIteration == SolverIteration.Chebyshev
+                ? ChebyshevBounds.For(s.SmoothingKernel, s.ParticleSpacing, h, s.SolverRelaxation, ChebyshevBounds.Depth(_spawn, s.Gravity, s.ParticleSpacing))
+                : (0.0, 0.0);
+            c.ChebyshevLow = (float)low;
+            c.ChebyshevHigh = (float)high;
             c.WallFriction = _scene.Container.Friction == WallFriction.NoSlip ? 1f : 0f;
             c.CohesionCoefficient = (float)(32.0 / (Math.PI * Math.Pow(h, 9)));
             c.Stiffness = s.Stiffness;

@@ -23,7 +23,7 @@ namespace SphFluid.Simulation
     sealed class SolverBuffers : IDisposable
     {
         /// <summary>Words of the solver state: two solve slots of 8 words and the open solve's slot (FluidSolver.compute).</summary>
-        public const int SolverStateWords = 17;
+        public const int SolverStateWords = 18;
         const uint ParticleThreads = 128; // PARTICLE_THREADS in FluidSolver.compute
 
         /// <summary>When a binding must be made again.</summary>

@@ -1,0 +1,64 @@
+using System;
+using System.Numerics;
+using NUnit.Framework;
+using SphFluid.Simulation;
+
+namespace SphFluid.Tests.Core.Simulation
+{
+    /// <summary>
+    /// The eigenvalue interval DFSPH's Chebyshev-accelerated solve is tuned for (ChebyshevBounds): its top is the lattice's
+    /// stiffest wave with a margin, its bottom the quarter wave of the fluid's depth, and the depth is the spawned fluid's
+    /// extent along gravity.
+    /// </summary>
+    public sealed class ChebyshevBoundsTests
+    {
+        const double Spacing = 0.02;
+
+        /// <summary>OilAndWater's solve: Wendland C2 at 2.85 spacings relaxed to 0.3, lambda_max 5.38 (SolverRelaxationTests).</summary>
+        [Test]
+        public void TheTopIsTheStiffestRelaxedWaveWithItsMargin()
+        {
+            var (_, high) = ChebyshevBounds.For(KernelFamily.WendlandC2, Spacing, 2.85 * Spacing, 0.3, 0.2);
+            Assert.That(high, Is.EqualTo(ChebyshevBounds.Margin * 0.3 * 5.38).Within(0.005));
+        }
+
+        /// <summary>A long wave's eigenvalue goes with k^2, so with 1 / n^2 for a column of n spacings: about 8 (k s)^2 for Wendland
+        /// C2 at 2.85 spacings, k = pi / (2 n s), that is 20 / n^2 before the relaxation.</summary>
+        [TestCase(8)]
+        [TestCase(32)]
+        [TestCase(80)]
+        public void TheBottomIsTheQuarterWaveOfTheDepth(int spacings)
+        {
+            var (low, _) = ChebyshevBounds.For(KernelFamily.WendlandC2, Spacing, 2.85 * Spacing, 0.3, spacings * Spacing);
+            Assert.That(low * spacings * spacings / 0.3, Is.EqualTo(20.0).Within(0.5));
+        }
+
+        [Test]
+        public void AColumnOfOneSpacingKeepsTheIntervalOpen()
+        {
+            var (low, high) = ChebyshevBounds.For(KernelFamily.CubicSpline, Spacing, 2 * Spacing, 1.0, Spacing);
+            Assert.That(low, Is.EqualTo(0.5 * high).Within(1e-12));
+        }
+
+        static Particle[] Spread(Vector3 from, Vector3 to) => new[]
+        {
+            new Particle(from, Vector3.Zero, 0, 0), new Particle(0.5f * (from + to), Vector3.Zero, 0, 1), new Particle(to, Vector3.Zero, 0, 2),
+        };
+
+        [Test]
+        public void TheDepthIsTheExtentAlongGravityAndOneSpacing()
+        {
+            var particles = Spread(new Vector3(-0.3f, -0.1f, 0f), new Vector3(0.3f, 0.2f, 0.05f));
+            Assert.That(ChebyshevBounds.Depth(particles, new Vector3(0f, -9.81f, 0f), Spacing), Is.EqualTo(0.3 + Spacing).Within(1e-6));
+            Assert.That(ChebyshevBounds.Depth(particles, new Vector3(9.81f, 0f, 0f), Spacing), Is.EqualTo(0.6 + Spacing).Within(1e-6));
+        }
+
+        [Test]
+        public void WithoutGravityTheDepthIsTheLargestExtent()
+        {
+            var particles = Spread(new Vector3(0f, 0f, -0.2f), new Vector3(0.1f, 0.05f, 0.2f));
+            Assert.That(ChebyshevBounds.Depth(particles, Vector3.Zero, Spacing), Is.EqualTo(0.4 + Spacing).Within(1e-6));
+            Assert.That(ChebyshevBounds.Depth(Array.Empty<Particle>(), Vector3.Zero, Spacing), Is.EqualTo(Spacing));
+        }
+    }
+}
