@@ -35,6 +35,9 @@ public sealed class StudyOptions(string scenePath)
     /// <summary>The pressure solvers to run (default both).</summary>
     public List<SphFluid.Simulation.PressureSolver> Solvers { get; set; } = new() { SphFluid.Simulation.PressureSolver.Wcsph, SphFluid.Simulation.PressureSolver.Dfsph };
 
+    /// <summary>How the DFSPH runs' solves iterate, each a row of its own; empty = the scene's SolverIteration.</summary>
+    public List<SphFluid.Simulation.SolverIteration> SolverIterations { get; set; } = new();
+
     public static StudyOptions Parse(string[] args) => SphfluidCommandLine.ParseOnly<StudyOptions>("study", args);
 }
 
@@ -46,7 +49,8 @@ public sealed class StudyCommand : Command
     public const string Details =
 @"Details:
 Runs the scene once per configuration of a matrix: WCSPH at each --stiffness-factors multiple of the
-scene's Tait stiffness and DFSPH at each --density-tolerances value, each at every --particles-scales
+scene's Tait stiffness and DFSPH at each --density-tolerances value (with each --solver-iterations
+scheme), each at every --particles-scales
 resolution and every --cfl number, for --seconds of simulated time. For each configuration it reports the
 average and max density error per phase (|rho/rho0 - 1|, GPU diagnostics, averaged / maximised over the
 samples), the divergence error (DFSPH), the energy drift ((E_end - E_0) / E_0, kinetic + potential), the
@@ -56,7 +60,7 @@ pressure-solver iterations per sub-step and the shares of DFSPH density and dive
 the iteration limit (above 0, that error can exceed its tolerance; a line under the table names the rows),
 sub-steps, GPU ms and wall ms per simulated second and the real-time factor. Writes study.csv, study.md
 (the same table in Markdown) and study-pareto.png/.svg (observable error against wall time per
-simulated second, log axes, one series per solver) into --out.
+simulated second, log axes, one series per solver and DFSPH iteration scheme) into --out.
 --quick: a small matrix for a check in a few minutes on 2 CPU cores (0.1 s simulated; scales 0.25 and
 0.5; the scene's CFL; WCSPH x1; DFSPH 1, 0.1 and 0.01 %).
 
@@ -81,13 +85,17 @@ simulated second, log axes, one series per solver) into --out.
     readonly Option<List<SphFluid.Simulation.PressureSolver>> _solvers = OptionKinds.List(Verb, "--solvers", "wcsph|dfsph",
         "the solvers to run (default both)",
         text => SolverChoice.Words.TryGetValue(text.ToLowerInvariant(), out var s) ? s : throw new UsageException($"{Verb}: --solvers must be wcsph and/or dfsph (was '{text}')"));
+    readonly Option<List<SphFluid.Simulation.SolverIteration>> _iterations = OptionKinds.List(Verb, "--solver-iterations", "jacobi|chebyshev",
+        "how the DFSPH runs' solves iterate, each its own rows and chart series (default: the scene's SolverIteration)",
+        text => SolverChoice.IterationWords.TryGetValue(text.ToLowerInvariant(), out var s) ? s
+            : throw new UsageException($"{Verb}: --solver-iterations must be jacobi and/or chebyshev (was '{text}')"));
     readonly Option<bool> _quick = OptionKinds.Flag("--quick", "a small matrix that finishes in a few minutes on 2 CPU cores (see Details); explicit options still apply");
     readonly Option<string> _device = OptionKinds.Text(Verb, "--device", "NAME", SphfluidCommandLine.DeviceHelp);
 
     public StudyCommand() : base(Verb, "accuracy for time: a matrix of solvers, tolerances, resolutions and CFL numbers; CSV, Markdown, Pareto chart")
     {
         Add(_scene);
-        foreach (var option in new Option[] { _out, _seconds, _stiffness, _tolerances, _scales, _cfl, _solvers, _quick, _device }) Add(option);
+        foreach (var option in new Option[] { _out, _seconds, _stiffness, _tolerances, _scales, _cfl, _solvers, _iterations, _quick, _device }) Add(option);
     }
 
     public StudyOptions Read(ParseResult r)
@@ -112,6 +120,7 @@ simulated second, log axes, one series per solver) into --out.
         options.ParticleScales = OptionKinds.Given(r, _scales) ?? options.ParticleScales;
         options.CflNumbers = OptionKinds.Given(r, _cfl) ?? options.CflNumbers;
         options.Solvers = OptionKinds.Given(r, _solvers) ?? options.Solvers;
+        options.SolverIterations = OptionKinds.Given(r, _iterations) ?? options.SolverIterations;
         return options;
     }
 }

@@ -28,11 +28,15 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
     /// <summary>A device to use instead of opening one (tests share theirs); not disposed here. Null: the run opens its own.</summary>
     public IComputeDevice? Device { get; init; }
 
-    public sealed record Configuration(PressureSolver Solver, double StiffnessFactor, double DensityTolerance, double ParticleScale, double Cfl)
+    public sealed record Configuration(PressureSolver Solver, double StiffnessFactor, double DensityTolerance, double ParticleScale, double Cfl,
+        SolverIteration Iteration = SolverIteration.Jacobi)
     {
         public string Label => Solver == PressureSolver.Dfsph
-            ? string.Format(C, "DFSPH {0:G3} %", DensityTolerance)
+            ? string.Format(C, "{0} {1:G3} %", Series, DensityTolerance)
             : string.Format(C, "WCSPH k x{0:G3}", StiffnessFactor);
+
+        /// <summary>The chart's series and the CSV's solver column: WCSPH, DFSPH (the Jacobi solve) or DFSPH Chebyshev.</summary>
+        public string Series => Solver != PressureSolver.Dfsph ? "WCSPH" : Iteration == SolverIteration.Chebyshev ? "DFSPH Chebyshev" : "DFSPH";
     }
 
     public sealed class Row(Configuration config, int particles, string[] phaseNames)
@@ -115,11 +119,15 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
             foreach (double k in options.StiffnessFactors) solvers.Add((PressureSolver.Wcsph, k, 0));
         if (options.Solvers.Contains(PressureSolver.Dfsph))
             foreach (double tol in options.DensityTolerances) solvers.Add((PressureSolver.Dfsph, 1, tol));
+        var iterations = options.SolverIterations.Count > 0 ? options.SolverIterations : new List<SolverIteration> { scene.SolverIteration };
         var configs = new List<Configuration>();
         foreach (double scale in options.ParticleScales)
             foreach (double cfl in cfls)
                 foreach (var (solver, k, tol) in solvers)
-                    configs.Add(new Configuration(solver, k, tol, scale, cfl));
+                    if (solver == PressureSolver.Dfsph)
+                        foreach (var iteration in iterations) configs.Add(new Configuration(solver, k, tol, scale, cfl, iteration));
+                    else
+                        configs.Add(new Configuration(solver, k, tol, scale, cfl));
         return configs;
     }
 
@@ -128,7 +136,11 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         var description = SceneLoader.Load(options.ScenePath).Description;
         var settings = description.Settings.Clone();
         settings.PressureSolver = config.Solver;
-        if (config.Solver == PressureSolver.Dfsph) settings.DensityTolerance = (float)config.DensityTolerance;
+        if (config.Solver == PressureSolver.Dfsph)
+        {
+            settings.DensityTolerance = (float)config.DensityTolerance;
+            settings.SolverIteration = config.Iteration;
+        }
         string? note = SolverChoice.FitSupport(settings, "study");
         _supportNote ??= note;
         settings.Stiffness = (float)(settings.Stiffness * config.StiffnessFactor);
@@ -265,7 +277,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
             + "solver_iterations_per_step,density_solves_cut_off,divergence_solves_cut_off,substeps_per_s,gpu_ms_per_s,wall_ms_per_s,real_time_factor,finest,status");
         foreach (var r in Rows)
         {
-            b.Append(string.Format(C, "{0},{1:G6},{2:G6},{3:G6},{4:G6},{5}", SolverChoice.ShortName(r.Config.Solver), r.Config.StiffnessFactor,
+            b.Append(string.Format(C, "{0},{1:G6},{2:G6},{3:G6},{4:G6},{5}", r.Config.Series, r.Config.StiffnessFactor,
                 r.Config.Solver == PressureSolver.Dfsph ? r.Config.DensityTolerance : double.NaN, r.Config.ParticleScale, r.Config.Cfl, r.Particles));
             for (int k = 0; k < phases; k++) b.Append(string.Format(C, ",{0:G6},{1:G6}", r.DensityErrorAverage[k], r.DensityErrorMax[k]));
             b.AppendLine(string.Format(C, ",{0:G6},{1:G6},{2:G6},{3:G6},{4:G6},{5:G6},{6:G6},{7:G6},{8:G6},{9:G6},{10:G6},{11:G6},{12:G6},{13:G6},{14:G6},{15:G6},{16},{17}",
