@@ -3,8 +3,8 @@
 # the kit of Headless/gpu-kit.sh carried:  run(command: "bash Headless/gpu-figures.sh", carry: [".gpu"], timeout_s: 600)
 #
 #   realtime  OilAndWater at about 100k, 250k, 1M and 2M particles (--particles-scales 24 60 240 481), WCSPH at the
-#             scene's stiffness and DFSPH at 0.1 %, 1 simulated second each: density error, wall ms per simulated
-#             second and the real-time factor (sphfluid study).
+#             scene's stiffness and DFSPH at 0.1 % with each of ITERATIONS (the Jacobi and the Chebyshev solve), 1
+#             simulated second each: density error, wall ms per simulated second and the real-time factor (sphfluid study).
 #   bench     bench at 1M particles for each solver: the per-pass and per-kernel milliseconds that show where the time
 #             goes, and (WCSPH) the planner's savings.
 #   pareto    the accuracy-for-time matrix at 100k and 250k: WCSPH x1 and x4 stiffness, DFSPH at 1, 0.1 and 0.01 %,
@@ -19,7 +19,7 @@
 #             interface's tilt and the layering of issue #5, at a speed lavapipe cannot give (sphfluid simulate).
 # The stages are named as arguments, run in the order given (default: realtime bench pareto). Each step has a time
 # limit, so a slow step costs only itself. The environment can change the sizes, the solvers the bench stage times and
-# each step's limit in seconds: REALTIME_SCALES, PARETO_SCALES, BENCH_PARTICLES, BENCH_SOLVERS ("dfsph wcsph"),
+# each step's limit in seconds: REALTIME_SCALES, PARETO_SCALES, ITERATIONS ("jacobi chebyshev"), BENCH_PARTICLES, BENCH_SOLVERS ("dfsph wcsph"),
 # RUN_SECONDS, REALTIME_LIMIT (300), BENCH_LIMIT (120 each), PARETO_LIMIT (300), SCENE_SCALES, SLOWER_GPUS,
 # SCENES (the demo scenes the scenes stage benches), SCENES_LIMIT (90 each), LAYERING_SECONDS (6.5), LAYERING_LIMIT
 # (150 each).
@@ -41,6 +41,7 @@ realtime_scales="${REALTIME_SCALES:-24 60 240 481}"
 pareto_scales="${PARETO_SCALES:-24 60}"
 bench_particles="${BENCH_PARTICLES:-1000000}"
 bench_solvers="${BENCH_SOLVERS:-dfsph wcsph}"
+iterations="${ITERATIONS:-jacobi chebyshev}"
 realtime_limit="${REALTIME_LIMIT:-300}"
 bench_limit="${BENCH_LIMIT:-120}"
 pareto_limit="${PARETO_LIMIT:-300}"
@@ -106,7 +107,7 @@ for stage in "${stages[@]}"; do
     realtime)
         # shellcheck disable=SC2086 # the scale lists are word lists
         step "$realtime_limit" study "$scene" --particles-scales $realtime_scales --stiffness-factors 1 --density-tolerances 0.1 \
-            --cfl "$cfl" --seconds "$seconds" --out "$scratch/realtime"
+            --solver-iterations $iterations --cfl "$cfl" --seconds "$seconds" --out "$scratch/realtime"
         for f in study.md study.csv; do
             if [ -f "$scratch/realtime/$f" ]; then cp "$scratch/realtime/$f" "$out/realtime.${f#study.}"; fi
         done
