@@ -370,7 +370,8 @@ void SolveFinal(uint3 threadId : SV_GroupThreadID)
     // last: the solve ends unconverged, and the host learns it through the motion read-back and records more rounds.
     _SolverState[slot] = corrections + 1u;
     _SolverState[slot + 2u] += 1u;
-    _SolverState[CHEBYSHEV_WORD] = asuint(ChebyshevWeights(asfloat(_SolverState[CHEBYSHEV_WORD]), _ChebyshevLow, _ChebyshevHigh).z);
+    if (_ChebyshevHigh > 0.0)
+        _SolverState[CHEBYSHEV_WORD] = asuint(ChebyshevWeights(asfloat(_SolverState[CHEBYSHEV_WORD]), _ChebyshevLow, _ChebyshevHigh).z);
     if (corrections + 1u >= (solve == DENSITY_SOLVE ? _DensitySolveRounds : _DivergenceSolveRounds))
     {
         _SolverState[slot + 5u] = max(_SolverState[slot + 5u], corrections + 1u);
