@@ -4,9 +4,14 @@
 # last diagnostics line of OilAndWater at 6 times its particles (25 900) over 0.3 s. The fraction is a constant of the
 # shader, not a setting, so each fraction runs in a copy of the committed tree under a temporary folder, which is
 # removed at the end; the checkout is not touched. About 3 minutes a fraction on 2 cores.
-#   Headless/tools/warm-start-scan.sh [FRACTION ...]
+# With --solver-iteration chebyshev both runs take the Chebyshev-accelerated solve (SolverIteration) instead of Jacobi's.
+#   Headless/tools/warm-start-scan.sh [--solver-iteration jacobi|chebyshev] [FRACTION ...]
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../env.sh"
+iteration=jacobi
+if [ "${1:-}" = "--solver-iteration" ]; then iteration=$2; shift 2; fi
+case "$iteration" in jacobi) fixture=Jacobi ;; chebyshev) fixture=Chebyshev ;;
+    *) echo "warm-start-scan: --solver-iteration must be jacobi or chebyshev (was '$iteration')" >&2; exit 2 ;; esac
 [ $# -gt 0 ] || set -- 0.5 0.75 0.9 1
 for w in "$@"; do
     [[ "$w" =~ ^(0(\.[0-9]+)?|1(\.0+)?)$ ]] || { echo "warm-start-scan: a fraction must be a number in [0, 1] (was '$w')" >&2; exit 2; }
@@ -23,11 +28,11 @@ dotnet build "$work/Headless/SphFluid.Headless/SphFluid.Headless.csproj" -c Rele
 for w in "$@"; do
     sed -i "s/^#define WARM_START_FRACTION .*/#define WARM_START_FRACTION $w/" "$solver"
     tank=$(cd "$work" && dotnet test Tests/SphFluid.Tests/SphFluid.Tests.csproj -c Release --no-build \
-        --filter "FullyQualifiedName~DivergenceFreeTank" --logger "console;verbosity=detailed" 2>&1 |
-        grep -m1 "DFSPH resting tank" | sed 's/ | .*//' || true)
+        --filter "FullyQualifiedName~DivergenceFreeTankTests\\($fixture\\)" --logger "console;verbosity=detailed" 2>&1 |
+        grep -m1 "DFSPH resting tank ($fixture)" | sed 's/ | .*//' || true)
     echo "warm start $w, tank: ${tank# }"
     (cd "$work" && dotnet Headless/SphFluid.Headless/bin/Release/net10.0/sphfluid.dll simulate \
-        Assets/FluidDemo/Scenes/OilAndWater.unity --solver dfsph --particles-scale 6 --seconds 0.3 \
+        Assets/FluidDemo/Scenes/OilAndWater.unity --solver dfsph --solver-iteration "$iteration" --particles-scale 6 --seconds 0.3 \
         --diagnostics-every 0.05 --frames-every 100 --out "$work/out-$w" --quiet 2>&1 || true) |
         grep -E "^t=|^done|^FAILED|unhealthy" | tail -2 | sed "s/^/warm start $w, OilAndWater x6: /"
 done
