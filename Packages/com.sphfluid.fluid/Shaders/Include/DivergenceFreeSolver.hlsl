@@ -52,7 +52,7 @@
 // accelerated solve takes signed steps and projects the pressure each particle has summed in this solve onto q >= 0
 // (IISPH's projected Jacobi; Ihmsen et al. 2014): d_k = max(Q + beta_k d_{k-1} + gamma_k z_k, 0) - Q, Q the q applied
 // so far in this solve, warm start included. The wall particles' signed steps take a third of the fluid's relaxation
-// (CHEBYSHEV_WALL_SHARE): at WALL_RELAXATION's 0.5 with the fluid's 0.3 the tank went to NaN within 0.033 s (4 160
+// (CHEBYSHEV_WALL_SHARE): at WALL_RELAXATION's 0.5 with the fluid's 0.3 OilAndWater went to NaN within 0.033 s (4 160
 // particles); at 0.1 it held, as below.
 #define CHEBYSHEV_WALL_SHARE (1.0 / 3.0)
 
