@@ -205,6 +205,16 @@ void BoundaryBeginSolve(uint3 id : SV_DispatchThreadID)
     _BoundaryWarmStart[boundaryId] = float2(0.0, warm.y);
 }
 
+// The q a fluid particle has applied so far in the open solve, warm start included; read only by the accelerated solve
+// (the Jacobi solve's error pass need not load it).
+float AppliedStiffness(uint particleId, uint solve)
+{
+    if (_ChebyshevHigh <= 0.0)
+        return 0.0;
+    float2 summed = _WarmStart[particleId];
+    return solve == DENSITY_SOLVE ? summed.x : summed.y;
+}
+
 // The q a particle applies in this round: the Jacobi solve's compression-only step, or, with Chebyshev bounds set, the
 // accelerated, projected step (DivergenceFreeSolver.hlsl) from the q it applied so far in this solve, its last step and
 // the signed Jacobi step.
@@ -303,7 +313,7 @@ void DensitySolveError(uint3 id : SV_DispatchThreadID, uint3 groupId : SV_GroupI
         float rest = RestNumberDensityOf(p);
         float factor = _DivergenceFreeFactors[i];
         float2 stiffness = DensityStiffness(_Densities[i].z, rate, rest, factor, _TimeStep);
-        _SolverStiffness[i] = RoundStep(_SolverRelaxation * stiffness.x, _WarmStart[p.id].x, _SolverStiffness[i],
+        _SolverStiffness[i] = RoundStep(_SolverRelaxation * stiffness.x, AppliedStiffness(p.id, DENSITY_SOLVE), _SolverStiffness[i],
             _SolverRelaxation * SignedDensityStiffness(_Densities[i].z, rate, rest, factor, _TimeStep));
         error = stiffness.y;
     }
@@ -323,7 +333,7 @@ void DivergenceSolveError(uint3 id : SV_DispatchThreadID, uint3 groupId : SV_Gro
         Particle p = _Particles[i];
         float factor = _DivergenceFreeFactors[i];
         float2 stiffness = DivergenceStiffness(rate, RestNumberDensityOf(p), factor, _TimeStep);
-        _SolverStiffness[i] = RoundStep(_SolverRelaxation * stiffness.x, _WarmStart[p.id].y, _SolverStiffness[i],
+        _SolverStiffness[i] = RoundStep(_SolverRelaxation * stiffness.x, AppliedStiffness(p.id, DIVERGENCE_SOLVE), _SolverStiffness[i],
             _SolverRelaxation * SignedDivergenceStiffness(rate, factor, _TimeStep));
         error = stiffness.y;
     }
