@@ -1,3 +1,5 @@
+using System;
+using System.Linq;
 using NUnit.Framework;
 using SphFluid.Headless.Cli;
 using SphFluid.Headless.Scenes;
@@ -46,6 +48,57 @@ namespace SphFluid.Tests.Physics
             Assert.That(report.OutsideCount, Is.EqualTo(0));
             Assert.That(report.ParticleCount, Is.EqualTo(spawned));
             Assert.That(report.TotalMass, Is.GreaterThan(0.0));
+        }
+
+        /// <summary>SphereWake under DFSPH. Its sphere stands still for the drive's first second in a pool spawned at rest, so
+        /// no work is done on the fluid: its mechanical energy may not rise above the spawn's, and nothing may move faster than
+        /// a fall through one spacing, sqrt(2 g s). Then the sphere moves (up to 0.26 m/s) for a second, and no fluid centre
+        /// may enter it or reach the clamp. While a sphere's own shells were summed for its wall constraint
+        /// (BoundarySampling.OwnNumberDensities) they read up to 24 % above rest, and the constraint pushed the fluid off the
+        /// still sphere: 8.2 m/s and 2.1 J of energy gained by 0.13 s, unhealthy at 0.37 s.</summary>
+        [Test]
+        public void SphereWake_StillSphereLeavesThePoolAtRest_AndTheDrivenOneRunsClean()
+        {
+            var loaded = SceneLoader.Load(RunnerPaths.Scene("SphereWake"), RunnerPaths.Project);
+            var scene = loaded.Description;
+            Assert.That(new SolverChoice { Solver = PressureSolver.Dfsph }.ApplyTo(scene, "DFSPH SphereWake"), Is.Null, "the scene's own DFSPH settings");
+            var rest = scene.Obstacles.Select(o => o.Clone()).ToList();
+            var gravity = (System.Numerics.Vector3)scene.Settings.Gravity;
+            double fallSpeed = Math.Sqrt(2.0 * gravity.Length() * scene.Settings.ParticleSpacing);
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            int spawned = sim.ParticleCount;
+            var particles = new Particle[spawned];
+            sim.Particles.GetData(particles);
+            double spawnEnergy = FluidEnergy.Mechanical(particles, sim.PhaseRows, gravity), energyRise = double.MinValue, stillSpeed = 0;
+            double movingSpeed = 0, closest = double.MaxValue;
+            var report = sim.ReadDiagnostics();
+            for (int frame = 1; frame <= 120; frame++)
+            {
+                double t = frame / 60.0;
+                var obstacles = loaded.Motion.ObstaclesAt(rest, t);
+                sim.UpdateObstacles(obstacles);
+                sim.Step(Frame);
+                report = sim.ReadDiagnostics();
+                sim.Particles.GetData(particles);
+                if (t <= 1.0 + 1e-6)
+                {
+                    energyRise = Math.Max(energyRise, FluidEnergy.Mechanical(particles, sim.PhaseRows, gravity) - spawnEnergy);
+                    stillSpeed = Math.Max(stillSpeed, report.MaxSpeed);
+                    continue;
+                }
+                movingSpeed = Math.Max(movingSpeed, report.MaxSpeed);
+                var centre = obstacles[0].Center;
+                closest = Math.Min(closest, particles.Min(p => (double)System.Numerics.Vector3.Distance(p.Position, centre)) - obstacles[0].Radius);
+            }
+            TestContext.Progress.WriteLine($"DFSPH SphereWake, N={spawned}: still sphere, 1 s: energy {spawnEnergy:F4} J at spawn, largest rise {energyRise:F4} J, " +
+                $"fastest {stillSpeed:F3} m/s (a fall through a spacing {fallSpeed:F3}); moving sphere, 1 to 2 s: fastest {movingSpeed:F3} m/s, " +
+                $"closest fluid centre {1000 * closest:F2} mm outside the sphere; {report}");
+            Assert.That(energyRise, Is.LessThanOrEqualTo(0.0), "no work is done on the pool while the sphere stands still");
+            Assert.That(stillSpeed, Is.LessThan(fallSpeed));
+            Assert.That(closest, Is.GreaterThan(0.0), "no fluid centre inside the moving sphere");
+            Assert.That(report.ClampHits, Is.EqualTo(0));
+            Assert.That(report.ParticleCount, Is.EqualTo(spawned));
+            Assert.That(report.OutsideCount + report.NanCount, Is.EqualTo(0));
         }
 
         /// <summary>Issue #8's bar for DFSPH, #5's layering: index at least 0.95 and under 2 % of the floor layer oil within 6 s,

@@ -10,10 +10,17 @@ namespace SphFluid.Tests.Physics
 {
     /// <summary>
     /// A sphere made of boundary particles is driven through a pool at 0.25 m/s for one second: it must push the
-    /// water aside, and no fluid particle centre may be inside its radius at any frame (1/60 s) of the run.
+    /// water aside, and no fluid particle centre may be inside its radius at any frame (1/60 s) of the run. Under both
+    /// pressure solvers: DFSPH's wall constraint counts the sphere's own shells at rest (BoundarySampling.OwnNumberDensities).
     /// </summary>
+    [TestFixture(PressureSolver.Wcsph)]
+    [TestFixture(PressureSolver.Dfsph)]
     public sealed class SphereThroughPoolTests
     {
+        readonly PressureSolver _solver;
+
+        public SphereThroughPoolTests(PressureSolver solver) => _solver = solver;
+
         const float Radius = 0.04f, Speed = 0.25f, StartX = -0.12f, Depth = 0.12f;
         static readonly Vector3 Tank = new Vector3(0.4f, 0.24f, 0.12f);
         int _count, _clampHits, _outsideCount, _nanCount, _insideFrames, _pushed;
@@ -24,7 +31,7 @@ namespace SphFluid.Tests.Physics
         [OneTimeSetUp]
         public void DriveTheSphere()
         {
-            var settings = new FluidSettings { ParticleSpacing = 0.02f, SmoothingRadius = 0.04f, MaxSubsteps = 200 };
+            var settings = new FluidSettings { ParticleSpacing = 0.02f, SmoothingRadius = 0.04f, MaxSubsteps = 200, PressureSolver = _solver };
             var scene = SolverScenes.Scene(settings, Tank,
                 SolverScenes.Box("Water", SolverScenes.Water(viscosity: 0.001f), new Vector3(0f, -0.5f * Tank.Y + 0.5f * Depth, 0f), new Vector3(Tank.X, Depth, Tank.Z)));
             scene.Obstacles.Add(new RigidSphere(CentreAt(0), Radius, new Vector3(Speed, 0f, 0f)));
@@ -58,7 +65,7 @@ namespace SphFluid.Tests.Physics
             _clampHits = report.ClampHits;
             _outsideCount = report.OutsideCount;
             _nanCount = report.NanCount;
-            TestContext.Progress.WriteLine($"sphere r = {Radius} m through a pool at {Speed} m/s, 1 s: N = {_count}, {sim.BoundaryCount} boundary, travelled {_travel:F3} m; " +
+            TestContext.Progress.WriteLine($"{_solver}: sphere r = {Radius} m through a pool at {Speed} m/s, 1 s: N = {_count}, {sim.BoundaryCount} boundary, travelled {_travel:F3} m; " +
                 $"closest fluid centre {1000 * _closest:F1} mm from the sphere centre (radius {1000 * Radius:F0} mm), frames with a centre inside {_insideFrames}; " +
                 $"particles in its path moved more than r/2: {_pushed}; clamp hits {_clampHits}; {report}");
         }

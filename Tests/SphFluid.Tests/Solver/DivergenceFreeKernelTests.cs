@@ -24,7 +24,7 @@ namespace SphFluid.Tests.Solver
     {
         const double Tolerance = 1e-4;
 
-        static FluidSceneDescription Block(bool multiphase, bool chebyshev = false)
+        static FluidSceneDescription Block(bool multiphase, bool chebyshev = false, bool sphere = false)
         {
             var settings = SolverScenes.Coarse(0.02f);
             settings.PressureSolver = PressureSolver.Dfsph;
@@ -41,9 +41,12 @@ namespace SphFluid.Tests.Solver
             var size = new Vector3(0.16f, 0.16f, 0.16f);
             float height = multiphase ? 0.078f : 0.08f;
             var half = new Vector3(0.16f, height, 0.16f);
-            return SolverScenes.Scene(settings, size,
+            var scene = SolverScenes.Scene(settings, size,
                 SolverScenes.Box("A", SolverScenes.Water(0.1f), new Vector3(0f, -0.08f + 0.5f * height, 0f), half),
                 SolverScenes.Box("B", multiphase ? SolverScenes.Oil(0.02f) : SolverScenes.Water(0.1f), new Vector3(0f, 0.08f - 0.5f * height, 0f), half));
+            // Off the lattice's symmetry, and clear of the squeezed particles: the spawn leaves half a spacing around it.
+            if (sphere) scene.Obstacles = new List<RigidSphere> { new RigidSphere(new Vector3(0.013f, -0.007f, 0.009f), 0.035f, Vector3.Zero) };
+            return scene;
         }
 
         /// <summary>Compressed to <paramref name="squeeze"/> of the spacing towards the floor's centre line and scattered, with
@@ -69,6 +72,13 @@ namespace SphFluid.Tests.Solver
         [TestCase(false, 0.75f, 8, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_CrowdedEightLanes")]
         public void OneIterationOfEachSolveMatchesReference(bool multiphase, float squeeze, int lanes) =>
             MatchesReference(Block(multiphase), multiphase, squeeze, lanes, 1);
+
+        /// <summary>A sphere's wall particles as unknowns: their own shells count at rest (BoundarySampling.OwnNumberDensities),
+        /// the container's walls and the fluid are summed.</summary>
+        [TestCase(1, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_AroundASphere")]
+        [TestCase(8, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_AroundASphereEightLanes")]
+        public void OneIterationAroundASphereMatchesReference(int lanes) =>
+            MatchesReference(Block(false, sphere: true), false, 0.97f, lanes, 1);
 
         /// <summary>Three rounds: the first takes d_0 = z_0 / theta, the next two carry the last step (beta_k d_{k-1}), and
         /// the projection keeps each particle's summed q at or above zero (DivergenceFreeSolver.hlsl's Chebyshev acceleration).</summary>
@@ -113,6 +123,12 @@ namespace SphFluid.Tests.Solver
             Assert.That(ReferenceComparison.Max(n, i => densityQ[i]), Is.GreaterThan(0.0), "the constant-density solve must have work");
             Assert.That(ReferenceComparison.Max(n, i => divergenceQ[i]), Is.GreaterThan(0.0), "the divergence-free solve must have work");
             Assert.That(ReferenceComparison.Max(wallQ.Length, b => wallQ[b]), Is.GreaterThan(0.0), "the wall particles must push too");
+            if (scene.Obstacles.Count > 0)
+            {
+                var owners = BoundarySampling.Sample(scene);
+                Assert.That(ReferenceComparison.Max(wallQ.Length, b => owners[b].Owner == 0u ? wallQ[b] : 0.0), Is.GreaterThan(0.0),
+                    "the sphere's particles must push too");
+            }
             ReferenceComparison.Compare("constant-density q", Tolerance, n, i => densityQ[i], i => warm[i].X);
             ReferenceComparison.Compare("divergence-free q", Tolerance, n, i => divergenceQ[i], i => warm[i].Y);
             ReferenceComparison.CompareVectors("displacement", Tolerance, n, i => new Double3(expected[i].Position) - new Double3(start[i].Position),

@@ -97,7 +97,8 @@ float ProjectedChebyshevStep(float applied, float previousStep, float jacobiStep
 //   delta_b = sum_f W_bf + sum_b' omega_bb' W_bb',   D delta_b / Dt = sum_f (v_f - v_b) . gradW_fb
 // with the rest number density of the fluid around it (Shepard-weighted) as its target and the walls around it weighed
 // at that same rest number density (omega_bb', WallWeight's scale Shepard-weighted: a wall whose own sum exceeded the
-// fluid's rest density asked for a density no motion of the fluid could give, see SphBoundary.hlsl), and q_b moves the fluid by
+// fluid's rest density asked for a density no motion of the fluid could give, see SphBoundary.hlsl; a sphere's own shells,
+// weighed up for the fluid outside, count at rest instead of summed: Passes/Walls.hlsl), and q_b moves the fluid by
 // -(dt / m_f) q_b gradW_fb: the force on the fluid, -(omega_ib q_i + q_b) gradW_ib, is again the constraints' adjoint.
 // Its Jacobi factor has no |G|^2 term (a wall does not move): alpha_b = 1 / sum_f |gradW_bf|^2 / m_f. Its step is
 // relaxed by WALL_RELAXATION, as IISPH's relaxed Jacobi is (Ihmsen et al. 2014, "Implicit incompressible SPH"); not

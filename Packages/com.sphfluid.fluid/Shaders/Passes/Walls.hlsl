@@ -14,24 +14,28 @@ void PlaceBoundary(uint3 id : SV_DispatchThreadID)
     _BoundaryPlaced[b] = PlaceBoundaryParticle(_BoundaryRest[b]);
 }
 
-// The walls' own part of a wall particle's number density, sum_b' omega_b' W_bb' (weights at the lattice's rest number
-// density; BoundaryDensityFactor scales it to the fluid's): it changes only when the walls are placed again.
+// The walls' part of a wall particle's number density, sum_b' omega_b' W_bb' (weights at the lattice's rest number
+// density; BoundaryDensityFactor scales it to the fluid's): it changes only when the walls are placed again. A sphere's own
+// shells are not summed but taken at rest from the sampling (BoundarySampling.OwnNumberDensities: weighed up for the fluid
+// outside the sphere, they read up to 24 % above rest at its own particles); other spheres and the container are.
 [numthreads(PARTICLE_THREADS, 1, 1)]
 void WallNumberDensity(uint3 id : SV_DispatchThreadID)
 {
     uint b = id.x;
     if (b >= _BoundaryCount)
         return;
-    float3 xb = _BoundaryParticles[b].position;
-    int3 home = GridCoordOf(xb);
-    float sum = 0.0;
+    BoundaryParticle wall = _BoundaryParticles[b];
+    int3 home = GridCoordOf(wall.position);
+    float sum = _BoundaryOwnNumberDensities[_BoundarySortedSource[b]];
     for (uint row = 0u; row < 9u; row++)
     {
         uint2 walls = BoundaryRowRange(home, row);
         for (uint c = walls.x; c < walls.y; c++)
         {
             BoundaryParticle other = _BoundaryParticles[c];
-            float3 r = xb - other.position;
+            if (wall.owner != BOUNDARY_OWNER_CONTAINER && other.owner == wall.owner)
+                continue;
+            float3 r = wall.position - other.position;
             sum += other.weight * Kernel(dot(r, r));
         }
     }

@@ -17,6 +17,7 @@ namespace SphFluid.Reference
         readonly FluidSettings _settings;
         readonly PhaseProperties[] _phases;
         readonly BoundaryParticle[] _boundaryRest;
+        readonly float[] _ownNumberDensities;
         readonly double _h, _h2, _cohesion, _flatWallNumberDensity;
 
         public ContainerDescription Container { get; set; }
@@ -27,6 +28,7 @@ namespace SphFluid.Reference
             _settings = scene.Settings;
             _phases = scene.BuildPhaseTable();
             _boundaryRest = BoundarySampling.Sample(scene);
+            _ownNumberDensities = BoundarySampling.OwnNumberDensities(scene, _boundaryRest);
             Container = scene.Container.Clone();
             Obstacles = new List<RigidSphere>(scene.Obstacles ?? new List<RigidSphere>());
             _h = _settings.SmoothingRadius;
@@ -686,8 +688,11 @@ namespace SphFluid.Reference
                     scale += w * _phases[(int)p.Phase].WallWeightScale;
                     squares += PairGradient(rfb, r, 1, 0).LengthSquared() / _phases[p.Phase].ParticleMass;
                 }
+                // A sphere's own shells at rest from the sampling, as the GPU's WallNumberDensity takes them.
+                wall = _ownNumberDensities[b];
                 foreach (var other in walls)
-                    wall += other.Weight * Kernel((xb - new Double3(other.Position)).Length());
+                    if (walls[b].Owner == BoundaryParticle.ContainerOwner || other.Owner != walls[b].Owner)
+                        wall += other.Weight * Kernel((xb - new Double3(other.Position)).Length());
                 state.NumberDensity[b] = fluid + (fluid > 0 ? scale / fluid : 1.0) * wall;
                 state.Rest[b] = fluid > 0 ? rest / fluid : 0.0;
                 double share = Math.Min(1.0, fluid / (WallFullShare * Math.Max(state.Rest[b], 1e-20)));

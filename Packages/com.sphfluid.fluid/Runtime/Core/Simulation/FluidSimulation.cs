@@ -735,7 +735,7 @@ namespace SphFluid.Simulation
             var rest = BoundarySampling.Sample(_scene);
             _boundaryCount = rest.Length;
             _listCapacity = NeighbourCapacity.For(_scene.Settings, ParticleCount + _boundaryCount);
-            _buffers.MakeBoundary(rest, _grid.CellCount, _listCapacity);
+            _buffers.MakeBoundary(rest, BoundarySampling.OwnNumberDensities(_scene, rest), _grid.CellCount, _listCapacity);
             _constants[0].BoundaryCount = (uint)_boundaryCount;
             _constantsChanged = true;
             UseNeighbourLists();

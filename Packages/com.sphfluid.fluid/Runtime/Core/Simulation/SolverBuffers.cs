@@ -98,6 +98,7 @@ namespace SphFluid.Simulation
             new Binding("_BoundaryCellStart", b => b.BoundarySorter.CellStart, Readers.Solver, Group.Boundary),
             new Binding("_BoundaryCellCount", b => b.BoundarySorter.CellCount, Readers.Solver, Group.Boundary),
             new Binding("_WallNumberDensities", b => b.WallNumberDensities, Readers.Solver, Group.Boundary),
+            new Binding("_BoundaryOwnNumberDensities", b => b.BoundaryOwnNumberDensities, Readers.Solver, Group.Boundary),
             new Binding("_NeighbourCounts", b => b.NeighbourCounts, Readers.Solver, Group.Boundary),
             new Binding("_NeighbourLists", b => b.NeighbourLists, Readers.Solver, Group.Boundary),
             new Binding("_FoundNeighbourCounts", b => b.NeighbourCounts, Readers.Solver, Group.Boundary), // FindNeighbours writes them
@@ -118,6 +119,7 @@ namespace SphFluid.Simulation
         public IComputeBuffer NumberDensities, NumberDensitiesHalf, DensityRates; // delta-SPH (SphDensityDiffusion.hlsl)
         public IComputeBuffer MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
         public IComputeBuffer BoundaryRest, BoundaryPlaced, BoundarySorted, BoundaryPressures, BoundarySolve, BoundaryWarmStart, WallNumberDensities;
+        public IComputeBuffer BoundaryOwnNumberDensities; // DFSPH by boundary id: its own body's number density at rest (BoundarySampling)
         public IComputeBuffer NeighbourCounts, NeighbourLists; // per fluid and boundary particle (SphNeighbourhood.hlsl)
         public IComputeBuffer Constants;
         public ParticleSorter Sorter, BoundarySorter;
@@ -220,10 +222,11 @@ namespace SphFluid.Simulation
             Bind(Group.Particles);
         }
 
-        /// <summary>New boundary buffers for these boundary particles (in their owners' frames), a sorter for them, and neighbour
+        /// <summary>New boundary buffers for these boundary particles (in their owners' frames) and their own bodies' number
+        /// densities at rest (<see cref="BoundarySampling.OwnNumberDensities"/>), a sorter for them, and neighbour
         /// lists of <paramref name="neighbourCapacity"/> entries for every fluid and boundary particle (one word each for 0:
         /// no lists, the kernels walk the grid).</summary>
-        public void MakeBoundary(BoundaryParticle[] rest, int cellCount, int neighbourCapacity)
+        public void MakeBoundary(BoundaryParticle[] rest, float[] ownNumberDensities, int cellCount, int neighbourCapacity)
         {
             ReleaseBoundary();
             int count = rest.Length;
@@ -235,6 +238,8 @@ namespace SphFluid.Simulation
             BoundarySolve = Zeroed("FluidSimulation.BoundarySolve", count, 16);
             BoundaryWarmStart = Zeroed("FluidSimulation.BoundaryWarmStart", count, 8);
             WallNumberDensities = Zeroed("FluidSimulation.WallNumberDensities", count, 4);
+            BoundaryOwnNumberDensities = _device.CreateBuffer("FluidSimulation.BoundaryOwnNumberDensities", count, 4);
+            BoundaryOwnNumberDensities.SetData(ownNumberDensities);
             BoundarySorter = new ParticleSorter(_device, count, cellCount);
             int owners = neighbourCapacity > 0 ? _particleCount + count : 1;
             NeighbourCounts = _device.CreateBuffer("FluidSimulation.NeighbourCounts", owners, 4);
@@ -270,10 +275,11 @@ namespace SphFluid.Simulation
             BoundarySolve?.Dispose();
             BoundaryWarmStart?.Dispose();
             WallNumberDensities?.Dispose();
+            BoundaryOwnNumberDensities?.Dispose();
             BoundarySorter?.Dispose();
             NeighbourCounts?.Dispose();
             NeighbourLists?.Dispose();
-            BoundaryRest = BoundaryPlaced = BoundarySorted = BoundaryPressures = BoundarySolve = BoundaryWarmStart = WallNumberDensities = null;
+            BoundaryRest = BoundaryPlaced = BoundarySorted = BoundaryPressures = BoundarySolve = BoundaryWarmStart = WallNumberDensities = BoundaryOwnNumberDensities = null;
             NeighbourCounts = NeighbourLists = null;
             BoundarySorter = null;
         }

@@ -94,6 +94,92 @@ namespace SphFluid.Tests.Core.Simulation
             }
         }
 
+        /// <summary>DFSPH's wall constraint counts a wall particle's own body at rest (BoundarySampling.OwnNumberDensities):
+        /// far from any curvature a sphere's outermost shell reads as the container's top wall layer does, delta0 less the
+        /// fluid lattice beyond it, and its next shell, which fluid on the lattice cannot reach at 2 spacings, the whole delta0.</summary>
+        [TestCase(KernelFamily.CubicSpline, 2.0)]
+        [TestCase(KernelFamily.WendlandC2, 2.85)]
+        public void ALargeSpheresShellsCountThemselvesAsAFlatWallDoes(KernelFamily kind, double supportRatio)
+        {
+            float support = (float)(supportRatio * Spacing);
+            var scene = SphereScene(kind, support, 60 * Spacing);
+            BoundaryParticle[] all = BoundarySampling.Sample(scene);
+            float[] own = BoundarySampling.OwnNumberDensities(scene, all);
+            double delta0 = SmoothingKernels.LatticeNumberDensity(kind, Spacing, support);
+            double flat = delta0 - SmoothingKernels.FlatWallNumberDensity(kind, Spacing, support);
+            double outer = OwnAtDepth(scene, all, own, 0.5f * Spacing);
+            TestContext.Out.WriteLine($"{kind} at {supportRatio} spacings: outer shell {outer / delta0:F4} delta0, flat wall {flat / delta0:F4} delta0");
+            Assert.That(outer / flat, Is.EqualTo(1.0).Within(0.005));
+            if (supportRatio <= 2.0)
+                Assert.That(OwnAtDepth(scene, all, own, 1.5f * Spacing) / delta0, Is.EqualTo(1.0).Within(1e-5));
+        }
+
+        /// <summary>The container's walls are summed on the GPU with every other wall (WallNumberDensity): their own part is 0.</summary>
+        [Test]
+        public void TheContainersWallsCountNothingOfTheirOwn()
+        {
+            var scene = SphereScene(KernelFamily.CubicSpline, Support, 3 * Spacing);
+            BoundaryParticle[] all = BoundarySampling.Sample(scene);
+            float[] own = BoundarySampling.OwnNumberDensities(scene, all);
+            Assert.That(own.Length, Is.EqualTo(all.Length));
+            for (int b = 0; b < all.Length; b++)
+                if (all[b].Owner == BoundaryParticle.ContainerOwner)
+                    Assert.That(own[b], Is.EqualTo(0f));
+        }
+
+        /// <summary>Why a sphere's own shells are not summed for its constraint: around the sphere-wake scene's sphere (3.5
+        /// spacings), fluid spawned on the lattice outside it (more than half a spacing from its surface, as SpawnLayout
+        /// leaves it) gives the outer shell's particles, with the shells summed, more than rest density (measured 1.06 to
+        /// 1.22 delta0), which no motion of the fluid can undo; with the shells counted at rest, every particle reads at most
+        /// delta0.</summary>
+        [Test]
+        public void FluidSpawnedAroundASphereLeavesItsShellsAtMostAtRest()
+        {
+            float radius = 3.46f * Spacing;
+            var scene = SphereScene(KernelFamily.CubicSpline, Support, radius);
+            BoundaryParticle[] all = BoundarySampling.Sample(scene);
+            float[] own = BoundarySampling.OwnNumberDensities(scene, all);
+            double delta0 = SmoothingKernels.LatticeNumberDensity(KernelFamily.CubicSpline, Spacing, Support);
+            var fluid = new List<Vector3>();
+            var offset = new Vector3(0.3f, 0.1f, 0.7f) * Spacing;
+            for (int i = -8; i <= 8; i++)
+            for (int j = -8; j <= 8; j++)
+            for (int k = -8; k <= 8; k++)
+            {
+                var x = new Vector3(i, j, k) * Spacing + offset;
+                if (x.Length() >= radius + 0.5f * Spacing) fluid.Add(x);
+            }
+            double summedLeast = double.MaxValue, countedMost = 0;
+            for (int b = 0; b < all.Length; b++)
+            {
+                if (all[b].Owner != 0u || all[b].Position.Length() < radius - Spacing) continue;
+                double fluidSum = 0;
+                foreach (var x in fluid) fluidSum += SmoothingKernels.Value(KernelFamily.CubicSpline, Vector3.Distance(x, all[b].Position), Support);
+                summedLeast = Math.Min(summedLeast, (fluidSum + Sum(all, 0u, all[b].Position)) / delta0);
+                countedMost = Math.Max(countedMost, (fluidSum + own[b]) / delta0);
+            }
+            TestContext.Out.WriteLine($"outer shell with fluid spawned around it: shells summed at least {summedLeast:F3} delta0, counted at rest at most {countedMost:F3} delta0");
+            Assert.That(summedLeast, Is.GreaterThan(1.02));
+            Assert.That(countedMost, Is.LessThanOrEqualTo(1.0));
+        }
+
+        static FluidSceneDescription SphereScene(KernelFamily kind, float support, float radius) => new FluidSceneDescription
+        {
+            Settings = new FluidSettings { ParticleSpacing = Spacing, SmoothingRadius = support, SmoothingKernel = kind },
+            Container = new ContainerDescription { Size = new Vector3(1f, 1f, 1f) * (2f * radius + 10f * Spacing) },
+            Obstacles = new List<RigidSphere> { new RigidSphere(Vector3.Zero, radius, Vector3.Zero) },
+        };
+
+        /// <summary>The own number density of the sphere's particles at this depth below its surface (one value per shell).</summary>
+        static double OwnAtDepth(FluidSceneDescription scene, BoundaryParticle[] all, float[] own, float depth)
+        {
+            float radius = scene.Obstacles[0].Radius;
+            for (int b = 0; b < all.Length; b++)
+                if (all[b].Owner == 0u && Math.Abs(all[b].Position.Length() - (radius - depth)) < 0.01f * Spacing)
+                    return own[b];
+            throw new InvalidOperationException($"no shell at depth {depth}");
+        }
+
         static Vector3 LatticePoint(int i, int j, int k, float size) =>
             new Vector3(-0.5f * size + (i + 0.5f) * Spacing, -0.5f * size + (j + 0.5f) * Spacing, -0.5f * size + (k + 0.5f) * Spacing);
 
