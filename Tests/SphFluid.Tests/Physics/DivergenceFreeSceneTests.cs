@@ -54,7 +54,7 @@ namespace SphFluid.Tests.Physics
         /// no work is done on the fluid: its mechanical energy may not rise above the spawn's, and nothing may move faster than
         /// a fall through one spacing, sqrt(2 g s). Then the sphere moves (up to 0.26 m/s) for a second, and no fluid centre
         /// may enter it or reach the clamp. While a sphere's own shells were summed for its wall constraint
-        /// (BoundarySampling.OwnNumberDensities) they read up to 24 % above rest, and the constraint pushed the fluid off the
+        /// (BoundarySampling.OwnNumberDensities) they read up to 22 % above rest, and the constraint pushed the fluid off the
         /// still sphere: 8.2 m/s and 2.1 J of energy gained by 0.13 s, unhealthy at 0.37 s.</summary>
         [Test]
         public void SphereWake_StillSphereLeavesThePoolAtRest_AndTheDrivenOneRunsClean()

@@ -134,13 +134,12 @@ namespace SphFluid.Simulation
         /// (DivergenceFreeSolver.hlsl, "Walls as unknowns"), indexed like <see cref="Sample"/>'s particles. 0 for the
         /// container's walls: on the fluid's lattice their own sum is exact, and the GPU takes it with every other wall's
         /// (WallNumberDensity). A sphere's own shells cannot be summed instead: they are weighed up for the fluid outside
-        /// (<see cref="ConvexWeightFactor"/>), so at its own particles they read 6 to 24 % above rest with the fluid at rest
+        /// (<see cref="ConvexWeightFactor"/>), so at its outer particles they read 6 to 22 % above rest with the fluid spawned
         /// around them (a sphere of 3.5 spacings), and the walls' constraint pushed the fluid off the sphere: SphereWake under
         /// DFSPH reached 8 m/s at 0.13 s with its sphere still. A sphere's particle at depth d below its surface takes
         /// delta0 less the fluid that fills the rest of its support: the kernel's share outside the sphere, scaled by what a
-        /// fluid lattice beyond a flat wall at the same depth sums against that wall's continuum share (the lattice and the
-        /// continuum differ by 3.8 % of delta0 at half a spacing with the cubic spline at 2 spacings), so a large sphere's
-        /// particle reads as a flat wall's does.
+        /// fluid lattice beyond a flat wall at the same depth sums against that wall's continuum share (a lattice is not a
+        /// continuum at half a spacing from a wall), so a large sphere's particle reads as a flat wall's does.
         /// </summary>
         public static float[] OwnNumberDensities(FluidSceneDescription scene, BoundaryParticle[] particles)
         {
