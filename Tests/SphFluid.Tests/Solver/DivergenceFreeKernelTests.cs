@@ -44,8 +44,9 @@ namespace SphFluid.Tests.Solver
             var scene = SolverScenes.Scene(settings, size,
                 SolverScenes.Box("A", SolverScenes.Water(0.1f), new Vector3(0f, -0.08f + 0.5f * height, 0f), half),
                 SolverScenes.Box("B", multiphase ? SolverScenes.Oil(0.02f) : SolverScenes.Water(0.1f), new Vector3(0f, 0.08f - 0.5f * height, 0f), half));
-            // Off the lattice's symmetry, and clear of the squeezed particles: the spawn leaves half a spacing around it.
-            if (sphere) scene.Obstacles = new List<RigidSphere> { new RigidSphere(new Vector3(0.013f, -0.007f, 0.009f), 0.035f, Vector3.Zero) };
+            // Off the lattice's symmetry, clear of the squeezed particles (the spawn leaves half a spacing around it), and
+            // 5 mm above the floor, so that its particles and the floor's reach each other (SphBoundary.hlsl's CountsInWallSum).
+            if (sphere) scene.Obstacles = new List<RigidSphere> { new RigidSphere(new Vector3(0.013f, -0.04f, 0.009f), 0.035f, Vector3.Zero) };
             return scene;
         }
 

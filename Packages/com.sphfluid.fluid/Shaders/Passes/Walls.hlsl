@@ -17,7 +17,8 @@ void PlaceBoundary(uint3 id : SV_DispatchThreadID)
 // The walls' part of a wall particle's number density, sum_b' omega_b' W_bb' (weights at the lattice's rest number
 // density; BoundaryDensityFactor scales it to the fluid's): it changes only when the walls are placed again. A sphere's own
 // shells are not summed but taken at rest from the sampling (BoundarySampling.OwnNumberDensities: weighed up for the fluid
-// outside the sphere, they read up to 22 % above rest at its own outer particles); other spheres and the container are.
+// outside the sphere, they read up to 22 % above rest at its own outer particles), and only the container's lattice is
+// summed (CountsInWallSum, SphBoundary.hlsl).
 [numthreads(PARTICLE_THREADS, 1, 1)]
 void WallNumberDensity(uint3 id : SV_DispatchThreadID)
 {
@@ -33,7 +34,7 @@ void WallNumberDensity(uint3 id : SV_DispatchThreadID)
         for (uint c = walls.x; c < walls.y; c++)
         {
             BoundaryParticle other = _BoundaryParticles[c];
-            if (wall.owner != BOUNDARY_OWNER_CONTAINER && other.owner == wall.owner)
+            if (!CountsInWallSum(wall, other))
                 continue;
             float3 r = wall.position - other.position;
             sum += other.weight * Kernel(dot(r, r));

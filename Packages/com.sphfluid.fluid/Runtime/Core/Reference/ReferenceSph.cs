@@ -691,7 +691,7 @@ namespace SphFluid.Reference
                 // A sphere's own shells at rest from the sampling, as the GPU's WallNumberDensity takes them.
                 wall = _ownNumberDensities[b];
                 foreach (var other in walls)
-                    if (walls[b].Owner == BoundaryParticle.ContainerOwner || other.Owner != walls[b].Owner)
+                    if (CountsInWallSum(walls[b], other))
                         wall += other.Weight * Kernel((xb - new Double3(other.Position)).Length());
                 state.NumberDensity[b] = fluid + (fluid > 0 ? scale / fluid : 1.0) * wall;
                 state.Rest[b] = fluid > 0 ? rest / fluid : 0.0;
@@ -699,6 +699,15 @@ namespace SphFluid.Reference
                 state.Factor[b] = squares > 1e-20 ? share / squares : 0.0;
             }
             return state;
+        }
+
+        /// <summary>SphBoundary.hlsl's CountsInWallSum: the container's lattice, outside the wall particle's own sphere.</summary>
+        bool CountsInWallSum(BoundaryParticle wall, BoundaryParticle other)
+        {
+            if (other.Owner != BoundaryParticle.ContainerOwner) return false;
+            if (wall.Owner == BoundaryParticle.ContainerOwner) return true;
+            var sphere = Obstacles[(int)wall.Owner];
+            return (new Double3(other.Position) - new Double3(sphere.Center)).Length() >= sphere.Radius;
         }
 
         /// <summary>D delta_b / Dt of every wall particle, sum_f (v_f - v_b) . gradW_fb, for the fluid velocities <paramref name="v"/>.</summary>
