@@ -195,14 +195,40 @@ namespace SphFluid.Tests.Health
             TestContext.Progress.WriteLine($"driven at {waveSpeeds} wave speeds: fastest {run.FastestSeen:F1} m/s, bound {run.Check.SpeedBound:F1} m/s; {run.Problem?.Message ?? "healthy"}");
         }
 
+        /// <summary>DFSPH's sub-step has no speed of sound in it, so a driven sphere must bound it: the sphere at 5 wave speeds
+        /// (6.26 m/s) in fluid at rest may move at most the CFL number times the support in a sub-step (TimeStepController's
+        /// BoundarySpeed). Without it the sub-steps took the 5 ms MaxTimeStep, the sphere crossed 0.78 spacings in each,
+        /// and the run went unhealthy at 0.05 s (42.3 m/s).</summary>
+        [Test]
+        public void DfsphSubStepsFollowADrivenSphere()
+        {
+            var scene = Pool();
+            scene.Settings.PressureSolver = PressureSolver.Dfsph;
+            float speed = 5f * WaveSpeed;
+            scene.Obstacles.Add(new RigidSphere(new Vector3(-0.16f, -0.12f, 0f), 0.05f, new Vector3(speed, 0f, 0f)));
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            sim.Step(1f / 60f);
+            Assert.That(sim.LastStep.TimeStep * speed, Is.LessThanOrEqualTo(scene.Settings.CflNumber * scene.Settings.SmoothingRadius * 1.0001f));
+        }
+
+        /// <summary>The case above under DFSPH, a measurement: with the sphere in its CFL it stays healthy at 4.9 to 5.1 wave
+        /// speeds, not at 3, 5.2, 6 or 8 (README, Known limits).</summary>
+        [Explicit, TestCase(3f), TestCase(4.9f), TestCase(5f), TestCase(5.1f), TestCase(5.2f), TestCase(6f), TestCase(8f)]
+        public void ObstacleDrivenNearFiveTimesTheWaveSpeed_MarginDfsph(float waveSpeeds)
+        {
+            var run = SphereDrivenThroughThePool(waveSpeeds, PressureSolver.Dfsph);
+            TestContext.Progress.WriteLine($"DFSPH driven at {waveSpeeds} wave speeds: fastest {run.FastestSeen:F1} m/s, bound {run.Check.SpeedBound:F1} m/s; clamp hits {run.Last.ClampHits}; {run.Problem?.Message ?? "healthy"}");
+        }
+
         // Shallow-water wave speed over the 0.16 m pool, 1.25 m/s.
         static readonly float WaveSpeed = MathF.Sqrt(9.81f * 0.16f);
 
         /// <summary>A 5 cm sphere driven back and forth across the pool at <paramref name="waveSpeeds"/> times the wave
         /// speed, turning at the ends, for 0.3 s.</summary>
-        static HealthRun SphereDrivenThroughThePool(float waveSpeeds)
+        static HealthRun SphereDrivenThroughThePool(float waveSpeeds, PressureSolver solver = PressureSolver.Wcsph)
         {
             var scene = Pool();
+            scene.Settings.PressureSolver = solver;
             float speed = waveSpeeds * WaveSpeed;
             var start = new Vector3(-0.16f, -0.12f, 0f);
             scene.Obstacles.Add(new RigidSphere(start, 0.05f, Vector3.Zero));

@@ -19,6 +19,10 @@ namespace SphFluid.Simulation
         /// <summary>Angular velocity about the centre, rad/s, world axes.</summary>
         public Vector3 AngularVelocity { get; set; }
 
+        /// <summary>The fastest a point of its walls can move, m/s: |V| + |w| times half the diagonal (a bound: the
+        /// corners turn fastest).</summary>
+        public float FastestWallSpeed => Velocity.Length() + AngularVelocity.Length() * 0.5f * Size.Length();
+
         /// <summary>How the walls (and obstacles) hold the fluid tangentially: no slip by default.</summary>
         public WallFriction Friction { get; set; } = WallFriction.NoSlip;
 

@@ -304,6 +304,7 @@ namespace SphFluid.Simulation
                 ReadMotionIntoTimeStep();                           // vmax, amax of the last frame's end, waited for
             else
                 PollMotion();                                       // vmax, amax of an earlier frame
+            _timeStep.BoundarySpeed = FastestBoundarySpeed();
             StepReport report = _timeStep.PlanFrame(frameSeconds);  // n sub-steps of dt
             BeginFrame();                                           // plan, keywords, container upload
             for (int s = 0; s < report.Substeps; s++)
@@ -330,6 +331,16 @@ namespace SphFluid.Simulation
             if (LastStep.Substeps == 0) return; // nothing moved since Reset, which read the first force pass already
             ReadMotion(out float maxSpeed, out float maxAcceleration);
             _timeStep.ReportMotion(maxSpeed, maxAcceleration);
+        }
+
+        /// <summary>The fastest point of the container's walls or of any obstacle, m/s (no garbage: Unity steps every frame).</summary>
+        float FastestBoundarySpeed()
+        {
+            float fastest = _scene.Container.FastestWallSpeed;
+            var obstacles = _scene.Obstacles;
+            for (int i = 0; i < obstacles.Count; i++)
+                fastest = Math.Max(fastest, obstacles[i].Velocity.Length());
+            return ValidationRules.IsFinite(fastest) ? fastest : 0f;
         }
 
         /// <summary>Runs <paramref name="substeps"/> sub-steps of exactly <paramref name="timeStep"/> seconds,

@@ -124,7 +124,7 @@ namespace SphFluid.Simulation
         {
             if (container != null)
             {
-                float wall = container.Velocity.Length() + container.AngularVelocity.Length() * 0.5f * container.Size.Length();
+                float wall = container.FastestWallSpeed;
                 if (ValidationRules.IsFinite(wall)) WallSpeed = Math.Max(WallSpeed, wall);
             }
             if (obstacles != null)

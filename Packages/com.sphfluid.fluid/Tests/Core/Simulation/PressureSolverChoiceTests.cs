@@ -49,6 +49,34 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(report.ToString(), Does.EndWith(", DFSPH"));
         }
 
+        /// <summary>A wall or obstacle faster than the fluid sets DFSPH's CFL (TimeStepController.BoundarySpeed): fluid at
+        /// rest around a sphere started at 8 m/s would otherwise take MaxTimeStep, and the sphere would cross its
+        /// neighbours within a sub-step. WCSPH's step keeps the speed of sound and is not changed by it.</summary>
+        [Test]
+        public void DivergenceFreeStep_TakesTheFastestWallIntoTheCfl()
+        {
+            var c = new TimeStepController(Settings(PressureSolver.Dfsph), 1000f, 1e-6f);
+            c.ReportMotion(0.5f, 10f);
+            c.BoundarySpeed = 8f;
+            Assert.That(c.StableTimeStep(out string limit), Is.EqualTo(0.4f * 0.04f / 8f).Within(1e-7f));
+            Assert.That(limit, Is.EqualTo("cfl"));
+            var wcsph = new TimeStepController(Settings(PressureSolver.Wcsph), 1000f, 1e-6f);
+            float before = wcsph.StableTimeStep();
+            wcsph.BoundarySpeed = 8f;
+            Assert.That(wcsph.StableTimeStep(), Is.EqualTo(before));
+        }
+
+        [Test]
+        public void AContainersFastestWallIsItsCornerTurning()
+        {
+            var container = new ContainerDescription
+            {
+                Size = new System.Numerics.Vector3(0.6f, 0.8f, 0f), Velocity = new System.Numerics.Vector3(1f, 0f, 0f),
+                AngularVelocity = new System.Numerics.Vector3(0f, 0f, 2f),
+            };
+            Assert.That(container.FastestWallSpeed, Is.EqualTo(1f + 2f * 0.5f).Within(1e-6f));
+        }
+
         [Test]
         public void ThePlanDispatchesOnlyTheChosenSolversPasses()
         {
