@@ -16,9 +16,10 @@ namespace SphFluid.Simulation
     /// dt = min(cfl h / max(vmax, u_walls), 0.125 h^2 / nu_max, dt_capillary, MaxTimeStep) (the velocity CFL of Bender &amp;
     /// Koschier 2017, sec. 6; the viscous and capillary limits stay because the non-pressure forces are still explicit, the
     /// acceleration limit goes because the pressure acceleration is no longer explicit). u_walls is the fastest wall or
-    /// obstacle (<see cref="BoundarySpeed"/>): a sphere started at 3.8 m/s through fluid at rest moved 0.47 spacings a
-    /// 5 ms sub-step into it, and the solves threw the fluid out at 49 m/s (HardCaseTests' driven sphere under DFSPH).
-    /// WCSPH's CFL adds the speed of sound, which dominates any subsonic wall's speed. A frame of length T is covered by n = ceil(T / dt) sub-steps of T / n, capped at MaxSubsteps
+    /// obstacle (<see cref="BoundarySpeed"/>): a sphere started at 6.26 m/s through fluid at rest crossed 0.78 spacings a
+    /// 5 ms sub-step, and the pool went unhealthy at 0.05 s (HardCaseTests' driven sphere under DFSPH). WCSPH's CFL adds
+    /// the speed of sound, which dominates any subsonic wall's speed. A frame of length T is covered by n = ceil(T / dt)
+    /// sub-steps of T / n, capped at MaxSubsteps
     /// (then each sub-step is dt and the simulation runs slower than real time).
     /// </summary>
     public sealed class TimeStepController
