@@ -87,7 +87,8 @@ namespace SphFluid.Tests.Physics
                     continue;
                 }
                 movingSpeed = Math.Max(movingSpeed, report.MaxSpeed);
-                var centre = obstacles[0].Center;
+                // Where the sphere stands at the frame's end: the solver carries it on by its velocity through the frame.
+                var centre = obstacles[0].Center + obstacles[0].Velocity * Frame;
                 closest = Math.Min(closest, particles.Min(p => (double)System.Numerics.Vector3.Distance(p.Position, centre)) - obstacles[0].Radius);
             }
             TestContext.Progress.WriteLine($"DFSPH SphereWake, N={spawned}: still sphere, 1 s: energy {spawnEnergy:F4} J at spawn, largest rise {energyRise:F4} J, " +

@@ -148,37 +148,33 @@ namespace SphFluid.Simulation
             double spacing = s.ParticleSpacing, support = s.SmoothingRadius;
             double rest = SmoothingKernels.LatticeNumberDensity(kind, spacing, support);
             var own = new float[particles.Length];
-            var byLayer = new Dictionary<(uint, long), float>(); // a layer's particles lie at one radius, to rounding
+            // A shell's particles lie at one radius (to rounding), and spheres of one radius share their shells' values.
+            var byShell = new Dictionary<(float, long), float>();
             for (int i = 0; i < particles.Length; i++)
             {
                 uint owner = particles[i].Owner;
                 if (owner == BoundaryParticle.ContainerOwner) continue;
-                double distance = particles[i].Position.Length(), radius = scene.Obstacles[(int)owner].Radius;
-                var layer = (owner, (long)Math.Round(64.0 * distance / spacing));
-                if (!byLayer.TryGetValue(layer, out float value))
+                float sphereRadius = scene.Obstacles[(int)owner].Radius;
+                double distance = particles[i].Position.Length(), radius = sphereRadius;
+                var shell = (sphereRadius, (long)Math.Round(64.0 * distance / spacing));
+                if (!byShell.TryGetValue(shell, out float value))
                 {
                     double depth = radius - distance, flat = PlaneShare(kind, depth, support);
                     double fill = flat > 1e-12
                         ? LatticeFill(kind, depth, spacing, support) * (1.0 - BallShare(kind, distance, radius, support)) / flat
                         : 0.0;
                     value = (float)(rest - fill);
-                    byLayer.Add(layer, value);
+                    byShell.Add(shell, value);
                 }
                 own[i] = value;
             }
             return own;
         }
 
-        /// <summary>The kernel's share beyond a plane at distance d: int_d^H PlaneIntegral(z) dz.</summary>
-        static double PlaneShare(KernelFamily kind, double distance, double support)
-        {
-            const int steps = 400;
-            if (distance >= support) return 0.0;
-            double sum = 0, h = (support - distance) / steps;
-            for (int i = 0; i < steps; i++)
-                sum += PlaneIntegral(kind, distance + (i + 0.5) * h, support) * h;
-            return sum;
-        }
+        /// <summary>The kernel's share beyond a plane at distance d: over the spheres of radius rho around the point, the
+        /// area beyond the plane, 2 pi rho (rho - d), times W(rho).</summary>
+        static double PlaneShare(KernelFamily kind, double distance, double support) =>
+            RadialIntegral(kind, support, rho => rho > distance ? 2.0 * Math.PI * rho * (rho - distance) : 0.0);
 
         /// <summary>The number density of a fluid lattice whose rows lie (m + 1/2) s beyond a flat wall face at depth d below
         /// the point: rows at d + (m + 1/2) s, m = 0, 1, ...</summary>
@@ -193,16 +189,30 @@ namespace SphFluid.Simulation
             return sum;
         }
 
-        /// <summary>The kernel around a point at distance d from a ball's centre integrated over the ball of radius R:
-        /// the shells of radius r within the support, int ShellIntegral(d, r) dr.</summary>
-        static double BallShare(KernelFamily kind, double distance, double radius, double support)
+        /// <summary>The kernel around a point at distance d inside a ball of radius R integrated over the ball: over the
+        /// spheres of radius rho around the point, the area inside the ball times W(rho). A sphere within R - d lies wholly
+        /// inside; one that crosses the ball's surface keeps the cap cos(phi) &lt; (R^2 - d^2 - rho^2) / (2 d rho), phi from
+        /// the direction away from the centre.</summary>
+        static double BallShare(KernelFamily kind, double distance, double radius, double support) =>
+            RadialIntegral(kind, support, rho =>
+            {
+                if (rho <= radius - distance) return 4.0 * Math.PI * rho * rho;
+                if (rho >= radius + distance || distance <= 0.0) return 0.0;
+                double c = (radius * radius - distance * distance - rho * rho) / (2.0 * distance * rho);
+                return 2.0 * Math.PI * rho * rho * (1.0 + Math.Max(-1.0, Math.Min(1.0, c)));
+            });
+
+        /// <summary>int_0^H W(rho) area(rho) d rho: the kernel over the part of its support whose sphere of radius rho has
+        /// that area.</summary>
+        static double RadialIntegral(KernelFamily kind, double support, Func<double, double> area)
         {
-            const int steps = 400;
-            double from = Math.Max(0.0, distance - support), to = Math.Min(radius, distance + support);
-            if (to <= from) return 0.0;
-            double sum = 0, h = (to - from) / steps;
+            const int steps = 4000;
+            double sum = 0, h = support / steps;
             for (int i = 0; i < steps; i++)
-                sum += ShellIntegral(kind, distance, from + (i + 0.5) * h, support) * h;
+            {
+                double rho = (i + 0.5) * h;
+                sum += SmoothingKernels.Value(kind, rho, support) * area(rho) * h;
+            }
             return sum;
         }
 
