@@ -42,11 +42,11 @@ namespace SphFluid.Tests.Physics
             var start = particles.ToDictionary(p => p.Id, p => p.Position);
             for (int frame = 1; frame <= 60; frame++)
             {
-                double t = frame / 60.0;
-                sim.UpdateObstacles(new List<RigidSphere> { new RigidSphere(CentreAt(t), Radius, new Vector3(Speed, 0f, 0f)) });
+                // The sphere where the frame starts; the solver carries it on by its velocity through the frame.
+                sim.UpdateObstacles(new List<RigidSphere> { new RigidSphere(CentreAt(sim.SimulatedTime), Radius, new Vector3(Speed, 0f, 0f)) });
                 sim.Step(1f / 60f);
                 sim.Particles.GetData(particles);
-                // The sphere's centre at the end of the frame (the solver moved it by its velocity over the frame).
+                // The sphere's centre at the end of the frame.
                 var centre = CentreAt(sim.SimulatedTime);
                 double closest = particles.Min(p => (double)Vector3.Distance(p.Position, centre));
                 _closest = Math.Min(_closest, closest);
