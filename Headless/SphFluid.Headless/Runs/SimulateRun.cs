@@ -151,20 +151,22 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         Observe(force: true);
         while (failure == null && (options.Frames > 0 ? frame < frames : sim.SimulatedTime < duration - 1e-6))
         {
-            double target = sim.SimulatedTime + options.FrameSeconds;
+            float frameSeconds = Math.Max(1e-6f,
+                (float)(options.Frames > 0 ? options.FrameSeconds : Math.Min(options.FrameSeconds, duration - sim.SimulatedTime)));
+            // Where the laws put the walls at the frame's end, as a Unity Transform reads them (UpdateContainer).
+            double start = sim.SimulatedTime, end = start + frameSeconds;
             if (scene.Motion.MovesContainer)
             {
-                container = scene.Motion.ContainerAt(restContainer, target);
+                container = scene.Motion.ContainerOver(restContainer, start, end);
                 sim.UpdateContainer(container);
             }
             if (scene.Motion.MovesObstacles)
             {
-                obstacles = scene.Motion.ObstaclesAt(restObstacles, target);
+                obstacles = scene.Motion.ObstaclesOver(restObstacles, start, end);
                 sim.UpdateObstacles(obstacles);
             }
             health.ObserveDrivers(container, obstacles);
-            float frameSeconds = (float)(options.Frames > 0 ? options.FrameSeconds : Math.Min(options.FrameSeconds, duration - sim.SimulatedTime));
-            step = sim.Step(Math.Max(frameSeconds, 1e-6f));
+            step = sim.Step(frameSeconds);
             frame++;
             substeps += step.Substeps;
             if (step.Capped) cappedFrames++;

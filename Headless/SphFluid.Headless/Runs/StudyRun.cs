@@ -204,14 +204,15 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         int frame = 0;
         while (row.Failure == null && sim.SimulatedTime < options.Seconds - 1e-6)
         {
-            double target = sim.SimulatedTime + FrameSeconds;
+            float frameSeconds = (float)Math.Min(FrameSeconds, options.Seconds - sim.SimulatedTime + 1e-7);
+            double start = sim.SimulatedTime, end = start + frameSeconds;
             if (scene.Motion.MovesContainer)
             {
-                container = scene.Motion.ContainerAt(restContainer, target);
+                container = scene.Motion.ContainerOver(restContainer, start, end);
                 sim.UpdateContainer(container);
             }
-            if (scene.Motion.MovesObstacles) sim.UpdateObstacles(scene.Motion.ObstaclesAt(restObstacles, target));
-            var step = sim.Step((float)Math.Min(FrameSeconds, options.Seconds - sim.SimulatedTime + 1e-7));
+            if (scene.Motion.MovesObstacles) sim.UpdateObstacles(scene.Motion.ObstaclesOver(restObstacles, start, end));
+            var step = sim.Step(frameSeconds);
             row.Substeps += step.Substeps;
             if (device is VulkanComputeDevice vulkan)
             {

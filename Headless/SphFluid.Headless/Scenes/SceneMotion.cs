@@ -27,13 +27,17 @@ public sealed class SceneMotion
     public bool MovesContainer => ContainerSpin != null;
     public bool MovesObstacles => SphereDrives.Count > 0;
 
-    public ContainerDescription ContainerAt(ContainerDescription rest, double t) => ContainerSpin?.At(rest, SpinPivot, t) ?? rest;
+    /// <summary>The container at the end of a frame from <paramref name="from"/> to <paramref name="to"/>, with the
+    /// velocities that brought it there (what <see cref="FluidSimulation.UpdateContainer"/> takes).</summary>
+    public ContainerDescription ContainerOver(ContainerDescription rest, double from, double to) =>
+        ContainerSpin?.Over(rest, SpinPivot, from, to) ?? rest;
 
-    public List<RigidSphere> ObstaclesAt(IReadOnlyList<RigidSphere> rest, double t)
+    /// <summary>The obstacles at the end of a frame, as <see cref="ContainerOver"/>.</summary>
+    public List<RigidSphere> ObstaclesOver(IReadOnlyList<RigidSphere> rest, double from, double to)
     {
         var list = new List<RigidSphere>(rest.Count);
         for (int i = 0; i < rest.Count; i++) list.Add(rest[i].Clone());
-        foreach (var driven in SphereDrives) list[driven.ObstacleIndex] = driven.Drive.At(rest[driven.ObstacleIndex], t);
+        foreach (var driven in SphereDrives) list[driven.ObstacleIndex] = driven.Drive.Over(rest[driven.ObstacleIndex], from, to);
         return list;
     }
 }

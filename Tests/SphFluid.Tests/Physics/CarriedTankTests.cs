@@ -55,7 +55,7 @@ namespace SphFluid.Tests.Physics
             double spawned = TankMeasures.ColumnHeight(particles, floor);
             while (sim.SimulatedTime < Seconds - 1e-6)
             {
-                container.Position = start + velocity * (float)sim.SimulatedTime;
+                container.Position = start + velocity * (float)(sim.SimulatedTime + 1.0 / 60.0); // where the frame ends
                 container.Velocity = velocity;
                 sim.UpdateContainer(container);
                 sim.Step(1f / 60f);

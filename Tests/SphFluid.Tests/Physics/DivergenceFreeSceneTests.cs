@@ -75,7 +75,7 @@ namespace SphFluid.Tests.Physics
             for (int frame = 1; frame <= 120; frame++)
             {
                 double t = frame / 60.0;
-                var obstacles = loaded.Motion.ObstaclesAt(rest, t);
+                var obstacles = loaded.Motion.ObstaclesOver(rest, t - Frame, t);
                 sim.UpdateObstacles(obstacles);
                 sim.Step(Frame);
                 report = sim.ReadDiagnostics();
@@ -87,8 +87,7 @@ namespace SphFluid.Tests.Physics
                     continue;
                 }
                 movingSpeed = Math.Max(movingSpeed, report.MaxSpeed);
-                // Where the sphere stands at the frame's end: the solver carries it on by its velocity through the frame.
-                var centre = obstacles[0].Center + obstacles[0].Velocity * Frame;
+                var centre = obstacles[0].Center; // where the sphere stands at the frame's end
                 closest = Math.Min(closest, particles.Min(p => (double)System.Numerics.Vector3.Distance(p.Position, centre)) - obstacles[0].Radius);
             }
             TestContext.Progress.WriteLine($"DFSPH SphereWake, N={spawned}: still sphere, 1 s: energy {spawnEnergy:F4} J at spawn, largest rise {energyRise:F4} J, " +

@@ -42,12 +42,12 @@ namespace SphFluid.Tests.Physics
             var start = particles.ToDictionary(p => p.Id, p => p.Position);
             for (int frame = 1; frame <= 60; frame++)
             {
-                // The sphere where the frame starts; the solver carries it on by its velocity through the frame.
-                sim.UpdateObstacles(new List<RigidSphere> { new RigidSphere(CentreAt(sim.SimulatedTime), Radius, new Vector3(Speed, 0f, 0f)) });
+                // Where the sphere stands at the frame's end, as a Unity Transform reads after it moved; the solver sweeps
+                // it there from where the last frame left it.
+                var centre = CentreAt(sim.SimulatedTime + 1.0 / 60.0);
+                sim.UpdateObstacles(new List<RigidSphere> { new RigidSphere(centre, Radius, new Vector3(Speed, 0f, 0f)) });
                 sim.Step(1f / 60f);
                 sim.Particles.GetData(particles);
-                // The sphere's centre at the end of the frame.
-                var centre = CentreAt(sim.SimulatedTime);
                 double closest = particles.Min(p => (double)Vector3.Distance(p.Position, centre));
                 _closest = Math.Min(_closest, closest);
                 if (closest < Radius) _insideFrames++;

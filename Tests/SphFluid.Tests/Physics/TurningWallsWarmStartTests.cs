@@ -23,8 +23,10 @@ namespace SphFluid.Tests.Physics
     /// the error measured here, the mean |D delta / Dt| including the expansion the solve leaves alone, is set by the
     /// flow. The wall particles' weights changed by 3e-5 of themselves (the cubic spline's lattice sum is 1 - 2.75e-5 of
     /// 1 / s^3; BoundarySampling) moved it from 1.13 (weights 0.99997) to 1.36 (1.0000025) and 1.51 (exactly 1); over 1 to 8 s of
-    /// turning it is a steady 13.4 %/s against 8.8 %/s at rest (1.53 times). So the ratio stays printed, and its test is
-    /// ignored with that figure until a measure that isolates the warm start replaces it.
+    /// turning it was a steady 13.4 %/s against 8.8 %/s at rest (1.53 times). Those walls stood a frame's turn ahead of
+    /// the spin's law (carried a frame past the pushed placement); swept up to it instead, the ratio is 1.27 (11.16 %/s
+    /// turning). So the ratio stays printed, and its test is ignored with that figure until a measure that isolates the
+    /// warm start replaces it.
     /// </para>
     /// </summary>
     public sealed class TurningWallsWarmStartTests
@@ -51,7 +53,7 @@ namespace SphFluid.Tests.Physics
             for (int frame = 1; frame <= Frames; frame++)
             {
                 double t = frame / 60.0;
-                sim.UpdateContainer(loaded.Motion.ContainerAt(rest, t));
+                sim.UpdateContainer(loaded.Motion.ContainerOver(rest, t - 1.0 / 60.0, t));
                 sim.Step(1f / 60f);
                 var report = sim.ReadDiagnostics();
                 if (t >= 0.3 && t <= 1.0) { restSum += report.DivergenceError; restFrames++; }
@@ -66,7 +68,7 @@ namespace SphFluid.Tests.Physics
         }
 
         [Test]
-        [Ignore("measured 1.51 times (13.30 %/s turning, 8.78 %/s at rest) against the bar of 1.25; the ratio moves by 0.4 with a 3e-5 change of the wall weights (see the fixture)")]
+        [Ignore("measured 1.27 times (11.16 %/s turning, 8.77 %/s at rest) against the bar of 1.25; the ratio moves by 0.4 with a 3e-5 change of the wall weights (see the fixture)")]
         public void TurningTheDivergenceSolveEndsWithinAQuarterOfItsErrorAtRest() =>
             Assert.That(_turning, Is.LessThanOrEqualTo(1.25 * _atRest));
 

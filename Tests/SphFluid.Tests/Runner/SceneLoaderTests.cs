@@ -57,8 +57,8 @@ namespace SphFluid.Tests.Runner
         {
             var rotating = SceneLoader.Load(RunnerPaths.Scene("RotatingContainer"), RunnerPaths.Project);
             Assert.That(rotating.Motion.MovesContainer, Is.True);
-            var atRest = rotating.Motion.ContainerAt(rotating.Description.Container, 0.5);
-            var turned = rotating.Motion.ContainerAt(rotating.Description.Container, 3.0);
+            var atRest = rotating.Motion.ContainerOver(rotating.Description.Container, 0.4, 0.5);
+            var turned = rotating.Motion.ContainerOver(rotating.Description.Container, 2.9, 3.0);
             Assert.That(atRest.Rotation, Is.EqualTo(rotating.Description.Container.Rotation), "still during the start delay");
             Assert.That(System.Math.Abs(turned.Rotation.Z), Is.GreaterThan(0.3f), "90 degrees about z after 2 s of 45 deg/s");
             Assert.That(turned.AngularVelocity.Z, Is.EqualTo(45f * System.MathF.PI / 180f).Within(1e-5f));
@@ -66,7 +66,7 @@ namespace SphFluid.Tests.Runner
             var wake = SceneLoader.Load(RunnerPaths.Scene("SphereWake"), RunnerPaths.Project);
             Assert.That(wake.Description.Obstacles.Count, Is.EqualTo(1));
             Assert.That(wake.Description.Obstacles[0].Radius, Is.EqualTo(0.045f).Within(1e-6f));
-            var moved = wake.Motion.ObstaclesAt(wake.Description.Obstacles, 4.0)[0];
+            var moved = wake.Motion.ObstaclesOver(wake.Description.Obstacles, 3.9, 4.0)[0];
             Assert.That(moved.Center.X, Is.EqualTo(-0.32f + 0.5f).Within(1e-4f), "half a period after the delay: the far end");
         }
 

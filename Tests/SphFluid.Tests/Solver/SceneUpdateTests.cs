@@ -108,5 +108,67 @@ namespace SphFluid.Tests.Solver
                 Assert.That(sim.Scene.Obstacles, Is.Empty, "fewer spheres is a change");
             }
         }
+
+        /// <summary>
+        /// A moving wall is pushed as a Unity Transform reads after it moved: where it stands at the frame's end, with the
+        /// velocity that brought it there. Its walls sweep up to that placement through the frame's sub-steps and end the
+        /// frame on it. They were carried a frame past it instead, so the fluid met a sphere a frame's travel ahead of the
+        /// law driving it (4.3 mm at SphereWake's 0.26 m/s).
+        /// </summary>
+        [Test]
+        public void AMovingSphereEndsTheFrameWhereItWasPushed()
+        {
+            using (var sim = new FluidSimulation(GpuTestDevice.Shared, TankWithBall()))
+            {
+                Vector3 atRest = SphereParticlesMean(sim);
+                const float frame = 1f / 60f, speed = 0.6f;
+                for (int i = 1; i <= 2; i++)
+                {
+                    var moved = SameBall();
+                    moved[0].Center = BallCentre + new Vector3(speed * frame * i, 0f, 0f);
+                    moved[0].Velocity = new Vector3(speed, 0f, 0f);
+                    sim.UpdateObstacles(moved);
+                    sim.Step(frame);
+                    Vector3 travelled = SphereParticlesMean(sim) - atRest;
+                    Assert.That(travelled.X, Is.EqualTo(speed * frame * i).Within(1e-6f), $"frame {i}");
+                    Assert.That(travelled.Y, Is.EqualTo(0f).Within(1e-6f));
+                }
+            }
+        }
+
+        /// <summary>The container is pushed the same way: a tank moved sideways ends each frame at its pushed position.</summary>
+        [Test]
+        public void AMovingContainerEndsTheFrameWhereItWasPushed()
+        {
+            using (var sim = new FluidSimulation(GpuTestDevice.Shared, TankWithBall()))
+            {
+                Vector3 atRest = WallParticlesMean(sim, BoundaryParticle.ContainerOwner);
+                const float frame = 1f / 60f, speed = 0.6f;
+                var container = sim.Scene.Container.Clone();
+                for (int i = 1; i <= 2; i++)
+                {
+                    container.Position = new Vector3(speed * frame * i, 0f, 0f);
+                    container.Velocity = new Vector3(speed, 0f, 0f);
+                    sim.UpdateContainer(container);
+                    sim.Step(frame);
+                    Vector3 travelled = WallParticlesMean(sim, BoundaryParticle.ContainerOwner) - atRest;
+                    Assert.That(travelled.X, Is.EqualTo(speed * frame * i).Within(1e-6f), $"frame {i}");
+                }
+            }
+        }
+
+        static Vector3 SphereParticlesMean(FluidSimulation sim) => WallParticlesMean(sim, 0u);
+
+        static Vector3 WallParticlesMean(FluidSimulation sim, uint owner)
+        {
+            var walls = new BoundaryParticle[sim.BoundaryCount];
+            sim.BoundaryParticles.GetData(walls);
+            var sum = Vector3.Zero;
+            int count = 0;
+            foreach (var wall in walls)
+                if (wall.Owner == owner) { sum += wall.Position; count++; }
+            Assert.That(count, Is.GreaterThan(0));
+            return sum / count;
+        }
     }
 }

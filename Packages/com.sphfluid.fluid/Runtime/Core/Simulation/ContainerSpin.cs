@@ -37,16 +37,33 @@ namespace SphFluid.Simulation
         public Vector3 AngularVelocity(double t) =>
             t >= StartDelay && Axis.Length() >= 1e-6f ? Vector3.Normalize(Axis) * RadiansPerSecond : Vector3.Zero;
 
-        /// <summary>A container at rest turned about <paramref name="pivot"/> to time <paramref name="t"/>, with the
-        /// wall velocities of the spin.</summary>
-        public ContainerDescription At(ContainerDescription rest, Vector3 pivot, double t)
+        /// <summary>A container at rest turned about <paramref name="pivot"/> to time <paramref name="to"/>, with the
+        /// velocities that brought it there from time <paramref name="from"/> (a frame): what a Unity Transform turned by
+        /// this law reads, and what FluidSimulation.UpdateContainer takes. Mean velocities over the frame (the turn's
+        /// angle and the centre's chord over its time), so that the walls start the frame exactly where the frame before
+        /// left them.</summary>
+        public ContainerDescription Over(ContainerDescription rest, Vector3 pivot, double from, double to)
+        {
+            var result = Placed(rest, pivot, to);
+            if (!(to > from))
+            {
+                result.AngularVelocity = AngularVelocity(to);
+                result.Velocity = Vector3.Cross(result.AngularVelocity, result.Position - pivot);
+                return result;
+            }
+            float seconds = (float)(to - from);
+            double turned = Math.Max(0.0, to - StartDelay) - Math.Max(0.0, from - StartDelay);
+            result.AngularVelocity = Axis.Length() < 1e-6f ? Vector3.Zero : Vector3.Normalize(Axis) * (float)(turned * RadiansPerSecond / seconds);
+            result.Velocity = (result.Position - Placed(rest, pivot, from).Position) / seconds;
+            return result;
+        }
+
+        ContainerDescription Placed(ContainerDescription rest, Vector3 pivot, double t)
         {
             var result = rest.Clone();
             var turn = Turn(t);
             result.Position = pivot + Vector3.Transform(rest.Position - pivot, turn);
             result.Rotation = Quaternion.Normalize(turn * rest.Rotation);
-            result.AngularVelocity = AngularVelocity(t);
-            result.Velocity = Vector3.Cross(result.AngularVelocity, result.Position - pivot);
             return result;
         }
 

@@ -8,6 +8,9 @@ namespace SphFluid.Simulation
     public sealed partial class FluidSimulation
     {
         /// <summary>Moves (or resizes) the container; its transform is uploaded before the next step.
+        /// A moving container is pushed as a Unity Transform reads after it moved: where it stands at the end of the
+        /// next <see cref="Step"/>, with the velocity and angular velocity that brought it there. Its walls start that
+        /// step the step's time behind it, where the step before left them, and sweep up to it through the sub-steps.
         /// Callers push the container every frame, so an unchanged one returns before anything is copied or
         /// validated (it was validated when it was set).</summary>
         public void UpdateContainer(ContainerDescription container)
@@ -48,6 +51,8 @@ namespace SphFluid.Simulation
         }
 
         /// <summary>Replaces the sphere obstacles (any count up to <see cref="FluidSceneDescription.MaxObstacles"/>).
+        /// A moving sphere is pushed as the container is (<see cref="UpdateContainer"/>): its centre at the end of the
+        /// next step, and the velocity that brought it there.
         /// Callers push the obstacles every frame, so the same spheres as now return before anything is copied,
         /// validated or uploaded.</summary>
         public void UpdateObstacles(IReadOnlyList<RigidSphere> obstacles)
@@ -138,8 +143,8 @@ namespace SphFluid.Simulation
             _obstaclesMoved = true;
         }
 
-        /// <summary>The spheres carried on by their velocities for <paramref name="elapsed"/> seconds past this frame's
-        /// centres, recorded in order with the sub-steps' dispatches (<see cref="AdvanceWalls"/>).</summary>
+        /// <summary>The spheres moved by their velocities for <paramref name="elapsed"/> seconds from this frame's centres
+        /// (negative: before they got there), recorded in order with the sub-steps' dispatches (<see cref="AdvanceWalls"/>).</summary>
         void WriteObstacles(float elapsed)
         {
             int count = _scene.Obstacles == null ? 0 : _scene.Obstacles.Count;

@@ -75,9 +75,10 @@ namespace SphFluid.Simulation
         // the lists (NeighbourCapacity.InUse at the present lanes), 0 while they walk the grid.
         int _listCapacity;
         bool _listsAllowed = true;
-        // Walls whose placement this frame came with a velocity (a carried container, a driven sphere) follow it through the
-        // frame's sub-steps, placed again before every sort: the seconds they have moved since the frame's placement, and the
-        // container transform they are at, which the grid follows at the next sort (_gridBehind until it has).
+        // Walls whose placement this frame came with a velocity (a carried container, a driven sphere) sweep through the
+        // frame's sub-steps to that placement, placed again before every sort: their time relative to the placement
+        // (negative until the frame's last sub-step brings it to 0), and the container transform they are at, which the
+        // grid follows at the next sort (_gridBehind until it has).
         bool _wallsFollowVelocity, _obstaclesMoved, _gridBehind;
         float _wallTime;
         Vector3 _containerPosition;
@@ -306,7 +307,7 @@ namespace SphFluid.Simulation
                 PollMotion();                                       // vmax, amax of an earlier frame
             _timeStep.BoundarySpeed = FastestBoundarySpeed();
             StepReport report = _timeStep.PlanFrame(frameSeconds);  // n sub-steps of dt
-            BeginFrame();                                           // plan, keywords, container upload
+            BeginFrame(report.SimulatedSeconds);                    // plan, keywords, walls where the frame starts
             for (int s = 0; s < report.Substeps; s++)
                 Substep(report.TimeStep);
             if (report.Substeps > 0 && !ReproducibleStepPlanning)
@@ -353,7 +354,7 @@ namespace SphFluid.Simulation
                 throw new ArgumentOutOfRangeException(nameof(timeStep), timeStep, "FluidSimulation: timeStep must be a finite number > 0 s");
             if (_divergenceFree && ReproducibleStepPlanning)
                 ReadMotionIntoTimeStep(); // the solves' iterations for their budget (SolveRounds), as Step reads them
-            BeginFrame();
+            BeginFrame(substeps * timeStep);
             for (int s = 0; s < substeps; s++)
                 Substep(timeStep);
             _device.Submit();
@@ -362,7 +363,9 @@ namespace SphFluid.Simulation
                 _scene.Settings.PressureSolver);
         }
 
-        void BeginFrame()
+        /// <summary>The plan and keywords for this frame, and the walls where it starts: <paramref name="sweepSeconds"/>
+        /// (the time the frame simulates) before their placement when they came with a velocity.</summary>
+        void BeginFrame(float sweepSeconds)
         {
             // The plan depends on the container's motion, the obstacle count and whether the passes read neighbour lists
             // (the lanes, which tests set) alone (phases and settings are fixed for the simulation's lifetime): planned
@@ -379,17 +382,19 @@ namespace SphFluid.Simulation
             bool obstaclesCarried = false;
             if (_obstaclesMoved)
                 foreach (var sphere in _scene.Obstacles) obstaclesCarried |= sphere.Velocity != Vector3.Zero;
-            // Walls that followed their velocity through the last frame go back to this frame's placement first.
-            bool rewind = _wallTime > 0f;
-            _wallTime = 0f;
-            if (Plan.UploadContainerTransform || rewind)
+            // A placement pushed with a velocity is where the walls stand at the frame's end, reached at that velocity: they
+            // start the frame that far behind it, where the last frame left them (UpdateContainer), and sweep up to it.
+            bool carried = containerCarried || obstaclesCarried;
+            bool placeAgain = carried || _wallsFollowVelocity; // last frame's walls stand where its sweep ended
+            _wallTime = carried ? -sweepSeconds : 0f;
+            if (Plan.UploadContainerTransform || placeAgain)
             {
                 _device.BeginSample(PassNames.UploadContainer);
-                WriteContainer(0f);
+                WriteContainer(_wallTime);
                 _device.EndSample(PassNames.UploadContainer);
             }
-            if (rewind) WriteObstacles(0f);
-            _wallsFollowVelocity = containerCarried || obstaclesCarried;
+            if (placeAgain) WriteObstacles(_wallTime);
+            _wallsFollowVelocity = carried;
             _obstaclesMoved = false;
             PushConstants();
             if (_boundaryMoved) PlaceWalls();
@@ -413,7 +418,7 @@ namespace SphFluid.Simulation
         }
 
         /// <summary>
-        /// Walls carried with a velocity move on by <paramref name="dt"/>, to where they are at the end of the sub-step
+        /// Walls that came with a velocity move on by <paramref name="dt"/>, to where they are at the end of the sub-step
         /// whose drift just ran: the container's transform and the spheres' centres advance as rigid motions, and
         /// <see cref="Sort"/> places the walls there. Placed once per frame instead, a carried tank's fluid drifted a
         /// frame's travel into its leading wall between placements (CarriedTankTests).
@@ -684,7 +689,7 @@ namespace SphFluid.Simulation
         public void ComputeForces()
         {
             ThrowIfDisposed();
-            BeginFrame();
+            BeginFrame(0f);
             if (_deltaSph)
             {
                 // delta-SPH outside a step: dt = 0 keeps the carried delta; DensityRate runs on the sorted state for its
@@ -807,14 +812,15 @@ namespace SphFluid.Simulation
             _constantsChanged = true;
         }
 
-        /// <summary>The container's transform and motion into the constants: as placed for this frame, carried on by its
-        /// velocity and angular velocity (about its centre) for <paramref name="elapsed"/> seconds.</summary>
+        /// <summary>The container's transform and motion into the constants: as placed for this frame, moved by its
+        /// velocity and angular velocity (about its centre) for <paramref name="elapsed"/> seconds (negative: before
+        /// it got there).</summary>
         void WriteContainer(float elapsed)
         {
             var container = _scene.Container;
             var rotation = Quaternion.Normalize(container.Rotation);
             float spin = container.AngularVelocity.Length() * elapsed;
-            if (spin > 0f)
+            if (spin != 0f)
                 rotation = Quaternion.Normalize(Quaternion.Concatenate(rotation,
                     Quaternion.CreateFromAxisAngle(Vector3.Normalize(container.AngularVelocity), spin)));
             var position = container.Position + container.Velocity * elapsed;

@@ -40,12 +40,15 @@ namespace SphFluid.Simulation
             return (Vector3)Travel * (float)(0.5 * w * Math.Sin(w * phaseTime));
         }
 
-        /// <summary>A sphere at rest moved to time <paramref name="t"/>, with its velocity.</summary>
-        public RigidSphere At(RigidSphere rest, double t)
+        /// <summary>A sphere at rest moved to time <paramref name="to"/>, with the velocity that brought it there from
+        /// time <paramref name="from"/> (a frame): what a Unity Transform moved by this law reads, and what
+        /// FluidSimulation.UpdateObstacles takes. The mean velocity over the frame, not the law's at its end, so that the
+        /// sphere starts the frame exactly where the frame before left it.</summary>
+        public RigidSphere Over(RigidSphere rest, double from, double to)
         {
             var result = rest.Clone();
-            result.Center = rest.Center + Offset(t);
-            result.Velocity = Velocity(t);
+            result.Center = rest.Center + Offset(to);
+            result.Velocity = to > from ? (Offset(to) - Offset(from)) / (float)(to - from) : Velocity(to);
             return result;
         }
 
