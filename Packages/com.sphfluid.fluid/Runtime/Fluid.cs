@@ -291,7 +291,8 @@ namespace SphFluid.Runtime
             float frame = _stepRequested ? SingleStepSeconds : Mathf.Min(Time.deltaTime, maxFrameTime);
             _stepRequested = false;
 
-            // Walls and spheres move with the velocity that carries them over the simulated frame.
+            // Walls and spheres go where their Transforms stand now, with the velocity that brought them there over the
+            // simulated frame: the simulation sweeps them there from where the last frame left them.
             float motionSeconds = advance ? frame : Time.deltaTime;
             try
             {
