@@ -25,13 +25,16 @@
 // (SolverRelaxation.cs) no wave overshoots, at more iterations. The error each iteration
 // reports, per particle, is max(delta*_i / delta0_i - 1, 0) (compression) and max(D delta_i / Dt, 0) / delta0_i
 // (1/s); a solve stops once their average over all particles is within its tolerance, after at least two iterations.
-// Warm start: each solve begins with WARM_START_FRACTION of the q the same solve summed up in the previous sub-step
+// Warm start: each solve begins with a fraction of the q the same solve summed up in the previous sub-step
 // (q, not the papers' kappa, is kept: it is a pressure term that does not scale with dt, so a changed dt needs no
 // rescaling). Half, not all, as Implicit Incompressible SPH starts from half the previous pressure (Ihmsen et al. 2014):
-// the solves only add pressure, so a surplus kept where the flow has changed stays (Headless/tools/warm-start-scan.sh:
-// 0.75 halves the iterations but leaves a resting tank four times the kinetic energy; 1 diverges).
-
-#define WARM_START_FRACTION 0.5
+// the Jacobi solves only add pressure, so a surplus kept where the flow has changed stays (Headless/tools/
+// warm-start-scan.sh: 0.75 halves the iterations but leaves a resting tank four times the kinetic energy; 1 diverges).
+// The Chebyshev solve may take pressure back, but a whole warm start of its constant-density solve leaves the
+// divergence-free solve more to do, and without its own warm start the divergence-free solve leaves the fluid more
+// compressed (the same tool with --solver-iteration chebyshev; README, "What would close it").
+#define DENSITY_WARM_START 0.5
+#define DIVERGENCE_WARM_START 0.5
 
 // Chebyshev acceleration (the Chebyshev semi-iterative method; Golub and Varga 1961, "Chebyshev semi-iterative methods,
 // successive overrelaxation iterative methods, and second order Richardson iterative methods"; as written for a

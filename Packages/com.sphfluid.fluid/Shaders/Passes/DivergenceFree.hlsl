@@ -74,7 +74,7 @@ void DensityFactor(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupT
         return;
     uint i = LaneOwner(id.x);
     uint particleId = _Particles[i].id;
-    _SolverStiffness[i] = WARM_START_FRACTION * _WarmStart[particleId].y;
+    _SolverStiffness[i] = DIVERGENCE_WARM_START * _WarmStart[particleId].y;
     _WarmStart[particleId] = float2(_WarmStart[particleId].x, 0.0); // ApplyStiffness counts the warm start as it applies it
 }
 
@@ -96,7 +96,7 @@ void PredictVelocity(uint3 id : SV_DispatchThreadID)
     Particle p = _Particles[i];
     p.velocity = PredictedVelocity(p.velocity, _Accelerations[i].xyz, _VelocityCorrections[i].xyz);
     _Particles[i] = p;
-    float warm = WARM_START_FRACTION * _WarmStart[p.id].x;
+    float warm = DENSITY_WARM_START * _WarmStart[p.id].x;
     _SolverStiffness[i] = warm;
     _WarmStart[p.id] = float2(0.0, _WarmStart[p.id].y); // ApplyStiffness counts the warm start as it applies it
 }
@@ -186,7 +186,7 @@ void BoundaryDensityFactor(uint3 id : SV_DispatchThreadID, uint3 groupThread : S
     uint boundaryId = _BoundarySortedSource[b];
     float2 warm = _BoundaryWarmStart[boundaryId];
     _BoundarySolve[b] = float4(fluidDensity + wallScale * wallDensity, WallFactor(fluidDensity, rest, squaredGradients),
-        WARM_START_FRACTION * warm.y, rest);
+        DIVERGENCE_WARM_START * warm.y, rest);
     _BoundaryWarmStart[boundaryId] = float2(warm.x, 0.0);
 }
 
@@ -200,7 +200,7 @@ void BoundaryBeginSolve(uint3 id : SV_DispatchThreadID)
     float4 solve = _BoundarySolve[b];
     uint boundaryId = _BoundarySortedSource[b];
     float2 warm = _BoundaryWarmStart[boundaryId];
-    solve.z = WARM_START_FRACTION * warm.x;
+    solve.z = DENSITY_WARM_START * warm.x;
     _BoundarySolve[b] = solve;
     _BoundaryWarmStart[boundaryId] = float2(0.0, warm.y);
 }
