@@ -14,9 +14,7 @@ for f in "$@"; do
         { echo "chebyshev-low-scan: a factor must be a positive number (was '$f')" >&2; exit 2; }
 done
 
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-git -C "$root" archive HEAD | tar -x -C "$work"
+source "$(dirname "${BASH_SOURCE[0]}")/committed-copy.sh"
 bounds="$work/Packages/com.sphfluid.fluid/Runtime/Core/Simulation/ChebyshevBounds.cs"
 grep -q '^            return (low, high);$' "$bounds"
 cp "$bounds" "$work/ChebyshevBounds.cs.committed"

@@ -27,9 +27,7 @@ for w in "$@"; do
         { echo "warm-start-scan: a fraction must be a number in [0, 1], or two joined by a comma (was '$w')" >&2; exit 2; }
 done
 
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-git -C "$root" archive HEAD | tar -x -C "$work"
+source "$(dirname "${BASH_SOURCE[0]}")/committed-copy.sh"
 solver="$work/Packages/com.sphfluid.fluid/Shaders/Include/DivergenceFreeSolver.hlsl"
 grep -q '^#define DENSITY_WARM_START ' "$solver"
 grep -q '^#define DIVERGENCE_WARM_START ' "$solver"
