@@ -48,7 +48,7 @@ for w in "$@"; do
         grep -E "^t=|^done|^FAILED|unhealthy" | tail -2 | sed "s/^/warm start $w, OilAndWater x6: /"
     if [ "$deep" = 1 ]; then
         (cd "$work" && dotnet test Tests/SphFluid.Tests/SphFluid.Tests.csproj -c Release --no-build \
-            --filter "FullyQualifiedName~DeepColumnProbe\\($fixture,6\\)" --logger "console;verbosity=detailed" 2>&1 |
+            --filter "FullyQualifiedName~DeepColumnProbe\\($fixture,6,80\\)" --logger "console;verbosity=detailed" 2>&1 |
             grep -m1 "a column of" | sed "s/^ */warm start $w, deep column: /" || true)
     fi
 done

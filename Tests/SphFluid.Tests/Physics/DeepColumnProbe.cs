@@ -10,32 +10,36 @@ namespace SphFluid.Tests.Physics
     /// Issue #8's 1M case on a CPU: what decides DFSPH's iterations is the fluid's depth in spacings (the longest pressure
     /// wave, <see cref="SolverIterationScalingTests"/>), and the default oil-and-water scene at 1M particles is about 80
     /// spacings deep. A water column of that depth on a footprint of 6 by 6 spacings (and of 12 by 12, to see what the
-    /// footprint changes), spawned at rest and run for 0.5 s at
+    /// footprint changes; and under Chebyshev of 40 and 120 spacings, to see the growth with depth past
+    /// <see cref="ChebyshevBounds.TunedDepth"/>), spawned at rest and run for 0.5 s at
     /// the scene's kernel settings (Wendland C2 at 2.85 spacings, relaxed to 0.3) and the target's (0.1 % density
     /// tolerance, at most 100 iterations a solve) under each iteration scheme, prints
     /// its constant-density iterations a sub-step, the share of solves the cap cut off, its compression and its health.
     /// A measurement run by name, `bash Headless/test.sh --filter FullyQualifiedName~DeepColumnProbe`, which CI does not run.
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]
-    [TestFixture(SolverIteration.Jacobi, 6)]
-    [TestFixture(SolverIteration.Chebyshev, 6)]
-    [TestFixture(SolverIteration.Jacobi, 12)]
-    [TestFixture(SolverIteration.Chebyshev, 12)]
+    [TestFixture(SolverIteration.Jacobi, 6, 80)]
+    [TestFixture(SolverIteration.Chebyshev, 6, 80)]
+    [TestFixture(SolverIteration.Jacobi, 12, 80)]
+    [TestFixture(SolverIteration.Chebyshev, 12, 40)]
+    [TestFixture(SolverIteration.Chebyshev, 12, 80)]
+    [TestFixture(SolverIteration.Chebyshev, 12, 120)]
     public sealed class DeepColumnProbe
     {
         const float Spacing = 0.025f;
-        const int Depth = 80;
         readonly SolverIteration _iteration;
         readonly int _footprint;
+        readonly int _depth;
 
-        public DeepColumnProbe(SolverIteration iteration, int footprint)
+        public DeepColumnProbe(SolverIteration iteration, int footprint, int depth)
         {
             _iteration = iteration;
             _footprint = footprint;
+            _depth = depth;
         }
 
         [Test]
-        public void IterationsOfAnEightySpacingColumn()
+        public void IterationsOfADeepColumn()
         {
             var settings = new FluidSettings
             {
@@ -43,7 +47,7 @@ namespace SphFluid.Tests.Physics
                 ParticleSpacing = Spacing, SmoothingKernel = KernelFamily.WendlandC2, SmoothingRadius = 2.85f * Spacing, SolverRelaxation = 0.3f,
                 MaxSubsteps = 200, PressureSolver = PressureSolver.Dfsph, DensityTolerance = 0.1f, SolverIteration = _iteration, MaxSolverIterations = 100,
             };
-            var water = new Vector3(_footprint * Spacing, Depth * Spacing, _footprint * Spacing);
+            var water = new Vector3(_footprint * Spacing, _depth * Spacing, _footprint * Spacing);
             var container = new Vector3(water.X, water.Y + 0.1f, water.Z);
             var scene = SolverScenes.Scene(settings, container,
                 SolverScenes.Box("Water", SolverScenes.Water(viscosity: 0.001f), new Vector3(0f, -0.5f * container.Y + 0.5f * water.Y, 0f), water));
@@ -71,7 +75,7 @@ namespace SphFluid.Tests.Physics
                     $"({100 * report.DensitySolvesCutOff:F0} % cut off), divergence {report.DivergenceSolveIterations:F1}, " +
                     $"average compression {100 * report.Phases[0].AverageDensityError:F3} %, fastest {report.MaxSpeed:F3} m/s");
             }
-            TestContext.Progress.WriteLine($"{_iteration}, a column of {Depth} spacings on {_footprint} by {_footprint}, N = {sim.ParticleCount}: " +
+            TestContext.Progress.WriteLine($"{_iteration}, a column of {_depth} spacings on {_footprint} by {_footprint}, N = {sim.ParticleCount}: " +
                 (problem == null ? "healthy for 0.5 s" : $"unhealthy: {problem}") + (reports > 0
                     ? $"; from 0.2 to 0.5 s, iterations a sub-step: constant-density {density / reports:F1}, divergence-free " +
                       $"{divergence / reports:F1}, together {(density + divergence) / reports:F1}; average compression {100 * compression / reports:F3} %"

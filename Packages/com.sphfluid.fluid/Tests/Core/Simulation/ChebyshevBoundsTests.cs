@@ -26,11 +26,21 @@ namespace SphFluid.Tests.Core.Simulation
         /// C2 at 2.85 spacings, k = pi / (2 n s), that is 20 / n^2 before the relaxation.</summary>
         [TestCase(8)]
         [TestCase(32)]
-        [TestCase(80)]
+        [TestCase(ChebyshevBounds.TunedDepth)]
         public void TheBottomIsTheQuarterWaveOfTheDepth(int spacings)
         {
             var (low, _) = ChebyshevBounds.For(KernelFamily.WendlandC2, Spacing, 2.85 * Spacing, 0.3, spacings * Spacing);
             Assert.That(low * spacings * spacings / 0.3, Is.EqualTo(20.0).Within(0.5));
+        }
+
+        /// <summary>Below the tuned depth's quarter wave the interval does not go, however deep the fluid.</summary>
+        [TestCase(80)]
+        [TestCase(1000)]
+        public void ADeeperFluidIsTunedAsTheTunedDepth(int spacings)
+        {
+            var (tuned, _) = ChebyshevBounds.For(KernelFamily.WendlandC2, Spacing, 2.85 * Spacing, 0.3, ChebyshevBounds.TunedDepth * Spacing);
+            var (low, _) = ChebyshevBounds.For(KernelFamily.WendlandC2, Spacing, 2.85 * Spacing, 0.3, spacings * Spacing);
+            Assert.That(low, Is.EqualTo(tuned));
         }
 
         [Test]

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Measures how the depth the Chebyshev solve is tuned for (ChebyshevBounds.TunedDepth: the interval's bottom is the
+# quarter wave of the fluid's depth, or of that many spacings if the fluid is deeper) sets its iterations: for each
+# depth given in spacings (default 40 60 1000; 1000 tunes any column here to its whole depth), DeepColumnProbe's water
+# columns under Chebyshev: 80 spacings on 6 by 6 and on 12 by 12 (the 1M case's depth), and 120 on 12 by 12. A fluid
+# no deeper than the tuned depth is not changed by it. TunedDepth is a constant, not a setting, so each value runs in a
+# copy of the committed tree under a temporary folder, which is removed at the end; the checkout is not touched. About
+# 2 minutes a value on 2 cores.
+#   Headless/tools/chebyshev-depth-scan.sh [SPACINGS ...]
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/../env.sh"
+[ $# -gt 0 ] || set -- 40 60 1000
+for d in "$@"; do
+    [[ "$d" =~ ^[1-9][0-9]*$ ]] || { echo "chebyshev-depth-scan: a depth must be a whole number of spacings, 1 or more (was '$d')" >&2; exit 2; }
+done
+
+source "$(dirname "${BASH_SOURCE[0]}")/committed-copy.sh"
+bounds="$work/Packages/com.sphfluid.fluid/Runtime/Core/Simulation/ChebyshevBounds.cs"
+grep -q '^        public const int TunedDepth = [0-9]*;$' "$bounds"
+
+for d in "$@"; do
+    sed -i "s/^        public const int TunedDepth = [0-9]*;\$/        public const int TunedDepth = $d;/" "$bounds"
+    dotnet build "$work/Tests/SphFluid.Tests/SphFluid.Tests.csproj" -c Release -nologo -v quiet -clp:ErrorsOnly >&2
+    for column in 6,80 12,80 12,120; do
+        (cd "$work" && dotnet test Tests/SphFluid.Tests/SphFluid.Tests.csproj -c Release --no-build \
+            --filter "FullyQualifiedName~DeepColumnProbe\\(Chebyshev,$column\\)" --logger "console;verbosity=detailed" 2>&1 |
+            grep -m1 "a column of" | sed "s/^ */tuned to $d spacings: /" || true)
+    done
+done
