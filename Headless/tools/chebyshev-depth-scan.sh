@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Measures how the depth the Chebyshev solve is tuned for (ChebyshevBounds.TunedDepth: the interval's bottom is the
 # quarter wave of the fluid's depth, or of that many spacings if the fluid is deeper) sets its iterations: for each
-# depth given in spacings (default 40 60 1000; 1000 tunes any column here to its whole depth), DeepColumnProbe's water
-# columns under Chebyshev: 80 spacings on 6 by 6 and on 12 by 12 (the 1M case's depth), and 120 on 12 by 12. A fluid
-# no deeper than the tuned depth is not changed by it. TunedDepth is a constant, not a setting, so each value runs in a
-# copy of the committed tree under a temporary folder, which is removed at the end; the checkout is not touched. About
-# 2 minutes a value on 2 cores.
+# depth given in spacings (default 40 60 1000; 1000 tunes any fluid here to its whole depth), under Chebyshev:
+# DeepColumnProbe's water columns at rest, 80 spacings on 6 by 6 and on 12 by 12 (the 1M case's depth) and 120 on 12 by
+# 12; and LockExchangeSliceProbe's moving slices of OilAndWater at the spacing of 250k and 1M particles (50 and 80
+# spacings deep). A fluid no deeper than the tuned depth is not changed by it. TunedDepth is a constant, not a setting,
+# so each value runs in a copy of the committed tree under a temporary folder, which is removed at the end; the
+# checkout is not touched. About 8 minutes a value on 2 cores.
 #   Headless/tools/chebyshev-depth-scan.sh [SPACINGS ...]
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../env.sh"
@@ -25,5 +26,10 @@ for d in "$@"; do
         (cd "$work" && dotnet test Tests/SphFluid.Tests/SphFluid.Tests.csproj -c Release --no-build \
             --filter "FullyQualifiedName~DeepColumnProbe\\(Chebyshev,$column\\)" --logger "console;verbosity=detailed" 2>&1 |
             grep -m1 "a column of" | sed "s/^ */tuned to $d spacings: /" || true)
+    done
+    for scale in 60 240; do
+        (cd "$work" && dotnet test Tests/SphFluid.Tests/SphFluid.Tests.csproj -c Release --no-build \
+            --filter "FullyQualifiedName~LockExchangeSliceProbe\\(Chebyshev,$scale\\)" --logger "console;verbosity=detailed" 2>&1 |
+            grep -m1 "sliced" | sed "s/^ */tuned to $d spacings: /" || true)
     done
 done
