@@ -6,7 +6,7 @@
 # 12; and LockExchangeSliceProbe's moving slices of OilAndWater at the spacing of 250k and 1M particles (50 and 80
 # spacings deep). A fluid no deeper than the tuned depth is not changed by it. TunedDepth is a constant, not a setting,
 # so each value runs in a copy of the committed tree under a temporary folder, which is removed at the end; the
-# checkout is not touched. About 8 minutes a value on 2 cores.
+# checkout is not touched. About 15 minutes a value on 2 cores, most of it the 1M slice.
 #   Headless/tools/chebyshev-depth-scan.sh [SPACINGS ...]
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../env.sh"

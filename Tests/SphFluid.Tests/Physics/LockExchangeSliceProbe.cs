@@ -72,7 +72,7 @@ namespace SphFluid.Tests.Physics
             var watch = System.Diagnostics.Stopwatch.StartNew();
             using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
             var health = new HealthCheck(scene, sim.ParticleCount);
-            double depth = ChebyshevBounds.Depth(SpawnLayout.Generate(scene), scene.Settings.Gravity, scene.Settings.ParticleSpacing)
+            double depth = SpawnLayout.Depth(SpawnLayout.Generate(scene), scene.Settings.Gravity, scene.Settings.ParticleSpacing)
                 / scene.Settings.ParticleSpacing;
             HealthProblem? problem = null;
             DiagnosticsReport report = sim.ReadDiagnostics();

@@ -37,7 +37,7 @@ namespace SphFluid.Reference
             _flatWallNumberDensity = SmoothingKernels.FlatWallNumberDensity(_settings.SmoothingKernel, _settings.ParticleSpacing, _h);
             if (_settings.PressureSolver == PressureSolver.Dfsph && _settings.SolverIteration == SolverIteration.Chebyshev)
                 _chebyshev = ChebyshevBounds.For(_settings.SmoothingKernel, _settings.ParticleSpacing, _h, _settings.SolverRelaxation,
-                    ChebyshevBounds.Depth(SpawnLayout.Generate(scene), _settings.Gravity, _settings.ParticleSpacing));
+                    SpawnLayout.Depth(SpawnLayout.Generate(scene), _settings.Gravity, _settings.ParticleSpacing));
         }
 
         /// <summary>The accelerated solve's eigenvalue bounds as FluidSimulation sets them from the spawn; null for Jacobi.</summary>

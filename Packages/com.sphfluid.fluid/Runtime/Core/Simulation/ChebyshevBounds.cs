@@ -1,5 +1,4 @@
 using System;
-using System.Numerics;
 
 namespace SphFluid.Simulation
 {
@@ -43,27 +42,6 @@ namespace SphFluid.Simulation
             double longest = Math.PI / (2.0 * Math.Clamp(depth, spacing, TunedDepth * spacing));
             double low = Math.Min(relaxation * SolverRelaxation.Mode(kind, spacing, support, 0.0, longest, 0.0), 0.5 * high);
             return (low, high);
-        }
-
-        /// <summary>The particles' extent along gravity plus one spacing, m; without gravity their largest extent.</summary>
-        public static double Depth(Particle[] particles, Vector3 gravity, double spacing)
-        {
-            if (particles.Length == 0) return spacing;
-            bool down = gravity.LengthSquared() > 0f;
-            Vector3 up = down ? -Vector3.Normalize(gravity) : Vector3.Zero;
-            Vector3 lo = new Vector3(float.MaxValue), hi = new Vector3(float.MinValue);
-            float top = float.MinValue, bottom = float.MaxValue;
-            foreach (var p in particles)
-            {
-                lo = Vector3.Min(lo, p.Position);
-                hi = Vector3.Max(hi, p.Position);
-                float height = Vector3.Dot(p.Position, up);
-                top = Math.Max(top, height);
-                bottom = Math.Min(bottom, height);
-            }
-            Vector3 extent = hi - lo;
-            double depth = down ? top - bottom : Math.Max(extent.X, Math.Max(extent.Y, extent.Z));
-            return depth + spacing;
         }
     }
 }

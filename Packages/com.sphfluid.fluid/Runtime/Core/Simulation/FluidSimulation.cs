@@ -116,6 +116,9 @@ namespace SphFluid.Simulation
             _spawnNumberDensities = HydrostaticNumberDensities(_spawn, spawnPressures);
             ParticleCount = _spawn.Length;
             _timeStep = TimeStepController.ForScene(_scene);
+            if (_scene.Settings.PressureSolver == PressureSolver.Dfsph)
+                _timeStep.GravityWaveSpeed = (float)Math.Sqrt(_scene.Settings.Gravity.Length() *
+                    SpawnLayout.Depth(_spawn, _scene.Settings.Gravity, _scene.Settings.ParticleSpacing));
             _reductionGroups = (ParticleCount + ReductionThreads - 1) / ReductionThreads;
 
             _solver = device.LoadProgram(SolverProgramName);
@@ -793,7 +796,7 @@ namespace SphFluid.Simulation
             c.WallContactAtAnyDensity = _deltaSph ? 1u : 0u;
             c.SolverRelaxation = s.SolverRelaxation;
             var (low, high) = _divergenceFree && s.SolverIteration == SolverIteration.Chebyshev
-                ? ChebyshevBounds.For(s.SmoothingKernel, s.ParticleSpacing, h, s.SolverRelaxation, ChebyshevBounds.Depth(_spawn, s.Gravity, s.ParticleSpacing))
+                ? ChebyshevBounds.For(s.SmoothingKernel, s.ParticleSpacing, h, s.SolverRelaxation, SpawnLayout.Depth(_spawn, s.Gravity, s.ParticleSpacing))
                 : (0.0, 0.0);
             c.ChebyshevLow = (float)low;
             c.ChebyshevHigh = (float)high;

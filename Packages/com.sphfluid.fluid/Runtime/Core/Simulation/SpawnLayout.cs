@@ -25,6 +25,29 @@ namespace SphFluid.Simulation
         /// validation refuses beyond it.</summary>
         static readonly float MaxJitter = (float)SettingRules.Of(typeof(FluidBlock), nameof(FluidBlock.Jitter)).Max;
 
+        /// <summary>The particles' extent along gravity plus one spacing, m (the half spacing above and below the outer
+        /// particles); without gravity their largest extent. The depth the Chebyshev solve is tuned for
+        /// (<see cref="ChebyshevBounds"/>) and the height of DFSPH's gravity wave (<see cref="TimeStepController.GravityWaveSpeed"/>).</summary>
+        public static double Depth(Particle[] particles, Vector3 gravity, double spacing)
+        {
+            if (particles.Length == 0) return spacing;
+            bool down = gravity.LengthSquared() > 0f;
+            Vector3 up = down ? -Vector3.Normalize(gravity) : Vector3.Zero;
+            Vector3 lo = new Vector3(float.MaxValue), hi = new Vector3(float.MinValue);
+            float top = float.MinValue, bottom = float.MaxValue;
+            foreach (var p in particles)
+            {
+                lo = Vector3.Min(lo, p.Position);
+                hi = Vector3.Max(hi, p.Position);
+                float height = Vector3.Dot(p.Position, up);
+                top = Math.Max(top, height);
+                bottom = Math.Min(bottom, height);
+            }
+            Vector3 extent = hi - lo;
+            double depth = down ? top - bottom : Math.Max(extent.X, Math.Max(extent.Y, extent.Z));
+            return depth + spacing;
+        }
+
         /// <summary>Lattice points along each box axis: floor or ceil of Size / s per axis, the combination whose cell
         /// volume V / (nx ny nz) is closest to s^3 (an exact multiple of s, within rounding, keeps Size / s).</summary>
         public static void CountPerAxis(FluidSettings settings, FluidBlock box, out int nx, out int ny, out int nz)

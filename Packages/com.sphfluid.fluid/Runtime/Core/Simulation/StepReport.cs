@@ -23,7 +23,7 @@ namespace SphFluid.Simulation
         /// <summary>The largest stable sub-step found from the conditions, s.</summary>
         public float StableTimeStep { get; }
 
-        /// <summary>Which condition set <see cref="StableTimeStep"/>: "cfl", "acceleration", "viscous", "capillary" or "max".</summary>
+        /// <summary>Which condition set <see cref="StableTimeStep"/>: "cfl", "gravity wave" (DFSPH), "acceleration", "viscous", "capillary" or "max".</summary>
         public string Limit => _limit ?? "none";
 
         /// <summary>The pressure solver the sub-steps ran.</summary>

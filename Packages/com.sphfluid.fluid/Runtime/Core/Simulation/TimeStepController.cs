@@ -13,11 +13,18 @@ namespace SphFluid.Simulation
     /// phase next to a viscous one feels more than its own nu. vmax and amax come from the GPU's max-reduction,
     /// read back asynchronously and possibly a frame stale, so the controller uses the larger of the last two
     /// reports. With DFSPH (<see cref="PressureSolver.Dfsph"/>) the solves keep the density, so no speed of sound enters:
-    /// dt = min(cfl h / max(vmax, u_walls), 0.125 h^2 / nu_max, dt_capillary, MaxTimeStep) (the velocity CFL of Bender &amp;
-    /// Koschier 2017, sec. 6; the viscous and capillary limits stay because the non-pressure forces are still explicit, the
-    /// acceleration limit goes because the pressure acceleration is no longer explicit). u_walls is the fastest wall or
-    /// obstacle (<see cref="BoundarySpeed"/>): a sphere started at 6.26 m/s through fluid at rest crossed 0.78 spacings a
-    /// 5 ms sub-step, and the pool went unhealthy at 0.05 s (HardCaseTests' driven sphere under DFSPH). WCSPH's CFL adds
+    /// dt = min(cfl h / max(vmax, u_walls, sqrt(g H)), 0.125 h^2 / nu_max, dt_capillary, MaxTimeStep) (the velocity CFL of
+    /// Bender &amp; Koschier 2017, sec. 6; the viscous and capillary limits stay because the non-pressure forces are still
+    /// explicit, the acceleration limit goes because the pressure acceleration is no longer explicit). u_walls is the
+    /// fastest wall or obstacle (<see cref="BoundarySpeed"/>): a sphere started at 6.26 m/s through fluid at rest crossed
+    /// 0.78 spacings a 5 ms sub-step, and the pool went unhealthy at 0.05 s (HardCaseTests' driven sphere under DFSPH).
+    /// sqrt(g H) is <see cref="GravityWaveSpeed"/>, the speed of the longest gravity wave over the fluid's height H: a fluid
+    /// at rest reports no speed, but each sub-step its solve rebuilds part of the hydrostatic pressure (the warm start
+    /// carries half), whose imbalance over the step compresses the fluid by about g H dt^2 / s^2, a CFL number of the
+    /// gravity wave squared. Measured on OilAndWater's slice at 1M particles' spacing (LockExchangeSliceProbe, 83
+    /// spacings deep), calm at dt sqrt(g H) / h up to 0.52 (1.39 and 2.38 ms), growing to 56 % compression at 0.65 and
+    /// above (3.33 and 4.17 ms); at half the depth calm at 0.46 (3.33 ms) and ringing at 0.58 (4.17 ms); the 250k slice
+    /// calm at 0.50 (4.17 ms). WCSPH's CFL adds
     /// the speed of sound, which dominates any subsonic wall's speed. A frame of length T is covered by n = ceil(T / dt)
     /// sub-steps of T / n, capped at MaxSubsteps
     /// (then each sub-step is dt and the simulation runs slower than real time).
@@ -41,6 +48,10 @@ namespace SphFluid.Simulation
 
         /// <summary>The fastest point of any wall or obstacle now, m/s (the simulation sets it before each frame).</summary>
         public float BoundarySpeed { get; set; }
+
+        /// <summary>sqrt(|g| H) for the fluid's height H (<see cref="SpawnLayout.Depth"/>), m/s: DFSPH's CFL plans with at
+        /// least this speed (the simulation sets it from the spawn; 0 leaves the velocity CFL alone).</summary>
+        public float GravityWaveSpeed { get; set; }
 
         /// <summary>The acceleration the next frame plans with (max of the last two reports), m/s^2.</summary>
         public float MaxAcceleration => Math.Max(_reportedAcceleration, _previousAcceleration);
@@ -107,10 +118,10 @@ namespace SphFluid.Simulation
             double dt = _settings.MaxTimeStep;
             limit = "max";
             bool divergenceFree = _settings.PressureSolver == PressureSolver.Dfsph;
-            double cfl = divergenceFree
-                ? (Math.Max(MaxSpeed, BoundarySpeed) > 0f ? _settings.CflNumber * h / Math.Max(MaxSpeed, BoundarySpeed) : double.PositiveInfinity)
-                : _settings.CflNumber * h / (SpeedOfSound + MaxSpeed);
-            if (cfl < dt) { dt = cfl; limit = "cfl"; }
+            float moving = Math.Max(MaxSpeed, BoundarySpeed);
+            float speed = divergenceFree ? Math.Max(moving, GravityWaveSpeed) : SpeedOfSound + MaxSpeed;
+            double cfl = speed > 0f ? _settings.CflNumber * h / speed : double.PositiveInfinity;
+            if (cfl < dt) { dt = cfl; limit = divergenceFree && GravityWaveSpeed > moving ? "gravity wave" : "cfl"; }
             if (MaxAcceleration > 0f && !divergenceFree)
             {
                 double acc = 0.25 * Math.Sqrt(h / MaxAcceleration);

@@ -1,5 +1,3 @@
-using System;
-using System.Numerics;
 using NUnit.Framework;
 using SphFluid.Simulation;
 
@@ -7,8 +5,7 @@ namespace SphFluid.Tests.Core.Simulation
 {
     /// <summary>
     /// The eigenvalue interval DFSPH's Chebyshev-accelerated solve is tuned for (ChebyshevBounds): its top is the lattice's
-    /// stiffest wave with a margin, its bottom the quarter wave of the fluid's depth, and the depth is the spawned fluid's
-    /// extent along gravity.
+    /// stiffest wave with a margin, its bottom the quarter wave of the fluid's depth, at most TunedDepth spacings.
     /// </summary>
     public sealed class ChebyshevBoundsTests
     {
@@ -48,27 +45,6 @@ namespace SphFluid.Tests.Core.Simulation
         {
             var (low, high) = ChebyshevBounds.For(KernelFamily.CubicSpline, Spacing, 2 * Spacing, 1.0, Spacing);
             Assert.That(low, Is.EqualTo(0.5 * high).Within(1e-12));
-        }
-
-        static Particle[] Spread(Vector3 from, Vector3 to) => new[]
-        {
-            new Particle(from, Vector3.Zero, 0, 0), new Particle(0.5f * (from + to), Vector3.Zero, 0, 1), new Particle(to, Vector3.Zero, 0, 2),
-        };
-
-        [Test]
-        public void TheDepthIsTheExtentAlongGravityAndOneSpacing()
-        {
-            var particles = Spread(new Vector3(-0.3f, -0.1f, 0f), new Vector3(0.3f, 0.2f, 0.05f));
-            Assert.That(ChebyshevBounds.Depth(particles, new Vector3(0f, -9.81f, 0f), Spacing), Is.EqualTo(0.3 + Spacing).Within(1e-6));
-            Assert.That(ChebyshevBounds.Depth(particles, new Vector3(9.81f, 0f, 0f), Spacing), Is.EqualTo(0.6 + Spacing).Within(1e-6));
-        }
-
-        [Test]
-        public void WithoutGravityTheDepthIsTheLargestExtent()
-        {
-            var particles = Spread(new Vector3(0f, 0f, -0.2f), new Vector3(0.1f, 0.05f, 0.2f));
-            Assert.That(ChebyshevBounds.Depth(particles, Vector3.Zero, Spacing), Is.EqualTo(0.4 + Spacing).Within(1e-6));
-            Assert.That(ChebyshevBounds.Depth(Array.Empty<Particle>(), Vector3.Zero, Spacing), Is.EqualTo(Spacing));
         }
     }
 }

@@ -295,5 +295,28 @@ namespace SphFluid.Tests.Core.Simulation
                 $"{SmoothingKernels.LatticeNumberDensity(kind, 1.0, supportRatio):F5} / s^3, linear-gradient reproduction {reproduction:F4}");
             Assert.That(reproduction, Is.EqualTo(1.0).Within(tolerance));
         }
+
+        const double DepthSpacing = 0.02;
+
+        static Particle[] Spread(Vector3 from, Vector3 to) => new[]
+        {
+            new Particle(from, Vector3.Zero, 0, 0), new Particle(0.5f * (from + to), Vector3.Zero, 0, 1), new Particle(to, Vector3.Zero, 0, 2),
+        };
+
+        [Test]
+        public void TheDepthIsTheExtentAlongGravityAndOneSpacing()
+        {
+            var particles = Spread(new Vector3(-0.3f, -0.1f, 0f), new Vector3(0.3f, 0.2f, 0.05f));
+            Assert.That(SpawnLayout.Depth(particles, new Vector3(0f, -9.81f, 0f), DepthSpacing), Is.EqualTo(0.3 + DepthSpacing).Within(1e-6));
+            Assert.That(SpawnLayout.Depth(particles, new Vector3(9.81f, 0f, 0f), DepthSpacing), Is.EqualTo(0.6 + DepthSpacing).Within(1e-6));
+        }
+
+        [Test]
+        public void WithoutGravityTheDepthIsTheLargestExtent()
+        {
+            var particles = Spread(new Vector3(0f, 0f, -0.2f), new Vector3(0.1f, 0.05f, 0.2f));
+            Assert.That(SpawnLayout.Depth(particles, Vector3.Zero, DepthSpacing), Is.EqualTo(0.4 + DepthSpacing).Within(1e-6));
+            Assert.That(SpawnLayout.Depth(Array.Empty<Particle>(), Vector3.Zero, DepthSpacing), Is.EqualTo(DepthSpacing));
+        }
     }
 }
