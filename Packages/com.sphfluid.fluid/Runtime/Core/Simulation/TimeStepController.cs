@@ -22,9 +22,9 @@ namespace SphFluid.Simulation
     /// at rest reports no speed, but each sub-step its solve rebuilds part of the hydrostatic pressure (the warm start
     /// carries half), whose imbalance over the step compresses the fluid by about g H dt^2 / s^2, a CFL number of the
     /// gravity wave squared. Measured on OilAndWater's slice at 1M particles' spacing (LockExchangeSliceProbe, 83
-    /// spacings deep), calm at dt sqrt(g H) / h up to 0.52 (1.39 and 2.38 ms), growing to 56 % compression at 0.65 and
-    /// above (3.33 and 4.17 ms); at half the depth calm at 0.46 (3.33 ms) and ringing at 0.58 (4.17 ms); the 250k slice
-    /// calm at 0.50 (4.17 ms). WCSPH's CFL adds
+    /// spacings deep), calm at dt sqrt(g H) / h of 0.28 and 0.48 (1.39 and 2.38 ms), unhealthy within 0.05 s at 0.68 and
+    /// 0.85 (3.33 and 4.17 ms); at half the depth calm at 0.48 (3.33 ms) and ringing at 0.60 (4.17 ms); the 250k slice
+    /// calm at 0.53 (4.17 ms). The scenes' CFL number of 0.3 keeps a margin of 1.8 below that. WCSPH's CFL adds
     /// the speed of sound, which dominates any subsonic wall's speed. A frame of length T is covered by n = ceil(T / dt)
     /// sub-steps of T / n, capped at MaxSubsteps
     /// (then each sub-step is dt and the simulation runs slower than real time).
