@@ -56,30 +56,19 @@ namespace SphFluid.Tests.Physics
             var health = new HealthCheck(scene, sim.ParticleCount);
             HealthProblem? problem = null;
             DiagnosticsReport report = sim.ReadDiagnostics();
-            int frames = 0, reports = 0;
-            double density = 0, divergence = 0, compression = 0;
+            int frames = 0;
+            var averages = new SolveAverages(0.15);
             while (sim.SimulatedTime < 0.5 - 1e-6 && problem == null)
             {
                 sim.Step(1f / 60f);
                 if (++frames % 6 != 0) continue;
                 report = sim.ReadDiagnostics();
                 problem = health.Check(report);
-                if (sim.SimulatedTime > 0.15)
-                {
-                    reports++;
-                    density += report.DensitySolveIterations;
-                    divergence += report.DivergenceSolveIterations;
-                    compression += report.Phases[0].AverageDensityError;
-                }
-                TestContext.Progress.WriteLine($"{_iteration} t = {sim.SimulatedTime:F2} s: constant-density iterations {report.DensitySolveIterations:F1} a sub-step " +
-                    $"({100 * report.DensitySolvesCutOff:F0} % cut off), divergence {report.DivergenceSolveIterations:F1}, " +
-                    $"average compression {100 * report.Phases[0].AverageDensityError:F3} %, fastest {report.MaxSpeed:F3} m/s");
+                averages.Add(_iteration.ToString(), sim.SimulatedTime, report);
             }
             TestContext.Progress.WriteLine($"{_iteration}, a column of {_depth} spacings on {_footprint} by {_footprint}, N = {sim.ParticleCount}: " +
-                (problem == null ? "healthy for 0.5 s" : $"unhealthy: {problem}") + (reports > 0
-                    ? $"; from 0.2 to 0.5 s, iterations a sub-step: constant-density {density / reports:F1}, divergence-free " +
-                      $"{divergence / reports:F1}, together {(density + divergence) / reports:F1}; average compression {100 * compression / reports:F3} %"
-                    : "") + $"; {watch.Elapsed.TotalSeconds:F1} s wall");
+                (problem == null ? "healthy for 0.5 s" : $"unhealthy: {problem}") + averages.Summary("0.2 to 0.5 s", report.Phases[0].Name) +
+                $"; {watch.Elapsed.TotalSeconds:F1} s wall");
             Assert.That(report.ParticleCount, Is.EqualTo(sim.ParticleCount));
         }
     }
