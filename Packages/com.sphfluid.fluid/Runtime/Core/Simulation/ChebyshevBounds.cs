@@ -29,10 +29,10 @@ namespace SphFluid.Simulation
         /// hydrostatic mode, which the warm start carries from one sub-step to the next, so tuning the solve for it pays
         /// in every round for a wave that is mostly solved already. Water columns of 80 spacings on 12 by 12 (the 1M
         /// case's depth; DeepColumnProbe) take 10.1 iterations a sub-step at 40 (12.0 at 60) against 17.7 tuned to the
-        /// whole depth, at 0.100 and 0.095 % compression; OilAndWater in motion at 250k and 1M particles'
-        /// spacing (LockExchangeSliceProbe) 12.7 and 14.0 against 18.8 and 31.2. A moving fluid tuned below its depth pays in the constant-density
-        /// solve (OilAndWater at 25 900 particles: 6.9 iterations tuned to its 24 spacings, 11.2 to 12), so the cap
-        /// sits above every shipped scene's depth.</summary>
+        /// whole depth, at 0.100 and 0.095 % compression; OilAndWater in motion at 250k and 1M particles' spacing
+        /// (LockExchangeSliceProbe) 12.7 and 14.0 against 18.8 and 31.2. A moving fluid tuned below its depth pays in the
+        /// constant-density solve (OilAndWater at 25 900 particles: 6.9 iterations tuned to its 24 spacings, 11.2 to 12),
+        /// so the cap sits above every shipped scene's depth.</summary>
         public const int TunedDepth = 40;
 
         /// <summary>(Low, High) for a fluid of the given depth, m.</summary>
