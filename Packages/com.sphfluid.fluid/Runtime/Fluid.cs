@@ -85,6 +85,22 @@ namespace SphFluid.Runtime
 
         public double SimulatedTime => _simulation != null ? _simulation.SimulatedTime : 0.0;
 
+        /// <summary>
+        /// Simulated seconds this frame's Update advances: the frame time capped at the longest frame simulated, one
+        /// <see cref="SingleStepSeconds"/> after <see cref="StepOnce"/>, 0 while paused or not running; it simulates less
+        /// when the sub-step cap binds (<see cref="LastStep"/>). A law of motion (<see cref="ContainerSpinner"/>,
+        /// <see cref="SphereDriver"/>) reads it from an Update that runs before the fluid's to place its Transform where
+        /// the fluid will stand after the frame (<see cref="FluidClock"/>).
+        /// </summary>
+        public float FrameSeconds
+        {
+            get
+            {
+                if (_simulation == null || (_paused && !_stepRequested)) return 0f;
+                return _stepRequested ? SingleStepSeconds : Mathf.Min(Time.deltaTime, maxFrameTime);
+            }
+        }
+
         /// <summary>Latest asynchronous diagnostics (a frame or two stale), or null.</summary>
         public DiagnosticsReport LatestDiagnostics => _simulation?.LatestDiagnostics;
 
@@ -148,6 +164,9 @@ namespace SphFluid.Runtime
 
         /// <summary>A copy of the inspector's settings: the running simulation keeps its own.</summary>
         public FluidSettings DescribeSettings() => settings.Clone();
+
+        /// <summary>The fluid a driver follows: <paramref name="assigned"/>, else the scene's (null: none).</summary>
+        internal static Fluid AssignedOrFound(Fluid assigned) => assigned != null ? assigned : FindFirstObjectByType<Fluid>();
 
         /// <summary>The container this simulator uses: the assigned one, else the scene's.</summary>
         public FluidContainer FindContainer() => container != null ? container : FindFirstObjectByType<FluidContainer>();
@@ -288,7 +307,7 @@ namespace SphFluid.Runtime
         {
             if (_simulation == null) return;
             bool advance = !_paused || _stepRequested;
-            float frame = _stepRequested ? SingleStepSeconds : Mathf.Min(Time.deltaTime, maxFrameTime);
+            float frame = FrameSeconds;
             _stepRequested = false;
 
             // Walls and spheres go where their Transforms stand now, with the velocity that brought them there over the
@@ -309,7 +328,7 @@ namespace SphFluid.Runtime
             _health.ObserveDrivers(_simulation.Scene.Container, _simulation.Scene.Obstacles);
             try
             {
-                if (advance && frame > 0f) _simulation.Step(frame);
+                if (frame > 0f) _simulation.Step(frame);
                 if (requestDiagnostics) _simulation.RequestDiagnostics();
                 DiagnosticsReport report = _simulation.LatestDiagnostics;
                 if (report != null && report.SimulatedTime != _lastCheckedTime) CheckHealth(report);
