@@ -103,7 +103,7 @@ public sealed class SolverOptions
             "pressure solver, overriding the scene's Fluid.pressureSolver: wcsph (Tait equation of state) or dfsph "
             + "(divergence-free SPH, iterative; default: the scene's)");
         _densityTolerance = OptionKinds.Number(command, "--density-tolerance", 0.001, 10, false, "%", "PCT",
-            "DFSPH: largest average density error the pressure solve accepts, in [0.001, 10] % (default: the scene's; "
+            "DFSPH: largest average density error of any phase the pressure solve accepts, in [0.001, 10] % (default: the scene's; "
             + "refused when the run uses WCSPH)");
         _iteration = OptionKinds.Choice(command, "--solver-iteration", SolverChoice.IterationWords,
             "DFSPH: how each solve iterates, overriding the scene's Fluid.solverIteration: jacobi (compression-only relaxed "

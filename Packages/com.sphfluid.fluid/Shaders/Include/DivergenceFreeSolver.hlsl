@@ -24,7 +24,8 @@
 // iteration, and since expansion is never corrected the overshoot stays as pressure noise; at 1 / lambda_max
 // (SolverRelaxation.cs) no wave overshoots, at more iterations. The error each iteration
 // reports, per particle, is max(delta*_i / delta0_i - 1, 0) (compression) and max(D delta_i / Dt, 0) / delta0_i
-// (1/s); a solve stops once their average over all particles is within its tolerance, after at least two iterations.
+// (1/s); a solve stops once their average over each phase's particles is within its tolerance, after at least two
+// iterations.
 // Warm start: each solve begins with a fraction of the q the same solve summed up in the previous sub-step
 // (q, not the papers' kappa, is kept: it is a pressure term that does not scale with dt, so a changed dt needs no
 // rescaling). Half, not all, as Implicit Incompressible SPH starts from half the previous pressure (Ihmsen et al. 2014):

@@ -59,10 +59,10 @@ namespace SphFluid.Simulation
         [Setting(Pressure, 0, 1, "", "How pressure is computed: 0 = WCSPH (Tait equation of state, one pass, step bounded by the speed of sound), 1 = DFSPH (iterative incompressible solves to a tolerance, step bounded by the flow speed).")]
         public PressureSolver PressureSolver = PressureSolver.Wcsph;
 
-        [Setting(Pressure, 0.001, 10, "%", "DFSPH: largest average density error the constant-density solve accepts.")]
+        [Setting(Pressure, 0.001, 10, "%", "DFSPH: largest average density error of any phase that the constant-density solve accepts.")]
         public float DensityTolerance = 0.1f;
 
-        [Setting(Pressure, 0.01, 1000, "%/s", "DFSPH: largest average rate of density change the divergence-free solve accepts.")]
+        [Setting(Pressure, 0.01, 1000, "%/s", "DFSPH: largest average rate of density change of any phase that the divergence-free solve accepts.")]
         public float DivergenceTolerance = 10f;
 
         [Setting(Pressure, 1, 1000, "", "DFSPH: most iterations of each solve per sub-step.")]

@@ -113,6 +113,7 @@ namespace SphFluid.Simulation
             _phases = _scene.Phases();
             _phaseTable = _scene.BuildPhaseTable();
             _spawn = SpawnLayout.Generate(_scene, out double[] spawnPressures);
+            CountPhases(_phaseTable, _spawn);
             _spawnNumberDensities = HydrostaticNumberDensities(_spawn, spawnPressures);
             ParticleCount = _spawn.Length;
             _timeStep = TimeStepController.ForScene(_scene);
@@ -875,6 +876,15 @@ namespace SphFluid.Simulation
             if (!_constantsChanged) return;
             _device.UpdateBuffer(_buffers.Constants, _constants);
             _constantsChanged = false;
+        }
+
+        /// <summary>Each phase's <see cref="PhaseProperties.InverseParticleCount"/>, from the spawn: nothing is lost after it.</summary>
+        static void CountPhases(PhaseProperties[] table, Particle[] spawn)
+        {
+            var counts = new int[table.Length];
+            foreach (var p in spawn) counts[p.Phase]++;
+            for (int k = 0; k < table.Length; k++)
+                table[k].InverseParticleCount = counts[k] > 0 ? 1f / counts[k] : 0f;
         }
 
         /// <summary>delta-SPH's starting number densities by particle id: delta0 (1 + p / k)^(1 / gamma) of each particle's phase at

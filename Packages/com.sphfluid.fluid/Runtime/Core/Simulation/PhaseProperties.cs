@@ -38,6 +38,8 @@ namespace SphFluid.Simulation
         /// it (SphBoundary.hlsl's WallWeight). s^3 / c for a derived mass whose particles stand for the cell c.</summary>
         public float WallWeightScale;
 
-        float _padding;
+        /// <summary>1 / the phase's particle count (0 for none), set by the simulation once it has spawned: the DFSPH
+        /// solves hold each phase's average error to the tolerance (SolveFinal), not the average over all particles.</summary>
+        public float InverseParticleCount;
     }
 }

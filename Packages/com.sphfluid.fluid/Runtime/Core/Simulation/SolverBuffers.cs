@@ -167,8 +167,8 @@ namespace SphFluid.Simulation
             Factors = Zeroed("FluidSimulation.DivergenceFreeFactors", n, 4);
             SolverStiffness = Zeroed("FluidSimulation.SolverStiffness", n, 4);
             WarmStart = Zeroed("FluidSimulation.WarmStart", n, 8);
-            // One error sum per group of the laned error pass, at the most lanes a particle can be given.
-            SolverPartials = Zeroed("FluidSimulation.SolverPartials", ComputeDispatch.GroupsFor(n * NeighbourLanes.Max, ParticleThreads), 4);
+            // One error sum per phase and group of the laned error pass, at the most lanes a particle can be given.
+            SolverPartials = Zeroed("FluidSimulation.SolverPartials", phaseTable.Length * ComputeDispatch.GroupsFor(n * NeighbourLanes.Max, ParticleThreads), 4);
             SolverState = Zeroed("FluidSimulation.SolverState", SolverStateWords, 4);
             SolverArguments = device.CreateArgumentsBuffer("FluidSimulation.SolverArguments", 6);
             // The solve's laned group counts come from BeginSolve on the GPU before any dispatch reads them; until
