@@ -19,6 +19,7 @@ namespace SphFluid.Tests.Physics
 
         double[] _averageCompression = new double[0];
         string[] _names = new string[0];
+        float[] _inverseCounts = new float[0];
         DiagnosticsReport _last = null!;
 
         [OneTimeSetUp]
@@ -38,6 +39,7 @@ namespace SphFluid.Tests.Physics
                 SolverScenes.Box("Water", SolverScenes.Water(viscosity: 0.001f), new Vector3(0f, floor + Layer + 0.5f * (Depth - Layer), 0f),
                     new Vector3(container.X, Depth - Layer, container.Z)));
             using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            _inverseCounts = sim.PhaseRows.Select(row => row.InverseParticleCount).ToArray();
             int frame = 0, samples = 0;
             while (sim.SimulatedTime < 1.0 - 1e-6)
             {
@@ -63,6 +65,16 @@ namespace SphFluid.Tests.Physics
             Assert.That(_names, Is.EqualTo(new[] { "Bottom", "Water" }));
             for (int k = 0; k < _names.Length; k++)
                 Assert.That(_averageCompression[k], Is.LessThanOrEqualTo(0.01 * Tolerance), $"{_names[k]}'s average compression");
+        }
+
+        /// <summary>The solves weigh each phase's error sum by its own particle count (the phase table's
+        /// InverseParticleCount): 240 particles in the bottom layer, 3 600 above.</summary>
+        [Test]
+        public void EachPhaseIsAveragedOverItsOwnParticles()
+        {
+            Assert.That(_last.Phases.Select(p => p.Count), Is.EqualTo(new[] { 240, 3600 }));
+            for (int k = 0; k < _inverseCounts.Length; k++)
+                Assert.That(_inverseCounts[k], Is.EqualTo(1.0 / _last.Phases[k].Count).Within(1e-9), _names[k]);
         }
 
         [Test]
