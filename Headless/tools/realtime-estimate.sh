@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# Estimates DFSPH's wall time per simulated second at a sub-step and iteration counts measured elsewhere (a slice
+# probe on lavapipe, say), from the per-kernel table a GPU printed for `sphfluid bench --solver dfsph` (the first DFSPH
+# "Per kernel" table of FILE, a log of Headless/gpu-figures.sh). It reads no GPU itself, so it answers what a sub-step
+# at those iterations would cost on the GPU that printed FILE, with what every pass cost there.
+#
+# A sub-step records (FluidSimulation.Solve) each solve's warm start as one ApplyStiffness, then rounds of error pass,
+# BoundarySolveError and SolveFinal, each but the last followed by an ApplyStiffness: n corrections cost n + 1 error
+# rounds and n corrections. Every other kernel of the table runs a fixed number of times a sub-step whatever the
+# iterations (the sort, FindNeighbours, DensityFactor, NonPressureForces, the drift): the fixed part. A solve makes
+# two corrections at the least (SolveFinal), so 2 and 2 at the longest sub-step is the cheapest a sub-step gets. Each kernel's
+# cost a dispatch is its milliseconds over its dispatches in the table. Prints the split, the GPU seconds per
+# simulated second and the real-time factor (simulated over GPU seconds; a bound, as the wall adds the host's time).
+#   Headless/tools/realtime-estimate.sh FILE SUBSTEP_MS DENSITY_ITERATIONS DIVERGENCE_ITERATIONS
+# e.g. the 1M slice (LockExchangeSliceProbe) on the H200's profile:
+#   Headless/tools/realtime-estimate.sh Headless/figures/gpu-h200-realtime.txt 1.3889 7.3 6.2
+set -euo pipefail
+usage="usage: realtime-estimate.sh FILE SUBSTEP_MS DENSITY_ITERATIONS DIVERGENCE_ITERATIONS"
+[ $# -eq 4 ] || { echo "realtime-estimate: $usage" >&2; exit 2; }
+file=$1 step=$2 density=$3 divergence=$4
+[ -f "$file" ] || { echo "realtime-estimate: FILE '$file' is not a file" >&2; exit 2; }
+number='^([0-9]+(\.[0-9]*)?|\.[0-9]+)$'
+[[ "$step" =~ $number ]] && awk -v s="$step" 'BEGIN { exit !(s > 0) }' ||
+    { echo "realtime-estimate: SUBSTEP_MS must be a number of milliseconds above 0 (was '$step')" >&2; exit 2; }
+for pair in "DENSITY_ITERATIONS:$density" "DIVERGENCE_ITERATIONS:$divergence"; do
+    [[ "${pair#*:}" =~ $number ]] && awk -v n="${pair#*:}" 'BEGIN { exit !(n >= 2) }' ||
+        { echo "realtime-estimate: ${pair%%:*} must be a number of corrections a sub-step, 2 or more (a solve stops after two at the least, SolveFinal) (was '${pair#*:}')" >&2; exit 2; }
+done
+
+awk -v file="$file" -v step="$step" -v nd="$density" -v nv="$divergence" '
+    /^solver: DFSPH/ { dfsph = 1 }
+    /^solver: / && !/^solver: DFSPH/ { dfsph = 0 }
+    dfsph && !done && /^Per kernel at / { inTable = 1; particles = $4; next }
+    inTable && /^\| [A-Za-z]/ && $2 != "kernel" {
+        name = $2; calls[name] = $4; ms[name] = $6; order[++kernels] = name; next
+    }
+    inTable && /^$/ && kernels > 0 { inTable = 0; done = 1 }
+    END {
+        if (kernels == 0) { printf "realtime-estimate: %s holds no DFSPH per-kernel table (sphfluid bench --solver dfsph)\n", file > "/dev/stderr"; exit 2 }
+        split("ApplyStiffness DensitySolveError DivergenceSolveError BoundarySolveError SolveFinal", needed, " ")
+        for (k in needed) if (!(needed[k] in calls) || calls[needed[k]] <= 0) {
+            printf "realtime-estimate: the DFSPH table of %s has no %s row\n", file, needed[k] > "/dev/stderr"; exit 2 }
+        apply = ms["ApplyStiffness"] / calls["ApplyStiffness"]
+        wallError = ms["BoundarySolveError"] / calls["BoundarySolveError"]
+        final = ms["SolveFinal"] / calls["SolveFinal"]
+        densityRound = ms["DensitySolveError"] / calls["DensitySolveError"] + wallError + final
+        divergenceRound = ms["DivergenceSolveError"] / calls["DivergenceSolveError"] + wallError + final
+        fixed = 0
+        for (k = 1; k <= kernels; k++) {
+            n = order[k]
+            if (n != "ApplyStiffness" && n != "DensitySolveError" && n != "DivergenceSolveError" && n != "BoundarySolveError" && n != "SolveFinal") {
+                fixed += ms[n]; list = list sprintf("%s%s %.3f", (list == "" ? "" : ", "), n, ms[n])
+            }
+        }
+        warm = 2 * apply
+        densitySolve = (nd + 1) * densityRound + nd * apply
+        divergenceSolve = (nv + 1) * divergenceRound + nv * apply
+        substep = fixed + warm + densitySolve + divergenceSolve
+        perSecond = 1000 / step
+        printf "profile: %s, DFSPH at %s particles\n", file, particles
+        printf "fixed a sub-step: %.3f ms (%s)\n", fixed, list
+        printf "warm starts: %.3f ms (2 x ApplyStiffness %.3f)\n", warm, apply
+        printf "a correction: constant density %.3f ms (DensitySolveError + BoundarySolveError + SolveFinal %.3f, ApplyStiffness %.3f), divergence-free %.3f ms (%.3f + %.3f)\n", densityRound + apply, densityRound, apply, divergenceRound + apply, divergenceRound, apply
+        printf "sub-step of %s ms at %s + %s corrections: %.3f ms GPU = %.3f fixed + %.3f warm starts + %.3f constant density + %.3f divergence-free\n", step, nd, nv, substep, fixed, warm, densitySolve, divergenceSolve
+        printf "per simulated second: %.1f sub-steps, %.2f s GPU (%.2f s fixed and warm starts, %.2f s solves); real-time factor at most %.3fx\n", perSecond, perSecond * substep / 1000, perSecond * (fixed + warm) / 1000, perSecond * (densitySolve + divergenceSolve) / 1000, 1000 / (perSecond * substep)
+    }' "$file"

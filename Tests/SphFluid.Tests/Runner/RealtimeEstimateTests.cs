@@ -1,0 +1,60 @@
+using System.Diagnostics;
+using System.IO;
+using NUnit.Framework;
+
+namespace SphFluid.Tests.Runner
+{
+    /// <summary>
+    /// Headless/tools/realtime-estimate.sh, which the README cites for what a DFSPH sub-step at 1M particles costs on the
+    /// H200 whatever its solve does: the figures it prints from the committed profile, and its errors for bad input.
+    /// </summary>
+    public class RealtimeEstimateTests
+    {
+        const string Profile = "Headless/figures/gpu-h200-realtime.txt";
+
+        static (int exitCode, string output, string error) Estimate(params string[] arguments)
+        {
+            var start = new ProcessStartInfo("bash") { WorkingDirectory = GpuTestDevice.RepoRoot, RedirectStandardOutput = true, RedirectStandardError = true };
+            start.ArgumentList.Add(Path.Combine("Headless", "tools", "realtime-estimate.sh"));
+            foreach (string argument in arguments) start.ArgumentList.Add(argument);
+            using var process = Process.Start(start)!;
+            string output = process.StandardOutput.ReadToEnd();
+            string error = process.StandardError.ReadToEnd();
+            Assert.That(process.WaitForExit(30_000), Is.True, "realtime-estimate.sh did not finish within 30 s");
+            return (process.ExitCode, output, error);
+        }
+
+        [Test]
+        public void TheOneMillionSliceCostsSeventeenGpuSecondsASimulatedSecond()
+        {
+            var (exitCode, output, error) = Estimate(Profile, "1.3889", "7.3", "6.2");
+            Assert.That(exitCode, Is.EqualTo(0), error);
+            Assert.That(output, Does.Contain("fixed a sub-step: 5.765 ms (FindNeighbours 3.350, NonPressureForces 1.177, DensityFactor 0.861,"));
+            Assert.That(output, Does.Contain("warm starts: 1.089 ms"));
+            Assert.That(output, Does.Contain("per simulated second: 720.0 sub-steps, 17.27 s GPU (4.94 s fixed and warm starts, 12.33 s solves)"));
+        }
+
+        [Test]
+        public void TheLongestStepWithTheFewestCorrectionsIsStillSlowerThanRealTime()
+        {
+            var (exitCode, output, error) = Estimate(Profile, "5", "2", "2");
+            Assert.That(exitCode, Is.EqualTo(0), error);
+            Assert.That(output, Does.Contain("12.837 ms GPU"));
+            Assert.That(output, Does.Contain("200.0 sub-steps, 2.57 s GPU (1.37 s fixed and warm starts, 1.20 s solves); real-time factor at most 0.389x"));
+        }
+
+        [TestCase(new[] { Profile, "5", "2" }, "usage: realtime-estimate.sh FILE SUBSTEP_MS DENSITY_ITERATIONS DIVERGENCE_ITERATIONS")]
+        [TestCase(new[] { "Headless/figures/none.txt", "5", "2", "2" }, "FILE 'Headless/figures/none.txt' is not a file")]
+        [TestCase(new[] { Profile, "0", "2", "2" }, "SUBSTEP_MS must be a number of milliseconds above 0 (was '0')")]
+        [TestCase(new[] { Profile, "5", "1.5", "2" }, "DENSITY_ITERATIONS must be a number of corrections a sub-step, 2 or more")]
+        [TestCase(new[] { Profile, "5", "2", "x" }, "DIVERGENCE_ITERATIONS must be a number of corrections a sub-step, 2 or more")]
+        [TestCase(new[] { "Headless/figures/gpu-h200-pareto.txt", "5", "2", "2" }, "holds no DFSPH per-kernel table")]
+        public void BadInputNamesTheArgumentAndItsRange(string[] arguments, string message)
+        {
+            var (exitCode, output, error) = Estimate(arguments);
+            Assert.That(exitCode, Is.EqualTo(2));
+            Assert.That(output, Is.Empty);
+            Assert.That(error, Does.Contain(message));
+        }
+    }
+}
