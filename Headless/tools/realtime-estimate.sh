@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Estimates DFSPH's wall time per simulated second at a sub-step and iteration counts measured elsewhere (a slice
+# Estimates DFSPH's GPU time per simulated second at a sub-step and iteration counts measured elsewhere (a slice
 # probe on lavapipe, say), from the per-kernel table a GPU printed for `sphfluid bench --solver dfsph` (the first DFSPH
 # "Per kernel" table of FILE, a log of Headless/gpu-figures.sh). It reads no GPU itself, so it answers what a sub-step
 # at those iterations would cost on the GPU that printed FILE, with what every pass cost there.
@@ -8,8 +8,8 @@
 # BoundarySolveError and SolveFinal, each but the last followed by an ApplyStiffness: n corrections cost n + 1 error
 # rounds and n corrections. Every other kernel of the table runs a fixed number of times a sub-step whatever the
 # iterations (the sort, FindNeighbours, DensityFactor, NonPressureForces, the drift): the fixed part. A solve makes
-# two corrections at the least (SolveFinal), so 2 and 2 at the longest sub-step is the cheapest a sub-step gets. Each kernel's
-# cost a dispatch is its milliseconds over its dispatches in the table. Prints the split, the GPU seconds per
+# two corrections at the least (SolveFinal), so 2 and 2 at the longest sub-step is the cheapest a sub-step gets. Each
+# kernel's cost a dispatch is its milliseconds over its dispatches in the table. Prints the split, the GPU seconds per
 # simulated second and the real-time factor (simulated over GPU seconds; a bound, as the wall adds the host's time).
 #   Headless/tools/realtime-estimate.sh FILE SUBSTEP_MS DENSITY_ITERATIONS DIVERGENCE_ITERATIONS
 # e.g. the 1M slice (LockExchangeSliceProbe) on the H200's profile:

@@ -18,10 +18,13 @@ namespace SphFluid.Tests.Runner
             start.ArgumentList.Add(Path.Combine("Headless", "tools", "realtime-estimate.sh"));
             foreach (string argument in arguments) start.ArgumentList.Add(argument);
             using var process = Process.Start(start)!;
-            string output = process.StandardOutput.ReadToEnd();
-            string error = process.StandardError.ReadToEnd();
-            Assert.That(process.WaitForExit(30_000), Is.True, "realtime-estimate.sh did not finish within 30 s");
-            return (process.ExitCode, output, error);
+            // Both streams read at once, and the wait bounded: a script that hung would fail the test, not stall the run.
+            var output = process.StandardOutput.ReadToEndAsync();
+            var error = process.StandardError.ReadToEndAsync();
+            bool exited = process.WaitForExit(30_000);
+            if (!exited) process.Kill(true);
+            Assert.That(exited, Is.True, "realtime-estimate.sh did not finish within 30 s");
+            return (process.ExitCode, output.Result, error.Result);
         }
 
         [Test]
