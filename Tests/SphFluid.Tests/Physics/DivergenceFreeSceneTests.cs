@@ -50,6 +50,39 @@ namespace SphFluid.Tests.Physics
             Assert.That(report.TotalMass, Is.GreaterThan(0.0));
         }
 
+        /// <summary>The lock exchange at the top of DFSPH's Wendland C2 band (2.9 spacings instead of the scene's 2.85; validation
+        /// allows up to 2.9) may bring no fluid centre within a fifth of a spacing of a wall face in its first second, nor
+        /// to the last-resort clamp. The density constraint, the walls' included, does not hold the fluid beside a wall at
+        /// its lattice place: the fluid there rearranges at rest density while oil beside the front and back walls drifts
+        /// towards them, and before the wall contact acted by distance (DivergenceFreeSolver.hlsl) the clamp caught 8 by
+        /// 0.7 s and 14 by 1 s (108 by 6.5 s), the closest centres at a hundredth of a spacing, the clamp's inset. It
+        /// now holds them a quarter spacing closer than their lattice place (FluidSimulation.DivergenceFreeContactMargin):
+        /// the closest 0.236 spacings from a face.</summary>
+        [Test]
+        public void OilAndWaterAtTheTopOfTheBand_KeepsItsCentresOffTheWalls()
+        {
+            string path = RunnerPaths.EditedScene("OilAndWater", "SmoothingRadius: 0.04275", "SmoothingRadius: 0.0435");
+            var scene = SceneLoader.Load(path, RunnerPaths.Project).Description;
+            Assert.That(new SolverChoice { Solver = PressureSolver.Dfsph }.ApplyTo(scene, "DFSPH OilAndWater at 2.9 spacings"), Is.Null);
+            float spacing = scene.Settings.ParticleSpacing;
+            Assert.That(scene.Settings.SmoothingRadius / spacing, Is.EqualTo(2.9).Within(1e-4));
+            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
+            var particles = new Particle[sim.ParticleCount];
+            double closest = double.MaxValue, next = 0.1;
+            while (sim.SimulatedTime < 1.0 - 1e-6)
+            {
+                sim.Step(Frame);
+                if (sim.SimulatedTime < next - 1e-6) continue;
+                next += 0.1;
+                sim.Particles.GetData(particles);
+                closest = Math.Min(closest, TankMeasures.ClosestToWalls(particles, scene.Container) / spacing);
+            }
+            var report = sim.ReadDiagnostics();
+            TestContext.Progress.WriteLine($"DFSPH OilAndWater at 2.9 spacings, first second: closest centre {closest:F3} spacings from a wall face; {report}");
+            Assert.That(closest, Is.GreaterThanOrEqualTo(0.2));
+            Assert.That(report.ClampHits, Is.EqualTo(0));
+        }
+
         /// <summary>SphereWake under DFSPH. Its sphere stands still for the drive's first second in a pool spawned at rest, so
         /// no work is done on the fluid: its mechanical energy may not rise above the spawn's, and nothing may move faster than
         /// a fall through one spacing, sqrt(2 g s). Then the sphere moves (up to 0.26 m/s) for a second, and no fluid centre

@@ -29,5 +29,12 @@ namespace SphFluid.Tests.Physics
         }
 
         public static double MaxSpeed(Particle[] particles) => particles.Max(p => (double)p.Velocity.Length());
+
+        /// <summary>The smallest distance from a particle centre to a face of the container, m (inside: positive).</summary>
+        public static double ClosestToWalls(Particle[] particles, ContainerDescription container) => particles.Min(p =>
+        {
+            var gap = container.Size / 2 - Vector3.Abs(p.Position - container.Position);
+            return (double)Math.Min(gap.X, Math.Min(gap.Y, gap.Z));
+        });
     }
 }
