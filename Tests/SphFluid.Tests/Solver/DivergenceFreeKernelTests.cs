@@ -52,7 +52,7 @@ namespace SphFluid.Tests.Solver
 
         /// <summary>Compressed to <paramref name="squeeze"/> of the spacing towards the floor's centre line and scattered, with
         /// random velocities: every solve has work, and the drift stays clear of the clamp (a discontinuity tested on its own).</summary>
-        static Particle[] Compressed(FluidSceneDescription scene, int count, float squeeze)
+        static Particle[] Compressed(FluidSceneDescription scene, int count, float squeeze, float drop = 0f, float sink = 0f)
         {
             var rng = new SolverScenes.Rng(4242);
             var spawn = SpawnLayout.Generate(scene);
@@ -60,8 +60,8 @@ namespace SphFluid.Tests.Solver
             for (int i = 0; i < count; i++)
             {
                 var x = spawn[i].Position;
-                x = new Vector3(squeeze * x.X, -0.08f + squeeze * (x.Y + 0.08f), squeeze * x.Z) + rng.InBox(new Vector3(0.002f));
-                particles[i] = new Particle(x, rng.InBox(new Vector3(0.3f)), spawn[i].Phase, spawn[i].Id);
+                x = new Vector3(squeeze * x.X, -0.08f - drop + squeeze * (x.Y + 0.08f), squeeze * x.Z) + rng.InBox(new Vector3(0.002f));
+                particles[i] = new Particle(x, rng.InBox(new Vector3(0.3f)) - new Vector3(0f, sink, 0f), spawn[i].Phase, spawn[i].Id);
             }
             return particles;
         }
@@ -81,6 +81,18 @@ namespace SphFluid.Tests.Solver
         public void OneIterationAroundASphereMatchesReference(int lanes) =>
             MatchesReference(Block(false, sphere: true), false, 0.97f, lanes, 1);
 
+        /// <summary>The block at its spacing, lowered by 0.3 spacings and sinking at 0.5 m/s: its bottom row starts within a
+        /// quarter spacing of the floor (0.2 of a spacing), partly above rest density, where the drift's wall contact acts
+        /// whatever the density (DivergenceFreeSolver.hlsl's DIVERGENCE_CONTACT_GAP).</summary>
+        [TestCase(1, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_WithinTheContactGap")]
+        [TestCase(8, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_WithinTheContactGapEightLanes")]
+        public void WithinTheContactGapMatchesReference(int lanes)
+        {
+            var scene = Block(false);
+            float spacing = scene.Settings.ParticleSpacing;
+            MatchesReference(scene, false, 1f, lanes, 1, drop: 0.3f * spacing, sink: 0.5f);
+        }
+
         /// <summary>Three rounds: the first takes d_0 = z_0 / theta, the next two carry the last step (beta_k d_{k-1}), and
         /// the projection keeps each particle's summed q at or above zero (DivergenceFreeSolver.hlsl's Chebyshev acceleration).</summary>
         const int ChebyshevRounds = 3;
@@ -95,11 +107,12 @@ namespace SphFluid.Tests.Solver
             MatchesReference(scene, multiphase, squeeze, lanes, ChebyshevRounds);
         }
 
-        static void MatchesReference(FluidSceneDescription scene, bool multiphase, float squeeze, int lanes, int iterations)
+        static void MatchesReference(FluidSceneDescription scene, bool multiphase, float squeeze, int lanes, int iterations,
+            float drop = 0f, float sink = 0f)
         {
             using var sim = new FluidSimulation(GpuTestDevice.Shared, scene) { LanesPerParticle = lanes };
             Assert.That(sim.PhaseRows[0].WallWeightScale, multiphase ? Is.EqualTo(0.08 / 0.078).Within(1e-4) : Is.EqualTo(1.0).Within(1e-6));
-            var input = Compressed(scene, sim.ParticleCount, squeeze);
+            var input = Compressed(scene, sim.ParticleCount, squeeze, drop, sink);
             sim.SetParticles(input);
             var counts = new uint[sim.ParticleCount + sim.BoundaryCount];
             sim.NeighbourCounts.GetData(counts);

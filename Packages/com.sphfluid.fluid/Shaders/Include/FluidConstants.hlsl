@@ -42,7 +42,7 @@ cbuffer FluidConstants
     float _Gamma;                           // SphDensityPressure: Tait exponent
     float _ArtificialViscosity;             // SphViscosity: alpha c h, m^2/s
     float _WallArtificialViscosity;         // SphViscosity: alpha_w c h against boundary particles, m^2/s
-    float _WallContactNumberDensity;        // SphBoundary: the walls' share of delta beside a flat wall at rest (DFSPH: 1/4 spacing closer), 1/m^3
+    float _WallContactNumberDensity;        // SphBoundary: the walls' share of delta beside a flat wall at rest, 1/m^3
     float _CohesionCoefficient;             // SphSurfaceTension: 32 / (pi H^9)
     float _XsphEpsilon;                     // SphXsph: epsilon in [0, 1]
     float _ShiftingCoefficient;             // ParticleShifting: A h, m

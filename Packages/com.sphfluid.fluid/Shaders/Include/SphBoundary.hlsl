@@ -48,14 +48,14 @@
 // wall's) that the bulk keeps pushing still reached the clamp: 27 times in 3 s of the OilAndWater scene, along the
 // front and back walls of its thin container. Once such a particle is closer to the walls than a particle at rest
 // beside a flat wall (its walls' number density sum_b omega_ib W_ib exceeds that lattice value,
-// _WallContactNumberDensity: FluidSimulation.WallContactNumberDensity, times the phase's WallWeightScale), it may come no closer: the wall part of its
+// _WallContactNumberDensity: SmoothingKernels.FlatWallNumberDensity, times the phase's WallWeightScale), it may come no closer: the wall part of its
 // continuity equation,
 //   sum_b omega_ib (v_i - v_b) . gradW_ib = v_i . G_w - sum_b omega_ib v_b . gradW_ib,   G_w = sum_b omega_ib gradW_ib,
 // is kept from turning positive by removing exactly the velocity along G_w that would (WallContactVelocity: an
 // inelastic contact; sliding along the wall and motion away from it are left alone). It acts on the velocity the
 // particle drifts with next (v_{n+1/2} + a dt + dv_xsph) through the full step's velocity correction, so it is not
 // an acceleration and does not shorten the step. DFSPH's solves have no such damping and apply the same contact to
-// every particle below rest density, and to any a quarter spacing closer than this, in the drift after the
+// every particle below rest density, and to any within a quarter spacing of a wall's face, in the drift after the
 // constant-density solve (DivergenceFreeSolver.hlsl).
 // Measured (`Headless/simulate.sh <scene> --seconds N`): clamp hits 27 -> 0 in OilAndWater (3 s), 35 -> 10 in
 // SphereWake (4 s, the rest are compressed fluid driven into the corners of the back wall at a third of the speed
@@ -204,6 +204,19 @@ float WallWeight(BoundaryParticle wall, PhaseProperties phase)
 float3 BoundaryPressureForcePair(float pressureI, float boundaryPressure, float numberDensityI, float weight, float3 gradient)
 {
     return -(weight * (pressureI + boundaryPressure) / (numberDensityI * numberDensityI)) * gradient;
+}
+
+// How far x lies inside the walls: its distance to the nearest of the container's faces and, with obstacles, of the
+// spheres' surfaces (m; negative beyond one).
+float WallGap(float3 x)
+{
+    float3 faces = _ContainerHalfSize - abs(ContainerLocal(x));
+    float gap = min(faces.x, min(faces.y, faces.z));
+#if OBSTACLES
+    for (uint o = 0u; o < _ObstacleCount; o++)
+        gap = min(gap, length(x - _Obstacles[o].center) - _Obstacles[o].radius);
+#endif
+    return gap;
 }
 
 // Puts x back inside the container and removes the outward wall-relative normal velocity; true if it did.

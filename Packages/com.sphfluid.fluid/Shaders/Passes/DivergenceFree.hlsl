@@ -455,16 +455,18 @@ void ApplyStiffness(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_Group
     _WarmStart[pi.id] += OpenSolve() == DENSITY_SOLVE ? float2(qi, 0.0) : float2(0.0, qi);
 }
 
-// DivergenceFreeSolver.hlsl's wall contact for particle i: under-dense at the sub-step's start, or closer to the walls than
-// a particle at rest beside a flat wall.
+// DivergenceFreeSolver.hlsl's wall contact for particle i: under-dense at the sub-step's start, or bound to end its drift
+// within DIVERGENCE_CONTACT_GAP spacings of a wall's face.
 float3 ContactLimitedVelocity(uint i, Particle p)
 {
+    if (_Densities[i].z >= RestNumberDensityOf(p)
+        && WallGap(DriftedPosition(p.position, p.velocity)) >= DIVERGENCE_CONTACT_GAP * _ParticleSpacing)
+        return p.velocity;
     PhaseProperties phase = _Phases[PHASE_OF(p)];
     int3 home = GridCoordOf(p.position);
     NeighbourList list = ListOf(i);
     float3 wallGradients = float3(0.0, 0.0, 0.0);
     float wallRate = 0.0;
-    float wallNumberDensity = 0.0;
     for (uint row = 0u; row < NeighbourRows(list); row++)
     {
         uint2 walls = WallNeighbours(list, home, row);
@@ -475,15 +477,12 @@ float3 ContactLimitedVelocity(uint i, Particle p)
             float r2 = dot(rib, rib);
             if (r2 >= _SmoothingRadius2)
                 continue;
-            float weight = WallWeight(wall, phase);
-            float3 gradient = weight * PairGradient(rib, sqrt(r2), 1u, 0u);
+            float3 gradient = WallWeight(wall, phase) * PairGradient(rib, sqrt(r2), 1u, 0u);
             wallGradients += gradient;
             wallRate += dot(wall.velocity, gradient);
-            wallNumberDensity += weight * Kernel(r2);
         }
     }
-    bool contact = _Densities[i].z < RestNumberDensityOf(p) || wallNumberDensity > _WallContactNumberDensity * phase.wallWeightScale;
-    return contact ? WallContactVelocity(p.velocity, wallGradients, wallRate) : p.velocity;
+    return WallContactVelocity(p.velocity, wallGradients, wallRate);
 }
 
 [numthreads(PARTICLE_THREADS, 1, 1)]

@@ -18,7 +18,7 @@ namespace SphFluid.Reference
         readonly PhaseProperties[] _phases;
         readonly BoundaryParticle[] _boundaryRest;
         readonly float[] _ownNumberDensities;
-        readonly double _h, _h2, _cohesion, _wallContactNumberDensity;
+        readonly double _h, _h2, _cohesion, _flatWallNumberDensity;
 
         public ContainerDescription Container { get; set; }
         public List<RigidSphere> Obstacles { get; set; }
@@ -34,7 +34,7 @@ namespace SphFluid.Reference
             _h = _settings.SmoothingRadius;
             _h2 = _h * _h;
             _cohesion = 32.0 / (Math.PI * Math.Pow(_h, 9));
-            _wallContactNumberDensity = FluidSimulation.WallContactNumberDensity(_settings);
+            _flatWallNumberDensity = SmoothingKernels.FlatWallNumberDensity(_settings.SmoothingKernel, _settings.ParticleSpacing, _h);
             if (_settings.PressureSolver == PressureSolver.Dfsph && _settings.SolverIteration == SolverIteration.Chebyshev)
                 _chebyshev = ChebyshevBounds.For(_settings.SmoothingKernel, _settings.ParticleSpacing, _h, _settings.SolverRelaxation,
                     SpawnLayout.Depth(SpawnLayout.Generate(scene), _settings.Gravity, _settings.ParticleSpacing));
@@ -556,7 +556,7 @@ namespace SphFluid.Reference
             {
                 var correction = xsph ? state.Xsph[i] : Double3.Zero;
                 bool contact = _settings.WcsphDensity == WcsphDensity.DeltaSph || state.Density[i] < _phases[particles[i].Phase].RestDensity;
-                if (contact && state.WallNumberDensity[i] > _wallContactNumberDensity * _phases[(int)particles[i].Phase].WallWeightScale)
+                if (contact && state.WallNumberDensity[i] > _flatWallNumberDensity * _phases[(int)particles[i].Phase].WallWeightScale)
                 {
                     var predicted = new Double3(particles[i].Velocity) + state.Acceleration[i] * dt + correction;
                     correction += ContactVelocity(predicted, state.WallGradientSum[i], state.WallVelocityRate[i]) - predicted;
@@ -574,32 +574,45 @@ namespace SphFluid.Reference
             return rate > 0 && g2 > 1e-20 ? v - g * (rate / g2) : v;
         }
 
-        /// <summary>DFSPH's wall contact (DivergenceFreeSolver.hlsl): a particle below its rest number density, or closer to
-        /// the walls than the flat-wall lattice, loses the velocity along G_w = sum_b omega_b gradW_ib that would compress
-        /// its wall side.</summary>
-        public void WallContact(Particle[] particles, double[] numberDensity, Double3[] v)
+        /// <summary>DFSPH's wall contact (DivergenceFreeSolver.hlsl): a particle below its rest number density, or whose drift
+        /// over <paramref name="dt"/> would end within <see cref="DivergenceFreeContactGap"/> spacings of a wall's face, loses the
+        /// velocity along G_w = sum_b omega_b gradW_ib that would compress its wall side.</summary>
+        public void WallContact(Particle[] particles, double[] numberDensity, Double3[] v, double dt)
         {
             var walls = PlacedBoundary();
             for (int i = 0; i < particles.Length; i++)
             {
                 var xi = new Double3(particles[i].Position);
+                if (numberDensity[i] >= RestNumberDensity(particles[i]) && WallGap(xi + v[i] * dt) >= DivergenceFreeContactGap * _settings.ParticleSpacing)
+                    continue;
                 var g = new Double3(0, 0, 0);
-                double wallRate = 0, wallNumberDensity = 0;
+                double wallRate = 0;
                 foreach (var wall in walls)
                 {
                     var rib = xi - new Double3(wall.Position);
                     double r = rib.Length();
                     if (r >= _h) continue;
-                    double weight = WallWeight(wall, particles[i]);
-                    var gradient = PairGradient(rib, r, 1, 0) * weight;
+                    var gradient = PairGradient(rib, r, 1, 0) * WallWeight(wall, particles[i]);
                     g += gradient;
                     wallRate += Double3.Dot(new Double3(wall.Velocity), gradient);
-                    wallNumberDensity += weight * Kernel(r);
                 }
-                bool contact = numberDensity[i] < RestNumberDensity(particles[i])
-                    || wallNumberDensity > _wallContactNumberDensity * _phases[(int)particles[i].Phase].WallWeightScale;
-                if (contact) v[i] = ContactVelocity(v[i], g, wallRate);
+                v[i] = ContactVelocity(v[i], g, wallRate);
             }
+        }
+
+        /// <summary>Within this many spacings of a wall's face DFSPH's wall contact acts at any density (DivergenceFreeSolver.hlsl's
+        /// DIVERGENCE_CONTACT_GAP).</summary>
+        public const double DivergenceFreeContactGap = 0.25;
+
+        /// <summary>SphBoundary.hlsl's WallGap: the distance from x to the nearest container face or sphere surface, m.</summary>
+        double WallGap(Double3 x)
+        {
+            var q = ToLocal(x);
+            var half = new Double3(Container.Size * 0.5f);
+            double gap = double.MaxValue;
+            for (int axis = 0; axis < 3; axis++) gap = Math.Min(gap, half[axis] - Math.Abs(q[axis]));
+            foreach (var o in Obstacles) gap = Math.Min(gap, (x - new Double3(o.Center)).Length() - o.Radius);
+            return gap;
         }
 
         /// <summary>Applies the pressure terms q of the fluid and <paramref name="wallQ"/> of the walls (indexed like
@@ -793,7 +806,7 @@ namespace SphFluid.Reference
                 ApplyStiffness(particles, v, q, walls.Q, dt);
             }
             var moved = new Particle[n];
-            WallContact(particles, state.NumberDensity, v);
+            WallContact(particles, state.NumberDensity, v, dt);
             for (int i = 0; i < n; i++)
             {
                 var x = new Double3(particles[i].Position) + v[i] * dt;

@@ -27,18 +27,6 @@ namespace SphFluid.Simulation
         /// sphere to zero without slowing a dam-break front along the floor.</summary>
         public const float WallContactDamping = 0.5f;
 
-        /// <summary>How much closer to a flat wall than its lattice place at rest, in particle spacings, a DFSPH particle at or
-        /// above its rest density may come before the wall contact acts (DivergenceFreeSolver.hlsl). At 0, the place itself,
-        /// the contact caught the bottom rows of a resting tank, which its hydrostatic load keeps a little closer, and let
-        /// them rise but not sink: the tank read 0.15 to 0.18 % compressed at a 0.1 % tolerance (DivergenceFreeTankTests).</summary>
-        public const float DivergenceFreeContactMargin = 0.25f;
-
-        /// <summary>The walls' part of a particle's number density beyond which the wall contact acts (SphBoundary.hlsl,
-        /// DivergenceFreeSolver.hlsl), for phases whose wall weight scale is 1: a particle at rest beside a flat wall under
-        /// WCSPH, one <see cref="DivergenceFreeContactMargin"/> closer under DFSPH.</summary>
-        public static double WallContactNumberDensity(FluidSettings s) => SmoothingKernels.FlatWallNumberDensity(s.SmoothingKernel,
-            s.ParticleSpacing, s.SmoothingRadius, s.PressureSolver == PressureSolver.Dfsph ? DivergenceFreeContactMargin * s.ParticleSpacing : 0.0);
-
         /// <summary>The constant-density solve stops when the density it predicts (delta + dt D delta / Dt, first order in dt)
         /// is within this fraction of the tolerance, so that the density measured after the drift, which the prediction
         /// misses by its second-order part, is within the tolerance itself: at 1.0 a settled tank measured 0.1047 % at a
@@ -805,7 +793,7 @@ namespace SphFluid.Simulation
             c.GradientCoefficient = (float)(SmoothingKernels.Normalisation(s.SmoothingKernel, h) / h);
             c.ArtificialViscosity = (float)(s.ArtificialViscosity * _timeStep.SpeedOfSound * 0.5 * h);
             c.WallArtificialViscosity = (float)(WallContactDamping * _timeStep.SpeedOfSound * 0.5 * h);
-            c.WallContactNumberDensity = (float)WallContactNumberDensity(s);
+            c.WallContactNumberDensity = (float)SmoothingKernels.FlatWallNumberDensity(s.SmoothingKernel, s.ParticleSpacing, h);
             c.WallContactAtAnyDensity = _deltaSph ? 1u : 0u;
             c.SolverRelaxation = s.SolverRelaxation;
             var (low, high) = _divergenceFree && s.SolverIteration == SolverIteration.Chebyshev

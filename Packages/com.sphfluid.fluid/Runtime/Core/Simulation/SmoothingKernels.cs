@@ -62,15 +62,13 @@ namespace SphFluid.Simulation
         }
 
         /// <summary>The walls' part of the number density of a lattice particle at rest beside a flat wall sampled on the
-        /// same lattice: the lattice sum over the half-space of points below it (dy &lt; 0); with <paramref name="closer"/>
-        /// (m), that of a particle this much closer to the wall than its lattice place.</summary>
-        public static double FlatWallNumberDensity(KernelFamily kind, double spacing, double support, double closer = 0.0)
+        /// same lattice: the lattice sum over the half-space of points below it (dy &lt; 0).</summary>
+        public static double FlatWallNumberDensity(KernelFamily kind, double spacing, double support)
         {
             double sum = 0.0;
             ForEachLatticePoint(spacing, support, (dx, dy, dz) =>
             {
-                double y = dy + closer;
-                if (dy < 0) sum += Value(kind, Math.Sqrt(dx * dx + y * y + dz * dz), support);
+                if (dy < 0) sum += Value(kind, Math.Sqrt(dx * dx + dy * dy + dz * dz), support);
             });
             return sum;
         }
