@@ -92,18 +92,19 @@ float ProjectedChebyshevStep(float applied, float previousStep, float jacobiStep
 // which removes exactly the velocity along G_w = sum_b omega_ib gradW_ib that compresses the wall side
 // (WallContactVelocity in SphBoundary.hlsl, which WCSPH uses too; there only for particles already closer to the walls
 // than at rest, beside its contact damping). It has no speed of sound in it and no time-step bound of its own.
-// It also acts on a particle at or above rest density once it is within DIVERGENCE_CONTACT_GAP spacings of a wall's face
-// (WallGap, SphBoundary.hlsl; at rest beside a flat wall a particle is half a spacing from it): the density constraint,
-// the walls' included, does not hold the fluid beside a wall at its lattice place. Wall and fluid particles weigh
-// alike, so a particle that moves towards a wall while its fluid neighbours rearrange keeps its own density and its
-// wall particles' at rest, and nothing pushes back: in the lock exchange at 2.9 spacings oil beside the front and back
-// walls drifted to within a hundredth of a spacing of the faces at rest density, the wall particles beside it within
-// 0.5 % of theirs, and the last-resort clamp caught 14 in the first second and 108 by 6.5 s. Read off the walls' number
-// density instead (a quarter spacing closer than a flat wall's rest place, as WCSPH's gate reads it at the place
-// itself), the gate held them too, but at an edge or corner of the container that sum exceeds a flat wall's
-// anywhere, so the contact acted on every particle there and kept oil in the floor's edges: 1.6 to 2.6 % of the floor
-// layer oil from 3 s to 6.5 s of the scene's lock exchange, 0.34 % (one particle, in a corner) by distance. The gate
-// reads where the drift would end, so a particle does not first cross the gap for a sub-step.
+// It also acts on a particle at or above rest density once it is within DIVERGENCE_CONTACT_GAP spacings of a wall's
+// face (WallGap, SphBoundary.hlsl; at rest beside a flat wall a particle is half a spacing from it): the density
+// constraint, the walls' included, does not hold the fluid beside a wall at its lattice place. Wall and fluid
+// particles weigh alike, so a particle that moves towards a wall while its fluid neighbours rearrange keeps its own
+// density and its wall particles' at rest, and nothing pushes back: in the lock exchange at 2.9 spacings oil beside
+// the front and back walls drifted to within a hundredth of a spacing of the faces at rest density, the wall
+// particles beside it within 0.6 % of theirs (WallCreepProbe at 10e0e0f), and the last-resort clamp caught 14 in the
+// first second and 108 by 6.5 s. Read off the walls' number density instead (a quarter spacing closer than a flat
+// wall's rest place, as WCSPH's gate reads it at the place itself), the gate held them too, but at an edge or corner
+// of the container that sum exceeds a flat wall's anywhere, so the contact acted on every particle there and kept
+// oil in the floor's edges: 1.6 to 2.6 % of the floor layer oil from 3 s to 6.5 s of the scene's lock exchange, 0.34
+// % (one particle, in a corner) by distance. The gate reads where the drift would end, so a particle does not first
+// cross the gap for a sub-step.
 #define DIVERGENCE_CONTACT_GAP 0.25
 
 // Walls as unknowns. With the fluid particle's own q mirrored onto the wall (Akinci et al. 2012, "Versatile rigid-fluid
