@@ -102,8 +102,8 @@ float ProjectedChebyshevStep(float applied, float previousStep, float jacobiStep
 // first second and 108 by 6.5 s. Read off the walls' number density instead (a quarter spacing closer than a flat
 // wall's rest place, as WCSPH's gate reads it at the place itself), the gate held them too, but at an edge or corner
 // of the container that sum exceeds a flat wall's anywhere, so the contact acted on every particle there and kept
-// oil in the floor's edges: 1.6 to 2.6 % of the floor layer oil from 3 s to 6.5 s of the scene's lock exchange, 0.34
-// % (one particle, in a corner) by distance. The gate reads where the drift would end, so a particle does not first
+// oil in the floor's edges: 1.6 to 2.6 % of the floor layer oil from 3 s to 6.5 s of the scene's lock exchange,
+// 0.34 % (one particle, in a corner) by distance. The gate reads where the drift would end, so a particle does not first
 // cross the gap for a sub-step.
 #define DIVERGENCE_CONTACT_GAP 0.25
 
