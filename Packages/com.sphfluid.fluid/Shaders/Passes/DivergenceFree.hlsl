@@ -227,8 +227,10 @@ float RoundStep(float compressionStep, float applied, float previousStep, float 
 }
 
 // One Jacobi step of a wall particle: q_b from its predicted compression (density solve) or its compression rate
-// (divergence solve), D delta_b / Dt = sum_f (v_f - v_b) . gradW_fb; the q_b the last correction applied is summed
-// into the warm start first. Laned; a wall particle without a factor (no fluid) walks nothing and gets q_b = 0.
+// (divergence solve), D delta_b / Dt = sum_f (v_f - v_b) . gradW_fb; in the density solve raised to the fluid's q around
+// it (WallStepAtLeast: the q each fluid neighbour has applied in this solve with this round's step, Shepard-weighted).
+// The q_b the last correction applied is summed into the warm start first. Runs after the fluid's error pass, whose steps
+// it reads. Laned; a wall particle without a factor (no fluid) walks nothing and gets q_b = 0.
 [numthreads(PARTICLE_THREADS, 1, 1)]
 void BoundarySolveError(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
 {
@@ -239,24 +241,31 @@ void BoundarySolveError(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_G
     BoundaryParticle wall = _BoundaryParticles[b];
     int3 home = GridCoordOf(wall.position);
     NeighbourList list = ListOf(_ParticleCount + b);
-    float rate = 0.0;
+    uint open = OpenSolve();
+    float rate = 0.0, weightedStiffness = 0.0, weights = 0.0;
     for (uint row = 0u; row < NeighbourRows(list); row++)
     {
         uint2 range = FluidNeighbours(list, home, row);
         for (uint k = range.x + lane; k < range.y; k += _NeighbourLanes)
         {
-            Particle pf = _Particles[Neighbour(list, k)];
+            uint f = Neighbour(list, k);
+            Particle pf = _Particles[f];
             float3 rfb = pf.position - wall.position;
             float r2 = dot(rfb, rfb);
             if (r2 >= _SmoothingRadius2)
                 continue;
             rate += ContinuityPair(pf.velocity, wall.velocity, PairGradient(rfb, sqrt(r2), 1u, 0u));
+            if (open != DENSITY_SOLVE)
+                continue;
+            float w = Kernel(r2);
+            weightedStiffness += w * (_WarmStart[pf.id].x + _SolverStiffness[f]);
+            weights += w;
         }
     }
-    rate = SumOverLanes(float4(rate, 0.0, 0.0, 0.0), groupThread.x).x;
+    float3 sums = SumOverLanes(float4(rate, weightedStiffness, weights, 0.0), groupThread.x).xyz;
+    rate = sums.x;
     if (LaneOwner(id.x) >= _BoundaryCount || LaneOf(id.x) != 0u)
         return;
-    uint open = OpenSolve();
     uint boundaryId = _BoundarySortedSource[b];
     float2 summed = _BoundaryWarmStart[boundaryId] + (open == DENSITY_SOLVE ? float2(solve.z, 0.0) : float2(0.0, solve.z));
     _BoundaryWarmStart[boundaryId] = summed;
@@ -267,8 +276,11 @@ void BoundarySolveError(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_G
         ? SignedDensityStiffness(solve.x, rate, solve.w, solve.y, _TimeStep)
         : SignedDivergenceStiffness(rate, solve.y, _TimeStep);
     float wallRelaxation = CHEBYSHEV_WALL_SHARE * _SolverRelaxation;
-    solve.z = pushes ? RoundStep(WALL_RELAXATION * stiffness.x, open == DENSITY_SOLVE ? summed.x : summed.y, solve.z,
-        wallRelaxation * signedStiffness) : 0.0;
+    float applied = open == DENSITY_SOLVE ? summed.x : summed.y;
+    float step = RoundStep(WALL_RELAXATION * stiffness.x, applied, solve.z, wallRelaxation * signedStiffness);
+    if (open == DENSITY_SOLVE)
+        step = WallStepAtLeast(step, applied, sums.z > 0.0 ? sums.y / sums.z : 0.0);
+    solve.z = pushes ? step : 0.0;
     _BoundarySolve[b] = solve;
 }
 

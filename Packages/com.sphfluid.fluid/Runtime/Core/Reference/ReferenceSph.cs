@@ -746,6 +746,30 @@ namespace SphFluid.Reference
             return rates;
         }
 
+        /// <summary>The fluid's q summed so far in the constant-density solve (<paramref name="applied"/>, this round's step included),
+        /// Shepard-weighted at every wall particle: the floor under its q_b (DivergenceFreeSolver.hlsl's WallStepAtLeast); 0 where no
+        /// fluid reaches it.</summary>
+        double[] WallExtrapolatedStiffness(Particle[] particles, double[] applied)
+        {
+            var walls = PlacedBoundary();
+            var stiffness = new double[walls.Length];
+            for (int b = 0; b < walls.Length; b++)
+            {
+                var xb = new Double3(walls[b].Position);
+                double weighted = 0, weights = 0;
+                for (int f = 0; f < particles.Length; f++)
+                {
+                    double r = (new Double3(particles[f].Position) - xb).Length();
+                    if (r >= _h) continue;
+                    double w = Kernel(r);
+                    weighted += w * applied[f];
+                    weights += w;
+                }
+                stiffness[b] = weights > 0 ? weighted / weights : 0.0;
+            }
+            return stiffness;
+        }
+
         /// <summary>omega_ib, wall particle b's volume at fluid particle i's rest number density (SphBoundary.hlsl's WallWeight).</summary>
         double WallWeight(BoundaryParticle wall, Particle particle) => wall.Weight * (double)_phases[(int)particle.Phase].WallWeightScale;
 
@@ -755,7 +779,8 @@ namespace SphFluid.Reference
         /// One DFSPH sub-step as FluidSimulation runs it from a state without warm start, with exactly
         /// <paramref name="iterations"/> corrections per solve (MaxSolverIterations = 1 stops each solve after one): non-pressure
         /// forces, predicted velocity (XSPH, damping), constant-density solve, wall contact, drift and clamp, factors at the new positions,
-        /// divergence-free solve, each with the wall particles as unknowns. Returns the new particles, the q each solve summed per
+        /// divergence-free solve, each with the wall particles as unknowns (the constant-density solve's q_b at least the fluid's around
+        /// them, Shepard-weighted). Returns the new particles, the q each solve summed per
         /// particle and the q_b both solves summed per wall particle (indexed like <see cref="PlacedBoundary"/>).
         /// </summary>
         public Particle[] DivergenceFreeSubstep(Particle[] particles, double dt, bool xsph, int iterations,
@@ -797,9 +822,10 @@ namespace SphFluid.Reference
                 RoundSteps(walls.Q, wallSummed, b => WallRelaxation * Math.Max(wallExcess[b], 0.0) * w.Factor[b] / (dt * dt),
                     b => w.Factor[b] > 0.0 ? wallRelaxation * wallExcess[b] * w.Factor[b] / (dt * dt) : 0.0, beta, gamma);
                 for (int i = 0; i < n; i++) densityStiffness[i] += q[i];
+                var fluidStiffness = WallExtrapolatedStiffness(particles, densityStiffness);
                 for (int b = 0; b < walls.Q.Length; b++)
                 {
-                    if (walls.Factor[b] <= 0.0) walls.Q[b] = 0.0;
+                    walls.Q[b] = walls.Factor[b] > 0.0 ? Math.Max(walls.Q[b], fluidStiffness[b] - wallSummed[b]) : 0.0;
                     wallSummed[b] += walls.Q[b];
                     wallStiffness[b] += walls.Q[b];
                 }
