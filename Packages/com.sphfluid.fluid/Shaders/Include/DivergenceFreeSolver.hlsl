@@ -139,7 +139,7 @@ float ProjectedChebyshevStep(float applied, float previousStep, float jacobiStep
 // the fluid pairs push it by -2q sum_j gradW_ij, which a complete neighbourhood's wall part balances only with
 // -(omega q + q_b) G_w at q_b = q. The pairs with walls then cost half what a fluid pair costs, and the fluid drifts
 // towards the walls while every constraint holds (WallCreepProbe: 122 centres within 0.35 spacings of the front and
-// back walls of the 2.9-spacing lock exchange at 1 s, held off the faces only by the wall contact below; 13 with this).
+// back walls of the 2.9-spacing lock exchange at 1 s, held off the faces only by the wall contact above; 13 with this).
 // So each round of the constant-density solve raises a wall particle's q_b to the q the fluid around it has applied in
 // this solve, Shepard-weighted: the pressure boundary of Band et al. 2018 ("Pressure boundaries for implicit
 // incompressible SPH", ACM TOG 37), without its hydrostatic term, as a floor under the wall's own constraint rather than
