@@ -173,19 +173,7 @@ namespace SphFluid.Reference
             // Each wall particle's pressure: the Shepard-weighted fluid pressure around it plus the hydrostatic term.
             var wallPressure = new double[walls.Length];
             for (int b = 0; b < walls.Length; b++)
-            {
-                double sum = 0, weights = 0;
-                for (int f = 0; f < n; f++)
-                {
-                    var fluidToWall = xb[b] - x[f];
-                    double r = fluidToWall.Length();
-                    if (r >= _h) continue;
-                    double w = Kernel(r);
-                    sum += (s.Pressure[f] + s.Density[f] * Double3.Dot(gravity, fluidToWall)) * w;
-                    weights += w;
-                }
-                wallPressure[b] = weights > 0 ? Math.Max(0.0, sum / weights) : 0.0;
-            }
+                wallPressure[b] = Math.Max(0.0, ShepardAverage(xb[b], x, (f, fluidToWall) => s.Pressure[f] + s.Density[f] * Double3.Dot(gravity, fluidToWall)));
             double speedOfSound = Math.Sqrt(_settings.Stiffness * _settings.Gamma / MinRestDensity());
             double artificial = _settings.ArtificialViscosity * speedOfSound * 0.5 * _h;
             double wallArtificial = FluidSimulation.WallContactDamping * speedOfSound * 0.5 * _h;
@@ -752,22 +740,29 @@ namespace SphFluid.Reference
         double[] WallExtrapolatedStiffness(Particle[] particles, double[] applied)
         {
             var walls = PlacedBoundary();
+            var x = new Double3[particles.Length];
+            for (int f = 0; f < particles.Length; f++) x[f] = new Double3(particles[f].Position);
             var stiffness = new double[walls.Length];
             for (int b = 0; b < walls.Length; b++)
-            {
-                var xb = new Double3(walls[b].Position);
-                double weighted = 0, weights = 0;
-                for (int f = 0; f < particles.Length; f++)
-                {
-                    double r = (new Double3(particles[f].Position) - xb).Length();
-                    if (r >= _h) continue;
-                    double w = Kernel(r);
-                    weighted += w * applied[f];
-                    weights += w;
-                }
-                stiffness[b] = weights > 0 ? weighted / weights : 0.0;
-            }
+                stiffness[b] = ShepardAverage(new Double3(walls[b].Position), x, (f, _) => applied[f]);
             return stiffness;
+        }
+
+        /// <summary>The kernel-weighted average at <paramref name="at"/> of <paramref name="value"/>(f, at - x_f) over the fluid
+        /// particles within the support (Shepard's interpolation, as the walls' pressures take it); 0 where none reaches.</summary>
+        double ShepardAverage(Double3 at, Double3[] x, Func<int, Double3, double> value)
+        {
+            double sum = 0, weights = 0;
+            for (int f = 0; f < x.Length; f++)
+            {
+                var fluidToPoint = at - x[f];
+                double r = fluidToPoint.Length();
+                if (r >= _h) continue;
+                double w = Kernel(r);
+                sum += value(f, fluidToPoint) * w;
+                weights += w;
+            }
+            return weights > 0 ? sum / weights : 0.0;
         }
 
         /// <summary>omega_ib, wall particle b's volume at fluid particle i's rest number density (SphBoundary.hlsl's WallWeight).</summary>
