@@ -5,8 +5,8 @@
 #   realtime  OilAndWater at about 100k, 250k, 1M and 2M particles (--particles-scales 24 60 240 481), WCSPH at the
 #             scene's stiffness and DFSPH at 0.1 % with each of ITERATIONS (the Jacobi and the Chebyshev solve), 1
 #             simulated second each: density error, wall ms per simulated second and the real-time factor (sphfluid study).
-#   bench     bench at 1M particles for each solver: the per-pass and per-kernel milliseconds that show where the time
-#             goes, and (WCSPH) the planner's savings.
+#   bench     bench at 1M particles for each solver (DFSPH with each of BENCH_ITERATIONS): the per-pass and per-kernel
+#             milliseconds that show where the time goes, and (WCSPH) the planner's savings.
 #   pareto    the accuracy-for-time matrix at 100k and 250k: WCSPH x1 and x4 stiffness, DFSPH at 1, 0.1 and 0.01 %,
 #             the scene's CFL number; its table, CSV and Pareto chart. With 1M (PARETO_SCALES="24 60 240") it outran
 #             300 s on an H200: each DFSPH row at 1M spends 100 iterations a sub-step until it turns unhealthy.
@@ -15,18 +15,21 @@
 #             and the largest count whose frame fits half of 16.7 ms, here and on GPUs SLOWER_GPUS times slower per
 #             particle: 3 (a GeForce RTX 4060 Ti's 22 FP32 TFLOPS against an H100's or H200's 67) and 16.7 (its 288 GB/s
 #             against an H200's 4.8 TB/s of memory bandwidth, an upper bound: an H100 costs what an H200 does).
-#   layering  OilAndWater at its own size for 6.5 simulated seconds under each solver, diagnostics every 0.5 s: the
-#             interface's tilt and the layering of issue #5, at a speed lavapipe cannot give (sphfluid simulate).
+#   layering  OilAndWater at its own size for 6.5 simulated seconds under WCSPH and under DFSPH with each of ITERATIONS,
+#             diagnostics every 0.5 s: the interface's tilt and the layering of issue #5, at a speed lavapipe cannot give
+#             (sphfluid simulate).
 # The stages are named as arguments, run in the order given (default: realtime bench pareto). Each step has a time
 # limit, so a slow step costs only itself. The environment can change the sizes, the solvers the bench stage times and
-# each step's limit in seconds: REALTIME_SCALES, PARETO_SCALES, ITERATIONS ("jacobi chebyshev"), BENCH_PARTICLES, BENCH_SOLVERS ("dfsph wcsph"),
+# each step's limit in seconds: REALTIME_SCALES, PARETO_SCALES, ITERATIONS ("jacobi chebyshev"), BENCH_PARTICLES,
+# BENCH_SOLVERS ("dfsph wcsph"), BENCH_ITERATIONS (ITERATIONS),
 # RUN_SECONDS, REALTIME_LIMIT (300), BENCH_LIMIT (120 each), PARETO_LIMIT (300), SCENE_SCALES, SLOWER_GPUS,
 # SCENES (the demo scenes the scenes stage benches), SCENES_LIMIT (90 each), LAYERING_SECONDS (6.5), LAYERING_LIMIT
-# (150 each).
+# (150 each, one per solve).
 #
 # Writes into $OUT (the device tool's folder that comes back; else Output/gpu): gpu-figures.log (everything printed),
-# realtime.md/.csv, pareto.md/.csv/.png/.svg and layering-wcsph.csv/-dfsph.csv: nine files with every stage, over the
-# tool's eight, so one call runs at most two of realtime, pareto and layering (scenes and bench print to the log only).
+# realtime.md/.csv, pareto.md/.csv/.png/.svg and layering-wcsph.csv/-dfsph-jacobi.csv/-dfsph-chebyshev.csv: ten files
+# with every stage, over the tool's eight, so one call runs at most two of realtime, pareto and layering (scenes and
+# bench print to the log only).
 # Unpacks the kit into a temporary folder it removes, and copies the charts' font to /usr/share/fonts/truetype/dejavu/ only where none is there.
 # The sizes can be made small to try the script on lavapipe here (Headless/gpu-kit.sh first):
 #   REALTIME_SCALES="0.25 0.5" PARETO_SCALES="0.25" BENCH_PARTICLES=2000 RUN_SECONDS=0.1 OUT=/tmp/gpu bash Headless/gpu-figures.sh
@@ -42,6 +45,7 @@ pareto_scales="${PARETO_SCALES:-24 60}"
 bench_particles="${BENCH_PARTICLES:-1000000}"
 bench_solvers="${BENCH_SOLVERS:-dfsph wcsph}"
 iterations="${ITERATIONS:-jacobi chebyshev}"
+bench_iterations="${BENCH_ITERATIONS:-$iterations}"
 realtime_limit="${REALTIME_LIMIT:-300}"
 bench_limit="${BENCH_LIMIT:-120}"
 pareto_limit="${PARETO_LIMIT:-300}"
@@ -82,10 +86,14 @@ budget=0
 for stage in "${stages[@]}"; do
     case "$stage" in
     realtime) budget=$((budget + realtime_limit)) ;;
-    bench) budget=$((budget + bench_limit * $(echo "$bench_solvers" | wc -w))) ;;
+    bench)
+        for solver in $bench_solvers; do
+            if [ "$solver" = dfsph ]; then budget=$((budget + bench_limit * $(echo "$bench_iterations" | wc -w))); else budget=$((budget + bench_limit)); fi
+        done
+        ;;
     pareto) budget=$((budget + pareto_limit)) ;;
     scenes) budget=$((budget + scenes_limit * ($(echo "$scene_names" | wc -w) + 1))) ;;
-    layering) budget=$((budget + 2 * layering_limit)) ;;
+    layering) budget=$((budget + (1 + $(echo "$iterations" | wc -w)) * layering_limit)) ;;
     esac
 done
 if [ "$budget" -gt 600 ]; then
@@ -114,11 +122,15 @@ for stage in "${stages[@]}"; do
         ;;
     bench)
         for solver in $bench_solvers; do
-            # The planner's savings are timed once, with the scene's own solver's plan.
-            savings=--skip-savings
-            if [ "$solver" = wcsph ]; then savings=; fi
-            # shellcheck disable=SC2086 # empty or one flag
-            step "$bench_limit" bench "$scene" --particles "$bench_particles" --solver "$solver" $savings --out "$scratch/bench-$solver"
+            if [ "$solver" = dfsph ]; then
+                for iteration in $bench_iterations; do
+                    step "$bench_limit" bench "$scene" --particles "$bench_particles" --solver dfsph --solver-iteration "$iteration" \
+                        --skip-savings --out "$scratch/bench-dfsph-$iteration"
+                done
+            else
+                # The planner's savings are timed once, with the scene's own solver's plan.
+                step "$bench_limit" bench "$scene" --particles "$bench_particles" --solver "$solver" --out "$scratch/bench-$solver"
+            fi
         done
         ;;
     pareto)
@@ -141,10 +153,12 @@ for stage in "${stages[@]}"; do
             --slower-gpus $slower_gpus --out "$scratch/scenes-OilAndWater-dfsph"
         ;;
     layering)
-        for solver in wcsph dfsph; do
-            step "$layering_limit" simulate "$scene" --solver "$solver" --seconds "$layering_seconds" --diagnostics-every 0.5 \
-                --out "$scratch/layering-$solver"
-            if [ -f "$scratch/layering-$solver/diagnostics.csv" ]; then cp "$scratch/layering-$solver/diagnostics.csv" "$out/layering-$solver.csv"; fi
+        for run in wcsph $(for i in $iterations; do echo "dfsph-$i"; done); do
+            solve=(--solver wcsph)
+            if [ "$run" != wcsph ]; then solve=(--solver dfsph --solver-iteration "${run#dfsph-}"); fi
+            step "$layering_limit" simulate "$scene" "${solve[@]}" --seconds "$layering_seconds" --diagnostics-every 0.5 \
+                --out "$scratch/layering-$run"
+            if [ -f "$scratch/layering-$run/diagnostics.csv" ]; then cp "$scratch/layering-$run/diagnostics.csv" "$out/layering-$run.csv"; fi
         done
         ;;
     esac
