@@ -76,8 +76,18 @@ home="$unpacked/sphfluid-gpu"
 export PATH="$home/bin:$PATH" LD_LIBRARY_PATH="$home/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 # No ICU on that machine is assumed; sphfluid formats with the invariant culture throughout.
 export DOTNET_SYSTEM_GLOBALIZATION_INVARIANT=1 DOTNET_CLI_TELEMETRY_OPTOUT=1 SPHFLUID_SHADER_CACHE="$unpacked/spirv"
+# The driver's own manifest names libGLX_nvidia.so.0, from which the loader got no vkCreateInstance without an X server
+# (an H200 on 2026-11-29: "Found no drivers"); its EGL library carries the same Vulkan driver and needs no display.
+nvidia_egl=/usr/local/nvidia/lib64/libEGL_nvidia.so.0
 nvidia_icd=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
-if [ -z "${VK_DRIVER_FILES:-}${VK_ICD_FILENAMES:-}" ] && [ -f "$nvidia_icd" ]; then export VK_DRIVER_FILES="$nvidia_icd"; fi
+if [ -z "${VK_DRIVER_FILES:-}${VK_ICD_FILENAMES:-}" ]; then
+    if [ -f "$nvidia_egl" ]; then
+        printf '{"file_format_version": "1.0.1", "ICD": {"library_path": "%s", "api_version": "1.3.0"}}\n' "$nvidia_egl" >"$unpacked/nvidia_egl_icd.json"
+        export VK_DRIVER_FILES="$unpacked/nvidia_egl_icd.json"
+    elif [ -f "$nvidia_icd" ]; then
+        export VK_DRIVER_FILES="$nvidia_icd"
+    fi
+fi
 font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
 if [ ! -f "$font" ]; then mkdir -p "$(dirname "$font")" && cp "$home/DejaVuSans.ttf" "$font"; fi
 
