@@ -144,8 +144,8 @@ namespace SphFluid.Tests.Physics
         /// interface's plane rising less than a spacing across the floor, all within 6 s, with no clamp hit, as
         /// <see cref="SeparationTests"/> asks of WCSPH (which meets them at 5.0 s, as its swing back crosses flat). Measured
         /// at the first half-second sample that meets all three: 5.5 s (layering 1.00, no floor oil, 7 mm; the Chebyshev
-        /// solve 6.0 s, 4 mm). Until the walls' pressure was held at least at the fluid's (DivergenceFreeSolver.hlsl's
-        /// WallStepAtLeast) DFSPH missed the flatness bar: after the lock exchange's one swing (56 mm of tilt at 3.5 s) its
+        /// solve 6.0 s, 0.9 mm, with 16.5 mm at 5.5 s). Until the walls' pressure was held at least at the fluid's
+        /// (DivergenceFreeSolver.hlsl's WallStepAtLeast) DFSPH missed the flatness bar: after the lock exchange's one swing (56 mm of tilt at 3.5 s) its
         /// interface crept back without rocking, 17.4 mm at 6 s and 12.4 mm at 6.5 s, and the test asserted the other two
         /// (met at 3.0 s: 0.957 and 0.34 % floor oil; 2.5 s now, 0.962 and none). Now it swings back through flat (118 mm
         /// at 3.5 s, 7 mm at 5.5 s). It stood ignored at 21.9 % floor oil (0.870 at 6 s) while the walls were weighed at

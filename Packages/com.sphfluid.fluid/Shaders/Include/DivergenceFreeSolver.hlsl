@@ -48,8 +48,9 @@
 // with rho_0 = 1 / sigma, rho_k = 1 / (2 sigma - rho_{k-1}), sigma = (b + a) / (b - a), beta_k = rho_k rho_{k-1},
 // gamma_k = 2 rho_k / (b - a) (and d_0 = z_0 / theta, theta = (b + a) / 2) shrink every residual with lambda in [a, b]
 // by the least factor a polynomial of that degree can, in iterations proportional to sqrt(b / a), that is to n.
-// [a, b] comes from the host (ChebyshevBounds.cs): b from the lattice's stiffest wave, a from the longest wave of the
-// spawned fluid's depth. A wave below a is still damped, more slowly; one above b grows, so b has a margin.
+// [a, b] comes from the host (ChebyshevBounds.cs): b from the lattice's stiffest wave, and at least the relaxed Jacobi
+// step's bound of 2, a from the longest wave of the spawned fluid's depth. A wave below a is still damped, more slowly;
+// one above b grows, so b has a margin: a loosely held fluid is disordered and carries waves stiffer than the lattice's.
 // The polynomial takes back pressure where a long wave overshoots, which the compression-only step above cannot: with
 // it the steps stay compression-only and the fluid rose (OilAndWater at 25 900 particles, 0.3 s: 2.3 constant-density
 // iterations a sub-step, but its potential energy grew by 0.11 J and its water expanded 3.5 % against the Jacobi solve's 0.2 %). So the
