@@ -72,16 +72,24 @@ namespace SphFluid.Tests.Physics
         /// <summary>
         /// The largest rise of a plane interface along the tank (m) that a particle lattice of shear strength yieldRatio times
         /// the pressure (<see cref="SphFluid.Simulation.LatticeShearStrength"/>) can hold still. A rise R gives the lower
-        /// layer a horizontal pressure gradient (rho2 - rho1) g R / L, a push of (rho2 - rho1) g R d2 / L per unit floor
-        /// area that the planes bounding the layer must carry as shear: at most yieldRatio times the pressure at the
-        /// interface, rho1 g d1, plus yieldRatio times that at the floor, rho1 g d1 + rho2 g d2 (a limit analysis: any
-        /// split of the push between them stands). So
-        ///   R_max = yieldRatio (2 rho1 d1 + rho2 d2) L / ((rho2 - rho1) d2),
-        /// whatever g. An interface tilted by more cannot stand still; one within it can (and may still creep into place).
+        /// layer a horizontal pressure gradient (rho2 - rho1) g R / L, a push of (rho2 - rho1) g R W d2 on the layer that the
+        /// planes bounding it must carry as shear, each at most yieldRatio times its own pressure (a limit analysis: any
+        /// split of the push between them stands): the interface, L W at rho1 g d1, and the floor, L W at rho1 g d1 +
+        /// rho2 g d2. With <paramref name="sideWalls"/> the front and back walls along the tank carry it too, over the
+        /// lower layer's depth, 2 L (rho1 g d1 d2 + rho2 g d2^2 / 2): a wall that pushes with the fluid's pressure holds the
+        /// fluid's lattice beside it as the fluid's own neighbours do (DFSPH since its walls' pressure floor, WCSPH's
+        /// mirrored walls throughout). So
+        ///   R_max = yieldRatio L ((2 rho1 d1 + rho2 d2) W + [2 d2 (rho1 d1 + rho2 d2 / 2)]) / ((rho2 - rho1) W d2),
+        /// the bracket with side walls, whatever g. An interface tilted by more cannot stand still; one within it can (and
+        /// may still creep into place).
         /// </summary>
-        internal static double HeldRise(Tank t, double yieldRatio) =>
-            yieldRatio * (2 * t.UpperDensity * t.UpperDepth + t.LowerDensity * t.LowerDepth) * t.Length
-            / ((t.LowerDensity - t.UpperDensity) * t.LowerDepth);
+        internal static double HeldRise(Tank t, double yieldRatio, bool sideWalls)
+        {
+            double d1 = t.UpperDepth, d2 = t.LowerDepth, rho1 = t.UpperDensity, rho2 = t.LowerDensity;
+            double planes = (2 * rho1 * d1 + rho2 * d2) * t.Width;
+            double walls = sideWalls ? 2 * d2 * (rho1 * d1 + rho2 * d2 / 2) : 0;
+            return yieldRatio * t.Length * (planes + walls) / ((rho2 - rho1) * t.Width * d2);
+        }
 
         /// <summary>
         /// Least-squares fit of y(t) = exp(-gamma (t - t0)) (A cos(omega (t - t0)) + B sin(omega (t - t0))) + C to samples

@@ -154,7 +154,7 @@ namespace SphFluid.Tests.Physics
             double omega = InternalSeiche.AngularFrequency(tank), decay = InternalSeiche.DecayRate(tank);
             var fit = InternalSeiche.FitDampedOscillation(times, rises);
             double strength = LatticeShearStrength.YieldRatio(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius);
-            double held = InternalSeiche.HeldRise(tank, strength);
+            double held = InternalSeiche.HeldRise(tank, strength, sideWalls: false), heldWithWalls = InternalSeiche.HeldRise(tank, strength, sideWalls: true);
 
             var crossings = new List<double>();
             for (int i = 1; i < rises.Count; i++)
@@ -172,7 +172,8 @@ namespace SphFluid.Tests.Physics
                 $"theory: period {2 * Math.PI / omega:F2} s, laminar decay {decay:F3}/s; fitted from {settled} s: period {2 * Math.PI / fit.Omega:F2} s, " +
                 $"decay {fit.Gamma:F3}/s (RMS residual {1000 * fit.Residual:F1} mm); {measured}; rise along the tank at {settled} s {1000 * rises[0]:F1} mm, at {Seconds} s {1000 * rises[^1]:F1} mm; " +
                 $"max speed at {Seconds} s {1000 * report.MaxSpeed:F1} mm/s; clamp hits {report.ClampHits}; " +
-                $"the lattice's shear strength, {strength:E2} of the pressure, can hold a plane interface still at a tilt of up to {1000 * held:F1} mm");
+                $"the lattice's shear strength, {strength:E2} of the pressure, can hold a plane interface still at a tilt of up to {1000 * held:F1} mm " +
+                $"on the interface and the floor, {1000 * heldWithWalls:F1} mm with the front and back walls");
         }
     }
 }
