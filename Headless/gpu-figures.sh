@@ -9,8 +9,8 @@
 #             error is against the finest run of their own size, so read the other columns).
 #   bench     bench at 1M particles for each solver (DFSPH with each of BENCH_ITERATIONS): the per-pass and per-kernel
 #             milliseconds that show where the time goes, and (WCSPH) the planner's savings.
-#   pareto    the accuracy-for-time matrix at 100k and 250k: WCSPH x1 and x4 stiffness, DFSPH at 1, 0.1 and 0.01 %,
-#             the scene's CFL number; its table, CSV and Pareto chart. With 1M (PARETO_SCALES="24 60 240") it outran
+#   pareto    the accuracy-for-time matrix at 100k and 250k: WCSPH x1 and x4 stiffness, DFSPH at 1, 0.1 and 0.01 % with
+#             each of ITERATIONS, the scene's CFL number; its table, CSV and Pareto chart. With 1M (PARETO_SCALES="24 60 240") it outran
 #             300 s on an H200: each DFSPH row at 1M spends 100 iterations a sub-step until it turns unhealthy.
 #   scenes    60 Hz sizing: bench of every shipped demo scene at its own particle count and at 1/4 to 64 times it
 #             (--particles-scales), each under its own solver and OilAndWater under DFSPH too, GPU ms per 60 Hz frame
@@ -154,7 +154,7 @@ for stage in "${stages[@]}"; do
     pareto)
         # shellcheck disable=SC2086
         step "$pareto_limit" study "$scene" --particles-scales $pareto_scales --stiffness-factors 1 4 --density-tolerances 1 0.1 0.01 \
-            --cfl "$cfl" --seconds "$seconds" --out "$scratch/pareto"
+            --solver-iterations $iterations --cfl "$cfl" --seconds "$seconds" --out "$scratch/pareto"
         for f in study.md study.csv study-pareto.png study-pareto.svg; do
             name="${f/study-pareto/study}" # study-pareto.png -> pareto.png
             if [ -f "$scratch/pareto/$f" ]; then cp "$scratch/pareto/$f" "$out/pareto${name#study}"; fi
