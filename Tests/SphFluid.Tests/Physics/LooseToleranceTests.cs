@@ -1,3 +1,4 @@
+using System;
 using System.Linq;
 using NUnit.Framework;
 using SphFluid.Headless.Cli;
@@ -51,16 +52,16 @@ namespace SphFluid.Tests.Physics
                 report = sim.ReadDiagnostics();
                 problem = health.Check(report);
                 sim.Particles.GetData(particles);
-                energyRise = System.Math.Max(energyRise, FluidEnergy.Mechanical(particles, sim.PhaseRows, gravity) - spawnEnergy);
+                energyRise = Math.Max(energyRise, FluidEnergy.Mechanical(particles, sim.PhaseRows, gravity) - spawnEnergy);
                 if (frame < 2) continue;
                 samples++;
                 for (int k = 0; k < compression.Length; k++) compression[k] += report.Phases[k].AverageDensityError;
-                largest = System.Math.Max(largest, report.Phases.Max(p => (double)p.MaxDensityError));
+                largest = Math.Max(largest, report.Phases.Max(p => (double)p.MaxDensityError));
             }
             var names = report.Phases.Select(p => p.Name).ToArray();
             TestContext.Progress.WriteLine($"DFSPH (Chebyshev) OilAndWater at 1 %, N={sim.ParticleCount}: " +
                 (problem == null ? "healthy for 0.1 s" : $"unhealthy: {problem}") + "; average compression from 0.033 s: " +
-                string.Join(", ", names.Select((n, k) => $"{n} {100 * compression[k] / System.Math.Max(samples, 1):F3} %")) +
+                string.Join(", ", names.Select((n, k) => $"{n} {100 * compression[k] / Math.Max(samples, 1):F3} %")) +
                 $", largest {100 * largest:F1} %; mechanical energy {spawnEnergy:F4} J at spawn, largest rise {energyRise:F4} J; {report}");
             Assert.That(problem, Is.Null, "the health check");
             Assert.That(report.ClampHits, Is.EqualTo(0));
