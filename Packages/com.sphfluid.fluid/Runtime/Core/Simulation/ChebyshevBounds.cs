@@ -27,7 +27,7 @@ namespace SphFluid.Simulation
         public const double Margin = 1.05;
 
         /// <summary>The least High: every wave the relaxed Jacobi step damps (omega lambda below 2, the bound FluidSettings
-        /// holds omega to) the accelerated solve damps too. The lattice's waves are an ordered fluid's; a fluid held only
+        /// holds omega to above 2 spacings) the accelerated solve damps too. The lattice's waves are an ordered fluid's; a fluid held only
         /// loosely incompressible is disordered, and its stiffest neighbourhoods carry waves above the lattice's margin.
         /// With High at the margin (1.70 for OilAndWater's solve) a 1 % tolerance took OilAndWater to unhealthy within
         /// 0.037 s at 100k and 250k particles on an H200 (b653f9f; 62 and 69 m/s) and within 0.033 s at 25 900 on lavapipe
