@@ -80,11 +80,15 @@ public sealed class SolverChoice
         return note;
     }
 
-    /// <summary>One line for the run header and summary.</summary>
-    public static string Describe(FluidSettings settings) => settings.PressureSolver == PressureSolver.Dfsph
+    /// <summary>One line for the run header and summary; with <paramref name="simulation"/>, whether its Chebyshev solve
+    /// accelerates the constant-density solve too (ChebyshevBounds.AcceleratesDensitySolve).</summary>
+    public static string Describe(FluidSettings settings, FluidSimulation? simulation = null) => settings.PressureSolver == PressureSolver.Dfsph
         ? string.Format(C, "solver: DFSPH (density tolerance {0:G3} %, divergence tolerance {1:G3} %/s, at most {2} iterations per solve, {3}, relaxation {4:G3})",
             settings.DensityTolerance, settings.DivergenceTolerance, settings.MaxSolverIterations,
-            settings.SolverIteration == SolverIteration.Chebyshev ? "Chebyshev-accelerated" : "Jacobi", settings.SolverRelaxation)
+            settings.SolverIteration == SolverIteration.Jacobi ? "Jacobi"
+                : simulation == null || simulation.AcceleratesDensitySolve ? "Chebyshev-accelerated"
+                : "Chebyshev-accelerated divergence-free solve, Jacobi constant-density solve at this tolerance and depth",
+            settings.SolverRelaxation)
         : string.Format(C, "solver: WCSPH (Tait stiffness {0:G4} Pa, gamma {1:G3})", settings.Stiffness, settings.Gamma);
 
     public static string ShortName(PressureSolver solver) => solver == PressureSolver.Dfsph ? "DFSPH" : "WCSPH";

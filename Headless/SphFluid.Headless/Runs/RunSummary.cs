@@ -39,7 +39,7 @@ public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, s
         b.AppendLine($"device: {Device}");
         b.AppendLine($"particles: {Simulation.ParticleCount}");
         b.AppendLine(Simulation.Plan.ToString());
-        b.AppendLine(SolverChoice.Describe(Settings));
+        b.AppendLine(SolverChoice.Describe(Settings, Simulation));
         b.AppendLine(string.Format(C, "simulated: {0:F4} s in {1} frames, {2} sub-steps ({3} capped frames)", SimulatedSeconds, Frames, Substeps, CappedFrames));
         b.AppendLine(string.Format(C, "wall clock: {0:F2} s", WallSeconds));
         b.AppendLine($"result: {(Ok ? "ok" : "FAILED: " + Failure)}");

@@ -84,7 +84,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             settings.ParticleSpacing, settings.SmoothingRadius,
             string.Join(", ", sim.Phases.Select((p, k) => string.Format(C, "{0} {1} rho0 {2:G4} kg/m^3 mu {3:G3} Pa s", p.Name, CountOf(description, k, sim), p.RestDensity, p.Viscosity)))));
         stdout.WriteLine(sim.Plan.ToString());
-        stdout.WriteLine(SolverChoice.Describe(settings));
+        stdout.WriteLine(SolverChoice.Describe(settings, sim));
         if (_solverNote != null) stdout.WriteLine(_solverNote);
         stdout.WriteLine(string.Format(C, "device: {0}", device.DeviceName));
         stdout.WriteLine(string.Format(C, "run: {0:G4} s simulated in {1} frames of {2:G4} ms; output: {3}", duration, frames, options.FrameSeconds * 1000, Path.GetFullPath(output.Path)));

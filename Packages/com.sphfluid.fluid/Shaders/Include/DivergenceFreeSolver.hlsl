@@ -59,6 +59,11 @@
 // so far in this solve, warm start included. The wall particles' signed steps take a third of the fluid's relaxation
 // (CHEBYSHEV_WALL_SHARE): at WALL_RELAXATION's 0.5 with the fluid's 0.3 OilAndWater went to NaN within 0.033 s (4 160
 // particles); at 0.1 it held, as below.
+// A solve stopped after a few rounds leaves the polynomial's swing through zero on the waves between a and b, and a loose
+// constant-density solve stops that early: its overshoots stay in the velocities, hidden from the compression-only error,
+// for the divergence-free solve to remove (25 of its rounds a sub-step at 1 %, against 2 at 0.1 %) or, at a shallow depth,
+// to lift the fluid. So the constant-density solve takes accelerated steps only at tolerances below one that grows with
+// the depth (ChebyshevBounds.AcceleratesDensitySolve, _AcceleratedDensitySolve), and the Jacobi solve's steps above it.
 #define CHEBYSHEV_WALL_SHARE (1.0 / 3.0)
 
 // (beta_k, gamma_k, rho_k) of a round from rho_{k-1} (0 before the solve's first round) for eigenvalues in [low, high].

@@ -67,6 +67,7 @@ cbuffer FluidConstants
     float _ChebyshevLow;                    // DivergenceFreeSolver: a, lowest eigenvalue the accelerated solve is tuned for
 
     float _ChebyshevHigh;                   // DivergenceFreeSolver: b, highest; 0 for the Jacobi solve (ChebyshevBounds.cs)
+    uint _AcceleratedDensitySolve;          // DivergenceFreeSolver: 1 when the constant-density solve is accelerated too (ChebyshevBounds.cs)
 };
 
 // Grid.hlsl reads its three values from here instead of declaring its own.

@@ -205,22 +205,29 @@ void BoundaryBeginSolve(uint3 id : SV_DispatchThreadID)
     _BoundaryWarmStart[boundaryId] = float2(0.0, warm.y);
 }
 
+// Whether `solve` takes accelerated steps: the divergence-free solve whenever Chebyshev bounds are set, the
+// constant-density solve only at tolerances tight enough to pay for them (ChebyshevBounds.AcceleratesDensitySolve).
+bool Accelerated(uint solve)
+{
+    return _ChebyshevHigh > 0.0 && (solve != DENSITY_SOLVE || _AcceleratedDensitySolve != 0u);
+}
+
 // The q a fluid particle has applied so far in the open solve, warm start included; read only by the accelerated solve
 // (the Jacobi solve's error pass need not load it).
 float AppliedStiffness(uint particleId, uint solve)
 {
-    if (_ChebyshevHigh <= 0.0)
+    if (!Accelerated(solve))
         return 0.0;
     float2 summed = _WarmStart[particleId];
     return solve == DENSITY_SOLVE ? summed.x : summed.y;
 }
 
-// The q a particle applies in this round: the Jacobi solve's compression-only step, or, with Chebyshev bounds set, the
-// accelerated, projected step (DivergenceFreeSolver.hlsl) from the q it applied so far in this solve, its last step and
-// the signed Jacobi step.
+// The q a particle applies in this round of the open solve: the Jacobi solve's compression-only step, or, where that
+// solve is accelerated, the projected Chebyshev step (DivergenceFreeSolver.hlsl) from the q it applied so far in this
+// solve, its last step and the signed Jacobi step.
 float RoundStep(float compressionStep, float applied, float previousStep, float signedStep)
 {
-    if (_ChebyshevHigh <= 0.0)
+    if (!Accelerated(OpenSolve()))
         return compressionStep;
     float3 weights = ChebyshevWeights(asfloat(_SolverState[CHEBYSHEV_WORD]), _ChebyshevLow, _ChebyshevHigh);
     return ProjectedChebyshevStep(applied, previousStep, signedStep, weights);
@@ -409,7 +416,7 @@ void SolveFinal(uint3 threadId : SV_GroupThreadID)
     // last: the solve ends unconverged, and the host learns it through the motion read-back and records more rounds.
     _SolverState[slot] = corrections + 1u;
     _SolverState[slot + 2u] += 1u;
-    if (_ChebyshevHigh > 0.0)
+    if (Accelerated(solve))
         _SolverState[CHEBYSHEV_WORD] = asuint(ChebyshevWeights(asfloat(_SolverState[CHEBYSHEV_WORD]), _ChebyshevLow, _ChebyshevHigh).z);
     if (corrections + 1u >= (solve == DENSITY_SOLVE ? _DensitySolveRounds : _DivergenceSolveRounds))
     {

@@ -36,12 +36,18 @@ namespace SphFluid.Reference
             _cohesion = 32.0 / (Math.PI * Math.Pow(_h, 9));
             _flatWallNumberDensity = SmoothingKernels.FlatWallNumberDensity(_settings.SmoothingKernel, _settings.ParticleSpacing, _h);
             if (_settings.PressureSolver == PressureSolver.Dfsph && _settings.SolverIteration == SolverIteration.Chebyshev)
-                _chebyshev = ChebyshevBounds.For(_settings.SmoothingKernel, _settings.ParticleSpacing, _h, _settings.SolverRelaxation,
-                    SpawnLayout.Depth(SpawnLayout.Generate(scene), _settings.Gravity, _settings.ParticleSpacing));
+            {
+                double depth = SpawnLayout.Depth(SpawnLayout.Generate(scene), _settings.Gravity, _settings.ParticleSpacing);
+                _chebyshev = ChebyshevBounds.For(_settings.SmoothingKernel, _settings.ParticleSpacing, _h, _settings.SolverRelaxation, depth);
+                _acceleratedDensitySolve = ChebyshevBounds.AcceleratesDensitySolve(_settings.DensityTolerance, depth, _settings.ParticleSpacing);
+            }
         }
 
         /// <summary>The accelerated solve's eigenvalue bounds as FluidSimulation sets them from the spawn; null for Jacobi.</summary>
         readonly (double Low, double High)? _chebyshev;
+
+        /// <summary>Whether the constant-density solve is accelerated as well as the divergence-free one.</summary>
+        readonly bool _acceleratedDensitySolve;
 
         public IReadOnlyList<PhaseProperties> PhaseTable => _phases;
 
@@ -640,13 +646,13 @@ namespace SphFluid.Reference
         /// <summary>The wall particles' relaxation in the accelerated solve, as a share of the fluid's (CHEBYSHEV_WALL_SHARE).</summary>
         public const double ChebyshevWallShare = 1.0 / 3.0;
 
-        /// <summary>One round's step for every unknown: the compression-only Jacobi step (<paramref name="jacobi"/>), or with
-        /// Chebyshev bounds the projected, accelerated one from the signed step, the unknown's last step (in
+        /// <summary>One round's step for every unknown: the compression-only Jacobi step (<paramref name="jacobi"/>), or in an
+        /// <paramref name="accelerated"/> solve the projected, accelerated one from the signed step, the unknown's last step (in
         /// <paramref name="step"/>, overwritten) and the q it summed in this solve (DivergenceFreeSolver.hlsl).</summary>
-        void RoundSteps(double[] step, double[] summed, Func<int, double> jacobi, Func<int, double> signedStep, double weightBeta, double weightGamma)
+        void RoundSteps(bool accelerated, double[] step, double[] summed, Func<int, double> jacobi, Func<int, double> signedStep, double weightBeta, double weightGamma)
         {
             for (int i = 0; i < step.Length; i++)
-                step[i] = _chebyshev.HasValue
+                step[i] = accelerated
                     ? Math.Max(summed[i] + weightBeta * step[i] + weightGamma * signedStep(i), 0.0) - summed[i]
                     : jacobi(i);
         }
@@ -804,7 +810,7 @@ namespace SphFluid.Reference
             {
                 var rates = NumberDensityRates(particles, v);
                 var wallRates = WallNumberDensityRates(particles, v);
-                var (beta, gamma, nextRho) = _chebyshev.HasValue ? ChebyshevWeights(rho, _chebyshev.Value.Low, _chebyshev.Value.High) : (0.0, 0.0, 0.0);
+                var (beta, gamma, nextRho) = _acceleratedDensitySolve ? ChebyshevWeights(rho, _chebyshev.Value.Low, _chebyshev.Value.High) : (0.0, 0.0, 0.0);
                 rho = nextRho;
                 double[] excess = new double[n], wallExcess = new double[walls.Q.Length];
                 for (int i = 0; i < n; i++)
@@ -812,9 +818,9 @@ namespace SphFluid.Reference
                 for (int b = 0; b < walls.Q.Length; b++)
                     wallExcess[b] = walls.NumberDensity[b] + dt * wallRates[b] - walls.Rest[b];
                 var w = walls;
-                RoundSteps(q, densityStiffness, i => relaxation * Math.Max(excess[i], 0.0) * factors[i] / (dt * dt),
+                RoundSteps(_acceleratedDensitySolve, q, densityStiffness, i => relaxation * Math.Max(excess[i], 0.0) * factors[i] / (dt * dt),
                     i => relaxation * excess[i] * factors[i] / (dt * dt), beta, gamma);
-                RoundSteps(walls.Q, wallSummed, b => WallRelaxation * Math.Max(wallExcess[b], 0.0) * w.Factor[b] / (dt * dt),
+                RoundSteps(_acceleratedDensitySolve, walls.Q, wallSummed, b => WallRelaxation * Math.Max(wallExcess[b], 0.0) * w.Factor[b] / (dt * dt),
                     b => w.Factor[b] > 0.0 ? wallRelaxation * wallExcess[b] * w.Factor[b] / (dt * dt) : 0.0, beta, gamma);
                 for (int i = 0; i < n; i++) densityStiffness[i] += q[i];
                 var fluidStiffness = WallExtrapolatedStiffness(particles, densityStiffness);
@@ -852,9 +858,9 @@ namespace SphFluid.Reference
                 for (int i = 0; i < n; i++)
                     rate[i] = neighbours[i] >= DivergenceMinNeighbours ? rates[i] : 0.0;
                 var w = walls;
-                RoundSteps(q, divergenceStiffness, i => relaxation * Math.Max(rate[i], 0.0) * factors[i] / dt,
+                RoundSteps(_chebyshev.HasValue, q, divergenceStiffness, i => relaxation * Math.Max(rate[i], 0.0) * factors[i] / dt,
                     i => relaxation * rate[i] * factors[i] / dt, beta, gamma);
-                RoundSteps(walls.Q, wallSummed, b => WallRelaxation * Math.Max(wallRates[b], 0.0) * w.Factor[b] / dt,
+                RoundSteps(_chebyshev.HasValue, walls.Q, wallSummed, b => WallRelaxation * Math.Max(wallRates[b], 0.0) * w.Factor[b] / dt,
                     b => w.Factor[b] > 0.0 ? wallRelaxation * wallRates[b] * w.Factor[b] / dt : 0.0, beta, gamma);
                 for (int i = 0; i < n; i++) divergenceStiffness[i] += q[i];
                 for (int b = 0; b < walls.Q.Length; b++)

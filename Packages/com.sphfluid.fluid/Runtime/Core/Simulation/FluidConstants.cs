@@ -71,5 +71,6 @@ namespace SphFluid.Simulation
         public float ChebyshevLow;
 
         public float ChebyshevHigh;
+        public uint AcceleratedDensitySolve;
     }
 }

@@ -70,7 +70,7 @@ namespace SphFluid.Simulation
 
         // Jacobi by default: every DFSPH figure of the shipped scenes was measured with it. Chebyshev took OilAndWater's
         // constant-density solve from 41 to 7 iterations a sub-step at 25 900 particles (README, Known limits).
-        [Setting(Pressure, 0, 1, "", "DFSPH: how each solve iterates: 0 = Jacobi (Bender and Koschier's relaxed step, compression only; iterations grow with the square of the fluid's depth in particle spacings), 1 = Chebyshev (the same step accelerated over the operator's eigenvalue bounds, with pressure taken back where a step overshoots; iterations grow with the depth).")]
+        [Setting(Pressure, 0, 1, "", "DFSPH: how each solve iterates: 0 = Jacobi (Bender and Koschier's relaxed step, compression only; iterations grow with the square of the fluid's depth in particle spacings), 1 = Chebyshev (the same step accelerated over the operator's eigenvalue bounds, with pressure taken back where a step overshoots; iterations grow with the depth; the constant-density solve is accelerated only at tolerances below a sixtieth of a per cent per spacing of the fluid's depth, and takes Jacobi steps above).")]
         public SolverIteration SolverIteration = SolverIteration.Jacobi;
 
         // 1 by default, the papers' step and the cheapest. At 0.355 the resting tank's largest compression fell from 0.56 %

@@ -234,6 +234,10 @@ namespace SphFluid.Simulation
         /// <summary>Entries of each neighbour list; 0 without lists (WCSPH; see <see cref="Simulation.NeighbourCapacity"/>).</summary>
         public int NeighbourListCapacity => (int)_constants[0].NeighbourCapacity;
 
+        /// <summary>Whether DFSPH's Chebyshev solve accelerates the constant-density solve as well as the divergence-free
+        /// one at this tolerance and depth (<see cref="ChebyshevBounds.AcceleratesDensitySolve"/>).</summary>
+        public bool AcceleratesDensitySolve => _constants[0].AcceleratedDensitySolve != 0;
+
         /// <summary>Number of boundary particles (container walls and obstacles).</summary>
         public int BoundaryCount => _boundaryCount;
 
@@ -796,11 +800,13 @@ namespace SphFluid.Simulation
             c.WallContactNumberDensity = (float)SmoothingKernels.FlatWallNumberDensity(s.SmoothingKernel, s.ParticleSpacing, h);
             c.WallContactAtAnyDensity = _deltaSph ? 1u : 0u;
             c.SolverRelaxation = s.SolverRelaxation;
+            double depth = SpawnLayout.Depth(_spawn, s.Gravity, s.ParticleSpacing);
             var (low, high) = _divergenceFree && s.SolverIteration == SolverIteration.Chebyshev
-                ? ChebyshevBounds.For(s.SmoothingKernel, s.ParticleSpacing, h, s.SolverRelaxation, SpawnLayout.Depth(_spawn, s.Gravity, s.ParticleSpacing))
+                ? ChebyshevBounds.For(s.SmoothingKernel, s.ParticleSpacing, h, s.SolverRelaxation, depth)
                 : (0.0, 0.0);
             c.ChebyshevLow = (float)low;
             c.ChebyshevHigh = (float)high;
+            c.AcceleratedDensitySolve = high > 0.0 && ChebyshevBounds.AcceleratesDensitySolve(s.DensityTolerance, depth, s.ParticleSpacing) ? 1u : 0u;
             c.WallFriction = _scene.Container.Friction == WallFriction.NoSlip ? 1f : 0f;
             c.CohesionCoefficient = (float)(32.0 / (Math.PI * Math.Pow(h, 9)));
             c.Stiffness = s.Stiffness;

@@ -9,7 +9,8 @@ namespace SphFluid.Simulation
 
         /// <summary>The Jacobi step accelerated by Chebyshev's polynomial over the operator's eigenvalue bounds
         /// (ChebyshevBounds), with signed steps and each particle's pressure kept at or above zero. Its iterations grow
-        /// with the depth itself.</summary>
+        /// with the depth itself. The divergence-free solve is always accelerated; the constant-density solve only at
+        /// tolerances tight enough to pay for it (ChebyshevBounds.AcceleratesDensitySolve), the Jacobi steps above.</summary>
         Chebyshev = 1,
     }
 }

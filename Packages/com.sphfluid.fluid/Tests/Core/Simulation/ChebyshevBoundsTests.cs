@@ -52,6 +52,28 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(low, Is.EqualTo(tuned));
         }
 
+        /// <summary>The constant-density solve is accelerated below the crossover tolerance and takes Jacobi steps at or above
+        /// it, which lies within the brackets measured on OilAndWater (ChebyshevBounds.DensityCrossover): at 8.5 spacings
+        /// deep (1 080 particles) the accelerated solve is cheaper at 0.1 % and ties at 0.2 %; at 13.4 (its 4 160) cheaper
+        /// at 0.1 %, dearer at 0.3 %; at 24.4 (25 900) cheaper at 0.3 %, dearer at 0.5 %.</summary>
+        [TestCase(8.5, 0.1f, true)]
+        [TestCase(8.5, 0.2f, false)]
+        [TestCase(13.4, 0.1f, true)]
+        [TestCase(13.4, 0.3f, false)]
+        [TestCase(24.4, 0.3f, true)]
+        [TestCase(24.4, 0.5f, false)]
+        [TestCase(24.4, 1f, false)]
+        public void TheConstantDensitySolveIsAcceleratedBelowTheMeasuredCrossover(double spacings, float tolerance, bool accelerated) =>
+            Assert.That(ChebyshevBounds.AcceleratesDensitySolve(tolerance, spacings * Spacing, Spacing), Is.EqualTo(accelerated));
+
+        /// <summary>The crossover grows with the depth: a Jacobi solve's rounds grow with the square of it.</summary>
+        [Test]
+        public void ADeeperFluidIsAcceleratedAtLooserTolerances()
+        {
+            Assert.That(ChebyshevBounds.AcceleratesDensitySolve(1f, 40 * Spacing, Spacing), Is.False, "40 spacings at 1 %");
+            Assert.That(ChebyshevBounds.AcceleratesDensitySolve(1f, 83 * Spacing, Spacing), Is.True, "83 spacings (1M particles) at 1 %");
+        }
+
         [Test]
         public void AColumnOfOneSpacingKeepsTheIntervalOpen()
         {
