@@ -104,7 +104,7 @@ namespace SphFluid.Demo
                 if (diagnostics.PressureSolver == PressureSolver.Dfsph)
                     _text.AppendFormat(c, "DFSPH {5} iterations per sub-step: density {0:F1} ({1:P0} cut off), divergence {2:F1} ({3:P0} cut off)   divergence error {4:F2} %/s\n",
                         diagnostics.DensitySolveIterations, diagnostics.DensitySolvesCutOff, diagnostics.DivergenceSolveIterations,
-                        diagnostics.DivergenceSolvesCutOff, diagnostics.DivergenceError, target.Settings.SolverIteration);
+                        diagnostics.DivergenceSolvesCutOff, diagnostics.DivergenceError, IterationName(target));
                 else
                     _text.AppendFormat(c, "Divergence error {0:F2} %/s\n", diagnostics.DivergenceError);
             }
@@ -121,6 +121,16 @@ namespace SphFluid.Demo
                 _text.Append('\n');
             }
             _text.Append("RMB orbit  wheel zoom  LMB drag sphere  Space pause  . / N step  R reset  Tab next scene");
+        }
+
+        // The Chebyshev solve accelerates the constant-density solve only at tolerances tight for the fluid's depth
+        // (ChebyshevBounds.AcceleratesDensitySolve), so the readout says when it takes the Jacobi steps.
+        static string IterationName(Fluid target)
+        {
+            if (target.Settings.SolverIteration == SolverIteration.Jacobi)
+                return "Jacobi";
+            FluidSimulation simulation = target.Simulation;
+            return simulation != null && !simulation.AcceleratesDensitySolve ? "Chebyshev (divergence-free; density Jacobi)" : "Chebyshev";
         }
 
         void AppendJoined(IReadOnlyList<string> items, string separator)
