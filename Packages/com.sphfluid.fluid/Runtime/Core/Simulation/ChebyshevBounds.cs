@@ -57,12 +57,14 @@ namespace SphFluid.Simulation
         /// and 2 + 25 iterations a sub-step at 0.1, 0.3, 0.5 and 1 %, a looser tolerance costing more; at its own 4 160
         /// (13.4 spacings) 1 % took 2 + 10 against 0.1 %'s 4 + 2, and at 0.5 and 1 % the fluid bounced, its potential
         /// energy rising 0.06 J above the spawn's within 0.1 s. With the Jacobi constant-density solve the same runs
-        /// took 40 + 2 (the slice of the same depth), 16 + 2, 9 + 2.7 and 4.8 + 2.7 iterations at 24.4 spacings and
-        /// 6.9 and 5 at 13.4 spacings (0.3 and 0.5 %), with no bounce. The Jacobi solve's rounds grow with the square of the depth and fall with
-        /// the tolerance, so the crossover moves with the depth: between 0.3 and 0.5 % at 24.4 spacings, 0.1 and 0.3 % at
-        /// 13.4, and at 1 080 particles (8.5 spacings) a tie at 0.2 % (4.5 iterations each) where 0.1 % is the accelerated
-        /// solve's (4.5 against 6.5). A sixtieth of a per cent per spacing (0.41, 0.22 and 0.14 %) lies within each
-        /// bracket (hand edits of DivergenceFreeSolver.hlsl in temporary copies, lavapipe).</para></summary>
+        /// took 16 + 2, 9 + 2.7 and 4.8 + 2.7 iterations at 0.3, 0.5 and 1 % at 24.4 spacings (38.9 + 2.0 at 0.1 % in
+        /// the slice of that depth, both solves Jacobi) and 6.9 and 5 at 13.4 spacings (0.3 and 0.5 %), with no bounce.
+        /// The Jacobi solve's rounds grow with the square of the depth and fall with the tolerance, so the crossover
+        /// moves with the depth: between 0.3 and 0.5 % at 24.4 spacings, 0.1 and 0.3 % at 13.4, and at 1 080 particles
+        /// (8.5 spacings) a tie at 0.2 % (4.5 iterations each) where 0.1 % is the accelerated solve's (4.5 against 6.5).
+        /// A sixtieth of a per cent per spacing (0.41, 0.22 and 0.14 %) lies within each bracket (hand edits of
+        /// DivergenceFreeSolver.hlsl in temporary copies, lavapipe). Near the crossover neither step is cheap: at 24.4
+        /// spacings 0.3 and 0.5 % cost more than 0.1 % whichever the solve takes.</para></summary>
         public const double DensityCrossover = 1.0 / 60.0;
 
         /// <summary>Whether DFSPH's constant-density solve takes accelerated steps at <paramref name="densityTolerance"/> (%)
