@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.CommandLine;
 using System.CommandLine.Parsing;
 using System.Linq;
+using SphFluid.Simulation;
 
 namespace SphFluid.Headless.Cli;
 
@@ -22,6 +23,30 @@ public static class OptionKinds
         if (fallback.HasValue) option.DefaultValueFactory = _ => fallback.Value;
         return option;
     }
+
+    /// <summary>A number that overrides a declared <see cref="FluidSettings"/> field: its range, unit and
+    /// description come from the field's <see cref="SettingAttribute"/>, so the option refuses what the
+    /// inspector and the scene reader refuse; <paramref name="note"/> follows in the help.</summary>
+    public static Option<double> Setting(string command, string name, string field, string valueName, string note)
+    {
+        var d = Declaration(field);
+        return Number(command, name, d.Min, d.Max, d.MinExclusive, d.Unit, valueName, SettingHelp(d, note, "in "));
+    }
+
+    /// <summary>A list of values of a declared <see cref="FluidSettings"/> field (<see cref="Setting"/>).</summary>
+    public static Option<List<double>> SettingList(string command, string name, string field, string valueName, string note)
+    {
+        var d = Declaration(field);
+        return List(command, name, valueName, SettingHelp(d, note, "each in "),
+            text => Ranges.ParseDouble(command, name, text, d.Min, d.Max, d.MinExclusive, d.Unit));
+    }
+
+    static SettingAttribute Declaration(string field) =>
+        SettingRules.Of(typeof(FluidSettings), field)
+        ?? throw new ArgumentException($"FluidSettings.{field} has no [Setting] declaration", nameof(field));
+
+    static string SettingHelp(SettingAttribute d, string note, string range) =>
+        $"{d.Tooltip.TrimEnd('.')}, {range}{(d.MinExclusive ? "(" : "[")}{Ranges.Format(d.Min)}, {Ranges.Format(d.Max)}]{(d.Unit.Length > 0 ? " " + d.Unit : "")} ({note})";
 
     public static Option<int> Whole(string command, string name, int min, int max, string valueName, string description, int? fallback = null)
     {

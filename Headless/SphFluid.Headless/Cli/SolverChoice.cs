@@ -16,6 +16,9 @@ public sealed class SolverChoice
     /// <summary>DFSPH density tolerance, %, instead of the scene's; null = the scene's.</summary>
     public double? DensityTolerance { get; init; }
 
+    /// <summary>DFSPH divergence tolerance, %/s, instead of the scene's; null = the scene's.</summary>
+    public double? DivergenceTolerance { get; init; }
+
     /// <summary>How DFSPH's solves iterate instead of the scene's; null = the scene's.</summary>
     public SolverIteration? Iteration { get; init; }
 
@@ -31,7 +34,7 @@ public sealed class SolverChoice
         ["dfsph"] = PressureSolver.Dfsph,
     };
 
-    /// <summary>Applies the choice to the scene's settings (a copy, so the loaded scene is untouched). A density tolerance
+    /// <summary>Applies the choice to the scene's settings (a copy, so the loaded scene is untouched). A DFSPH setting
     /// for a run that ends up on WCSPH would be silently ignored, so it is refused by name. Returns the line that says
     /// what <see cref="FitSupport"/> changed, or null.</summary>
     public string? ApplyTo(FluidSceneDescription scene, string command)
@@ -39,22 +42,19 @@ public sealed class SolverChoice
         var settings = scene.Settings.Clone();
         if (Solver.HasValue) settings.PressureSolver = Solver.Value;
         if (DensityTolerance.HasValue)
-        {
-            if (settings.PressureSolver != PressureSolver.Dfsph)
-                throw new UsageException($"{command}: --density-tolerance applies to the DFSPH solver only; this run uses WCSPH "
-                    + "(add --solver dfsph, or set Fluid.pressureSolver in the scene)");
-            settings.DensityTolerance = (float)DensityTolerance.Value;
-        }
+            settings.DensityTolerance = (float)DfsphOnly(settings, command, "--density-tolerance", DensityTolerance.Value);
+        if (DivergenceTolerance.HasValue)
+            settings.DivergenceTolerance = (float)DfsphOnly(settings, command, "--divergence-tolerance", DivergenceTolerance.Value);
         if (Iteration.HasValue)
-        {
-            if (settings.PressureSolver != PressureSolver.Dfsph)
-                throw new UsageException($"{command}: --solver-iteration applies to the DFSPH solver only; this run uses WCSPH "
-                    + "(add --solver dfsph, or set Fluid.pressureSolver in the scene)");
-            settings.SolverIteration = Iteration.Value;
-        }
+            settings.SolverIteration = DfsphOnly(settings, command, "--solver-iteration", Iteration.Value);
         scene.Settings = settings;
         return Solver.HasValue ? FitSupport(settings, command) : null;
     }
+
+    static T DfsphOnly<T>(FluidSettings settings, string command, string option, T value) =>
+        settings.PressureSolver == PressureSolver.Dfsph ? value
+            : throw new UsageException($"{command}: {option} applies to the DFSPH solver only; this run uses WCSPH "
+                + "(add --solver dfsph, or set Fluid.pressureSolver in the scene)");
 
     /// <summary>
     /// DFSPH takes the cubic spline at 2 spacings only, and Wendland C2 up to 2.9 with a relaxed Jacobi step
@@ -94,11 +94,13 @@ public sealed class SolverChoice
     public static string ShortName(PressureSolver solver) => solver == PressureSolver.Dfsph ? "DFSPH" : "WCSPH";
 }
 
-/// <summary>The <c>--solver</c>, <c>--density-tolerance</c> and <c>--solver-iteration</c> options, shared by the commands that run the solver.</summary>
+/// <summary>The <c>--solver</c>, <c>--density-tolerance</c>, <c>--divergence-tolerance</c> and <c>--solver-iteration</c>
+/// options, shared by the commands that run the solver.</summary>
 public sealed class SolverOptions
 {
     readonly Option<PressureSolver> _solver;
     readonly Option<double> _densityTolerance;
+    readonly Option<double> _divergenceTolerance;
     readonly Option<SolverIteration> _iteration;
 
     public SolverOptions(string command)
@@ -106,9 +108,10 @@ public sealed class SolverOptions
         _solver = OptionKinds.Choice(command, "--solver", SolverChoice.Words,
             "pressure solver, overriding the scene's Fluid.pressureSolver: wcsph (Tait equation of state) or dfsph "
             + "(divergence-free SPH, iterative; default: the scene's)");
-        _densityTolerance = OptionKinds.Number(command, "--density-tolerance", 0.001, 10, false, "%", "PCT",
-            "DFSPH: largest average density error of any phase the pressure solve accepts, in [0.001, 10] % (default: the scene's; "
-            + "refused when the run uses WCSPH)");
+        _densityTolerance = OptionKinds.Setting(command, "--density-tolerance", nameof(FluidSettings.DensityTolerance), "PCT",
+            "default: the scene's; refused when the run uses WCSPH");
+        _divergenceTolerance = OptionKinds.Setting(command, "--divergence-tolerance", nameof(FluidSettings.DivergenceTolerance), "PCT/S",
+            "default: the scene's; refused when the run uses WCSPH");
         _iteration = OptionKinds.Choice(command, "--solver-iteration", SolverChoice.IterationWords,
             "DFSPH: how each solve iterates, overriding the scene's Fluid.solverIteration: jacobi (compression-only relaxed "
             + "Jacobi steps) or chebyshev (accelerated, projected steps; default: the scene's; refused when the run uses WCSPH)");
@@ -118,6 +121,7 @@ public sealed class SolverOptions
     {
         command.Add(_solver);
         command.Add(_densityTolerance);
+        command.Add(_divergenceTolerance);
         command.Add(_iteration);
     }
 
@@ -125,6 +129,7 @@ public sealed class SolverOptions
     {
         Solver = r.GetResult(_solver) != null ? r.GetValue(_solver) : null,
         DensityTolerance = r.GetResult(_densityTolerance) != null ? r.GetValue(_densityTolerance) : null,
+        DivergenceTolerance = r.GetResult(_divergenceTolerance) != null ? r.GetValue(_divergenceTolerance) : null,
         Iteration = r.GetResult(_iteration) != null ? r.GetValue(_iteration) : null,
     };
 }

@@ -1,6 +1,7 @@
 using System.Collections.Generic;
 using System.CommandLine;
 using SphFluid.Headless.Runs;
+using SphFluid.Simulation;
 
 namespace SphFluid.Headless.Cli;
 
@@ -26,6 +27,9 @@ public sealed class StudyOptions(string scenePath)
     /// <summary>DFSPH runs: density tolerances, %.</summary>
     public List<double> DensityTolerances { get; set; } = new() { 1, 0.1, 0.01 };
 
+    /// <summary>DFSPH runs: divergence tolerances, %/s, each with every density tolerance; empty = the scene's.</summary>
+    public List<double> DivergenceTolerances { get; set; } = new();
+
     /// <summary>Resolutions: particle-count multipliers (ParticleScaling).</summary>
     public List<double> ParticleScales { get; set; } = new() { 0.5, 1 };
 
@@ -49,8 +53,8 @@ public sealed class StudyCommand : Command
     public const string Details =
 @"Details:
 Runs the scene once per configuration of a matrix: WCSPH at each --stiffness-factors multiple of the
-scene's Tait stiffness and DFSPH at each --density-tolerances value (with each --solver-iterations
-scheme), each at every --particles-scales
+scene's Tait stiffness and DFSPH at each --density-tolerances value (with each --divergence-tolerances
+value and each --solver-iterations scheme), each at every --particles-scales
 resolution and every --cfl number, for --seconds of simulated time. For each configuration it reports the
 average and max density error per phase (|rho/rho0 - 1|, GPU diagnostics, averaged / maximised over the
 samples), the divergence error (DFSPH), the energy drift ((E_end - E_0) / E_0, kinetic + potential), the
@@ -60,7 +64,7 @@ pressure-solver iterations per sub-step and the shares of DFSPH density and dive
 the iteration limit (above 0, that error can exceed its tolerance; a line under the table names the rows),
 sub-steps, GPU ms and wall ms per simulated second and the real-time factor. Writes study.csv, study.md
 (the same table in Markdown) and study-pareto.png/.svg (observable error against wall time per
-simulated second, log axes, one series per solver and DFSPH iteration scheme) into --out.
+simulated second, log axes, one series per solver, DFSPH iteration scheme and divergence tolerance given) into --out.
 --quick: a small matrix for a check in a few minutes on 2 CPU cores (0.1 s simulated; scales 0.25 and
 0.5; the scene's CFL; WCSPH x1; DFSPH 1, 0.1 and 0.01 %).
 
@@ -73,9 +77,10 @@ simulated second, log axes, one series per solver and DFSPH iteration scheme) in
     readonly Option<List<double>> _stiffness = OptionKinds.List(Verb, "--stiffness-factors", "F",
         "WCSPH runs: multiples of the scene's Tait stiffness, each in [0.01, 100] (default 1 4; --quick 1)",
         text => Ranges.ParseDouble(Verb, "--stiffness-factors", text, 0.01, 100, false, ""));
-    readonly Option<List<double>> _tolerances = OptionKinds.List(Verb, "--density-tolerances", "PCT",
-        "DFSPH runs: density tolerances, each in [0.001, 10] % (default 1 0.1 0.01)",
-        text => Ranges.ParseDouble(Verb, "--density-tolerances", text, 0.001, 10, false, "%"));
+    readonly Option<List<double>> _tolerances = OptionKinds.SettingList(Verb, "--density-tolerances", nameof(FluidSettings.DensityTolerance), "PCT",
+        "the DFSPH runs; default 1 0.1 0.01");
+    readonly Option<List<double>> _divergenceTolerances = OptionKinds.SettingList(Verb, "--divergence-tolerances", nameof(FluidSettings.DivergenceTolerance), "PCT/S",
+        "the DFSPH runs, each with every density tolerance; default: the scene's");
     readonly Option<List<double>> _scales = OptionKinds.List(Verb, "--particles-scales", "F",
         "resolutions: particle-count multipliers, each in [0.01, 4096] (default 0.5 1; --quick 0.25 0.5)",
         text => Ranges.ParseDouble(Verb, "--particles-scales", text, 0.01, ParticleScaling.MaxFactor, false, ""));
@@ -95,7 +100,7 @@ simulated second, log axes, one series per solver and DFSPH iteration scheme) in
     public StudyCommand() : base(Verb, "accuracy for time: a matrix of solvers, tolerances, resolutions and CFL numbers; CSV, Markdown, Pareto chart")
     {
         Add(_scene);
-        foreach (var option in new Option[] { _out, _seconds, _stiffness, _tolerances, _scales, _cfl, _solvers, _iterations, _quick, _device }) Add(option);
+        foreach (var option in new Option[] { _out, _seconds, _stiffness, _tolerances, _divergenceTolerances, _scales, _cfl, _solvers, _iterations, _quick, _device }) Add(option);
     }
 
     public StudyOptions Read(ParseResult r)
@@ -117,6 +122,7 @@ simulated second, log axes, one series per solver and DFSPH iteration scheme) in
         if (r.GetResult(_seconds) != null) options.Seconds = r.GetValue(_seconds);
         options.StiffnessFactors = OptionKinds.Given(r, _stiffness) ?? options.StiffnessFactors;
         options.DensityTolerances = OptionKinds.Given(r, _tolerances) ?? options.DensityTolerances;
+        options.DivergenceTolerances = OptionKinds.Given(r, _divergenceTolerances) ?? options.DivergenceTolerances;
         options.ParticleScales = OptionKinds.Given(r, _scales) ?? options.ParticleScales;
         options.CflNumbers = OptionKinds.Given(r, _cfl) ?? options.CflNumbers;
         options.Solvers = OptionKinds.Given(r, _solvers) ?? options.Solvers;

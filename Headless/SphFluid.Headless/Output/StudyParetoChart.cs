@@ -8,7 +8,7 @@ namespace SphFluid.Headless.Output;
 
 /// <summary>
 /// study-pareto.png / .svg: each configuration's observable error against its wall time per simulated second, both on
-/// log axes (ticks at powers of ten), one series per solver. The reference run has no error by definition and is drawn
+/// log axes (ticks at powers of ten), one series per solver (and iteration scheme, and divergence tolerance). The reference run has no error by definition and is drawn
 /// at the floor of the error axis.
 /// </summary>
 public static class StudyParetoChart
@@ -16,27 +16,26 @@ public static class StudyParetoChart
     public const string Stem = "study-pareto";
     public const double ErrorFloor = 1e-4;
 
-    /// <summary>One series per solver, and per iteration scheme of DFSPH (StudyRun.Configuration.Series).</summary>
-    static readonly (string Name, string Legend, ScottPlot.MarkerShape Marker)[] Series =
+    static readonly ScottPlot.MarkerShape[] Markers =
     {
-        ("WCSPH", "WCSPH (Tait stiffness multiples)", ScottPlot.MarkerShape.FilledCircle),
-        ("DFSPH", "DFSPH (density tolerance 1, 0.1, 0.01 %)", ScottPlot.MarkerShape.FilledSquare),
-        ("DFSPH Chebyshev", "DFSPH Chebyshev-accelerated (1, 0.1, 0.01 %)", ScottPlot.MarkerShape.FilledDiamond),
+        ScottPlot.MarkerShape.FilledCircle, ScottPlot.MarkerShape.FilledSquare, ScottPlot.MarkerShape.FilledDiamond,
+        ScottPlot.MarkerShape.FilledTriangleUp, ScottPlot.MarkerShape.FilledTriangleDown, ScottPlot.MarkerShape.OpenCircle,
     };
 
     public static Chart Build(string sceneName, string deviceName, IReadOnlyList<StudyRun.Row> rows)
     {
         var chart = new Chart($"Accuracy for time: {sceneName} on {deviceName}", "wall time per simulated second (ms, log)",
             "observable error vs finest run (relative, log)");
-        foreach (var (name, legend, marker) in Series)
+        // One series per solver, per iteration scheme of DFSPH and per divergence tolerance the study was given
+        // (StudyRun.Configuration.Series), in the matrix's order.
+        int drawn = 0;
+        foreach (var mine in rows.Where(r => double.IsFinite(r.ObservableError) && r.WallMsPerSecond > 0).GroupBy(r => r.Config.Series))
         {
-            var mine = rows.Where(r => r.Config.Series == name && double.IsFinite(r.ObservableError) && r.WallMsPerSecond > 0).ToList();
-            if (mine.Count == 0) continue;
             var series = chart.Plot.Add.ScatterPoints(mine.Select(r => Math.Log10(r.WallMsPerSecond)).ToArray(),
                 mine.Select(r => Math.Log10(Math.Max(r.ObservableError, ErrorFloor))).ToArray());
-            series.LegendText = legend;
+            series.LegendText = Legend(mine.First().Config, mine.Select(r => r.Config));
             series.MarkerSize = 9;
-            series.MarkerShape = marker;
+            series.MarkerShape = Markers[drawn++ % Markers.Length];
         }
         // Errors span decades (ticks at powers of ten); wall times may span less than one (ticks between them too).
         foreach (var (axis, decades) in new (ScottPlot.IAxis, bool)[] { (chart.Plot.Axes.Bottom, false), (chart.Plot.Axes.Left, true) })
@@ -49,5 +48,18 @@ public static class StudyParetoChart
         chart.Plot.Axes.Margins(0.15, 0.15);
         chart.LegendBelow = true; // the points can fall in any corner
         return chart;
+    }
+
+    /// <summary>What varies along a series: WCSPH's stiffness multiples, or DFSPH's density tolerances.</summary>
+    static string Legend(StudyRun.Configuration first, IEnumerable<StudyRun.Configuration> configs)
+    {
+        var c = System.Globalization.CultureInfo.InvariantCulture;
+        if (first.Solver != PressureSolver.Dfsph)
+            return "WCSPH (Tait stiffness x " + string.Join(", ", configs.Select(k => k.StiffnessFactor.ToString("G3", c)).Distinct()) + ")";
+        string tolerances = string.Join(", ", configs.Select(k => k.DensityTolerance.ToString("G3", c)).Distinct()) + " %";
+        string name = first.Iteration == SolverIteration.Chebyshev ? "DFSPH Chebyshev-accelerated" : "DFSPH";
+        return first.NamesDivergence
+            ? string.Format(c, "{0} (density tolerance {1}; divergence {2:G3} %/s)", name, tolerances, first.DivergenceTolerance)
+            : string.Format(c, "{0} (density tolerance {1})", name, tolerances);
     }
 }

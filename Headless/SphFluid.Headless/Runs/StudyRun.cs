@@ -28,15 +28,21 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
     /// <summary>A device to use instead of opening one (tests share theirs); not disposed here. Null: the run opens its own.</summary>
     public IComputeDevice? Device { get; init; }
 
+    /// <summary>One run of the matrix. <paramref name="DivergenceTolerance"/> is the DFSPH row's (%/s, the scene's unless the
+    /// study was given its own); <paramref name="NamesDivergence"/>: the study was, so labels and series name it.</summary>
     public sealed record Configuration(PressureSolver Solver, double StiffnessFactor, double DensityTolerance, double ParticleScale, double Cfl,
-        SolverIteration Iteration = SolverIteration.Jacobi)
+        SolverIteration Iteration = SolverIteration.Jacobi, double DivergenceTolerance = double.NaN, bool NamesDivergence = false)
     {
         public string Label => Solver == PressureSolver.Dfsph
-            ? string.Format(C, "{0} {1:G3} %", Series, DensityTolerance)
+            ? string.Format(C, "{0} {1:G3} %{2}", SolverName, DensityTolerance, NamesDivergence ? string.Format(C, ", {0:G3} %/s", DivergenceTolerance) : "")
             : string.Format(C, "WCSPH k x{0:G3}", StiffnessFactor);
 
-        /// <summary>The chart's series and the CSV's solver column: WCSPH, DFSPH (the Jacobi solve) or DFSPH Chebyshev.</summary>
-        public string Series => Solver != PressureSolver.Dfsph ? "WCSPH" : Iteration == SolverIteration.Chebyshev ? "DFSPH Chebyshev" : "DFSPH";
+        /// <summary>The CSV's solver column: WCSPH, DFSPH (the Jacobi solve) or DFSPH Chebyshev.</summary>
+        public string SolverName => Solver != PressureSolver.Dfsph ? "WCSPH" : Iteration == SolverIteration.Chebyshev ? "DFSPH Chebyshev" : "DFSPH";
+
+        /// <summary>The chart's series: the solver, and the divergence tolerance where the study was given its own.</summary>
+        public string Series => Solver == PressureSolver.Dfsph && NamesDivergence
+            ? string.Format(C, "{0} at {1:G3} %/s", SolverName, DivergenceTolerance) : SolverName;
     }
 
     public sealed class Row(Configuration config, int particles, string[] phaseNames)
@@ -114,20 +120,23 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
     {
         var cfls = options.CflNumbers.Count > 0 ? options.CflNumbers
             : options.Quick ? new List<double> { scene.CflNumber } : new List<double> { scene.CflNumber, scene.CflNumber / 2 };
-        var solvers = new List<(PressureSolver, double, double)>();
-        if (options.Solvers.Contains(PressureSolver.Wcsph))
-            foreach (double k in options.StiffnessFactors) solvers.Add((PressureSolver.Wcsph, k, 0));
-        if (options.Solvers.Contains(PressureSolver.Dfsph))
-            foreach (double tol in options.DensityTolerances) solvers.Add((PressureSolver.Dfsph, 1, tol));
+        bool namesDivergence = options.DivergenceTolerances.Count > 0;
+        if (namesDivergence && !options.Solvers.Contains(PressureSolver.Dfsph))
+            throw new UsageException("study: --divergence-tolerances applies to the DFSPH rows, and --solvers runs none (add dfsph)");
+        var divergences = namesDivergence ? options.DivergenceTolerances : new List<double> { scene.DivergenceTolerance };
         var iterations = options.SolverIterations.Count > 0 ? options.SolverIterations : new List<SolverIteration> { scene.SolverIteration };
         var configs = new List<Configuration>();
         foreach (double scale in options.ParticleScales)
             foreach (double cfl in cfls)
-                foreach (var (solver, k, tol) in solvers)
-                    if (solver == PressureSolver.Dfsph)
-                        foreach (var iteration in iterations) configs.Add(new Configuration(solver, k, tol, scale, cfl, iteration));
-                    else
-                        configs.Add(new Configuration(solver, k, tol, scale, cfl));
+            {
+                if (options.Solvers.Contains(PressureSolver.Wcsph))
+                    foreach (double k in options.StiffnessFactors) configs.Add(new Configuration(PressureSolver.Wcsph, k, 0, scale, cfl));
+                if (options.Solvers.Contains(PressureSolver.Dfsph))
+                    foreach (double tolerance in options.DensityTolerances)
+                        foreach (double divergence in divergences)
+                            foreach (var iteration in iterations)
+                                configs.Add(new Configuration(PressureSolver.Dfsph, 1, tolerance, scale, cfl, iteration, divergence, namesDivergence));
+            }
         return configs;
     }
 
@@ -139,6 +148,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         if (config.Solver == PressureSolver.Dfsph)
         {
             settings.DensityTolerance = (float)config.DensityTolerance;
+            settings.DivergenceTolerance = (float)config.DivergenceTolerance;
             settings.SolverIteration = config.Iteration;
         }
         string? note = SolverChoice.FitSupport(settings, "study");
@@ -245,7 +255,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
     }
 
     /// <summary>Observable errors against the finest configuration run: the largest particle scale, then the smallest CFL,
-    /// then the tightest DFSPH tolerance (or the stiffest WCSPH when no DFSPH ran). Lengths are relative to the
+    /// then the tightest DFSPH density tolerance and divergence tolerance (or the stiffest WCSPH when no DFSPH ran). Lengths are relative to the
     /// container's length (front) and height (column); the layering index to its range of 2.</summary>
     void CompareWithFinest(ContainerDescription container)
     {
@@ -253,6 +263,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
             .OrderByDescending(r => r.Config.ParticleScale).ThenBy(r => r.Config.Cfl)
             .ThenByDescending(r => r.Config.Solver == PressureSolver.Dfsph ? 1 : 0)
             .ThenBy(r => r.Config.Solver == PressureSolver.Dfsph ? r.Config.DensityTolerance : -r.Config.StiffnessFactor)
+            .ThenBy(r => r.Config.Solver == PressureSolver.Dfsph ? r.Config.DivergenceTolerance : 0)
             .FirstOrDefault();
         foreach (var r in Rows)
         {
@@ -272,14 +283,15 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
     {
         var b = new StringBuilder();
         int phases = Rows[0].PhaseNames.Length;
-        b.Append("solver,stiffness_factor,density_tolerance_pct,particles_scale,cfl,particles");
+        b.Append("solver,stiffness_factor,density_tolerance_pct,divergence_tolerance_pct_per_s,particles_scale,cfl,particles");
         foreach (string p in Rows[0].PhaseNames) b.Append(C, $",{p.ToLowerInvariant()}_density_error_avg,{p.ToLowerInvariant()}_density_error_max");
         b.AppendLine(",divergence_error,energy_drift,layering_index,surge_front_m,column_m,layering_error,front_error,column_error,observable_error,"
             + "solver_iterations_per_step,density_solves_cut_off,divergence_solves_cut_off,substeps_per_s,gpu_ms_per_s,wall_ms_per_s,real_time_factor,finest,status");
         foreach (var r in Rows)
         {
-            b.Append(string.Format(C, "{0},{1:G6},{2:G6},{3:G6},{4:G6},{5}", r.Config.Series, r.Config.StiffnessFactor,
-                r.Config.Solver == PressureSolver.Dfsph ? r.Config.DensityTolerance : double.NaN, r.Config.ParticleScale, r.Config.Cfl, r.Particles));
+            bool dfsph = r.Config.Solver == PressureSolver.Dfsph;
+            b.Append(string.Format(C, "{0},{1:G6},{2:G6},{3:G6},{4:G6},{5:G6},{6}", r.Config.SolverName, r.Config.StiffnessFactor,
+                dfsph ? r.Config.DensityTolerance : double.NaN, dfsph ? r.Config.DivergenceTolerance : double.NaN, r.Config.ParticleScale, r.Config.Cfl, r.Particles));
             for (int k = 0; k < phases; k++) b.Append(string.Format(C, ",{0:G6},{1:G6}", r.DensityErrorAverage[k], r.DensityErrorMax[k]));
             b.AppendLine(string.Format(C, ",{0:G6},{1:G6},{2:G6},{3:G6},{4:G6},{5:G6},{6:G6},{7:G6},{8:G6},{9:G6},{10:G6},{11:G6},{12:G6},{13:G6},{14:G6},{15:G6},{16},{17}",
                 r.DivergenceError, r.EnergyDrift, r.Layering, r.SurgeFront, r.Column, r.LayeringError, r.FrontError, r.ColumnError, r.ObservableError,

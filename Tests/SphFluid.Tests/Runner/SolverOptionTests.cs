@@ -7,7 +7,7 @@ using SphFluid.Simulation;
 
 namespace SphFluid.Tests.Runner
 {
-    /// <summary>--solver and --density-tolerance: parsed, refused by name with their range, applied to the run and printed.</summary>
+    /// <summary>--solver and DFSPH's tolerances: parsed, refused by name with their range, applied to the run and printed.</summary>
     public sealed class SolverOptionTests
     {
         static int Run(out string stderr, params string[] args)
@@ -34,23 +34,34 @@ namespace SphFluid.Tests.Runner
             Assert.That(err, Does.Contain(message));
         }
 
-        [Test]
-        public void ADensityToleranceForAWcsphRunIsRefusedInsteadOfIgnored()
+        [TestCase("simulate", "0", "--divergence-tolerance must be in [0.01, 1000] %/s (was 0)")]
+        [TestCase("bench", "2000", "--divergence-tolerance must be in [0.01, 1000] %/s (was 2000)")]
+        [TestCase("simulate", "loose", "--divergence-tolerance must be a number in [0.01, 1000] %/s (was 'loose')")]
+        public void ADivergenceToleranceOutOfTheSettingsRangeIsRefused(string command, string value, string message)
         {
-            Assert.That(Run(out string err, "simulate", RunnerPaths.Scene("PlayModeTest"), "--density-tolerance", "0.1", "--steps", "1"), Is.EqualTo(ExitCodes.BadArguments));
-            Assert.That(err, Does.Contain("--density-tolerance applies to the DFSPH solver only"));
+            Assert.That(Run(out string err, command, RunnerPaths.Scene("PlayModeTest"), "--solver", "dfsph", "--divergence-tolerance", value), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain(message));
+        }
+
+        [TestCase("--density-tolerance", "0.1")]
+        [TestCase("--divergence-tolerance", "30")]
+        public void ADfsphToleranceForAWcsphRunIsRefusedInsteadOfIgnored(string option, string value)
+        {
+            Assert.That(Run(out string err, "simulate", RunnerPaths.Scene("PlayModeTest"), option, value, "--steps", "1"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain(option + " applies to the DFSPH solver only"));
         }
 
         [Test]
         public void TheChoiceOverridesTheScenesSettings()
         {
-            var options = SimulateOptions.Parse(new[] { "x.unity", "--solver", "DFSPH", "--density-tolerance", "0.01" });
+            var options = SimulateOptions.Parse(new[] { "x.unity", "--solver", "DFSPH", "--density-tolerance", "0.01", "--divergence-tolerance", "30" });
             var scene = new FluidSceneDescription { Settings = new FluidSettings() };
 
             options.Solver.ApplyTo(scene, "simulate");
 
             Assert.That(scene.Settings.PressureSolver, Is.EqualTo(PressureSolver.Dfsph));
             Assert.That(scene.Settings.DensityTolerance, Is.EqualTo(0.01f));
+            Assert.That(scene.Settings.DivergenceTolerance, Is.EqualTo(30f));
             Assert.That(SimulateOptions.Parse(new[] { "x.unity" }).Solver.Solver, Is.Null, "without --solver the scene's solver runs");
         }
 
@@ -59,11 +70,11 @@ namespace SphFluid.Tests.Runner
         {
             string outDir = RunnerPaths.ScratchFolder("solver-header");
             var stdout = new StringWriter();
-            var run = new SimulateRun(SimulateOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--steps", "1", "--solver", "dfsph", "--density-tolerance", "0.05", "--out", outDir, "--quiet" }),
+            var run = new SimulateRun(SimulateOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--steps", "1", "--solver", "dfsph", "--density-tolerance", "0.05", "--divergence-tolerance", "25", "--out", outDir, "--quiet" }),
                 stdout, new StringWriter()) { Device = GpuTestDevice.Shared, InteractiveProgress = false };
 
             Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok), stdout.ToString());
-            Assert.That(stdout.ToString(), Does.Contain("solver: DFSPH (density tolerance 0.05 %"));
+            Assert.That(stdout.ToString(), Does.Contain("solver: DFSPH (density tolerance 0.05 %, divergence tolerance 25 %/s"));
             Assert.That(stdout.ToString(), Does.Contain("done (DFSPH)"));
             Assert.That(File.ReadAllText(Path.Combine(outDir, "summary.txt")), Does.Contain("solver: DFSPH"));
         }

@@ -36,7 +36,7 @@ namespace SphFluid.Tests.Runner
             }
             string[] csv = File.ReadAllLines(Path.Combine(outDir, "study.csv"));
             Assert.That(csv.Length, Is.EqualTo(9));
-            Assert.That(csv[0], Does.StartWith("solver,stiffness_factor,density_tolerance_pct,particles_scale,cfl,particles,water_density_error_avg"));
+            Assert.That(csv[0], Does.StartWith("solver,stiffness_factor,density_tolerance_pct,divergence_tolerance_pct_per_s,particles_scale,cfl,particles,water_density_error_avg"));
             Assert.That(csv.Count(l => l.EndsWith(",yes,ok", StringComparison.Ordinal)), Is.EqualTo(1), "one finest run");
             Assert.That(csv[0], Does.Contain(",solver_iterations_per_step,density_solves_cut_off,divergence_solves_cut_off,substeps_per_s,"));
             string markdown = File.ReadAllText(Path.Combine(outDir, "study.md"));
@@ -121,6 +121,48 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Rows[2].SolverIterations, Is.LessThan(run.Rows[1].SolverIterations));
         }
 
+        /// <summary>Each --divergence-tolerances value gets DFSPH rows of its own, for every density tolerance, labelled and
+        /// charted as a series of its own, its value in the CSV; without the option the rows run the scene's and say nothing of it.
+        /// Checked on the scene itself: OilAndWater at a tenth of its particles (416), two frames.</summary>
+        [Test]
+        public void EachDivergenceToleranceGetsDfsphRowsOfItsOwn()
+        {
+            string outDir = RunnerPaths.ScratchFolder("study-divergence");
+            var run = new StudyRun(StudyOptions.Parse(new[] { RunnerPaths.Scene("OilAndWater"), "--solvers", "dfsph", "--density-tolerances", "1", "0.1",
+                "--divergence-tolerances", "10", "30", "--particles-scales", "0.1", "--cfl", "0.3", "--seconds", "0.02", "--out", outDir }),
+                new StringWriter(), new StringWriter())
+            {
+                Device = GpuTestDevice.Shared,
+            };
+
+            Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok));
+            Assert.That(run.Rows.Select(r => r.Config.Label),
+                Is.EqualTo(new[] { "DFSPH 1 %, 10 %/s", "DFSPH 1 %, 30 %/s", "DFSPH 0.1 %, 10 %/s", "DFSPH 0.1 %, 30 %/s" }));
+            var tolerances = File.ReadAllLines(Path.Combine(outDir, "study.csv")).Skip(1).Select(line => line.Split(',')).Select(f => f[0] + " " + f[2] + " " + f[3]);
+            Assert.That(tolerances, Is.EqualTo(new[] { "DFSPH 1 10", "DFSPH 1 30", "DFSPH 0.1 10", "DFSPH 0.1 30" }));
+            Assert.That(run.Finest!.Config.Label, Is.EqualTo("DFSPH 0.1 %, 10 %/s"), "the tightest of both tolerances is the reference");
+            ChartFiles.Check(outDir, "study-pareto", "Accuracy for time: OilAndWater", "wall time per simulated second (ms, log)",
+                "observable error vs finest run (relative, log)", "DFSPH (density tolerance 1, 0.1 %; divergence 10 %/s)",
+                "DFSPH (density tolerance 1, 0.1 %; divergence 30 %/s)");
+
+            var plain = StudyOptions.Parse(new[] { "x.unity", "--density-tolerances", "0.1" });
+            Assert.That(plain.DivergenceTolerances, Is.Empty, "the scene's");
+            Assert.That(new StudyRun.Configuration(PressureSolver.Dfsph, 1, 0.1, 1, 0.3, SolverIteration.Chebyshev, 10).Label, Is.EqualTo("DFSPH Chebyshev 0.1 %"));
+        }
+
+        [Test]
+        public void DivergenceTolerancesWithoutDfsphRowsAreRefusedInsteadOfIgnored()
+        {
+            var run = new StudyRun(StudyOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--solvers", "wcsph", "--divergence-tolerances", "30",
+                "--out", RunnerPaths.ScratchFolder("study-divergence-wcsph") }), new StringWriter(), new StringWriter())
+            {
+                Device = GpuTestDevice.Shared,
+            };
+
+            var error = Assert.Throws<UsageException>(() => run.Execute());
+            Assert.That(error!.Message, Is.EqualTo("study: --divergence-tolerances applies to the DFSPH rows, and --solvers runs none (add dfsph)"));
+        }
+
         /// <summary>Only DFSPH rows that cut solves off are named under the table, each with its scale and CFL.</summary>
         [Test]
         public void TheCutOffNoteNamesOnlyTheDfsphRowsThatCutSolvesOff()
@@ -140,6 +182,8 @@ namespace SphFluid.Tests.Runner
         {
             var error = Assert.Throws<UsageException>(() => StudyOptions.Parse(new[] { "x.unity", "--density-tolerances", "1", "50" }));
             Assert.That(error.Message, Does.Contain("study: --density-tolerances must be in [0.001, 10] % (was 50)"));
+            error = Assert.Throws<UsageException>(() => StudyOptions.Parse(new[] { "x.unity", "--divergence-tolerances", "10", "0" }));
+            Assert.That(error.Message, Does.Contain("study: --divergence-tolerances must be in [0.01, 1000] %/s (was 0)"));
             error = Assert.Throws<UsageException>(() => StudyOptions.Parse(new[] { "x.unity", "--solvers", "sph" }));
             Assert.That(error.Message, Does.Contain("--solvers must be wcsph and/or dfsph (was 'sph')"));
             error = Assert.Throws<UsageException>(() => StudyOptions.Parse(new[] { "x.unity", "--solver-iterations", "gauss" }));
