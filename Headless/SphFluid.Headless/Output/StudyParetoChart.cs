@@ -8,8 +8,8 @@ namespace SphFluid.Headless.Output;
 
 /// <summary>
 /// study-pareto.png / .svg: each configuration's observable error against its wall time per simulated second, both on
-/// log axes (ticks at powers of ten), one series per solver (and iteration scheme, and divergence tolerance). The reference run has no error by definition and is drawn
-/// at the floor of the error axis.
+/// log axes (ticks at powers of ten), one series per solver (and iteration scheme, and divergence tolerance). The
+/// reference run has no error by definition and is drawn at the floor of the error axis.
 /// </summary>
 public static class StudyParetoChart
 {
