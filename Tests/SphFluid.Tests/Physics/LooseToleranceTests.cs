@@ -30,7 +30,7 @@ namespace SphFluid.Tests.Physics
     /// <para>Each liquid's compression, averaged over the frames from 0.033 s, must be within the tolerance. The solve
     /// stops at 0.9 of it on a first-order prediction (FluidSimulation.DensityPredictionMargin); with the accelerated
     /// constant-density solve at 25 900 particles the second-order part it misses was more than that tenth (0.950 % for
-    /// the water, 1.012 % for the oil), with the Jacobi steps it is not (0.837 and 0.873 %).</para>
+    /// the water, 1.012 % for the oil), with the Jacobi steps it is not (0.847 and 0.883 %).</para>
     /// </summary>
     public sealed class LooseToleranceTests
     {
@@ -39,7 +39,7 @@ namespace SphFluid.Tests.Physics
         sealed class Run
         {
             public int Particles;
-            public double DepthInSpacings, EnergyRise = double.MinValue, Largest, Iterations, CutOff;
+            public double DepthInSpacings, EnergyRise = double.MinValue, Largest, Iterations;
             public bool Accelerated;
             public HealthProblem? Problem;
             public int ClampHits, Lost;
@@ -81,7 +81,6 @@ namespace SphFluid.Tests.Physics
                 run.Problem = health.Check(report);
                 sim.Particles.GetData(particles);
                 run.EnergyRise = Math.Max(run.EnergyRise, FluidEnergy.Mechanical(particles, sim.PhaseRows, gravity) - spawnEnergy);
-                run.CutOff = Math.Max(run.CutOff, Math.Max(report.DensitySolvesCutOff, report.DivergenceSolvesCutOff));
                 if (frame < 2) continue;
                 samples++;
                 run.Iterations += report.DensitySolveIterations + report.DivergenceSolveIterations;
@@ -100,7 +99,7 @@ namespace SphFluid.Tests.Physics
                 (run.Problem == null ? $"healthy for {frames} frames" : $"unhealthy: {run.Problem}") +
                 $"; iterations a sub-step from the second frame {run.Iterations:F2}; average compression: " +
                 string.Join(", ", run.Names.Select((n, k) => $"{n} {100 * run.Compression[k]:F3} %")) +
-                $", largest {100 * run.Largest:F1} %; most solves cut off in a frame {run.CutOff:P0}; mechanical energy {spawnEnergy:F4} J at spawn, largest rise {run.EnergyRise:F4} J; {run.Last}");
+                $", largest {100 * run.Largest:F1} %; mechanical energy {spawnEnergy:F4} J at spawn, largest rise {run.EnergyRise:F4} J; {run.Last}");
             Runs[(tolerance, scale)] = run;
             return run;
         }
@@ -116,16 +115,6 @@ namespace SphFluid.Tests.Physics
             Assert.That(run.Lost, Is.EqualTo(0));
             Assert.That(run.EnergyRise, Is.LessThanOrEqualTo(0.0), "no work is done on the closed tank");
             AssertWithinTheTolerance(run);
-        }
-
-        /// <summary>The same run: every solve ends within its tolerance, none cut off at the rounds recorded for it. While
-        /// the budget followed the last frame alone (FluidSimulation.SolveBudget) it fell to 8 rounds after the first frame's
-        /// two-iteration solves, and half of the third frame's constant-density solves ran out.</summary>
-        [Test]
-        public void OnePercentAtSixTimesTheScene_CutsOffNoSolve()
-        {
-            var run = Simulate(Loose, 6f, 6);
-            Assert.That(run.CutOff, Is.EqualTo(0.0), "the largest share of solves cut off in any frame");
         }
 
         static void AssertWithinTheTolerance(Run run)

@@ -533,19 +533,11 @@ namespace SphFluid.Simulation
         /// of rounds anyway (<paramref name="cutOff"/> &gt; 0) at least doubles the budget. Never more than
         /// <paramref name="maxIterations"/> (the setting's hard limit), never fewer than the three rounds the first
         /// possible convergence takes; no solve since (0 and 0) keeps <paramref name="rounds"/>.
-        /// <para>A budget shrinks by at most a quarter a read-back, so it keeps what the solves needed over the last few
-        /// frames, not only the last one. Set from the last frame alone it fell from the spawn's MaxSolverIterations, or from
-        /// a frame that needed more, to 2 x 2 + 4 = 8 rounds after one frame of two-iteration solves, and the next frame's
-        /// solves ran out: OilAndWater at 25 900 particles under the Chebyshev solve (lavapipe, 0.2 s) cut off 4.2 % of its
-        /// constant-density solves at 1 %, 10.4 % at 0.5 % and 25 % at 1 % with a 30 %/s divergence tolerance, where a
-        /// loose solve alternates between frames of two iterations and of seven or more. Shrinking by a quarter, none, at
-        /// the same iterations a sub-step (8.1 and 12.1 against 8.3 and 12.0 at 1 and 0.5 %). A steady flow records what
-        /// it did: the budget reaches twice its needs plus four within a few read-backs of any change.</para>
         /// </summary>
         public static int SolveBudget(int rounds, int mostIterations, int cutOff, int maxIterations)
         {
             if (mostIterations <= 0 && cutOff <= 0) return rounds;
-            int next = Math.Max(2 * mostIterations + 4, rounds - rounds / 4);
+            int next = 2 * mostIterations + 4;
             if (cutOff > 0) next = Math.Max(next, 2 * rounds);
             return Math.Min(maxIterations, Math.Max(3, next));
         }
