@@ -259,6 +259,16 @@ namespace SphFluid.Tests.Integrity
         }
 
         [Test]
+        public void The_test_script_runs_the_layering_runs_beside_the_rest_and_nothing_twice()
+        {
+            // Two processes at once: one filter and its complement, so every test runs exactly once.
+            string script = File.ReadAllText(At("Headless/test.sh"));
+            string category = Physics.SeparationTests.LayeringCategory;
+            Assert.That(script, Does.Contain($"filter=\"TestCategory={category}\""));
+            Assert.That(script, Does.Contain($"filter=\"TestCategory!={category}\""));
+        }
+
+        [Test]
         public void Compiled_core_references_no_engine_assembly()
         {
             var core = Assembly.Load("SphFluid.Core");

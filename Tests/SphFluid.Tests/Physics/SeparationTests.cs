@@ -16,8 +16,13 @@ namespace SphFluid.Tests.Physics
     /// penalty walls the floor layer kept the phase it was spawned with (41-45 % of the floor stayed oil) and the
     /// layering index plateaued near 0.7.
     /// </summary>
+    [Category(LayeringCategory)]
     public sealed class SeparationTests
     {
+        /// <summary>The runs of seconds until the liquids layer: the longest of the suite, which Headless/test.sh runs in a
+        /// process of their own beside the rest.</summary>
+        internal const string LayeringCategory = "Layering";
+
         const float Frame = 1f / 60f;
 
         static FluidMeasures Measure(FluidSimulation sim, FluidSceneDescription scene)
