@@ -29,9 +29,9 @@ if [ $# -gt 0 ]; then
 else
     run_tests "$core" results-core.trx
     # The GPU suite in two processes at once, each with its own Vulkan device and temp folder: the layering runs (seconds
-    # of simulation until the liquids layer, half the suite's time) and the rest. A lavapipe process keeps about 1.6 of
-    # two cores busy, waiting on its own dispatches for the rest, so two of them finish both halves in about 80 % of the
-    # time they take one after the other. Each line of their interleaved output starts with its half's name.
+    # of simulation until the liquids layer, half the suite's time) and the rest. One lavapipe process keeps about 1.6 of
+    # two cores busy, so the two finish both halves in about 85 % of the time they take one after the other (README, the
+    # test command). Each line of their interleaved output starts with its half's name.
     dotnet build "$gpu" -c Release
     scratch=$(mktemp -d)
     trap 'rm -rf "$scratch"' EXIT
