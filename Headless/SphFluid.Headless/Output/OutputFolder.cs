@@ -36,7 +36,8 @@ public sealed class OutputFolder
     /// <summary>
     /// Creates the folder if needed and removes the files an earlier run recorded in its manifest. Refuses
     /// (<see cref="UsageException"/> naming <paramref name="option"/>) an empty path, a path that is a file,
-    /// and a folder holding a runner-named file that no manifest claims.
+    /// a folder holding a runner-named file that no manifest claims, and a manifest that is not a plain file: the run
+    /// writes it, and a link there would have it write through to whatever file the link names.
     /// </summary>
     public static OutputFolder Claim(string path, string option, string command)
     {
@@ -48,6 +49,9 @@ public sealed class OutputFolder
                 throw new UsageException($"{command}: {option} '{path}' is a file, not a folder");
             Directory.CreateDirectory(path);
             var folder = new OutputFolder(path);
+            if (Directory.Exists(folder.ManifestPath) || new FileInfo(folder.ManifestPath).LinkTarget != null)
+                throw new UsageException($"{command}: {option} '{path}' holds a {ManifestName} that is a link or a folder, not the plain file " +
+                    "sphfluid writes; choose an empty or new folder (nothing was changed)");
             var claimed = folder.ReadManifest();
             var foreign = Directory.EnumerateFiles(path)
                 .Select(file => IoPath.GetFileName(file))

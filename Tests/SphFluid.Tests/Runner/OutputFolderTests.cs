@@ -87,6 +87,32 @@ namespace SphFluid.Tests.Runner
             Assert.That(File.Exists(Path.Combine(dir, "keep.png")), Is.True);
         }
 
+        /// <summary>The manifest is the one file the run writes whatever the folder holds: as a link it would have had the run
+        /// empty and then append to the file it names.</summary>
+        [Test]
+        public void AManifestThatIsALinkIsRefused_AndWhatItNamesIsLeftAlone()
+        {
+            string dir = RunnerPaths.ScratchFolder("manifest-link");
+            string victim = Path.Combine(RunnerPaths.ScratchFolder("manifest-link-target"), "notes.txt");
+            File.WriteAllText(victim, "mine");
+            File.CreateSymbolicLink(Path.Combine(dir, OutputFolder.ManifestName), victim);
+
+            var e = Assert.Throws<UsageException>(() => OutputFolder.Claim(dir, "--out", "simulate"));
+
+            Assert.That(e!.Message, Is.EqualTo($"simulate: --out '{dir}' holds a .sphfluid-outputs that is a link or a folder, not the plain file " +
+                "sphfluid writes; choose an empty or new folder (nothing was changed)"));
+            Assert.That(File.ReadAllText(victim), Is.EqualTo("mine"));
+        }
+
+        [Test]
+        public void AManifestThatIsAFolderIsRefused()
+        {
+            string dir = RunnerPaths.ScratchFolder("manifest-folder");
+            Directory.CreateDirectory(Path.Combine(dir, OutputFolder.ManifestName));
+
+            Assert.That(() => OutputFolder.Claim(dir, "--out", "simulate"), Throws.TypeOf<UsageException>().With.Message.Contains("is a link or a folder"));
+        }
+
         [TestCase("")]
         [TestCase("   ")]
         public void AnEmptyOutputPathIsABadArgument(string path)
