@@ -79,6 +79,9 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
 
     public bool RunsOnCpu => DeviceType == nameof(PhysicalDeviceType.Cpu);
 
+    /// <summary>The device's maxStorageBufferRange: CreateBuffer refuses anything larger.</summary>
+    public long MaxBufferBytes => _limits.MaxStorageBufferRange;
+
     /// <summary>Vulkan API version the device reports, e.g. "1.3.230".</summary>
     public string ApiVersion { get; }
     public ShaderCompiler Compiler { get; }

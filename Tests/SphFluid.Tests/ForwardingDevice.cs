@@ -18,6 +18,7 @@ namespace SphFluid.Tests
 
         public string DeviceName => Inner.DeviceName;
         public bool RunsOnCpu => Inner.RunsOnCpu;
+        public virtual long MaxBufferBytes => Inner.MaxBufferBytes;
         public virtual IComputeProgram LoadProgram(string name) => Inner.LoadProgram(name);
         public virtual IComputeBuffer CreateBuffer(string name, int count, int stride) => Inner.CreateBuffer(name, count, stride);
         public virtual IComputeBuffer CreateConstantBuffer(string name, int bytes) => Inner.CreateConstantBuffer(name, bytes);

@@ -66,6 +66,11 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
             stdout.WriteLine(SolverChoice.Describe(descriptions[0].Settings));
             if (_solverNote != null) stdout.WriteLine(_solverNote);
             SolverName = SolverChoice.ShortName(descriptions[0].Settings.PressureSolver);
+            for (int i = 0; i < descriptions.Count; i++)
+            {
+                var (option, value) = SizeArgument(i);
+                SceneFit.RequireDevice(descriptions[i], device, "bench", scene.Path, option, value);
+            }
             WarmUpProcess(descriptions[0], device);
             foreach (var description in descriptions)
             {
@@ -135,6 +140,14 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
             b.AppendLine(string.Format(C, "| {0} | {1} | {2:F3} | {3:F3} | {4:F3} | {5:F3} | {6:P1} |", s.Decision, s.Forced, s.WithEffect.WallMs, s.WithEffect.GpuMs,
                 s.WallMsSaved, s.GpuMsSaved, s.WithEffect.GpuMs > 0 ? s.GpuMsSaved / s.WithEffect.GpuMs : 0));
         return b.ToString();
+    }
+
+    /// <summary>The argument that sized row <paramref name="row"/>: --particles N, --particles-scales F, or none (the scene as it is).</summary>
+    (string? Option, string Value) SizeArgument(int row)
+    {
+        if (options.Particles.Count > 0) return ("--particles", options.Particles[row].ToString(C));
+        if (options.ParticleScales.Count > 0) return ("--particles-scales", options.ParticleScales[row].ToString("G6", C));
+        return (null, "1");
     }
 
     /// <summary>The scene's description (a fresh load: each row owns its copy) rescaled to about <paramref name="target"/> particles.</summary>

@@ -50,8 +50,9 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             bool onCpu = device is VulkanComputeDevice { DeviceType: "Cpu" } && options.CpuParticlesScale != 1.0;
             double scale = options.ParticlesScale * (onCpu ? options.CpuParticlesScale : 1.0);
             ParticleScaling.ScaleBy(description, scale);
-            SceneFit.RequireScaled(description, "simulate", onCpu ? "--particles-scale times --cpu-particles-scale" : "--particles-scale",
-                scale.ToString("G6", C));
+            string scaleOption = onCpu ? "--particles-scale times --cpu-particles-scale" : "--particles-scale";
+            SceneFit.RequireScaled(description, "simulate", scaleOption, scale.ToString("G6", C));
+            SceneFit.RequireDevice(description, device, "simulate", scene.Path, scale == 1.0 ? null : scaleOption, scale.ToString("G6", C));
             var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name), "--out", "simulate");
             using var simulation = new FluidSimulation(device, description);
             string scaled = sceneCount == simulation.ParticleCount ? ""

@@ -94,6 +94,11 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
             if (_supportNote != null) stdout.WriteLine(_supportNote + " (the DFSPH rows)");
             for (int i = 0; i < configs.Count; i++)
             {
+                double scale = configs[i].ParticleScale;
+                SceneFit.RequireDevice(descriptions[i], device, "study", scene.Path, scale == 1.0 ? null : "--particles-scales", scale.ToString("G6", C));
+            }
+            for (int i = 0; i < configs.Count; i++)
+            {
                 var row = Run(scene, descriptions[i], configs[i], device);
                 Rows.Add(row);
                 stderr.WriteLine(string.Format(C, "study: [{0}/{1}] {2}, scale {3:G3}, CFL {4:G3}: {5} particles, {6:F0} wall ms per simulated s{7}",

@@ -2,6 +2,7 @@ using System;
 using System.Globalization;
 using System.Linq;
 using System.Text.RegularExpressions;
+using SphFluid.Compute;
 using SphFluid.Headless.Cli;
 using SphFluid.Simulation;
 using SphFluid.Sorting;
@@ -45,5 +46,18 @@ public static partial class SceneFit
         throw new UsageException(string.Format(CultureInfo.InvariantCulture,
             "{0}: {1} {2} is out of range for this scene: it needs a particle spacing of {3:G4} m (support {4:G4} m), and then\n  {5}",
             command, option, value, scene.Settings.ParticleSpacing, scene.Settings.SmoothingRadius, string.Join("\n  ", problems)));
+    }
+
+    /// <summary>
+    /// Refuses a scene whose particles the device cannot hold (<see cref="DeviceCapacity"/>), before any buffer is made:
+    /// as a bad argument naming <paramref name="option"/> and <paramref name="value"/> when the run rescaled the scene,
+    /// else (<paramref name="option"/> null) as an error of the scene file <paramref name="scenePath"/>.
+    /// </summary>
+    public static void RequireDevice(FluidSceneDescription scene, IComputeDevice device, string command, string scenePath, string? option, string value)
+    {
+        if (DeviceCapacity.Problem(scene, device) is not { } problem) return;
+        if (option == null)
+            throw new SceneException($"{scenePath}: too large for this device: {problem}");
+        throw new UsageException($"{command}: {option} {value} is too large for this device: {problem}");
     }
 }

@@ -43,6 +43,57 @@ namespace SphFluid.Tests.Solver
             Assert.That(device.Created, Is.EqualTo(0));
         }
 
+        /// <summary>A device binds buffers up to a size (IComputeDevice.MaxBufferBytes, 128 MiB on lavapipe): fluid that does not fit
+        /// is refused with its count and the limit before any buffer is made (DeviceCapacity), not by whichever buffer the
+        /// device would refuse first.</summary>
+        [Test]
+        public void FluidLargerThanTheDevicesBuffers_IsRefusedBeforeAllocating()
+        {
+            var scene = SmallScene();
+            int fluid = SpawnLayout.TotalCount(scene);
+            var device = new CountingDevice(GpuTestDevice.Shared) { BufferLimit = 32L * (fluid - 1) };
+            Assert.That(() => new FluidSimulation(device, scene), Throws.ArgumentException.With.Message.StartsWith(
+                $"FluidSimulation: {fluid} fluid particles need a buffer of").And.Message.Contains($"it holds at most {fluid - 1} fluid"));
+            Assert.That(device.Created, Is.EqualTo(0));
+        }
+
+        /// <summary>Walls that do not fit are found once the fluid's buffers exist: refused, and every buffer made so far released.</summary>
+        [Test]
+        public void WallsLargerThanTheDevicesBuffers_AreRefused_AndNothingLeaks()
+        {
+            var scene = SmallScene();
+            int fluid = SpawnLayout.TotalCount(scene), walls = BoundarySampling.Sample(scene).Length;
+            Assume.That(walls, Is.GreaterThan(fluid));
+            var device = new CountingDevice(GpuTestDevice.Shared) { BufferLimit = 32L * (walls - 1) };
+            Assert.That(() => new FluidSimulation(device, scene), Throws.ArgumentException.With.Message.StartsWith(
+                $"FluidSimulation: {walls} wall particles need a buffer of"));
+            Assert.That(device.Created, Is.GreaterThan(0));
+            Assert.That(device.Live, Is.EqualTo(0), "buffers still alive: " + string.Join(", ", device.LiveNames()));
+        }
+
+        /// <summary>Neighbour lists larger than the device's largest buffer are not made: the passes walk the grid, as past
+        /// NeighbourCapacity.MaxListBytes. lavapipe refused OilAndWater's lists at 214 600 particles (219 MB against its
+        /// 128 MiB) and the run stopped with "unexpected failure"; it now runs.</summary>
+        [Test]
+        public void ListsLargerThanTheDevicesLargestBuffer_LeaveThePassesToTheGridWalk()
+        {
+            var scene = SmallScene();
+            int owners = SpawnLayout.TotalCount(scene) + BoundarySampling.Sample(scene).Length;
+            long lists = 4L * owners * NeighbourCapacity.For(scene.Settings, owners, long.MaxValue);
+            using (var listed = new FluidSimulation(GpuTestDevice.Shared, scene))
+                Assert.That(listed.ReadsNeighbourLists, Is.True, "the lists fit the real device");
+            var device = new CountingDevice(GpuTestDevice.Shared) { BufferLimit = lists - 4 };
+            Assume.That(DeviceCapacity.Problem(scene, device), Is.Null, "the particles fit");
+            using (var sim = new FluidSimulation(device, scene))
+            {
+                Assert.That(sim.ReadsNeighbourLists, Is.False);
+                for (int i = 0; i < 3; i++) sim.Step(1f / 60f);
+                var particles = new Particle[sim.ParticleCount];
+                sim.Particles.GetData(particles);
+                Assert.That(Array.TrueForAll(particles, p => float.IsFinite(p.Position.X + p.Position.Y + p.Position.Z)), Is.True);
+            }
+        }
+
         [Test]
         public void Reset_RespawnsTheSameParticles()
         {
@@ -91,6 +142,11 @@ namespace SphFluid.Tests.Solver
             readonly HashSet<CountingBuffer> _live = new HashSet<CountingBuffer>();
 
             public CountingDevice(IComputeDevice inner) : base(inner) { }
+
+            /// <summary>The largest buffer the device says it binds (default: the real device's).</summary>
+            public long? BufferLimit { get; init; }
+
+            public override long MaxBufferBytes => BufferLimit ?? Inner.MaxBufferBytes;
 
             public int Live => _live.Count;
             public int Created { get; private set; }

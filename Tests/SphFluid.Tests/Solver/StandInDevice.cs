@@ -19,6 +19,7 @@ namespace SphFluid.Tests.Solver
 
         public string DeviceName => "stand-in (no GPU work)";
         public bool RunsOnCpu => false;
+        public long MaxBufferBytes => 1L << 31;
 
         /// <summary>Dispatches recorded so far: a frame that did nothing would also allocate nothing.</summary>
         public long Dispatches { get; private set; }

@@ -41,6 +41,8 @@ namespace SphFluid.Runtime
         /// <summary>False: Unity's compute shaders run on the graphics device.</summary>
         public bool RunsOnCpu => false;
 
+        public long MaxBufferBytes => SystemInfo.maxGraphicsBufferSize;
+
         /// <summary>Buffers of this device not yet released.</summary>
         public int LiveBufferCount => _buffers.Count;
 

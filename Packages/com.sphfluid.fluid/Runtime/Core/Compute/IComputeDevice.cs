@@ -25,6 +25,11 @@ namespace SphFluid.Compute
         /// (Simulation.NeighbourLanes).</summary>
         bool RunsOnCpu { get; }
 
+        /// <summary>The largest structured buffer this device binds, in bytes (Vulkan's maxStorageBufferRange, Unity's
+        /// <c>SystemInfo.maxGraphicsBufferSize</c>): 128 MiB on lavapipe and at least that under D3D11. The simulation
+        /// sizes its neighbour lists to it and refuses a scene whose particles do not fit (<c>DeviceCapacity</c>).</summary>
+        long MaxBufferBytes { get; }
+
         /// <summary>Loads a compute shader by its asset name, the file name without extension
         /// (e.g. "ParticleSort" for Packages/com.sphfluid.fluid/Shaders/ParticleSort.compute). Unity resolves it to
         /// a ComputeShader asset the component references; the headless backend compiles the file.

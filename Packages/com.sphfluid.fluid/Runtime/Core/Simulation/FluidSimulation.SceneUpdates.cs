@@ -29,6 +29,8 @@ namespace SphFluid.Simulation
             _containerProbe.ValidateContainer(_containerErrors);
             _containerProbe.Container = null;
             if (_containerErrors.Count > 0) throw new ArgumentException(Join(_containerErrors));
+            if (old.Size != container.Size && ResizedWallsProblem(old, container) is string tooMany)
+                throw new ArgumentException("Container: Size " + ValidationRules.Format(container.Size) + " m: its " + tooMany);
             if (old.Size == container.Size && old.Friction == container.Friction)
             {
                 // Only placement and motion differ: copied into the simulation's own description, not cloned.
@@ -48,6 +50,15 @@ namespace SphFluid.Simulation
             }
             if (old.Friction != container.Friction)
                 WriteConstants();
+        }
+
+        /// <summary>Whether the device holds the walls of the container resized (<see cref="DeviceCapacity"/>), asked before
+        /// anything of the old container is replaced.</summary>
+        string ResizedWallsProblem(ContainerDescription old, ContainerDescription resized)
+        {
+            var s = _scene.Settings;
+            long obstacleWalls = _boundaryCount - BoundarySampling.ContainerCount(old.Size, s.ParticleSpacing, s.SmoothingRadius);
+            return DeviceCapacity.Problem(0, BoundarySampling.ContainerCount(resized.Size, s.ParticleSpacing, s.SmoothingRadius) + obstacleWalls, _device);
         }
 
         /// <summary>Replaces the sphere obstacles (any count up to <see cref="FluidSceneDescription.MaxObstacles"/>).

@@ -116,6 +116,8 @@ namespace SphFluid.Simulation
             CountPhases(_phaseTable, _spawn);
             _spawnNumberDensities = HydrostaticNumberDensities(_spawn, spawnPressures);
             ParticleCount = _spawn.Length;
+            if (DeviceCapacity.Problem(ParticleCount, 0, device) is string tooMany)
+                throw new ArgumentException("FluidSimulation: " + tooMany, nameof(scene));
             _timeStep = TimeStepController.ForScene(_scene);
             if (_scene.Settings.PressureSolver == PressureSolver.Dfsph)
                 _timeStep.GravityWaveSpeed = (float)Math.Sqrt(_scene.Settings.Gravity.Length() *
@@ -758,7 +760,9 @@ namespace SphFluid.Simulation
         {
             var rest = BoundarySampling.Sample(_scene);
             _boundaryCount = rest.Length;
-            _listCapacity = NeighbourCapacity.For(_scene.Settings, ParticleCount + _boundaryCount);
+            if (DeviceCapacity.Problem(0, _boundaryCount, _device) is string tooMany)
+                throw new ArgumentException("FluidSimulation: " + tooMany, "scene");
+            _listCapacity = NeighbourCapacity.For(_scene.Settings, ParticleCount + _boundaryCount, _device.MaxBufferBytes);
             _buffers.MakeBoundary(rest, BoundarySampling.OwnNumberDensities(_scene, rest), _grid.CellCount, _listCapacity);
             _constants[0].BoundaryCount = (uint)_boundaryCount;
             _constantsChanged = true;

@@ -21,15 +21,17 @@ namespace SphFluid.Simulation
         public const double Headroom = 1.5;
 
         /// <summary>The lists of one simulation live in one buffer of at most this many bytes (2 GiB, what a structured
-        /// buffer can address); a larger simulation walks the grid in every pass.</summary>
+        /// buffer can address), and no more than the device binds (<c>IComputeDevice.MaxBufferBytes</c>, 128 MiB on lavapipe);
+        /// a larger simulation walks the grid in every pass.</summary>
         public const long MaxListBytes = 1L << 31;
 
         /// <summary>Words before the entries of a list in the grid walk's order: where each of the walk's nine rows ends.</summary>
         public const int RowWords = 9;
 
         /// <summary>Entries per list for <paramref name="owners"/> list owners (fluid and wall particles), 0 for no lists:
-        /// lists that would not fit in <see cref="MaxListBytes"/>.</summary>
-        public static int For(FluidSettings settings, int owners)
+        /// lists that would not fit in <see cref="MaxListBytes"/> or in the device's largest buffer,
+        /// <paramref name="maxBufferBytes"/>.</summary>
+        public static int For(FluidSettings settings, int owners, long maxBufferBytes)
         {
             if (settings == null) throw new ArgumentNullException(nameof(settings));
             if (owners <= 0) return 0;
@@ -38,7 +40,7 @@ namespace SphFluid.Simulation
             if (ListRows(settings.PressureSolver) > 1) capacity += RowWords;
             // A list's counts share one word, 16 bits each.
             capacity = Math.Min(capacity, 0xFFFF);
-            return (long)capacity * owners * sizeof(uint) <= MaxListBytes ? capacity : 0;
+            return (long)capacity * owners * sizeof(uint) <= Math.Min(MaxListBytes, maxBufferBytes) ? capacity : 0;
         }
 
         /// <summary>Whether the passes of <paramref name="solver"/> read the lists at <paramref name="lanes"/> threads per

@@ -31,7 +31,7 @@ namespace SphFluid.Tests.Core.Simulation
         [TestCase(KernelFamily.WendlandC2, 2.85f, 146)]
         public void AListHoldsHalfAsManyAgainAsTheLatticeNeighbours(KernelFamily kernel, float supportRatio, int expected)
         {
-            int capacity = NeighbourCapacity.For(Settings(PressureSolver.Dfsph, kernel, supportRatio), 10000);
+            int capacity = NeighbourCapacity.For(Settings(PressureSolver.Dfsph, kernel, supportRatio), 10000, NeighbourCapacity.MaxListBytes);
             int atRest = LatticeNeighbours(supportRatio);
             TestContext.Progress.WriteLine($"{kernel} at {supportRatio} spacings: {atRest} lattice neighbours, {capacity} entries");
             Assert.That(capacity, Is.EqualTo(expected));
@@ -41,7 +41,7 @@ namespace SphFluid.Tests.Core.Simulation
         [Test]
         public void WcsphHasTheSameListsAndReadsThemInOneLaneOnly()
         {
-            Assert.That(NeighbourCapacity.For(Settings(PressureSolver.Wcsph, KernelFamily.CubicSpline, 2f), 10000), Is.EqualTo(51 + NeighbourCapacity.RowWords));
+            Assert.That(NeighbourCapacity.For(Settings(PressureSolver.Wcsph, KernelFamily.CubicSpline, 2f), 10000, NeighbourCapacity.MaxListBytes), Is.EqualTo(51 + NeighbourCapacity.RowWords));
             Assert.That(NeighbourCapacity.ListRows(PressureSolver.Wcsph), Is.EqualTo(9), "the grid walk's order");
             Assert.That(NeighbourCapacity.ListRows(PressureSolver.Dfsph), Is.EqualTo(1));
             Assert.That(NeighbourCapacity.InUse(PressureSolver.Wcsph, 1), Is.True);
@@ -56,8 +56,20 @@ namespace SphFluid.Tests.Core.Simulation
         {
             var settings = Settings(PressureSolver.Dfsph, KernelFamily.WendlandC2, 2.85f);
             int fits = (int)(NeighbourCapacity.MaxListBytes / (4 * 146));
-            Assert.That(NeighbourCapacity.For(settings, fits), Is.EqualTo(146));
-            Assert.That(NeighbourCapacity.For(settings, fits + 1), Is.EqualTo(0), "the particles walk the grid instead");
+            Assert.That(NeighbourCapacity.For(settings, fits, long.MaxValue), Is.EqualTo(146));
+            Assert.That(NeighbourCapacity.For(settings, fits + 1, long.MaxValue), Is.EqualTo(0), "the particles walk the grid instead");
+        }
+
+        /// <summary>lavapipe binds at most 128 MiB in one buffer: lists past it were refused by the device (a run of OilAndWater
+        /// at 208 000 particles stopped with "unexpected failure") instead of left to the grid walk.</summary>
+        [Test]
+        public void ListsLargerThanTheDevicesLargestBufferAreNotKept()
+        {
+            var settings = Settings(PressureSolver.Dfsph, KernelFamily.WendlandC2, 2.85f);
+            const long lavapipe = 128L << 20;
+            int fits = (int)(lavapipe / (4 * 146));
+            Assert.That(NeighbourCapacity.For(settings, fits, lavapipe), Is.EqualTo(146));
+            Assert.That(NeighbourCapacity.For(settings, fits + 1, lavapipe), Is.EqualTo(0));
         }
     }
 }
