@@ -84,9 +84,8 @@ simulated second, log axes, one series per solver, DFSPH iteration scheme and di
     readonly Option<List<double>> _scales = OptionKinds.List(Verb, "--particles-scales", "F",
         "resolutions: particle-count multipliers, each in [0.01, 4096] (default 0.5 1; --quick 0.25 0.5)",
         text => Ranges.ParseDouble(Verb, "--particles-scales", text, 0.01, ParticleScaling.MaxFactor, false, ""));
-    readonly Option<List<double>> _cfl = OptionKinds.List(Verb, "--cfl", "C",
-        "CFL numbers, each in (0, 1] (default: the scene's CflNumber and half of it; --quick the scene's)",
-        text => Ranges.ParseDouble(Verb, "--cfl", text, 0, 1, true, ""));
+    readonly Option<List<double>> _cfl = OptionKinds.SettingList(Verb, "--cfl", nameof(FluidSettings.CflNumber), "C",
+        "default: the scene's CflNumber and half of it; --quick the scene's");
     readonly Option<List<SphFluid.Simulation.PressureSolver>> _solvers = OptionKinds.List(Verb, "--solvers", "wcsph|dfsph",
         "the solvers to run (default both)",
         text => SolverChoice.Words.TryGetValue(text.ToLowerInvariant(), out var s) ? s : throw new UsageException($"{Verb}: --solvers must be wcsph and/or dfsph (was '{text}')"));

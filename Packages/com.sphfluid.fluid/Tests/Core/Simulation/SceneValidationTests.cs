@@ -81,13 +81,24 @@ namespace SphFluid.Tests.Core.Simulation
         [TestCase("Stiffness", "Stiffness must be in [1, 1E+09] Pa (was -1)")]
         [TestCase("Gamma", "Gamma must be in [1, 10] (was -1)")]
         [TestCase("XsphEpsilon", "XsphEpsilon must be in [0, 1] (was -1)")]
-        [TestCase("CflNumber", "CflNumber must be in (0, 1] (was -1)")]
+        [TestCase("CflNumber", "CflNumber must be in [0.01, 1] (was -1)")]
         [TestCase("ParticleShifting", "ParticleShifting must be in [0, 10] (was -1)")]
-        [TestCase("MaxTimeStep", "MaxTimeStep must be in (0, 0.1] s (was -1)")]
+        [TestCase("MaxTimeStep", "MaxTimeStep must be in [1E-05, 0.1] s (was -1)")]
         public void SettingsOutOfRange_NameTheField(string field, string message)
         {
             var settings = new FluidSettings();
             typeof(FluidSettings).GetField(field).SetValue(settings, -1f);
+            Assert.That(settings.Validate().Select(e => e.Message).ToArray(), Has.Member("FluidSettings: " + message));
+        }
+
+        /// <summary>A CFL number or a largest sub-step of 1e-30 was valid, and left each frame a few 1e-29 s further on: a
+        /// run of OilAndWater for 0.02 simulated seconds had not ended after three minutes. A step that small is refused.</summary>
+        [TestCase("CflNumber", "CflNumber must be in [0.01, 1] (was 1E-30)")]
+        [TestCase("MaxTimeStep", "MaxTimeStep must be in [1E-05, 0.1] s (was 1E-30)")]
+        public void AStepTooSmallToGetAnywhere_IsRefused(string field, string message)
+        {
+            var settings = new FluidSettings();
+            typeof(FluidSettings).GetField(field).SetValue(settings, 1e-30f);
             Assert.That(settings.Validate().Select(e => e.Message).ToArray(), Has.Member("FluidSettings: " + message));
         }
 
