@@ -71,6 +71,28 @@ namespace SphFluid.Tests.Solver
             Assert.That(device.Live, Is.EqualTo(0), "buffers still alive: " + string.Join(", ", device.LiveNames()));
         }
 
+        /// <summary>A container resized in play (the inspector, a script) whose walls the device would not hold is refused before
+        /// the old one is replaced: the simulation goes on in the container it had.</summary>
+        [Test]
+        public void AResizedContainerWhoseWallsDoNotFit_IsRefused_AndTheOldOneStays()
+        {
+            var scene = SmallScene();
+            int fluid = SpawnLayout.TotalCount(scene), walls = BoundarySampling.Sample(scene).Length;
+            var device = new CountingDevice(GpuTestDevice.Shared) { BufferLimit = 32L * Math.Max(fluid, walls) };
+            using var sim = new FluidSimulation(device, scene);
+            var larger = scene.Container.Clone();
+            larger.Size = 2f * scene.Container.Size;
+
+            Assert.That(() => sim.UpdateContainer(larger), Throws.ArgumentException.With.Message.StartsWith("Container: Size (0.48, 0.48, 0.32) m: its ")
+                .And.Message.Contains(" wall particles need a buffer of"));
+
+            sim.Step(1f / 60f);
+            var report = sim.ReadDiagnostics();
+            Assert.That(report.ParticleCount, Is.EqualTo(fluid));
+            Assert.That(report.OutsideCount + report.NanCount, Is.EqualTo(0));
+            Assert.That(sim.Grid.Size, Is.EqualTo(scene.Container.Size), "the old container's grid");
+        }
+
         /// <summary>Neighbour lists larger than the device's largest buffer are not made: the passes walk the grid, as past
         /// NeighbourCapacity.MaxListBytes. lavapipe refused OilAndWater's lists at 214 600 particles (219 MB against its
         /// 128 MiB) and the run stopped with "unexpected failure"; it now runs.</summary>
