@@ -31,7 +31,9 @@ else
     # The GPU suite in two processes at once, each with its own Vulkan device and temp folder: the layering runs (seconds
     # of simulation until the liquids layer, half the suite's time) and the rest. One lavapipe process keeps about 1.6 of
     # two cores busy, so the two finish both halves in about 85 % of the time they take one after the other (README, the
-    # test command). Each line of their interleaved output starts with its half's name.
+    # test command). Each line of their interleaved output starts with its half's name. Each writes the kernel variants
+    # its validated device and its unvalidated one (the layering and physics runs) ran; every variant run unvalidated must
+    # have run validated too (GpuTestDevice.VariantsFolderVariable).
     dotnet build "$gpu" -c Release
     scratch=$(mktemp -d)
     trap 'rm -rf "$scratch"' EXIT
@@ -39,7 +41,7 @@ else
     for half in layering rest; do
         if [ "$half" = layering ]; then filter="TestCategory=Layering"; else filter="TestCategory!=Layering"; fi
         mkdir "$scratch/$half"
-        ( export TMPDIR="$scratch/$half"
+        ( export TMPDIR="$scratch/$half" SPHFLUID_VARIANTS_DIR="$scratch/variants-$half"
           dotnet test "$gpu" -c Release --no-build --filter "$filter" --logger "trx;LogFileName=results-$half.trx" \
               --logger "console;verbosity=normal" --results-directory "$results" 2>&1 | sed -u "s/^/[$half] /" ) &
         pids+=($!)
@@ -49,6 +51,13 @@ else
         wait "$pid" || code=$?
         if [ "$status" -eq 0 ]; then status=$code; fi
     done
+    unvalidated=$(comm -23 <(cat "$scratch"/variants-*/unvalidated.txt 2>/dev/null | sort -u) \
+                           <(cat "$scratch"/variants-*/validated.txt 2>/dev/null | sort -u))
+    if [ -n "$unvalidated" ]; then
+        echo "kernel variants that ran only without the validation layer (give one of their scenes a short validated run):"
+        echo "$unvalidated" | sed 's/^/  /'
+        if [ "$status" -eq 0 ]; then status=1; fi
+    fi
 fi
 
 # One plain closing line that any CI reader understands, summed over the runs that wrote results, with the script's

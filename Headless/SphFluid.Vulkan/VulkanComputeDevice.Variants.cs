@@ -54,6 +54,11 @@ public sealed unsafe partial class VulkanComputeDevice
         return p;
     }
 
+    /// <summary>Every kernel variant this device has run (dispatched with groups to run), as its kernel name and its defines,
+    /// e.g. "DensitySolveError MULTIPHASE": what a test suite can hold one device's work to another's by.</summary>
+    public IReadOnlyCollection<string> DispatchedVariants =>
+        _variantCache.Values.Where(v => v.Created).Select(v => string.Join(" ", new[] { v.Kernel }.Concat(v.Defines))).ToHashSet(StringComparer.Ordinal);
+
     internal KernelVariant GetVariant(VulkanProgram program, string kernel, IReadOnlyList<string> defines)
     {
         string key = Compiler.Key(program.Source, kernel, defines);

@@ -63,13 +63,14 @@ namespace SphFluid.Tests
         static VulkanComputeDevice? _unvalidated;
 
         /// <summary>
-        /// A second device on the same driver without the validation layers, for the runs of hundreds of frames
-        /// (SeparationTests, and DFSPH's oil and water in DivergenceFreeSceneTests) whose passes the validated tests already
-        /// record in the same scenes' configurations for a few frames (SimulateRunTests, ParticleExportRunTests, the solver
-        /// kernel tests, DFSPH's dam break): a long run repeats that
-        /// recording, and the layers cost it 12 % (OilAndWater's separation test: 362 s with them, 319 s without, on
-        /// lavapipe, the measured figures identical). Created on first use and released with <see cref="Shared"/>;
-        /// ignored, like it, where no Vulkan driver exists.
+        /// A second device on the same driver without the validation layers, for the physics runs (Tests/SphFluid.Tests/Physics:
+        /// hundreds of frames, measured against physics), whose passes the validated tests record in the same configurations for
+        /// a few frames (the solver kernel and planner tests, SimulateRunTests over the shipped scenes, the hard cases): a long
+        /// run repeats that recording, and the layers cost it 12 % under WCSPH (OilAndWater's separation test: 362 s with
+        /// them, 319 s without, on lavapipe) and a fifth under DFSPH, whose solves dispatch four passes a round (SphereWake's
+        /// DFSPH test: 79 s against 62 s), the measured figures identical. Headless/test.sh holds this device to that: a kernel
+        /// variant it ran must have run on <see cref="Shared"/> too (<see cref="VariantsFolderVariable"/>).
+        /// Created on first use and released with <see cref="Shared"/>; ignored, like it, where no Vulkan driver exists.
         /// </summary>
         public static VulkanComputeDevice Unvalidated
         {
@@ -99,6 +100,29 @@ namespace SphFluid.Tests
             var messages = device.ValidationMessages;
             device.ClearValidationMessages();
             Assert.That(messages, Is.Empty, "Vulkan validation reported:\n" + string.Join("\n", messages));
+        }
+
+        /// <summary>The environment variable naming a folder where the assembly's teardown writes the kernel variants each device
+        /// ran (<see cref="WriteDispatchedVariants"/>). Headless/test.sh sets it for both of its processes and fails the run
+        /// when a variant ran on <see cref="Unvalidated"/> in either of them but on <see cref="Shared"/> in neither: a check in
+        /// the teardown itself could not fail a run, since dotnet test reports a OneTimeTearDown's failure and exits 0.</summary>
+        public const string VariantsFolderVariable = "SPHFLUID_VARIANTS_DIR";
+
+        /// <summary>Writes validated.txt and unvalidated.txt, one kernel variant a line (VulkanComputeDevice.DispatchedVariants),
+        /// into the folder <see cref="VariantsFolderVariable"/> names, if it names one.</summary>
+        public static void WriteDispatchedVariants()
+        {
+            string? folder = Environment.GetEnvironmentVariable(VariantsFolderVariable);
+            if (string.IsNullOrEmpty(folder)) return;
+            VulkanComputeDevice? validated, unvalidated;
+            lock (Gate)
+            {
+                validated = _device;
+                unvalidated = _unvalidated;
+            }
+            Directory.CreateDirectory(folder);
+            File.WriteAllLines(Path.Combine(folder, "validated.txt"), validated?.DispatchedVariants.OrderBy(v => v, StringComparer.Ordinal) ?? Enumerable.Empty<string>());
+            File.WriteAllLines(Path.Combine(folder, "unvalidated.txt"), unvalidated?.DispatchedVariants.OrderBy(v => v, StringComparer.Ordinal) ?? Enumerable.Empty<string>());
         }
 
         internal static void DisposeShared()
@@ -157,7 +181,8 @@ namespace SphFluid.Tests
     }
 }
 
-/// <summary>Assembly-wide: after the last test, the validation layer must have stayed silent, and the shared device is released.</summary>
+/// <summary>Assembly-wide: after the last test, the kernel variants each device ran are written where Headless/test.sh asks for
+/// them (GpuTestDevice.VariantsFolderVariable), the validation layer must have stayed silent, and the devices are released.</summary>
 [SetUpFixture]
 public sealed class GpuTestDeviceTeardown
 {
@@ -166,6 +191,7 @@ public sealed class GpuTestDeviceTeardown
     {
         try
         {
+            SphFluid.Tests.GpuTestDevice.WriteDispatchedVariants();
             SphFluid.Tests.GpuTestDevice.AssertNoValidationMessages();
         }
         finally

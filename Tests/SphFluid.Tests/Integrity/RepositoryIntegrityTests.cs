@@ -269,6 +269,17 @@ namespace SphFluid.Tests.Integrity
         }
 
         [Test]
+        public void The_test_script_fails_a_run_whose_unvalidated_runs_used_a_variant_no_validated_test_ran()
+        {
+            // The physics and layering runs skip the validation layer on the grounds that shorter validated tests record the
+            // same passes; the script holds them to it from what each process's teardown wrote.
+            string script = File.ReadAllText(At("Headless/test.sh"));
+            Assert.That(script, Does.Contain(GpuTestDevice.VariantsFolderVariable + "=\"$scratch/variants-$half\""));
+            Assert.That(script, Does.Contain("comm -23 <(cat \"$scratch\"/variants-*/unvalidated.txt"));
+            Assert.That(script, Does.Contain("<(cat \"$scratch\"/variants-*/validated.txt"));
+        }
+
+        [Test]
         public void Compiled_core_references_no_engine_assembly()
         {
             var core = Assembly.Load("SphFluid.Core");

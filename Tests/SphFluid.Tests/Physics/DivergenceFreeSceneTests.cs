@@ -32,7 +32,7 @@ namespace SphFluid.Tests.Physics
         public void DamBreak_StaysFiniteAndLosesNothingForTwoSeconds()
         {
             var scene = DivergenceFree("DamBreak");
-            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
             int spawned = sim.ParticleCount;
             double steps = 0;
             int frames = 0;
@@ -104,7 +104,7 @@ namespace SphFluid.Tests.Physics
             var rest = scene.Obstacles.Select(o => o.Clone()).ToList();
             var gravity = (System.Numerics.Vector3)scene.Settings.Gravity;
             double fallSpeed = Math.Sqrt(2.0 * gravity.Length() * scene.Settings.ParticleSpacing);
-            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
             int spawned = sim.ParticleCount;
             var particles = new Particle[spawned];
             sim.Particles.GetData(particles);

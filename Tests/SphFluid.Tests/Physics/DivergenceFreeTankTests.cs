@@ -25,7 +25,7 @@ namespace SphFluid.Tests.Physics
         [OneTimeSetUp]
         public void SettleOneSecond()
         {
-            using (var wcsph = new FluidSimulation(GpuTestDevice.Shared, RestingTankTests.Tank(Spacing)))
+            using (var wcsph = new FluidSimulation(GpuTestDevice.Unvalidated, RestingTankTests.Tank(Spacing)))
             {
                 wcsph.Step(1f / 60f);
                 _wcsphStep = wcsph.LastStep.TimeStep;
@@ -34,7 +34,7 @@ namespace SphFluid.Tests.Physics
             scene.Settings.PressureSolver = PressureSolver.Dfsph;
             scene.Settings.DensityTolerance = 0.1f;
             scene.Settings.SolverIteration = _iteration;
-            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
             var particles = new Particle[sim.ParticleCount];
             sim.Particles.GetData(particles);
             _spawned = TankMeasures.ColumnHeight(particles, Floor);

@@ -60,7 +60,7 @@ namespace SphFluid.Tests.Physics
             var choice = new SolverChoice { Solver = PressureSolver.Dfsph, Iteration = SolverIteration.Chebyshev, DensityTolerance = tolerance };
             Assert.That(choice.ApplyTo(scene, $"DFSPH OilAndWater at {tolerance} %"), Is.Null, "the scene's own DFSPH settings");
             if (scale != 1f) ParticleScaling.ScaleBy(scene, scale);
-            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
             var run = new Run
             {
                 Particles = sim.ParticleCount, Accelerated = sim.AcceleratesDensitySolve,

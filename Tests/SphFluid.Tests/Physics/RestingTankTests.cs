@@ -71,7 +71,7 @@ namespace SphFluid.Tests.Physics
             var settings = scene.Settings;
             _kernel = settings.SmoothingKernel;
             float floor = scene.Container.Position.Y - 0.5f * scene.Container.Size.Y;
-            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
             var particles = new Particle[sim.ParticleCount];
             var densities = new Vector4[sim.ParticleCount];
             sim.Particles.GetData(particles);

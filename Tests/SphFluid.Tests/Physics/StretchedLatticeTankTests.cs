@@ -58,7 +58,7 @@ namespace SphFluid.Tests.Physics
         {
             var scene = Tank();
             float floor = scene.Container.Position.Y - 0.5f * scene.Container.Size.Y;
-            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
             _wallWeightScale = sim.PhaseRows[0].WallWeightScale;
             var particles = new Particle[sim.ParticleCount];
             sim.Particles.GetData(particles);
