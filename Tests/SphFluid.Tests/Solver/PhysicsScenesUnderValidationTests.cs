@@ -62,19 +62,10 @@ namespace SphFluid.Tests.Solver
         public void TurningDfsphContainerOfTwoLiquids()
         {
             var loaded = SceneLoader.Load(RunnerPaths.Scene("RotatingContainer"), RunnerPaths.Project);
-            var scene = loaded.Description;
-            scene.Settings.PressureSolver = PressureSolver.Dfsph;
             Assume.That(loaded.Motion.MovesContainer, Is.True);
-            double start = loaded.Motion.ContainerSpin!.StartDelay;
-            var rest = scene.Container.Clone();
-            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
-            for (int i = 1; i <= 3; i++)
-            {
-                double t = start + i * Frame;
-                sim.UpdateContainer(loaded.Motion.ContainerOver(rest, t - Frame, t));
-                sim.Step(Frame);
-            }
-            AssertIntact(sim, sim.ParticleCount);
+            var rest = loaded.Description.Container.Clone();
+            RunDfsphFrom(loaded, loaded.Motion.ContainerSpin!.StartDelay,
+                (sim, from, to) => sim.UpdateContainer(loaded.Motion.ContainerOver(rest, from, to)));
         }
 
         /// <summary>DFSPH around a driven sphere (WallMovedDensityFactor and the divergence diagnostics' DivergenceRate, OBSTACLES):
@@ -83,16 +74,23 @@ namespace SphFluid.Tests.Solver
         public void DfsphAroundADrivenSphere()
         {
             var loaded = SceneLoader.Load(RunnerPaths.Scene("SphereWake"), RunnerPaths.Project);
+            Assume.That(loaded.Motion.MovesObstacles, Is.True);
+            var rest = loaded.Description.Obstacles.Select(o => o.Clone()).ToList();
+            RunDfsphFrom(loaded, loaded.Motion.SphereDrives.Max(d => d.Drive.StartDelay),
+                (sim, from, to) => sim.UpdateObstacles(loaded.Motion.ObstaclesOver(rest, from, to)));
+        }
+
+        /// <summary>Three frames of a shipped scene under DFSPH as its motion runs from <paramref name="start"/> s on:
+        /// <paramref name="move"/> pushes what moves to where each frame [from, to] ends, and the diagnostics are read.</summary>
+        static void RunDfsphFrom(LoadedScene loaded, double start, System.Action<FluidSimulation, double, double> move)
+        {
             var scene = loaded.Description;
             scene.Settings.PressureSolver = PressureSolver.Dfsph;
-            Assume.That(loaded.Motion.MovesObstacles, Is.True);
-            double start = loaded.Motion.SphereDrives.Max(d => d.Drive.StartDelay);
-            var rest = scene.Obstacles.Select(o => o.Clone()).ToList();
             using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
             for (int i = 1; i <= 3; i++)
             {
                 double t = start + i * Frame;
-                sim.UpdateObstacles(loaded.Motion.ObstaclesOver(rest, t - Frame, t));
+                move(sim, t - Frame, t);
                 sim.Step(Frame);
                 sim.ReadDiagnostics();
             }
