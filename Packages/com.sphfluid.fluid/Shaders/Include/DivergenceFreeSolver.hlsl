@@ -157,7 +157,8 @@ float ProjectedChebyshevStep(float applied, float previousStep, float jacobiStep
 // Band et al.'s hydrostatic term, rho_f g . (x_b - x_f) added to each fluid neighbour's q (m_f^2 / rho0_f per pascal), is
 // left out for the same reason: with it the resting tank's column was no closer to its spawned height at 1 s (-0.31 %
 // and -0.36 %, Chebyshev and Jacobi, against -0.37 % and -0.33 %: DivergenceFreeTankTests) with 1.5 and 1.2 times
-// the kinetic energy, and SphereWake's still pool rose 0.0006 J above its spawn's energy.
+// the kinetic energy, and SphereWake's still pool rose 0.0006 J above its spawn's energy (Headless/tools/experiment.sh
+// --baseline hydrostatic-floor).
 float WallStepAtLeast(float step, float applied, float fluidStiffness)
 {
     return max(step, fluidStiffness - applied);

@@ -66,7 +66,10 @@
 // surface keeps one near or just above rest, so it passed the gate while the small near-surface wall pressure could not
 // stop it: oil and water in the RestingTank configuration had 21 clamp hits in 3.6 s, all of them surface oil at 901 to
 // 903 kg/m^3 in the corners. There the contact acts by distance alone, which took them to 0 and left the resting tank at
-// rest.
+// rest. The distance is read off the walls' number density, which in an edge or a corner exceeds a flat wall's rest
+// value anywhere; gated by the distance to the faces instead (WallGap under half a spacing), OilAndWater's floor layer
+// held 0.6 % oil at 6 s against 0.9 %, layering index 0.962 against 0.963: a particle or two, which does not pay for
+// measuring every WCSPH figure again (Headless/tools/experiment.sh --baseline wcsph-contact-by-distance).
 // A clamp (after every position update) remains as the last resort: a particle centre beyond the wall
 // (or inside a sphere) is put back on it and loses its outward velocity. Every catch is counted in
 // _ClampHits[0], which the diagnostics report; it stays at zero in normal runs.
