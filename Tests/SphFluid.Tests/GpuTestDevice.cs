@@ -67,8 +67,9 @@ namespace SphFluid.Tests
         /// hundreds of frames, measured against physics), whose passes the validated tests record in the same configurations for
         /// a few frames (the solver kernel and planner tests, SimulateRunTests over the shipped scenes, the hard cases): a long
         /// run repeats that recording, and the layers cost it 12 % under WCSPH (OilAndWater's separation test: 362 s with
-        /// them, 319 s without, on lavapipe) and a fifth under DFSPH (SphereWake's DFSPH test: 79 s against 62 s), the
-        /// measured figures identical. Headless/test.sh holds this device to that: a kernel
+        /// them, 319 s without, on lavapipe), the measured figures identical; under DFSPH no cost stands out from the spread
+        /// of repeated runs (SphereWake's DFSPH test: 76 to 80 s with them, 75 to 82 s without, on an idle machine;
+        /// Headless/tools/experiment.sh --baseline sphere-wake-unvalidated). Headless/test.sh holds this device to that: a kernel
         /// variant it ran must have run on <see cref="Shared"/> too (<see cref="VariantsFolderVariable"/>).
         /// Created on first use and released with <see cref="Shared"/>; ignored, like it, where no Vulkan driver exists.
         /// </summary>
