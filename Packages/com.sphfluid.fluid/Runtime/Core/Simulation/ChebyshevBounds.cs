@@ -64,7 +64,12 @@ namespace SphFluid.Simulation
         /// (8.5 spacings) a tie at 0.2 % (4.5 iterations each) where 0.1 % is the accelerated solve's (4.5 against 6.5).
         /// A sixtieth of a per cent per spacing (0.41, 0.22 and 0.14 %) lies within each bracket (hand edits of
         /// DivergenceFreeSolver.hlsl in temporary copies, lavapipe). Near the crossover neither step is cheap: at 24.4
-        /// spacings 0.3 and 0.5 % cost more than 0.1 % whichever the solve takes.</para></summary>
+        /// spacings 0.3 and 0.5 % cost more than 0.1 % whichever the solve takes.</para>
+        /// <para>Measured again at 87177d8 with the Jacobi steps at every tolerance (<c>Headless/tools/experiment.sh --baseline
+        /// jacobi-density-steps-at-every-tolerance</c>, the README's tolerance study): 18.3 and 44.5 iterations a sub-step,
+        /// both solves together, at 0.3 and 0.1 % at 24.4 spacings against the accelerated steps' 13.4 and 10.8, and 14.9
+        /// against 6.4 at 0.1 % at 13.4 spacings, so each of those tolerances lies on the side of the crossover this rule
+        /// puts it.</para></summary>
         public const double DensityCrossover = 1.0 / 60.0;
 
         /// <summary>Whether DFSPH's constant-density solve takes accelerated steps at <paramref name="densityTolerance"/> (%)
