@@ -32,9 +32,10 @@ else
     # of simulation until the liquids layer, half the suite's time) and the rest. Each process gets one lavapipe worker
     # thread (LP_NUM_THREADS, unless the caller set it): with lavapipe's default of one per core, two processes kept four
     # workers and two submitting threads on the two cores, and the suite took 1272 s where it took 1165 s with one worker
-    # each on the same day (README, the test command; Headless/tools/lavapipe-threads.sh). Each line of their interleaved output starts with its half's name. Each writes the kernel variants
-    # its validated device and its unvalidated one (the layering and physics runs) ran; every variant run unvalidated must
-    # have run validated too (GpuTestDevice.VariantsFolderVariable).
+    # each on the same day (README, the test command; Headless/tools/lavapipe-threads.sh). Each line of their interleaved
+    # output starts with its half's name. Each writes the kernel variants its validated device and its unvalidated one
+    # (the layering and physics runs) ran; every variant run unvalidated must have run validated too
+    # (GpuTestDevice.VariantsFolderVariable).
     dotnet build "$gpu" -c Release
     scratch=$(mktemp -d)
     trap 'rm -rf "$scratch"' EXIT

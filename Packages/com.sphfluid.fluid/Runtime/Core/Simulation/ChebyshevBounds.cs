@@ -68,8 +68,7 @@ namespace SphFluid.Simulation
         /// <para>Measured again at 87177d8 with the Jacobi steps at every tolerance (<c>Headless/tools/experiment.sh --baseline
         /// jacobi-density-steps-at-every-tolerance</c>, the README's tolerance study): 18.3 and 44.5 iterations a sub-step,
         /// both solves together, at 0.3 and 0.1 % at 24.4 spacings against the accelerated steps' 13.4 and 10.8, and 14.9
-        /// against 6.4 at 0.1 % at 13.4 spacings, so each of those tolerances lies on the side of the crossover this rule
-        /// puts it.</para></summary>
+        /// against 6.4 at 0.1 % at 13.4 spacings: the rule puts each of those tolerances on its cheaper side.</para></summary>
         public const double DensityCrossover = 1.0 / 60.0;
 
         /// <summary>Whether DFSPH's constant-density solve takes accelerated steps at <paramref name="densityTolerance"/> (%)
