@@ -14,10 +14,16 @@ cli="$root/Headless/SphFluid.Headless/bin/Release/net10.0/sphfluid.dll"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# One benchmark with $1 workers, labelled $2.
+# One benchmark with $1 workers, labelled $2; a run that fails prints its exit code and last lines instead of a timing.
 bench() {
+    local log="$work/$2.log" code=0
     LP_NUM_THREADS=$1 dotnet "$cli" bench "$root/Assets/FluidDemo/Scenes/OilAndWater.unity" --solver dfsph --steps "$steps" \
-        --skip-savings --out "$work/$2" 2>&1 | grep -m1 "ms/sub-step" | sed "s/^bench: /$2: /"
+        --skip-savings --out "$work/$2" > "$log" 2>&1 || code=$?
+    if [ "$code" -ne 0 ]; then
+        echo "$2: the benchmark failed (exit code $code); its last lines:"; tail -n 5 "$log"
+        return 0
+    fi
+    grep -m1 "ms/sub-step" "$log" | sed "s/^bench: /$2: /"
 }
 
 bench 1 "alone, 1 worker"
