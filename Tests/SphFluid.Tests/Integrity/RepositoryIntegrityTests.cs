@@ -259,11 +259,11 @@ namespace SphFluid.Tests.Integrity
         }
 
         [Test]
-        public void The_test_script_runs_the_layering_runs_beside_the_rest_and_nothing_twice()
+        public void The_test_script_runs_the_long_dfsph_runs_beside_the_rest_and_nothing_twice()
         {
             // Two processes at once: one filter and its complement, so every test runs exactly once.
             string script = File.ReadAllText(At("Headless/test.sh"));
-            string category = Physics.SeparationTests.LayeringCategory;
+            string category = TestProcesses.LongDfsphRuns;
             Assert.That(script, Does.Contain($"filter=\"TestCategory={category}\""));
             Assert.That(script, Does.Contain($"filter=\"TestCategory!={category}\""));
         }

@@ -156,7 +156,7 @@ namespace SphFluid.Tests.Physics
         /// measure that meets every bar.
         /// <para>With the Chebyshev-accelerated solve (<see cref="SolverIteration"/>, as <c>--solver-iteration chebyshev</c> sets it)
         /// the same bars hold (4.2 constant-density iterations a sub-step against Jacobi's 15).</para></summary>
-        [Category(SeparationTests.LayeringCategory)]
+        [Category(TestProcesses.LongDfsphRuns)]
         [TestCase(SolverIteration.Jacobi, TestName = "DefaultOilAndWater_LayersFlatWithin6Seconds_AndNoOilStaysOnTheFloor")]
         [TestCase(SolverIteration.Chebyshev, TestName = "DefaultOilAndWater_LayersFlatWithin6Seconds_AndNoOilStaysOnTheFloor_Chebyshev")]
         public void DefaultOilAndWater_LayersFlatWithin6Seconds_AndNoOilStaysOnTheFloor(SolverIteration iteration)

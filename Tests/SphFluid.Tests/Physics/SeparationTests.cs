@@ -18,12 +18,6 @@ namespace SphFluid.Tests.Physics
     /// </summary>
     public sealed class SeparationTests
     {
-        /// <summary>OilAndWater's layering runs (WCSPH's here, DFSPH's under each solve in DivergenceFreeSceneTests): the longest
-        /// of the suite, which Headless/test.sh runs in a process of its own beside the rest. The three liquids' run stays with
-        /// the rest, which evens the two processes out: with it the layering process ran 18.9 minutes of a 1178 s CI run and
-        /// the rest 15.1.</summary>
-        internal const string LayeringCategory = "Layering";
-
         const float Frame = 1f / 60f;
 
         static FluidMeasures Measure(FluidSimulation sim, FluidSceneDescription scene)
@@ -62,7 +56,7 @@ namespace SphFluid.Tests.Physics
         /// of the floor layer oil, and the interface's plane rising less than one spacing across the floor, all within 6 s.
         /// The scene's configuration (delta-SPH, Wendland C2 at 2.85 spacings) is what lets the interface rock and settle
         /// flat; with the cubic spline it froze 50 to 52 mm tilted.</summary>
-        [Test, Category(LayeringCategory)]
+        [Test]
         public void DefaultOilAndWater_LayersFlatWithin6Seconds_AndNoOilStaysOnTheFloor()
         {
             var scene = SceneLoader.Load(RunnerPaths.Scene("OilAndWater"), RunnerPaths.Project).Description;

@@ -1,0 +1,17 @@
+namespace SphFluid.Tests
+{
+    /// <summary>
+    /// Headless/test.sh runs this suite as two processes at once, one on each of CI's two cores: the tests of
+    /// <see cref="LongDfsphRuns"/> in one, every other test in the other. The category holds DFSPH's longest runs (OilAndWater
+    /// layering under the Jacobi and the Chebyshev solve, the loose-tolerance runs and the column depths of the iteration
+    /// scaling), chosen so that the two processes end together; a test joins it or leaves it to keep them even.
+    /// <para>At fb7739b the category was OilAndWater's three layering runs, WCSPH's among them, and that process ended three
+    /// minutes after the other (1063 s against 860 in a clean clone's CI run); WCSPH's run (200 s of it) now runs with the
+    /// rest, and LooseToleranceTests and SolverIterationScalingTests (56 and 46 s of the other) here.</para>
+    /// </summary>
+    public static class TestProcesses
+    {
+        /// <summary>The NUnit category of the process that runs DFSPH's longest runs.</summary>
+        public const string LongDfsphRuns = "LongDfsphRuns";
+    }
+}
