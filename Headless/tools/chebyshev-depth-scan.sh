@@ -21,6 +21,7 @@ for d in "$@"; do
 done
 
 source "$(dirname "${BASH_SOURCE[0]}")/committed-copy.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/scan-report.sh"
 bounds="$work/Packages/com.sphfluid.fluid/Runtime/Core/Simulation/ChebyshevBounds.cs"
 grep -q '^        public const int TunedDepth = [0-9]*;$' "$bounds"
 
@@ -28,20 +29,19 @@ for d in "$@"; do
     sed -i "s/^        public const int TunedDepth = [0-9]*;\$/        public const int TunedDepth = $d;/" "$bounds"
     if [ "$oil_and_water" -eq 1 ]; then
         dotnet build "$work/Headless/SphFluid.Headless/SphFluid.Headless.csproj" -c Release -nologo -v quiet -clp:ErrorsOnly >&2
-        (cd "$work" && dotnet Headless/SphFluid.Headless/bin/Release/net10.0/sphfluid.dll simulate Assets/FluidDemo/Scenes/OilAndWater.unity \
+        scan_report "tuned to $d spacings: OilAndWater x6: " "^t=|unhealthy" 1 "$work" \
+            dotnet Headless/SphFluid.Headless/bin/Release/net10.0/sphfluid.dll simulate Assets/FluidDemo/Scenes/OilAndWater.unity \
             --solver dfsph --solver-iteration chebyshev --particles-scale 6 --seconds 0.3 --diagnostics-every 0.05 --frames-every 100 \
-            --out "$work/Output/oil-and-water-$d" --quiet 2>&1 | grep -E "^t=|unhealthy" | tail -1 | sed "s/^/tuned to $d spacings: OilAndWater x6: /" || true)
+            --out "$work/Output/oil-and-water-$d" --quiet
         continue
     fi
     dotnet build "$work/Tests/SphFluid.Tests/SphFluid.Tests.csproj" -c Release -nologo -v quiet -clp:ErrorsOnly >&2
     for column in 6,80 12,80 12,120; do
-        (cd "$work" && dotnet test Tests/SphFluid.Tests/SphFluid.Tests.csproj -c Release --no-build \
-            --filter "FullyQualifiedName~DeepColumnProbe\\(Chebyshev,$column\\)" --logger "console;verbosity=detailed" 2>&1 |
-            grep -m1 "a column of" | sed "s/^ */tuned to $d spacings: /" || true)
+        scan_report "tuned to $d spacings: " "a column of" first "$work" dotnet test Tests/SphFluid.Tests/SphFluid.Tests.csproj \
+            -c Release --no-build --filter "FullyQualifiedName~DeepColumnProbe\\(Chebyshev,$column\\)" --logger "console;verbosity=detailed"
     done
     for scale in 60 240; do
-        (cd "$work" && dotnet test Tests/SphFluid.Tests/SphFluid.Tests.csproj -c Release --no-build \
-            --filter "FullyQualifiedName~LockExchangeSliceProbe\\(Chebyshev,$scale\\)" --logger "console;verbosity=detailed" 2>&1 |
-            grep -m1 "sliced" | sed "s/^ */tuned to $d spacings: /" || true)
+        scan_report "tuned to $d spacings: " "sliced" first "$work" dotnet test Tests/SphFluid.Tests/SphFluid.Tests.csproj \
+            -c Release --no-build --filter "FullyQualifiedName~LockExchangeSliceProbe\\(Chebyshev,$scale\\)" --logger "console;verbosity=detailed"
     done
 done

@@ -19,12 +19,13 @@ dotnet build "$root/Headless/SphFluid.Headless/SphFluid.Headless.csproj" -c Rele
 cli="$root/Headless/SphFluid.Headless/bin/Release/net10.0/sphfluid.dll"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/scan-report.sh"
 
 for scale in "$@"; do
     for iteration in jacobi chebyshev; do
-        dotnet "$cli" simulate "$root/Assets/FluidDemo/Scenes/OilAndWater.unity" --solver dfsph --solver-iteration "$iteration" \
+        scan_report "$iteration x$scale: " "^t=|^done|^FAILED|unhealthy" 2 "$root" \
+            dotnet "$cli" simulate "$root/Assets/FluidDemo/Scenes/OilAndWater.unity" --solver dfsph --solver-iteration "$iteration" \
             --particles-scale "$scale" --seconds "$seconds" --diagnostics-every 0.05 --frames-every 100 \
-            --out "$work/$iteration-$scale" --quiet 2>&1 |
-            grep -E "^t=|^done|^FAILED|unhealthy" | tail -2 | sed "s/^/$iteration x$scale: /" || true
+            --out "$work/$iteration-$scale" --quiet
     done
 done

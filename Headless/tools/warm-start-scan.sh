@@ -28,6 +28,7 @@ for w in "$@"; do
 done
 
 source "$(dirname "${BASH_SOURCE[0]}")/committed-copy.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/scan-report.sh"
 solver="$work/Packages/com.sphfluid.fluid/Shaders/Include/DivergenceFreeSolver.hlsl"
 grep -q '^#define DENSITY_WARM_START ' "$solver"
 grep -q '^#define DIVERGENCE_WARM_START ' "$solver"
@@ -38,17 +39,15 @@ for w in "$@"; do
     density=${w%,*} divergence=${w#*,}
     sed -i "s/^#define DENSITY_WARM_START .*/#define DENSITY_WARM_START $density/;
             s/^#define DIVERGENCE_WARM_START .*/#define DIVERGENCE_WARM_START $divergence/" "$solver"
-    tank=$(cd "$work" && dotnet test Tests/SphFluid.Tests/SphFluid.Tests.csproj -c Release --no-build \
-        --filter "FullyQualifiedName~DivergenceFreeTankTests\\($fixture\\)" --logger "console;verbosity=detailed" 2>&1 |
-        grep -m1 "DFSPH resting tank ($fixture)" | sed 's/ | .*//' || true)
-    echo "warm start $w, tank: ${tank# }"
-    (cd "$work" && dotnet Headless/SphFluid.Headless/bin/Release/net10.0/sphfluid.dll simulate \
-        Assets/FluidDemo/Scenes/OilAndWater.unity --solver dfsph --solver-iteration "$iteration" --particles-scale 6 --seconds 0.3 \
-        --diagnostics-every 0.05 --frames-every 100 --out "$work/out-$w" --quiet 2>&1 || true) |
-        grep -E "^t=|^done|^FAILED|unhealthy" | tail -2 | sed "s/^/warm start $w, OilAndWater x6: /"
+    scan_report "warm start $w, tank: " "DFSPH resting tank \\($fixture\\)" first "$work" dotnet test Tests/SphFluid.Tests/SphFluid.Tests.csproj \
+        -c Release --no-build --filter "FullyQualifiedName~DivergenceFreeTankTests\\($fixture\\)" --logger "console;verbosity=detailed" |
+        sed 's/ | .*//'
+    scan_report "warm start $w, OilAndWater x6: " "^t=|^done|^FAILED|unhealthy" 2 "$work" \
+        dotnet Headless/SphFluid.Headless/bin/Release/net10.0/sphfluid.dll simulate Assets/FluidDemo/Scenes/OilAndWater.unity \
+        --solver dfsph --solver-iteration "$iteration" --particles-scale 6 --seconds 0.3 --diagnostics-every 0.05 --frames-every 100 \
+        --out "$work/out-$w" --quiet
     if [ "$deep" = 1 ]; then
-        (cd "$work" && dotnet test Tests/SphFluid.Tests/SphFluid.Tests.csproj -c Release --no-build \
-            --filter "FullyQualifiedName~DeepColumnProbe\\($fixture,6,80\\)" --logger "console;verbosity=detailed" 2>&1 |
-            grep -m1 "a column of" | sed "s/^ */warm start $w, deep column: /" || true)
+        scan_report "warm start $w, deep column: " "a column of" first "$work" dotnet test Tests/SphFluid.Tests/SphFluid.Tests.csproj \
+            -c Release --no-build --filter "FullyQualifiedName~DeepColumnProbe\\($fixture,6,80\\)" --logger "console;verbosity=detailed"
     fi
 done
