@@ -6,8 +6,9 @@ namespace SphFluid.Tests
     /// layering under the Jacobi and the Chebyshev solve, the loose-tolerance runs and the column depths of the iteration
     /// scaling), chosen so that the two processes end together; a test joins it or leaves it to keep them even.
     /// <para>At fb7739b the category was OilAndWater's three layering runs, WCSPH's among them, and that process ended three
-    /// minutes after the other (1063 s against 860 in a clean clone's CI run); WCSPH's run (200 s of it) now runs with the
-    /// rest, and LooseToleranceTests and SolverIterationScalingTests (56 and 46 s of the other) here.</para>
+    /// minutes after the other (17.7 minutes against 14.4 in a clean clone's CI run). WCSPH's run (3 min 19 s there) now
+    /// runs with the rest, and LooseToleranceTests and SolverIterationScalingTests (about a minute each with their
+    /// fixtures' runs) here; a run of as much work then took 1099 s against 1187 (README, the test command).</para>
     /// </summary>
     public static class TestProcesses
     {
