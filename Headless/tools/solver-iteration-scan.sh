@@ -9,10 +9,12 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../env.sh"
 seconds=0.3
 if [ "${1:-}" = "--seconds" ]; then seconds=$2; shift 2; fi
-[[ "$seconds" =~ ^[0-9]+(\.[0-9]+)?$ ]] || { echo "solver-iteration-scan: --seconds must be a number (was '$seconds')" >&2; exit 2; }
+# A number above zero, else the scan stops before it builds anything (the CLI would refuse each run in turn).
+positive() { [[ "$1" =~ ^[0-9]+(\.[0-9]+)?$ ]] && awk -v x="$1" 'BEGIN { exit !(x > 0) }'; }
+positive "$seconds" || { echo "solver-iteration-scan: --seconds must be a number above 0 (was '$seconds')" >&2; exit 2; }
 [ $# -gt 0 ] || set -- 1 6
 for scale in "$@"; do
-    [[ "$scale" =~ ^[0-9]+(\.[0-9]+)?$ ]] || { echo "solver-iteration-scan: a scale must be a number (was '$scale')" >&2; exit 2; }
+    positive "$scale" || { echo "solver-iteration-scan: a scale must be a number above 0 (was '$scale')" >&2; exit 2; }
 done
 
 dotnet build "$root/Headless/SphFluid.Headless/SphFluid.Headless.csproj" -c Release -nologo -v quiet -clp:ErrorsOnly >&2
