@@ -6,7 +6,8 @@
 #             the scene's stiffness and DFSPH at 0.1 % with each of ITERATIONS (the Jacobi and the Chebyshev solve), 1
 #             simulated second each: density error, wall ms per simulated second and the real-time factor (sphfluid
 #             study, one per size, so that a size that outruns its limit costs only its own rows; the rows' observable
-#             error is against the finest run of their own size, so read the other columns).
+#             error is against the finest run of their own size, so read the other columns). DIVERGENCE_TOLERANCES
+#             (%/s, e.g. "10 30") runs DFSPH at each of them, a row each; unset, at the scene's own.
 #   bench     bench at 1M particles for each solver (DFSPH with each of BENCH_ITERATIONS): the per-pass and per-kernel
 #             milliseconds that show where the time goes, and (WCSPH) the planner's savings.
 #   pareto    the accuracy-for-time matrix at 100k and 250k: WCSPH x1 and x4 stiffness, DFSPH at 1, 0.1 and 0.01 % with
@@ -47,6 +48,9 @@ pareto_scales="${PARETO_SCALES:-24 60}"
 bench_particles="${BENCH_PARTICLES:-1000000}"
 bench_solvers="${BENCH_SOLVERS:-dfsph wcsph}"
 iterations="${ITERATIONS:-jacobi chebyshev}"
+divergence_tolerances=()
+for tolerance in ${DIVERGENCE_TOLERANCES:-}; do divergence_tolerances+=("$tolerance"); done
+[ ${#divergence_tolerances[@]} -eq 0 ] || divergence_tolerances=(--divergence-tolerances "${divergence_tolerances[@]}")
 bench_iterations="${BENCH_ITERATIONS:-$iterations}"
 realtime_limit="${REALTIME_LIMIT:-150}"
 bench_limit="${BENCH_LIMIT:-120}"
@@ -130,7 +134,8 @@ for stage in "${stages[@]}"; do
         for scale in $realtime_scales; do
             # shellcheck disable=SC2086 # a word list
             step "$realtime_limit" study "$scene" --particles-scales "$scale" --stiffness-factors 1 --density-tolerances 0.1 \
-                --solver-iterations $iterations --cfl "$cfl" --seconds "$seconds" --out "$scratch/realtime-$scale"
+                --solver-iterations $iterations ${divergence_tolerances[@]+"${divergence_tolerances[@]}"} --cfl "$cfl" --seconds "$seconds" \
+                --out "$scratch/realtime-$scale"
             csv="$scratch/realtime-$scale/study.csv"
             if [ -f "$csv" ]; then
                 if [ -s "$out/realtime.csv" ]; then tail -n +2 "$csv" >>"$out/realtime.csv"; else cat "$csv" >>"$out/realtime.csv"; fi
