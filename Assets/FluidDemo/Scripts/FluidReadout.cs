@@ -89,7 +89,17 @@ namespace SphFluid.Demo
                 step.Substeps, step.TimeStep * 1000f, step.StableTimeStep * 1000f, step.Limit, step.Capped ? "  CAPPED: slower than real time" : "",
                 step.PressureSolver == PressureSolver.Dfsph ? "DFSPH" : "WCSPH");
             if (target.TryGetGpuMilliseconds(out double gpu))
-                _text.AppendFormat(c, "GPU {0:F2} ms per frame, {1:F3} ms per sub-step\n", gpu, step.Substeps > 0 ? gpu / step.Substeps : 0.0);
+            {
+                _text.AppendFormat(c, "GPU {0:F2} ms per frame, {1:F3} ms per sub-step", gpu, step.Substeps > 0 ? gpu / step.Substeps : 0.0);
+                // What accuracy costs in the currency of the accuracy-for-time study: GPU seconds per simulated second,
+                // and the real-time factor they allow (a bound: the frame adds the CPU's and the rendering's time).
+                if (step.SimulatedSeconds > 0f && gpu > 0.0)
+                {
+                    double perSimulatedSecond = gpu * 0.001 / step.SimulatedSeconds;
+                    _text.AppendFormat(c, ", {0:F3} s per simulated s (at most {1:F2}x real time)", perSimulatedSecond, 1.0 / perSimulatedSecond);
+                }
+                _text.Append('\n');
+            }
             else
                 _text.Append("GPU time: not measurable on this platform\n");
 
