@@ -9,8 +9,9 @@ using NUnit.Framework;
 namespace SphFluid.Tests.Integrity
 {
     /// <summary>
-    /// The variants measured and left out (Headless/experiments, run by Headless/tools/experiment.sh): the README and the
-    /// comments quote their figures, so each must still say how to make them and still apply to the commit it names.
+    /// The variants measured and left out (Headless/experiments, run by Headless/tools/experiment.sh): the README,
+    /// Headless/docs and the comments quote their figures, so each must still say how to make them and still apply to
+    /// the commit it names.
     /// </summary>
     public sealed class ExperimentPatchTests
     {

@@ -11,7 +11,8 @@ namespace SphFluid.Tests.Physics
     /// Issue #8's 1M case in motion on a CPU. <see cref="DeepColumnProbe"/> holds a column at rest, where the
     /// constant-density solve stays near five iterations at any depth; the oil-and-water scene moves, and there, at the
     /// 4.17 ms step DFSPH took before its step followed the fluid's gravity wave (TimeStepController.GravityWaveSpeed),
-    /// the solve grew with the depth and the 1M spacing's spawn did not settle (README, "What would close it"). Lavapipe cannot hold the scene at 1M (its neighbour
+    /// the solve grew with the depth and the 1M spacing's spawn did not settle
+    /// (Headless/docs/accuracy-for-time.md, "What would close it"). Lavapipe cannot hold the scene at 1M (its neighbour
     /// lists pass the device's storage-buffer range above about 140 000 particles), so this runs a slice of it at the
     /// 1M case's spacing: the shipped OilAndWater scene scaled by <c>scale</c> in particle count (6: 25 900 particles,
     /// 24: 100k, 60: 250k, 240: 1M, the study's scales), then cut to a quarter of its length about the gate between oil
