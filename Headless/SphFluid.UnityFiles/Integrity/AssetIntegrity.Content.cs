@@ -72,13 +72,16 @@ public sealed partial class AssetIntegrity
         {
             var name = $"GameObject '{go.Root.GetString("m_Name", "")}' &{go.FileId}";
             var tag = go.Root.GetString("m_TagString", "Untagged");
-            var layer = go.Root.GetInt("m_Layer", 0);
             if (!UnityKnownIds.BuiltinTags.Contains(tag) && !TagManager().Tags.Contains(tag))
-                ReportAt(file, $"{name} has tag '{tag}', which ProjectSettings/TagManager.asset does not declare");
-            if (layer < 0 || layer > 31)
-                ReportAt(file, $"{name} has layer {layer}; layers are 0..31");
-            else if (!UnityKnownIds.BuiltinLayers.Contains(layer) && !TagManager().Layers.ContainsKey(layer))
-                ReportAt(file, $"{name} is on layer {layer}, which ProjectSettings/TagManager.asset does not name");
+                ReportAt(file, $"{name} has tag '{tag}', which ProjectSettings/TagManager.asset does not declare", go.Root["m_TagString"]?.Line ?? go.Line);
+            var layerNode = go.Root["m_Layer"];
+            long layer = 0;
+            if (layerNode != null && !go.Root.TryGetLong("m_Layer", out layer))
+                ReportAt(file, $"{name} m_Layer must be an integer in 0..31 (was '{layerNode}')", layerNode.Line);
+            else if (layer < 0 || layer > 31)
+                ReportAt(file, $"{name} has layer {layer}; layers are 0..31", layerNode?.Line ?? go.Line);
+            else if (!UnityKnownIds.BuiltinLayers.Contains((int)layer) && !TagManager().Layers.ContainsKey((int)layer))
+                ReportAt(file, $"{name} is on layer {layer}, which ProjectSettings/TagManager.asset does not name", layerNode?.Line ?? go.Line);
         }
     }
 

@@ -17,6 +17,16 @@ public sealed partial class AssetIntegrity
     }
 
     /// <summary>
+    /// Unity writes a bool as 0 or 1. Which GameObjects and components count (the scene reader's spawn boxes among them)
+    /// follows m_IsActive and m_Enabled, so any other value is refused rather than read as one or the other.
+    /// </summary>
+    void CheckFlag(string file, UnityYamlNode root, string key, string owner)
+    {
+        if (root[key] is not { } flag || flag is { IsScalar: true, Value: "0" or "1" }) return;
+        ReportAt(file, $"{owner} {key} must be 0 or 1 (was '{flag}')", flag.Line);
+    }
+
+    /// <summary>
     /// GameObject ↔ component back references, Transform parent ↔ children agreement, and (scenes) SceneRoots equal to the
     /// parentless Transforms (unity-kit §4.1, §4.5).
     /// </summary>
@@ -29,6 +39,7 @@ public sealed partial class AssetIntegrity
         foreach (var go in yaml.OfClass(UnityScene.GameObjectClassId).Where(d => !d.IsStripped))
         {
             var name = $"GameObject '{go.Root.GetString("m_Name", "")}' &{go.FileId}";
+            CheckFlag(file, go.Root, "m_IsActive", name);
             var components = go.Root["m_Component"]?.Items.Select(i => i.GetReference("component")).ToList();
             if (components == null || components.Count == 0)
             {
@@ -54,6 +65,7 @@ public sealed partial class AssetIntegrity
 
         foreach (var c in yaml.Documents.Where(d => !d.IsStripped && d.ClassId != UnityScene.GameObjectClassId && d.Root.Has("m_GameObject")))
         {
+            CheckFlag(file, c.Root, "m_Enabled", $"{c.TypeName} &{c.FileId}");
             var owner = yaml.Find(c.GameObject);
             if (owner == null)
             {

@@ -225,6 +225,14 @@ namespace SphFluid.Tests.Integrity
                 scene, "tag 'Splashy'");
             yield return Case("unnamed layer", p => p.Replace(scene, "m_Layer: 0\n  m_Name: Ball", "m_Layer: 9\n  m_Name: Ball"),
                 scene, "layer 9");
+            yield return Case("layer that is no integer", p => p.Replace(scene, "m_Layer: 0\n  m_Name: Ball", "m_Layer: 1e30\n  m_Name: Ball"),
+                scene, "m_Layer must be an integer in 0..31 (was '1e30')");
+            yield return Case("layer past a 32-bit integer", p => p.Replace(scene, "m_Layer: 0\n  m_Name: Ball", "m_Layer: 2147483648\n  m_Name: Ball"),
+                scene, "has layer 2147483648; layers are 0..31");
+            yield return Case("active flag that is no bool", p => p.Replace(scene, "m_Name: Ball\n  m_IsActive: 1", "m_Name: Ball\n  m_IsActive: 2"),
+                scene, "GameObject 'Ball' &200 m_IsActive must be 0 or 1 (was '2')");
+            yield return Case("enabled flag that is no bool", p => p.Replace(scene, "m_Enabled: 1\n  m_Radius", "m_Enabled: null\n  m_Radius"),
+                scene, "SphereCollider &202 m_Enabled must be 0 or 1 (was 'null')");
             yield return Case("legacy input module with Input System only", p => p.Replace(scene, p.GuidOf(script), "4f231c4fb786f3946a6b90b886c48677"),
                 scene, "StandaloneInputModule");
             yield return Case("package object without its package", p =>

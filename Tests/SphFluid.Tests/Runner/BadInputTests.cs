@@ -212,6 +212,18 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: &287989891 MonoBehaviour.m_Script references guid 0123456789abcdef0123456789abcdef, which no .meta in the project has"));
         }
 
+        /// <summary>Whether a spawn box counts follows its m_Enabled; a value Unity never writes was read as "enabled".</summary>
+        [Test]
+        public void ASpawnBoxEnabledFlagThatIsNoBoolIsRefusedAtItsLine()
+        {
+            string path = Write(EditDocument("--- !u!114 &287989891", "m_Enabled: 1", "m_Enabled: 0x10", out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: MonoBehaviour &287989891 m_Enabled must be 0 or 1 (was '0x10')"));
+        }
+
         // ---------------------------------------------------------------- exit 1 before
 
         [Test]
