@@ -200,8 +200,10 @@ public static class SceneLoader
             ("m_LocalScale", new[] { "x", "y", "z" }),
         };
 
-        /// <summary>Every Transform's pose is finite numbers: a world pose is composed from any of them, and a bad one
-        /// must be named where it is, not surface as a parse failure deep in the composition.</summary>
+        /// <summary>Every Transform's pose is finite numbers and its rotation a unit quaternion, as Unity writes them: a
+        /// world pose is composed from any of them, and a bad one must be named where it is, not surface as a parse
+        /// failure or a degenerate rotation deep in the composition (a zero quaternion was reported as the container's
+        /// scale, a tiny one as a spawn box's NaN rotation with no line).</summary>
         void CheckTransforms()
         {
             foreach (var t in scene.Transforms)
@@ -209,13 +211,22 @@ public static class SceneLoader
                 {
                     var node = t.Root[field];
                     if (node == null) continue;
+                    double squares = 0;
                     foreach (string axis in axes)
                     {
                         var value = node.IsMapping ? node[axis] : null;
-                        if (value != null && value.IsScalar && UnityYamlNode.TryParseNumber(value.Value, out double v) && double.IsFinite(v)) continue;
+                        if (value != null && value.IsScalar && UnityYamlNode.TryParseNumber(value.Value, out double v) && double.IsFinite(v))
+                        {
+                            squares += v * v;
+                            continue;
+                        }
                         string was = value == null ? (node.IsMapping ? "missing" : $"'{node}'") : $"'{value}'";
                         throw new SceneException($"{path}:{(value ?? node).Line}: GameObject '{scene.GameObjectOf(t)?.Name}', Transform.{field}.{axis} must be a finite number (was {was})");
                     }
+                    double length = Math.Sqrt(squares);
+                    if (field == "m_LocalRotation" && !(Math.Abs(length - 1) <= FluidSceneDescription.RotationLengthTolerance))
+                        throw new SceneException(FormattableString.Invariant(
+                            $"{path}:{node.Line}: GameObject '{scene.GameObjectOf(t)?.Name}', Transform.{field} must be a unit quaternion (length in {FluidSceneDescription.RotationLengthRange}) (was {node}, length {length:G4})"));
                 }
         }
 

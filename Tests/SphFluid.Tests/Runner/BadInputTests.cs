@@ -272,6 +272,21 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', Transform.m_LocalScale.x must be a finite number (was 'abc')"));
         }
 
+        /// <summary>A zero rotation was reported against the container's scale and the support radius, a tiny one as a
+        /// spawn box's NaN rotation with no line; each is now named at its own line.</summary>
+        [TestCase("--- !u!4 &280459232", "Container", "{x: 0, y: 0, z: 0, w: 0}", "length 0")]
+        [TestCase(WaterTransform, "Water", "{x: 0, y: 0, z: 0, w: 1e-30}", "length 1E-30")]
+        [TestCase(WaterTransform, "Water", "{x: 0, y: 0, z: 0, w: 2}", "length 2")]
+        public void ARotationThatIsNoUnitQuaternionIsNamedAtItsLine(string header, string name, string rotation, string length)
+        {
+            string path = Write(EditDocument(header, "m_LocalRotation: {x: 0, y: 0, z: 0, w: 1}", "m_LocalRotation: " + rotation, out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject '{name}', Transform.m_LocalRotation must be a unit quaternion (length in [0.99, 1.01]) (was {rotation}, {length})"));
+        }
+
         [TestCase("\"\\uD800\"", "invalid Unicode surrogates")]
         [TestCase("\"\\U7FFFFFFF\"", "invalid Unicode character escape code")]
         public void ABadEscapeNamesTheFileAndLine(string value, string reason)

@@ -14,6 +14,14 @@ namespace SphFluid.Simulation
         public const int MaxPhases = 64;
         public const int MaxObstacles = 64;
 
+        /// <summary>How far from 1 the length of the container's and each spawn box's rotation may be. Unity writes unit
+        /// quaternions; a far longer or shorter one is a damaged scene, not a rotation.</summary>
+        public const float RotationLengthTolerance = 0.01f;
+
+        /// <summary>The lengths <see cref="RotationLengthTolerance"/> allows, as messages write them: "[0.99, 1.01]".</summary>
+        public static string RotationLengthRange =>
+            $"[{ValidationRules.Format(1f - RotationLengthTolerance)}, {ValidationRules.Format(1f + RotationLengthTolerance)}]";
+
         /// <summary>Most boundary particles (walls and obstacles): the particle sort's limit.</summary>
         public const int MaxBoundaryParticles = SphFluid.Sorting.ParticleSorter.MaxSupportedParticles;
 

@@ -67,9 +67,9 @@ namespace SphFluid.Simulation
         internal static bool Rotation(List<ValidationError> errors, string owner, string path, string field, Quaternion q)
         {
             float len = q.Length();
-            if (IsFinite(len) && Math.Abs(len - 1f) <= 1e-2f) return true;
+            if (IsFinite(len) && Math.Abs(len - 1f) <= FluidSceneDescription.RotationLengthTolerance) return true;
             errors.Add(new ValidationError(path + field,
-                $"{owner}: {field} must be a unit quaternion (length in [0.99, 1.01]) (was length {Format(len)})"));
+                $"{owner}: {field} must be a unit quaternion (length in {FluidSceneDescription.RotationLengthRange}) (was length {Format(len)})"));
             return false;
         }
 
