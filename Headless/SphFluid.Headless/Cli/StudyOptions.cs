@@ -126,6 +126,19 @@ simulated second, log axes, one series per solver, DFSPH iteration scheme and di
         options.CflNumbers = OptionKinds.Given(r, _cfl) ?? options.CflNumbers;
         options.Solvers = OptionKinds.Given(r, _solvers) ?? options.Solvers;
         options.SolverIterations = OptionKinds.Given(r, _iterations) ?? options.SolverIterations;
+        RefuseWithoutRows(r, options.Solvers, PressureSolver.Dfsph, _tolerances, _divergenceTolerances, _iterations);
+        RefuseWithoutRows(r, options.Solvers, PressureSolver.Wcsph, _stiffness);
         return options;
+    }
+
+    /// <summary>An option that shapes one solver's rows changes nothing when --solvers runs none of them: refused, as
+    /// simulate and bench refuse a DFSPH tolerance for a WCSPH run, rather than ignored.</summary>
+    static void RefuseWithoutRows(ParseResult r, List<PressureSolver> solvers, PressureSolver solver, params Option[] options)
+    {
+        if (solvers.Contains(solver)) return;
+        string rows = solver == PressureSolver.Dfsph ? "DFSPH" : "WCSPH";
+        foreach (var option in options)
+            if (r.GetResult(option) != null)
+                throw new UsageException($"{Verb}: {option.Name} applies to the {rows} rows, and --solvers runs none (add {rows.ToLowerInvariant()})");
     }
 }

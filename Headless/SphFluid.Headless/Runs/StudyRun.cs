@@ -126,8 +126,6 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         var cfls = options.CflNumbers.Count > 0 ? options.CflNumbers
             : options.Quick ? new List<double> { scene.CflNumber } : new List<double> { scene.CflNumber, scene.CflNumber / 2 };
         bool namesDivergence = options.DivergenceTolerances.Count > 0;
-        if (namesDivergence && !options.Solvers.Contains(PressureSolver.Dfsph))
-            throw new UsageException("study: --divergence-tolerances applies to the DFSPH rows, and --solvers runs none (add dfsph)");
         var divergences = namesDivergence ? options.DivergenceTolerances : new List<double> { scene.DivergenceTolerance };
         var iterations = options.SolverIterations.Count > 0 ? options.SolverIterations : new List<SolverIteration> { scene.SolverIteration };
         var configs = new List<Configuration>();

@@ -150,17 +150,16 @@ namespace SphFluid.Tests.Runner
             Assert.That(new StudyRun.Configuration(PressureSolver.Dfsph, 1, 0.1, 1, 0.3, SolverIteration.Chebyshev, 10).Label, Is.EqualTo("DFSPH Chebyshev 0.1 %"));
         }
 
-        [Test]
-        public void DivergenceTolerancesWithoutDfsphRowsAreRefusedInsteadOfIgnored()
+        /// <summary>An option for one solver's rows, given while --solvers runs none of them, is refused before anything
+        /// runs; --density-tolerances, --solver-iterations and --stiffness-factors used to be ignored.</summary>
+        [TestCase("wcsph", "--divergence-tolerances", "30", "DFSPH", "dfsph")]
+        [TestCase("wcsph", "--density-tolerances", "1", "DFSPH", "dfsph")]
+        [TestCase("wcsph", "--solver-iterations", "chebyshev", "DFSPH", "dfsph")]
+        [TestCase("dfsph", "--stiffness-factors", "2", "WCSPH", "wcsph")]
+        public void AnOptionForRowsTheStudyDoesNotRunIsRefusedInsteadOfIgnored(string solvers, string option, string value, string rows, string add)
         {
-            var run = new StudyRun(StudyOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--solvers", "wcsph", "--divergence-tolerances", "30",
-                "--out", RunnerPaths.ScratchFolder("study-divergence-wcsph") }), new StringWriter(), new StringWriter())
-            {
-                Device = GpuTestDevice.Shared,
-            };
-
-            var error = Assert.Throws<UsageException>(() => run.Execute());
-            Assert.That(error!.Message, Is.EqualTo("study: --divergence-tolerances applies to the DFSPH rows, and --solvers runs none (add dfsph)"));
+            var error = Assert.Throws<UsageException>(() => StudyOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--solvers", solvers, option, value }));
+            Assert.That(error!.Message, Is.EqualTo($"study: {option} applies to the {rows} rows, and --solvers runs none (add {add})"));
         }
 
         /// <summary>Only DFSPH rows that cut solves off are named under the table, each with its scale and CFL.</summary>
