@@ -11,15 +11,15 @@ namespace SphFluid.Tests.Physics
     /// Issue #8's 1M case in motion on a CPU. <see cref="DeepColumnProbe"/> holds a column at rest, where the
     /// constant-density solve stays near five iterations at any depth; the oil-and-water scene moves, and there, at the
     /// 4.17 ms step DFSPH took before its step followed the fluid's gravity wave (TimeStepController.GravityWaveSpeed),
-    /// the solve grew with the depth and the 1M spacing's spawn did not settle
-    /// (Headless/docs/accuracy-for-time.md, "What would close it"). Lavapipe cannot hold the scene at 1M (its neighbour
-    /// lists pass the device's storage-buffer range above about 140 000 particles), so this runs a slice of it at the
-    /// 1M case's spacing: the shipped OilAndWater scene scaled by <c>scale</c> in particle count (6: 25 900 particles,
-    /// 24: 100k, 60: 250k, 240: 1M, the study's scales), then cut to a quarter of its length about the gate between oil
-    /// and water and to 6 spacings across, with free-slip walls so that the close front and back walls do not brake the
-    /// flow. The fluid keeps the scene's depth in spacings (24 to 83), its lock-exchange start and its kernel settings.
-    /// Run under DFSPH for 0.3 s (the solver-iteration scan's span), it prints the constant-density and divergence-free
-    /// iterations a sub-step from 0.1 to 0.3 s, the water's average compression and the sub-steps taken.
+    /// the solve grew with the depth and the 1M spacing's spawn did not settle (Headless/docs/accuracy-for-time.md,
+    /// "What would close it"). Lavapipe cannot hold the scene at 1M (its neighbour lists pass the device's
+    /// storage-buffer range above about 140 000 particles), so this runs a slice of it at the 1M case's spacing: the
+    /// shipped OilAndWater scene scaled by <c>scale</c> in particle count (6: 25 900 particles, 24: 100k, 60: 250k,
+    /// 240: 1M, the study's scales), then cut to a quarter of its length about the gate between oil and water and to 6
+    /// spacings across, with free-slip walls so that the close front and back walls do not brake the flow. The fluid
+    /// keeps the scene's depth in spacings (24 to 83), its lock-exchange start and its kernel settings. Run under DFSPH
+    /// for 0.3 s (the solver-iteration scan's span), it prints the constant-density and divergence-free iterations a
+    /// sub-step from 0.1 to 0.3 s, the water's average compression and the sub-steps taken.
     /// A measurement run by name, `bash Headless/test.sh --filter FullyQualifiedName~LockExchangeSliceProbe`, which CI
     /// does not run.
     /// </summary>

@@ -33,8 +33,8 @@
 // warm-start-scan.sh: 0.75 halves the iterations but leaves a resting tank four times the kinetic energy; 1 diverges).
 // The Chebyshev solve may take pressure back, but a whole warm start of its constant-density solve leaves the
 // divergence-free solve more to do, and without its own warm start the divergence-free solve leaves the fluid more
-// compressed (the same tool with --solver-iteration chebyshev;
-// Headless/docs/accuracy-for-time.md, "What would close it"). Nor does carrying only
+// compressed (the same tool with --solver-iteration chebyshev; Headless/docs/accuracy-for-time.md, "What would close
+// it"). Nor does carrying only
 // the long waves whole help (half a particle's own q plus half its neighbours' average, which keeps the hydrostatic
 // field): the constant-density solve shortens, the divergence-free solve more than doubles and the fluid gains energy
 // (Headless/experiments/smoothed-density-warm-start.patch).

@@ -3,15 +3,14 @@
 
 #include "FluidConstants.hlsl"
 
-// One particle's neighbourhood walked by several threads ("lanes"), then summed across them in groupshared memory.
-// A neighbour loop visits a few hundred candidates one after another, each a dependent memory read, so a pass over a
-// few thousand particles takes as long as its slowest thread's walk however many cores stand idle: on an H100 and an
-// H200 alike a WCSPH sub-step of 1 080 particles cost 0.77 ms and one of 68 000 0.95 ms
-// (Headless/docs/accuracy-for-time.md, "Real time where it
-// counts"). With _NeighbourLanes threads per particle, lane l takes candidates l, l + lanes, ... of every range, which
-// shortens the walk by the lane count while the GPU has threads to spare; a full GPU gains nothing, so the host picks
-// the lanes from the particle count (NeighbourLanes.cs), and 1 on a CPU device, whose cores do not hide latency
-// behind other threads. The sums are the same up to float rounding, in another order.
+// One particle's neighbourhood walked by several threads ("lanes"), then summed across them in groupshared memory. A
+// neighbour loop visits a few hundred candidates one after another, each a dependent memory read, so a pass over a few
+// thousand particles takes as long as its slowest thread's walk however many cores stand idle: on an H100 and an H200
+// alike a WCSPH sub-step of 1 080 particles cost 0.77 ms and one of 68 000 0.95 ms (Headless/docs/accuracy-for-time.md,
+// "Real time where it counts"). With _NeighbourLanes threads per particle, lane l takes candidates l, l + lanes, ... of
+// every range, which shortens the walk by the lane count while the GPU has threads to spare; a full GPU gains nothing,
+// so the host picks the lanes from the particle count (NeighbourLanes.cs), and 1 on a CPU device, whose cores do not
+// hide latency behind other threads. The sums are the same up to float rounding, in another order.
 // Usage, in a kernel dispatched over owners * _NeighbourLanes threads of PARTICLE_THREADS (a multiple of the lanes):
 //   uint owner = min(LaneOwner(id.x), count - 1u), lane = FirstCandidate(id.x, count);
 //   for (uint k = range.x + lane; k < range.y; k += _NeighbourLanes) ...;

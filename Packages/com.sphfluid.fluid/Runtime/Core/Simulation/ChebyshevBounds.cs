@@ -66,10 +66,10 @@ namespace SphFluid.Simulation
         /// DivergenceFreeSolver.hlsl in temporary copies, lavapipe). Near the crossover neither step is cheap: at 24.4
         /// spacings 0.3 and 0.5 % cost more than 0.1 % whichever the solve takes.</para>
         /// <para>Measured again at 87177d8 with the Jacobi steps at every tolerance (<c>Headless/tools/experiment.sh --baseline
-        /// jacobi-density-steps-at-every-tolerance</c>, the tolerance study of
-        /// Headless/docs/accuracy-for-time.md): 18.3 and 44.5 iterations a sub-step,
-        /// both solves together, at 0.3 and 0.1 % at 24.4 spacings against the accelerated steps' 13.4 and 10.8, and 14.9
-        /// against 6.4 at 0.1 % at 13.4 spacings: the rule puts each of those tolerances on its cheaper side.</para></summary>
+        /// jacobi-density-steps-at-every-tolerance</c>, the tolerance study of Headless/docs/accuracy-for-time.md):
+        /// 18.3 and 44.5 iterations a sub-step, both solves together, at 0.3 and 0.1 % at 24.4 spacings against the
+        /// accelerated steps' 13.4 and 10.8, and 14.9 against 6.4 at 0.1 % at 13.4 spacings: the rule puts each of
+        /// those tolerances on its cheaper side.</para></summary>
         public const double DensityCrossover = 1.0 / 60.0;
 
         /// <summary>Whether DFSPH's constant-density solve takes accelerated steps at <paramref name="densityTolerance"/> (%)

@@ -21,10 +21,10 @@ namespace SphFluid.Simulation
     /// </para>
     /// <para>
     /// It is an estimate: a perfect lattice and a rigid plane, where a real slip starts at a defect and spreads. It
-    /// agrees with the tilted-layers fixtures of InternalSeicheProbe (Headless/docs/physics.md:
-    /// "From a tilted start: a threshold, not a
-    /// damping"): every measured start stopped at a tilt whose buoyancy the lattice can carry as shear, though a start
-    /// within that bound may still creep some way before it stops (the cubic spline's, 7 mm in its first second).
+    /// agrees with the tilted-layers fixtures of InternalSeicheProbe (Headless/docs/physics.md: "From a tilted start: a
+    /// threshold, not a damping"): every measured start stopped at a tilt whose buoyancy the lattice can carry as
+    /// shear, though a start within that bound may still creep some way before it stops (the cubic spline's, 7 mm in
+    /// its first second).
     /// </para>
     /// </summary>
     public static class LatticeShearStrength

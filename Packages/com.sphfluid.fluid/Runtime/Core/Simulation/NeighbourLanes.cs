@@ -6,9 +6,8 @@ namespace SphFluid.Simulation
     /// each walk over several threads shortens the pass; once the particles alone fill the GPU, more threads only add
     /// the sum across them. The count of threads that fills a GPU is taken as <see cref="FillingThreads"/>: an H100's and
     /// an H200's WCSPH sub-step cost the same from 1 080 to 68 000 particles and grew from there
-    /// (Headless/docs/accuracy-for-time.md), and a
-    /// mid-range card fills with fewer. A CPU device (lavapipe) runs each thread's walk on a core that hides no latency
-    /// behind other threads: one lane.
+    /// (Headless/docs/accuracy-for-time.md), and a mid-range card fills with fewer. A CPU device (lavapipe) runs each
+    /// thread's walk on a core that hides no latency behind other threads: one lane.
     /// </summary>
     public static class NeighbourLanes
     {

@@ -6,11 +6,10 @@ namespace SphFluid.Tests.Core.Simulation
     /// <summary>
     /// The spawn lattice's shear strength under pressure (LatticeShearStrength) at OilAndWater's spacing (15 mm). The
     /// slip stress must be the derivative of the slip energy it is derived from, vanish and change sign where the
-    /// lattice's symmetry says, and not depend on the spacing. The strengths that the
-    /// tilted-layers estimate of Headless/docs/physics.md
-    /// uses are pinned: Wendland C2 at the scene's 2.85 spacings holds about a thousandth of the pressure as shear
-    /// stress, and the cubic spline at 2 spacings, whose interface froze tilted by 50 mm after the lock exchange, about
-    /// three times as much. Prints each strength.
+    /// lattice's symmetry says, and not depend on the spacing. The strengths that the tilted-layers estimate of
+    /// Headless/docs/physics.md uses are pinned: Wendland C2 at the scene's 2.85 spacings holds about a thousandth of
+    /// the pressure as shear stress, and the cubic spline at 2 spacings, whose interface froze tilted by 50 mm after
+    /// the lock exchange, about three times as much. Prints each strength.
     /// </summary>
     public sealed class LatticeShearStrengthTests
     {
