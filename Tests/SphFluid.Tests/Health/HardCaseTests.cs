@@ -187,7 +187,8 @@ namespace SphFluid.Tests.Health
         }
 
         /// <summary>How near its bound the case above runs: driven a little slower and faster, healthy at 4.9, 5.1 and 5.2
-        /// wave speeds, not at 5.05 (README, Known limits). A measurement, not a check: the splashes are chaotic.</summary>
+        /// wave speeds, not at 5.05 (Headless/docs/known-limits.md). A measurement, not a check: the splashes are
+        /// chaotic.</summary>
         [Explicit, TestCase(4.9f), TestCase(5f), TestCase(5.05f), TestCase(5.1f), TestCase(5.2f)]
         public void ObstacleDrivenNearFiveTimesTheWaveSpeed_Margin(float waveSpeeds)
         {
@@ -226,8 +227,8 @@ namespace SphFluid.Tests.Health
         }
 
         /// <summary>The case above under DFSPH over more speeds, a measurement: healthy at 3, 4.9, 5, 5.1, 5.2, 6 and 8 wave
-        /// speeds, with 0 to 10 clamp hits (README, Known limits). With the sphere a frame ahead it was healthy at 4.9 to 5.1
-        /// only.</summary>
+        /// speeds, with 0 to 10 clamp hits (Headless/docs/known-limits.md). With the sphere a frame ahead it was
+        /// healthy at 4.9 to 5.1 only.</summary>
         [Explicit, TestCase(3f), TestCase(4.9f), TestCase(5f), TestCase(5.1f), TestCase(5.2f), TestCase(6f), TestCase(8f)]
         public void ObstacleDrivenNearFiveTimesTheWaveSpeed_MarginDfsph(float waveSpeeds)
         {

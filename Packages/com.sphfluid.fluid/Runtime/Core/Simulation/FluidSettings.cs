@@ -33,11 +33,11 @@ namespace SphFluid.Simulation
         /// in the oil-and-water container the walls, weighed at the lattice's rest number density instead of the fluid's
         /// (SphBoundary.hlsl's WallWeight), asked for a density no motion of the fluid could give and the first solve lifted
         /// the whole fluid (0.70 m/s after one 4 ms sub-step). With the walls weighed at the fluid's rest and the step at
-        /// 0.3, the oil-and-water scene runs with no clamp hit (README, Known limits). 2.9 is the top of the band where
-        /// Wendland C2's lattice is stable (<see cref="SmoothingKernel"/>). Until the wall particles weighed their lattice
-        /// cells (BoundarySampling) a DFSPH tank at rest with Wendland C2 at 2 to 2.6 spacings lifted its fluid within 0.1 s;
-        /// since, the resting tank holds at 2, 2.3 and 2.6 spacings (relaxed to 0.3), its lattice creeping where
-        /// LatticeStability says it grows.</summary>
+        /// 0.3, the oil-and-water scene runs with no clamp hit (Headless/docs/known-limits.md). 2.9 is the top of the
+        /// band where Wendland C2's lattice is stable (<see cref="SmoothingKernel"/>). Until the wall particles weighed
+        /// their lattice cells (BoundarySampling) a DFSPH tank at rest with Wendland C2 at 2 to 2.6 spacings lifted its
+        /// fluid within 0.1 s; since, the resting tank holds at 2, 2.3 and 2.6 spacings (relaxed to 0.3), its lattice
+        /// creeping where LatticeStability says it grows.</summary>
         public const float MaxDivergenceFreeSupportRatio = 2.9f;
 
         const string Particles = "Particles", Pressure = "Pressure", Forces = "Forces", Stepping = "Time stepping";
@@ -69,7 +69,8 @@ namespace SphFluid.Simulation
         public int MaxSolverIterations = 100;
 
         // Jacobi by default: every DFSPH figure of the shipped scenes was measured with it. Chebyshev took OilAndWater's
-        // constant-density solve from 41 to 7 iterations a sub-step at 25 900 particles (README, Known limits).
+        // constant-density solve from 41 to 7 iterations a sub-step at 25 900 particles
+        // (Headless/docs/known-limits.md).
         [Setting(Pressure, 0, 1, "", "DFSPH: how each solve iterates: 0 = Jacobi (Bender and Koschier's relaxed step, compression only; iterations grow with the square of the fluid's depth in particle spacings), 1 = Chebyshev (the same step accelerated over the operator's eigenvalue bounds, with pressure taken back where a step overshoots; iterations grow with the depth; the constant-density solve is accelerated only at tolerances below a sixtieth of a per cent per spacing of the fluid's depth, and takes Jacobi steps above).")]
         public SolverIteration SolverIteration = SolverIteration.Jacobi;
 
