@@ -8,12 +8,14 @@ namespace SphFluid.Headless.Output;
 /// <summary>
 /// What a validation engineer reads off one instant of a run, computed on the CPU from the read-back particle
 /// and density buffers: per phase <see cref="PhaseMeasures"/>, the <see cref="Output.LayeringIndex"/>, the
-/// <see cref="DamBreakFront"/> figures, the <see cref="Output.InterfaceTilt"/> and the potential energy sum m |g| h
+/// <see cref="DamBreakFront"/> figures, the <see cref="Output.InterfaceTilt"/>, the free surface's rise
+/// (<see cref="Output.InterfaceTilt.SurfaceRise"/>) and the potential energy sum m |g| h
 /// (h above the container's lowest corner, so it is 0 for fluid lying on that corner). Measuring results is not
 /// solver maths, so it lives here.
 /// </summary>
 public sealed record FluidMeasures(double Time, IReadOnlyList<PhaseMeasures> Phases, double LayeringIndex,
-    double SurgeFront, double BackWallColumn, double PotentialEnergy, IReadOnlyList<(double AlongU, double AlongW)> InterfaceRises)
+    double SurgeFront, double BackWallColumn, double PotentialEnergy, IReadOnlyList<(double AlongU, double AlongW)> InterfaceRises,
+    (double AlongU, double AlongW) SurfaceRise)
 {
     /// <summary>The largest rise of an interface across the floor, m (<see cref="Output.InterfaceTilt"/>); NaN with one liquid.</summary>
     public double InterfaceTilt => Output.InterfaceTilt.Of(InterfaceRises);
@@ -93,7 +95,8 @@ public sealed record FluidMeasures(double Time, IReadOnlyList<PhaseMeasures> Pha
         double index = Output.LayeringIndex.Of(heights.ToArray(), restDensities.ToArray());
         var (front, column) = DamBreakFront.Measure(local, frame, particleSpacing, supportRadius);
         var rises = Output.InterfaceTilt.Rises(local, volumes, particleRestDensities, frame.FloorAxis, container.Size);
-        return new FluidMeasures(time, measures, index, front, column, potential, rises);
+        var surface = Output.InterfaceTilt.SurfaceRise(local, volumes, frame.FloorAxis, container.Size);
+        return new FluidMeasures(time, measures, index, front, column, potential, rises, surface);
     }
 
     static double[] Filled(int length, double value)

@@ -19,6 +19,10 @@ namespace SphFluid.Headless.Output;
 /// enters it. The plane rises by |b| L_u + |c| L_w across the floor. One figure is reported: the largest rise over
 /// the interfaces (the liquids grouped by rest density; a single rest density has none: NaN).
 /// </para>
+/// <para>
+/// The free surface lies at the thickness of all the liquids together, so the same plane fitted to every particle's
+/// volume is the free surface's (<see cref="SurfaceRise"/>): a sloshing tank's fundamental mode rocks it.
+/// </para>
 /// </summary>
 public static class InterfaceTilt
 {
@@ -61,10 +65,32 @@ public static class InterfaceTilt
         {
             sumU += u;
             sumW += w;
-            rises.Add((12 * sumU / (lu * lu * lw), 12 * sumW / (lw * lw * lu)));
+            rises.Add(Rise(sumU, sumW, lu, lw));
         }
         return rises;
     }
+
+    /// <summary>The free surface's plane: its signed rise along u and along w across the floor (m), fitted to every
+    /// particle's volume whatever its liquid.</summary>
+    public static (double AlongU, double AlongW) SurfaceRise(ReadOnlySpan<Vector3> local, ReadOnlySpan<float> volumes, int floorAxis, Vector3 size)
+    {
+        if (volumes.Length != local.Length)
+            throw new ArgumentException($"InterfaceTilt: {local.Length} positions, {volumes.Length} volumes");
+        int uAxis = floorAxis == 0 ? 1 : 0, wAxis = floorAxis == 2 ? 1 : 2;
+        double sumU = 0, sumW = 0;
+        for (int i = 0; i < local.Length; i++)
+        {
+            var p = local[i];
+            if (!float.IsFinite(p.X) || !float.IsFinite(p.Y) || !float.IsFinite(p.Z) || !float.IsFinite(volumes[i])) continue;
+            sumU += volumes[i] * Component(p, uAxis);
+            sumW += volumes[i] * Component(p, wAxis);
+        }
+        return Rise(sumU, sumW, Component(size, uAxis), Component(size, wAxis));
+    }
+
+    /// <summary>b L_u and c L_w from the first moments of the volume below the plane.</summary>
+    static (double AlongU, double AlongW) Rise(double momentU, double momentW, double lu, double lw) =>
+        (12 * momentU / (lu * lu * lw), 12 * momentW / (lw * lw * lu));
 
     static float Component(Vector3 v, int axis) => axis == 0 ? v.X : axis == 1 ? v.Y : v.Z;
 }

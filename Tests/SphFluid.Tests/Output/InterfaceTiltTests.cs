@@ -7,7 +7,7 @@ namespace SphFluid.Tests.Output
 {
     /// <summary>The interface tilt of layers laid out by hand on the OilAndWater container's floor (0.6 x 0.12 m, 40 x 8
     /// columns of 15 mm): flat layers read 0, a wedge reads the rise of its plane, the worst of several interfaces is
-    /// reported, and one liquid has no interface.</summary>
+    /// reported, one liquid has no interface, and the free surface lies on all the liquids together.</summary>
     public sealed class InterfaceTiltTests
     {
         const float Spacing = 0.015f;
@@ -87,6 +87,20 @@ namespace SphFluid.Tests.Output
             var layers = new Layers();
             layers.Add(1000f, 0, 6, (u, w) => 0.1f + 0.04f * u / 0.6f);
             Assert.That(layers.Tilt(), Is.NaN);
+        }
+
+        [Test]
+        public void TheFreeSurfaceIsThePlaneOfEveryLiquidTogether()
+        {
+            // Flat water under oil whose top falls 30 mm along the tank and rises 6 mm across it: the surface's plane.
+            var layers = new Layers();
+            layers.Add(1000f, 0, 6, (u, w) => 0.06f);
+            layers.Add(900f, 6, 6, (u, w) => 0.06f - 0.03f * u / 0.6f + 0.006f * w / 0.12f);
+            var surface = InterfaceTilt.SurfaceRise(layers.Local.ToArray(), layers.Volumes.ToArray(), 1, Size);
+            Assert.That(surface.AlongU, Is.EqualTo(-0.03).Within(0.01 * 0.03));
+            // Across the 8 columns the plane through their centres rises (n^2 - 1) / n^2 of the continuous slope's rise.
+            Assert.That(surface.AlongW, Is.EqualTo(0.006 * 63 / 64).Within(0.001 * 0.006));
+            Assert.That(layers.Tilt(), Is.EqualTo(0.0).Within(1e-6), "the interface between them stays flat");
         }
     }
 }
