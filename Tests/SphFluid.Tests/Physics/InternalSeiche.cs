@@ -53,8 +53,6 @@ namespace SphFluid.Tests.Physics
 
             // Slip amplitudes squared, integrated over each surface.
             double floor = L * W / 2 * Math.Pow(omega / Math.Sinh(k * h2), 2);
-            static double EndWalls(double width, double a, double k, double h) => 2 * width * a * a * k * k * (Math.Sinh(2 * k * h) / (4 * k) - h / 2);
-            static double SideWalls(double length, double a, double k, double h) => length * k * a * a * Math.Sinh(2 * k * h) / 2;
             double jump = omega * (1 / Math.Tanh(k * h1) + 1 / Math.Tanh(k * h2));
             double interfaceSlip = L * W / 2 * jump * jump;
 
@@ -68,6 +66,14 @@ namespace SphFluid.Tests.Physics
             double energy = t.Gravity * (t.LowerDensity - t.UpperDensity) * L * W / 4;
             return dissipation / (2 * energy);
         }
+
+        /// <summary>The squared slip of a layer's potential flow, A cosh(k (distance from its far boundary)) cos(k x),
+        /// integrated over the two end walls (the vertical flow there) of a layer <paramref name="h"/> deep and
+        /// <paramref name="width"/> wide.</summary>
+        internal static double EndWalls(double width, double a, double k, double h) => 2 * width * a * a * k * k * (Math.Sinh(2 * k * h) / (4 * k) - h / 2);
+
+        /// <summary>The same over the two side walls along the tank (both velocity components lie in them).</summary>
+        internal static double SideWalls(double length, double a, double k, double h) => length * k * a * a * Math.Sinh(2 * k * h) / 2;
 
         /// <summary>
         /// The largest rise of a plane interface along the tank (m) that a particle lattice of shear strength yieldRatio times
@@ -93,15 +99,16 @@ namespace SphFluid.Tests.Physics
 
         /// <summary>
         /// Least-squares fit of y(t) = exp(-gamma (t - t0)) (A cos(omega (t - t0)) + B sin(omega (t - t0))) + C to samples
-        /// (t0 the first time): for each (omega, gamma) the rest is linear, so a grid over omega in [pi / span, 10] rad/s
-        /// (span: the samples' time span) and gamma in [0, 2] 1/s, refined twice around its best point, finds the global fit without a starting
-        /// guess. Returns omega, gamma and the RMS residual.
+        /// (t0 the first time): for each (omega, gamma) the rest is linear, so a grid over omega in [pi / span,
+        /// <paramref name="highestOmega"/>] rad/s (span: the samples' time span) and gamma in [0, 2] 1/s, refined twice
+        /// around its best point, finds the global fit without a starting guess. Returns omega, gamma and the RMS residual.
         /// </summary>
-        internal static (double Omega, double Gamma, double Residual) FitDampedOscillation(IReadOnlyList<double> times, IReadOnlyList<double> values)
+        internal static (double Omega, double Gamma, double Residual) FitDampedOscillation(IReadOnlyList<double> times, IReadOnlyList<double> values,
+            double highestOmega = 10)
         {
             if (times.Count != values.Count || times.Count < 8) throw new ArgumentException($"{times.Count} times, {values.Count} values: need 8 or more of each");
             double span = times[times.Count - 1] - times[0];
-            double omegaLow = Math.PI / span, omegaHigh = 10, gammaLow = 0, gammaHigh = 2;
+            double omegaLow = Math.PI / span, omegaHigh = highestOmega, gammaLow = 0, gammaHigh = 2;
             double omegaStep = 0.02, gammaStep = 0.02, bestOmega = omegaLow, bestGamma = 0, best = double.PositiveInfinity;
             for (int pass = 0; pass < 3; pass++)
             {

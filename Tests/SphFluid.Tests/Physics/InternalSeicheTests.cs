@@ -5,7 +5,8 @@ using SphFluid.Simulation;
 
 namespace SphFluid.Tests.Physics
 {
-    /// <summary>The seiche theory and fit the <see cref="InternalSeicheProbe"/> measures the OilAndWater interface with.</summary>
+    /// <summary>The seiche theory and fit the <see cref="InternalSeicheProbe"/> measures the OilAndWater interface with, and
+    /// the surface seiche's (<see cref="SurfaceSeiche"/>) that <see cref="SurfaceSeicheTests"/> measures a sloshing tank with.</summary>
     public sealed class InternalSeicheTests
     {
         // OilAndWater's layers as the lock exchange leaves them: 98.4 mm of oil over 96.0 mm of water in a 0.6 x 0.12 m tank.
@@ -122,6 +123,27 @@ namespace SphFluid.Tests.Physics
             var thin = OilAndWater with { UpperViscosity = 1e-3, LowerViscosity = 5e-4 };
             var thinner = OilAndWater with { UpperViscosity = 1e-5, LowerViscosity = 5e-6 };
             Assert.That(InternalSeiche.DecayRate(thin) / InternalSeiche.DecayRate(thinner), Is.EqualTo(10).Within(0.05));
+        }
+
+        /// <summary>RestingTank's water, 0.4 m along the sloshing and 0.3 m deep: omega^2 = g k tanh(k h) = 75.67 s^-2.
+        /// In shallow water the wave runs at sqrt(g h), so the period is 2 L / sqrt(g h).</summary>
+        [Test]
+        public void TheSurfaceSeicheIsTheStandingWaveOfTheTank()
+        {
+            Assert.That(2 * Math.PI / SurfaceSeiche.AngularFrequency(0.4, 0.3, 9.81), Is.EqualTo(0.7223).Within(0.0001));
+            double shallow = 2 * 0.4 / Math.Sqrt(9.81 * 0.001);
+            Assert.That(2 * Math.PI / SurfaceSeiche.AngularFrequency(0.4, 0.001, 9.81), Is.EqualTo(shallow).Within(1e-4 * shallow));
+        }
+
+        /// <summary>Deep water between free-slip walls keeps only the interior's damping, the amplitude decaying at
+        /// 2 nu k^2 (Lamb, "Hydrodynamics", art. 348); no-slip walls add their Stokes layers on top.</summary>
+        [Test]
+        public void DeepWaterBetweenFreeSlipWalls_DecaysAtTwiceNuKSquared()
+        {
+            double k = Math.PI / 0.4, nu = 1e-6;
+            double freeSlip = SurfaceSeiche.DecayRate(0.4, 0.2, 10, 9.81, 1000, 1e-3, noSlipWalls: false);
+            Assert.That(freeSlip, Is.EqualTo(2 * nu * k * k).Within(1e-6 * freeSlip));
+            Assert.That(SurfaceSeiche.DecayRate(0.4, 0.2, 10, 9.81, 1000, 1e-3, noSlipWalls: true), Is.GreaterThan(2 * freeSlip));
         }
 
         [Test]

@@ -1,0 +1,44 @@
+using System;
+
+namespace SphFluid.Tests.Physics
+{
+    /// <summary>
+    /// The fundamental surface seiche of one liquid in a rectangular tank (length L along the sloshing, width W, depth h):
+    /// what a tank whose free surface is tilted does, and so what the simulated surface is measured against
+    /// (<see cref="SurfaceSeicheTests"/>).
+    /// <para>
+    /// Period: the linear standing wave at k = pi / L, omega^2 = g k tanh(k h) (Lamb, "Hydrodynamics", art. 227 and 257).
+    /// A swing of amplitude a changes it by a fraction of order (k a)^2 (the theory is linear).
+    /// </para>
+    /// <para>
+    /// Decay: the laminar damping Keulegan derived ("Energy dissipation in standing waves in rectangular basins", J. Fluid
+    /// Mech. 6, 1959), by the energy method of <see cref="InternalSeiche"/> with one layer and no interface: the mode's
+    /// potential flow slips along the floor and the four walls, each slip taken up in a Stokes layer, and the interior adds
+    /// mu k^3 A^2 L W sinh(2 k h) / 2; the mode holds E = rho g a^2 L W / 4.
+    /// </para>
+    /// </summary>
+    internal static class SurfaceSeiche
+    {
+        /// <summary>The fundamental mode's angular frequency, rad/s.</summary>
+        internal static double AngularFrequency(double length, double depth, double gravity)
+        {
+            double k = Math.PI / length;
+            return Math.Sqrt(gravity * k * Math.Tanh(k * depth));
+        }
+
+        /// <summary>The amplitude's laminar decay rate gamma, 1/s (amplitude ~ exp(-gamma t)), for a liquid of
+        /// <paramref name="density"/> kg/m^3 and dynamic <paramref name="viscosity"/> Pa s; free-slip walls
+        /// (<paramref name="noSlipWalls"/> false) take no Stokes layer.</summary>
+        internal static double DecayRate(double length, double width, double depth, double gravity, double density, double viscosity, bool noSlipWalls)
+        {
+            double omega = AngularFrequency(length, depth, gravity), k = Math.PI / length, L = length, W = width, h = depth;
+            double beta = Math.Sqrt(viscosity * density * omega / 2);
+            double a = omega / (k * Math.Sinh(k * h)); // the potential's amplitude per unit surface amplitude
+            double floor = L * W / 2 * Math.Pow(omega / Math.Sinh(k * h), 2);
+            double walls = noSlipWalls ? 0.5 * beta * (floor + InternalSeiche.EndWalls(W, a, k, h) + InternalSeiche.SideWalls(L, a, k, h)) : 0;
+            double dissipation = walls + viscosity * Math.Pow(k, 3) * a * a * L * W * Math.Sinh(2 * k * h) / 2;
+            double energy = gravity * density * L * W / 4;
+            return dissipation / (2 * energy);
+        }
+    }
+}
