@@ -126,6 +126,16 @@ namespace SphFluid.Tests.Physics
             return (bestOmega, bestGamma, Math.Sqrt(best / times.Count));
         }
 
+        /// <summary>The times at which the samples change sign, each interpolated linearly between its two samples.</summary>
+        internal static List<double> ZeroCrossings(IReadOnlyList<double> times, IReadOnlyList<double> values)
+        {
+            var crossings = new List<double>();
+            for (int i = 1; i < values.Count; i++)
+                if (Math.Sign(values[i]) != Math.Sign(values[i - 1]) && values[i - 1] != 0)
+                    crossings.Add(times[i - 1] + (times[i] - times[i - 1]) * values[i - 1] / (values[i - 1] - values[i]));
+            return crossings;
+        }
+
         /// <summary>The sum of squared residuals of the best A, B, C for this omega and gamma (3 x 3 normal equations).</summary>
         static double Residual(IReadOnlyList<double> times, IReadOnlyList<double> values, double omega, double gamma)
         {

@@ -156,10 +156,7 @@ namespace SphFluid.Tests.Physics
             double strength = LatticeShearStrength.YieldRatio(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius);
             double held = InternalSeiche.HeldRise(tank, strength, sideWalls: false), heldWithWalls = InternalSeiche.HeldRise(tank, strength, sideWalls: true);
 
-            var crossings = new List<double>();
-            for (int i = 1; i < rises.Count; i++)
-                if (Math.Sign(rises[i]) != Math.Sign(rises[i - 1]) && rises[i - 1] != 0)
-                    crossings.Add(times[i - 1] + (times[i] - times[i - 1]) * rises[i - 1] / (rises[i - 1] - rises[i]));
+            var crossings = InternalSeiche.ZeroCrossings(times, rises);
             var extremes = new List<double>();
             for (int c = 0; c + 1 < crossings.Count; c++)
                 extremes.Add(Enumerable.Range(0, rises.Count).Where(i => times[i] > crossings[c] && times[i] < crossings[c + 1]).Max(i => Math.Abs(rises[i])));

@@ -113,10 +113,7 @@ namespace SphFluid.Tests.Physics
             float left = container.Position.X - container.Size.X / 2, right = container.Position.X + container.Size.X / 2;
             double nearest = particles.Min(p => p.Position.X) - left, farthest = right - particles.Max(p => p.Position.X);
             double ownLength = container.Size.X - nearest - farthest + s.ParticleSpacing;
-            var crossings = new List<double>();
-            for (int i = 1; i < rises.Count; i++)
-                if (Math.Sign(rises[i]) != Math.Sign(rises[i - 1]) && rises[i - 1] != 0)
-                    crossings.Add(times[i - 1] + (times[i] - times[i - 1]) * rises[i - 1] / (rises[i - 1] - rises[i]));
+            var crossings = InternalSeiche.ZeroCrossings(times, rises);
             TestContext.Progress.WriteLine(
                 $"surface seiche ({name}: {s.PressureSolver}, {s.SmoothingKernel} at {s.SmoothingRadius / s.ParticleSpacing:F2} spacings, " +
                 $"spacing {1000 * s.ParticleSpacing:F2} mm, {1000 * container.Size.Z:F0} mm wide), N={sim.ParticleCount}: depth {1000 * depth:F1} mm; " +
