@@ -100,15 +100,15 @@ namespace SphFluid.Tests.Physics
         /// <summary>
         /// Least-squares fit of y(t) = exp(-gamma (t - t0)) (A cos(omega (t - t0)) + B sin(omega (t - t0))) + C to samples
         /// (t0 the first time): for each (omega, gamma) the rest is linear, so a grid over omega in [pi / span,
-        /// <paramref name="highestOmega"/>] rad/s (span: the samples' time span) and gamma in [0, 2] 1/s, refined twice
+        /// <paramref name="highestOmega"/>] rad/s (span: the samples' time span) and gamma in [0, <paramref name="highestGamma"/>] 1/s, refined twice
         /// around its best point, finds the global fit without a starting guess. Returns omega, gamma and the RMS residual.
         /// </summary>
         internal static (double Omega, double Gamma, double Residual) FitDampedOscillation(IReadOnlyList<double> times, IReadOnlyList<double> values,
-            double highestOmega = 10)
+            double highestOmega = 10, double highestGamma = 2)
         {
             if (times.Count != values.Count || times.Count < 8) throw new ArgumentException($"{times.Count} times, {values.Count} values: need 8 or more of each");
             double span = times[times.Count - 1] - times[0];
-            double omegaLow = Math.PI / span, omegaHigh = highestOmega, gammaLow = 0, gammaHigh = 2;
+            double omegaLow = Math.PI / span, omegaHigh = highestOmega, gammaLow = 0, gammaHigh = highestGamma;
             double omegaStep = 0.02, gammaStep = 0.02, bestOmega = omegaLow, bestGamma = 0, best = double.PositiveInfinity;
             for (int pass = 0; pass < 3; pass++)
             {

@@ -19,10 +19,11 @@ namespace SphFluid.Tests.Physics
     /// </summary>
     internal static class SurfaceSeiche
     {
-        /// <summary>The fundamental mode's angular frequency, rad/s.</summary>
-        internal static double AngularFrequency(double length, double depth, double gravity)
+        /// <summary>The fundamental mode's angular frequency, rad/s; <paramref name="mode"/> n is the standing wave with n
+        /// half wavelengths along the tank, k = n pi / L.</summary>
+        internal static double AngularFrequency(double length, double depth, double gravity, int mode = 1)
         {
-            double k = Math.PI / length;
+            double k = mode * Math.PI / length;
             return Math.Sqrt(gravity * k * Math.Tanh(k * depth));
         }
 

@@ -1,0 +1,158 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using System.Numerics;
+using NUnit.Framework;
+using SphFluid.Headless.Cli;
+using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
+using SphFluid.Tests.Runner;
+
+namespace SphFluid.Tests.Physics
+{
+    /// <summary>
+    /// The simulated free surface's dispersion relation: why <see cref="SurfaceSeicheTests"/>' tank sloshes faster than
+    /// omega^2 = g k tanh(k h) says. A measurement run by name, `bash Headless/test.sh --filter
+    /// FullyQualifiedName~SurfaceDispersionProbe`, which CI does not run.
+    /// <para>
+    /// The shipped RestingTank's water settles flat for <see cref="SettleSeconds"/>; then every particle is given the
+    /// linear standing wave's velocity for mode n (n half wavelengths along the tank, k = n pi / L) at the instant its
+    /// surface passes level, with k a = 0.1 (<see cref="Steepness"/>) so that the swing's own nonlinearity is the same small
+    /// fraction for every mode. The mode's amplitude, a_n = 2 / (L W) sum_i V_i cos(k x_i) over the particles' volumes
+    /// (the flat lattice's sum is exactly zero, and for an incompressible fluid it changes only by the surface's motion),
+    /// is sampled every frame and a damped oscillation is fitted to it.
+    /// </para>
+    /// <para>
+    /// What tells the candidate causes apart is how the excess of omega^2 over gravity's grows with k. A fluid whose own
+    /// length is not the tank's shifts every mode's omega^2 by the same fraction; a shear stiffness G (the particle
+    /// lattice's, <see cref="LatticeShearStrength"/>) adds about (G / rho) k^2, a fraction growing as k; a surface
+    /// tension sigma adds (sigma / rho) k^3, a fraction growing as k^2 (Lamb, "Hydrodynamics", art. 267). The probe prints
+    /// each mode's excess fraction and its ratio to the first mode's, to be read against 1 : 1 : 1, 1 : 2 : 3 and
+    /// 1 : 4 : 9.
+    /// </para>
+    /// <para>
+    /// Fixtures: WCSPH as shipped (Wendland C2 at 2.85 spacings); WCSPH with the cubic spline at 2 spacings (a lattice
+    /// about three times as strong in shear); DFSPH as <c>--solver dfsph</c> runs the scene; the shipped scene spawned
+    /// with a quarter spacing of jitter, which disorders the lattice that the crystal's shear stiffness needs; its walls
+    /// free-slip, which push only along their normals; its swing halved (k a = 0.05), for a stiffness that depends on
+    /// how far the particles move; and the tank and its water twice as long (0.8 m), whose second mode has the first
+    /// mode's k in the shipped tank, to tell an error that follows k from one that follows the mode's shape.
+    /// </para>
+    /// </summary>
+    [Explicit("a measurement, not a check: run it by name")]
+    [TestFixture("wcsph")]
+    [TestFixture("cubic spline")]
+    [TestFixture("dfsph")]
+    [TestFixture("jittered")]
+    [TestFixture("free-slip")]
+    [TestFixture("half swing")]
+    [TestFixture("long tank")]
+    public sealed class SurfaceDispersionProbe
+    {
+        const double SettleSeconds = 0.5, RecordSeconds = 1.5;
+        readonly string _configuration;
+
+        int[] Modes => _configuration == "long tank" ? new[] { 1, 2 } : new[] { 1, 2, 3 };
+
+        /// <summary>k a of the kicked wave: a swing whose own nonlinearity changes the period by a fraction of order (k
+        /// a)^2, the same for every mode.</summary>
+        double Steepness => _configuration == "half swing" ? 0.05 : 0.1;
+
+        public SurfaceDispersionProbe(string configuration) => _configuration = configuration;
+
+        [Test]
+        public void EachModeSloshesAtItsStandingWavePeriod()
+        {
+            var excess = new Dictionary<int, double>();
+            foreach (int mode in Modes)
+            {
+                var scene = SceneLoader.Load(RunnerPaths.Scene("RestingTank"), RunnerPaths.Project).Description;
+                if (_configuration == "dfsph") new SolverChoice { Solver = PressureSolver.Dfsph }.ApplyTo(scene, "DFSPH RestingTank");
+                if (_configuration == "cubic spline")
+                {
+                    scene.Settings.SmoothingKernel = KernelFamily.CubicSpline;
+                    scene.Settings.SmoothingRadius = 2f * scene.Settings.ParticleSpacing;
+                }
+                if (_configuration == "jittered") scene.SpawnBoxes.Single().Jitter = 0.25f;
+                if (_configuration == "free-slip") scene.Container.Friction = WallFriction.Slip;
+                if (_configuration == "long tank")
+                {
+                    var water = scene.SpawnBoxes.Single();
+                    scene.Container.Size = new Vector3(2 * scene.Container.Size.X, scene.Container.Size.Y, scene.Container.Size.Z);
+                    water.Size = new Vector3(scene.Container.Size.X, water.Size.Y, water.Size.Z);
+                    water.Center = new Vector3(scene.Container.Position.X, water.Center.Y, water.Center.Z);
+                }
+                var (measured, theory, report) = Run(scene, mode, Steepness);
+                excess[mode] = Math.Pow(measured / theory, 2) - 1;
+                Assert.That(report.NanCount, Is.EqualTo(0));
+                Assert.That(report.OutsideCount, Is.EqualTo(0));
+            }
+            TestContext.Progress.WriteLine($"surface dispersion ({_configuration}): omega^2 over theory's - 1 by mode " +
+                string.Join(", ", Modes.Select(n => $"{n}: {100 * excess[n]:+0.00;-0.00} %")) + "; against mode 1 " +
+                string.Join(" : ", Modes.Select(n => (excess[n] / excess[1]).ToString("F2"))) +
+                " (a length error 1 : 1 : 1, a shear stiffness 1 : 2 : 3, a surface tension 1 : 4 : 9)");
+        }
+
+        /// <summary>Settles the tank, kicks mode <paramref name="mode"/> and returns the fitted and the theory's angular
+        /// frequency for the water's measured depth.</summary>
+        static (double Measured, double Theory, DiagnosticsReport Report) Run(FluidSceneDescription scene, int mode, double steepness)
+        {
+            var s = scene.Settings;
+            var container = scene.Container;
+            double length = container.Size.X, width = container.Size.Z, g = s.Gravity.Length(), k = mode * Math.PI / length;
+            double left = container.Position.X - length / 2, floor = container.Position.Y - container.Size.Y / 2;
+            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
+            var particles = new Particle[sim.ParticleCount];
+            var densities = new Vector4[sim.ParticleCount];
+            var phase = sim.PhaseRows.Single();
+            while (sim.SimulatedTime < SettleSeconds - 1e-6) sim.Step(1f / 60f);
+
+            sim.Particles.GetData(particles);
+            sim.Densities.GetData(densities);
+            double volume = 0;
+            for (int i = 0; i < particles.Length; i++) volume += phase.ParticleMass / densities[i].X;
+            double depth = volume / (length * width), omega = SurfaceSeiche.AngularFrequency(length, depth, g, mode);
+            double a = steepness / k, surface = floor + depth;
+            for (int i = 0; i < particles.Length; i++)
+            {
+                // The potential flow of a standing wave whose surface a cos(k x) sin(omega t) passes level at t = 0.
+                double x = particles[i].Position.X - left, z = particles[i].Position.Y - surface;
+                double u = -a * omega * Math.Sin(k * x) * Math.Cosh(k * (z + depth)) / Math.Sinh(k * depth);
+                double w = a * omega * Math.Cos(k * x) * Math.Sinh(k * (z + depth)) / Math.Sinh(k * depth);
+                particles[i].Velocity += new Vector3((float)u, (float)w, 0f);
+            }
+            sim.SetParticles(particles);
+
+            double start = sim.SimulatedTime;
+            var times = new List<double>();
+            var amplitudes = new List<double>();
+            void Sample()
+            {
+                sim.Particles.GetData(particles);
+                sim.Densities.GetData(densities);
+                double sum = 0;
+                for (int i = 0; i < particles.Length; i++)
+                    sum += phase.ParticleMass / densities[i].X * Math.Cos(k * (particles[i].Position.X - left));
+                times.Add(sim.SimulatedTime - start);
+                amplitudes.Add(2 * sum / (length * width));
+            }
+            Sample();
+            while (sim.SimulatedTime - start < RecordSeconds - 1e-6)
+            {
+                sim.Step(1f / 60f);
+                Sample();
+            }
+            var report = sim.ReadDiagnostics();
+            var fit = InternalSeiche.FitDampedOscillation(times, amplitudes, highestOmega: 2 * omega, highestGamma: 10);
+            var crossings = InternalSeiche.ZeroCrossings(times, amplitudes.Select(v => v - amplitudes[0]).ToList());
+            TestContext.Progress.WriteLine(
+                $"surface dispersion ({s.PressureSolver}, {s.SmoothingKernel} at {s.SmoothingRadius / s.ParticleSpacing:F2} spacings, " +
+                $"jitter {scene.SpawnBoxes.Single().Jitter} spacings, {scene.Container.Friction} walls), mode {mode} (k {k:F2}/m, a {1000 * a:F1} mm), N={sim.ParticleCount}: " +
+                $"depth {1000 * depth:F1} mm; theory: period {2 * Math.PI / omega:F4} s; fitted over {RecordSeconds} s after {SettleSeconds} s " +
+                $"of settling: period {2 * Math.PI / fit.Omega:F4} s ({100 * (omega / fit.Omega - 1):+0.00;-0.00} %), decay {fit.Gamma:F3}/s " +
+                $"(RMS residual {1000 * fit.Residual:F2} mm of the swing's {1000 * amplitudes.Max(v => Math.Abs(v - amplitudes[0])):F2}); " +
+                $"crossings at {string.Join(", ", crossings.Select(t => t.ToString("F3")))} s; {report}");
+            return (fit.Omega, omega, report);
+        }
+    }
+}
