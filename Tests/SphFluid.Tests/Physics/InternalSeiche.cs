@@ -100,8 +100,9 @@ namespace SphFluid.Tests.Physics
         /// <summary>
         /// Least-squares fit of y(t) = exp(-gamma (t - t0)) (A cos(omega (t - t0)) + B sin(omega (t - t0))) + C to samples
         /// (t0 the first time): for each (omega, gamma) the rest is linear, so a grid over omega in [pi / span,
-        /// <paramref name="highestOmega"/>] rad/s (span: the samples' time span) and gamma in [0, <paramref name="highestGamma"/>] 1/s, refined twice
-        /// around its best point, finds the global fit without a starting guess. Returns omega, gamma and the RMS residual.
+        /// <paramref name="highestOmega"/>] rad/s (span: the samples' time span) and gamma in [0,
+        /// <paramref name="highestGamma"/>] 1/s, refined twice around its best point, finds the global fit without a
+        /// starting guess. Returns omega, gamma and the RMS residual.
         /// </summary>
         internal static (double Omega, double Gamma, double Residual) FitDampedOscillation(IReadOnlyList<double> times, IReadOnlyList<double> values,
             double highestOmega = 10, double highestGamma = 2)

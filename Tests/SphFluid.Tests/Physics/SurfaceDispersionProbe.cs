@@ -18,8 +18,8 @@ namespace SphFluid.Tests.Physics
     /// <para>
     /// The shipped RestingTank's water settles flat for <see cref="SettleSeconds"/>; then every particle is given the
     /// linear standing wave's velocity for mode n (n half wavelengths along the tank, k = n pi / L) at the instant its
-    /// surface passes level, with k a = 0.1 (<see cref="Steepness"/>) so that the swing's own nonlinearity is the same small
-    /// fraction for every mode. The mode's amplitude, a_n = 2 / (L W) sum_i V_i cos(k x_i) over the particles' volumes
+    /// surface passes level, with k a = 0.1 (<see cref="Steepness"/>) so that the swing's own nonlinearity is the same
+    /// small fraction for every mode. The mode's amplitude, a_n = 2 / (L W) sum_i V_i cos(k x_i) over the particles' volumes
     /// (the flat lattice's sum is exactly zero, and for an incompressible fluid it changes only by the surface's motion),
     /// is sampled every frame and a damped oscillation is fitted to it.
     /// </para>
@@ -37,7 +37,7 @@ namespace SphFluid.Tests.Physics
     /// with a quarter spacing of jitter, which disorders the lattice that the crystal's shear stiffness needs; its walls
     /// free-slip, which push only along their normals; its swing halved (k a = 0.05), for a stiffness that depends on
     /// how far the particles move; the tank and its water twice as long (0.8 m), whose second mode has the first mode's
-    /// k in the shipped tank, to tell an error that follows k from one that follows the mode's shape; and the tank
+    /// k in the shipped tank, to tell an error that follows k from one that follows the mode's shape; the tank
     /// narrowed to 0.1 m across at the scene's spacing and at half of it (8 times the particles), under each solver, to
     /// tell an error that follows the spacing from one that follows the tank; and the shipped kernel's support widened
     /// from 2.85 to 3.5 spacings (about twice the neighbours).
