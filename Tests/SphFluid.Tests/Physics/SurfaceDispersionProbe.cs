@@ -180,8 +180,33 @@ namespace SphFluid.Tests.Physics
                 $"of settling: period {2 * Math.PI / fit.Omega:F4} s ({100 * (omega / fit.Omega - 1):+0.00;-0.00} %; omega^2 " +
                 $"{100 * (Math.Pow(fit.Omega / omega, 2) - 1):+0.00;-0.00} %), decay {fit.Gamma:F3}/s " +
                 $"(RMS residual {1000 * fit.Residual:F2} mm of the swing's {1000 * amplitudes.Max(v => Math.Abs(v - amplitudes[0])):F2}); " +
-                $"crossings at {string.Join(", ", crossings.Select(t => t.ToString("F3")))} s; {report}");
+                $"crossings at {string.Join(", ", crossings.Select(t => t.ToString("F3")))} s; the rest lattice's shear stiffness G / p " +
+                $"{LatticeShearStiffness(s):F4}; the kernel's RMS width along an axis {1000 * KernelWidth(s):F1} mm; {report}");
             return (fit.Omega, omega, report);
+        }
+
+        /// <summary>The rest lattice's stiffness against a slip of one layer over the next, per unit of pressure: the slope
+        /// of <see cref="LatticeShearStrength.SlipStressRatio"/> at zero slip, per unit of shear strain (slip over
+        /// spacing).</summary>
+        static double LatticeShearStiffness(FluidSettings s)
+        {
+            const double strain = 1e-4;
+            return LatticeShearStrength.SlipStressRatio(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius, strain * s.ParticleSpacing) / strain;
+        }
+
+        /// <summary>The kernel's RMS width along one axis, sqrt(integral of x^2 W dV / integral of W dV), m: the length
+        /// whose square, times k^2, smoothing a field over the kernel takes off its response.</summary>
+        static double KernelWidth(FluidSettings s)
+        {
+            const int steps = 20000;
+            double h = s.SmoothingRadius, second = 0, zeroth = 0;
+            for (int i = 0; i < steps; i++)
+            {
+                double r = (i + 0.5) * h / steps, shell = r * r * SmoothingKernels.Value(s.SmoothingKernel, r, h);
+                second += r * r * shell;
+                zeroth += shell;
+            }
+            return Math.Sqrt(second / zeroth / 3);
         }
     }
 }
