@@ -56,6 +56,26 @@ namespace SphFluid.Simulation
         public static double GrowthRate(KernelFamily kind, double spacing, double support, double pressure, double restDensity) =>
             Math.Sqrt(Math.Max(0.0, -2.0 * pressure / restDensity * SoftestMode(kind, spacing, support)));
 
+        /// <summary>G / p: the lattice's shear modulus under pressure p, per unit pressure, for a long shear wave travelling
+        /// along <paramref name="direction"/> that moves the particles along <paramref name="polarisation"/> (unit vectors,
+        /// normal to each other). It is K(k)'s long-wave limit, K ~ (1/2) sum_j HessW(r_j) (k . r_j)^2, read as an elastic
+        /// stiffness, rho0 omega^2 = G k^2, and it depends only on the kernel and the support in spacings. A cubic lattice
+        /// has two: along an axis, moving along another (x, y), C44, which resists a slip of one lattice plane over the
+        /// next (<see cref="LatticeShearStrength"/>'s stiffness at zero slip, for a short support); along a face diagonal,
+        /// moving along the other ((1, 1, 0), (1, -1, 0)), C' = (C11 - C12) / 2, which resists stretching along one axis
+        /// while shrinking along another. A fluid has neither; where the pressure grows with depth, so do both.</summary>
+        public static double ShearModulusRatio(KernelFamily kind, double spacing, double support, Vector3 direction, Vector3 polarisation)
+        {
+            double sum = 0.0;
+            foreach (var n in Neighbours(kind, spacing, support))
+            {
+                double along = Vector3.Dot(direction, n.Offset), across = Vector3.Dot(polarisation, n.Offset);
+                double hessian = (n.Radial - n.Tangential) * across * across / n.Offset.LengthSquared() + n.Tangential;
+                sum += hessian * along * along;
+            }
+            return sum / SmoothingKernels.LatticeNumberDensity(kind, spacing, support);
+        }
+
         readonly struct Neighbour
         {
             public readonly Vector3 Offset, Gradient;
