@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
 using System.Linq;
 using System.Numerics;
 using NUnit.Framework;
@@ -24,12 +25,14 @@ namespace SphFluid.Tests.Physics
     /// is sampled every frame and a damped oscillation is fitted to it.
     /// </para>
     /// <para>
-    /// What tells the candidate causes apart is how the excess of omega^2 over gravity's grows with k. A fluid whose own
-    /// length is not the tank's shifts every mode's omega^2 by the same fraction; a shear stiffness G (the particle
-    /// lattice's, <see cref="LatticeShearStrength"/>) adds about (G / rho) k^2, a fraction growing as k; a surface
-    /// tension sigma adds (sigma / rho) k^3, a fraction growing as k^2 (Lamb, "Hydrodynamics", art. 267). The probe prints
-    /// each mode's excess fraction and its ratio to the first mode's, to be read against 1 : 1 : 1, 1 : 2 : 3 and
-    /// 1 : 4 : 9.
+    /// What tells the candidate causes apart is how the excess of omega^2 over gravity's changes with k. A fluid whose
+    /// own length is not the tank's shifts every mode's omega^2 by the same fraction; a uniform shear stiffness G adds
+    /// (G / rho) k^2, a fraction growing as k; a surface tension sigma adds (sigma / rho) k^3, a fraction growing as k^2
+    /// (Lamb, "Hydrodynamics", art. 267). The particle lattice's shear moduli grow with the pressure
+    /// (<see cref="LatticeStability.ShearModulusRatio"/>), so with the depth as fast as a wave's strain decays, and add
+    /// about the same fraction to every mode (<see cref="SurfaceSeiche.ElasticExcess"/>); each run prints that fraction
+    /// and what the measurement leaves beside it. The probe prints each mode's excess and its ratio to the first
+    /// mode's, to be read against 1 : 1 : 1, 1 : 2 : 3 and 1 : 4 : 9.
     /// </para>
     /// <para>
     /// Fixtures: WCSPH as shipped (Wendland C2 at 2.85 spacings); WCSPH with the cubic spline at 2 spacings (a lattice
@@ -39,8 +42,9 @@ namespace SphFluid.Tests.Physics
     /// how far the particles move; the tank and its water twice as long (0.8 m), whose second mode has the first mode's
     /// k in the shipped tank, to tell an error that follows k from one that follows the mode's shape; the tank
     /// narrowed to 0.1 m across at the scene's spacing and at half of it (8 times the particles), under each solver, to
-    /// tell an error that follows the spacing from one that follows the tank; and the shipped kernel's support widened
-    /// from 2.85 to 3.5 spacings (about twice the neighbours).
+    /// tell an error that follows the spacing from one that follows the tank; and the shipped kernel's support set to
+    /// 2.7, 3, 3.5 and 4 spacings, where the lattice's stiffness against a stretch (C') swings from 8.6 % of the pressure
+    /// to below zero and back while the kernel widens steadily.
     /// </para>
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]
@@ -55,7 +59,10 @@ namespace SphFluid.Tests.Physics
     [TestFixture("narrow, half the spacing")]
     [TestFixture("dfsph, narrow")]
     [TestFixture("dfsph, narrow, half the spacing")]
-    [TestFixture("wide support")]
+    [TestFixture("support 2.7")]
+    [TestFixture("support 3.0")]
+    [TestFixture("support 3.5")]
+    [TestFixture("support 4.0")]
     public sealed class SurfaceDispersionProbe
     {
         const double SettleSeconds = 0.5, RecordSeconds = 1.5;
@@ -99,7 +106,9 @@ namespace SphFluid.Tests.Physics
                 scene.Settings.SmoothingKernel = KernelFamily.CubicSpline;
                 scene.Settings.SmoothingRadius = 2f * scene.Settings.ParticleSpacing;
             }
-            if (_configuration == "wide support") scene.Settings.SmoothingRadius = 3.5f * scene.Settings.ParticleSpacing;
+            if (_configuration.StartsWith("support "))
+                scene.Settings.SmoothingRadius = float.Parse(_configuration.Substring("support ".Length), CultureInfo.InvariantCulture) *
+                    scene.Settings.ParticleSpacing;
             if (_configuration == "jittered") scene.SpawnBoxes.Single().Jitter = 0.25f;
             if (_configuration == "free-slip") scene.Container.Friction = WallFriction.Slip;
             var water = scene.SpawnBoxes.Single();
@@ -173,6 +182,10 @@ namespace SphFluid.Tests.Physics
             var report = sim.ReadDiagnostics();
             var fit = InternalSeiche.FitDampedOscillation(times, amplitudes, highestOmega: 2 * omega, highestGamma: 10);
             var crossings = InternalSeiche.ZeroCrossings(times, amplitudes.Select(v => v - amplitudes[0]).ToList());
+            double axis = LatticeStability.ShearModulusRatio(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius, Vector3.UnitX, Vector3.UnitY);
+            double diagonal = LatticeStability.ShearModulusRatio(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius,
+                Vector3.Normalize(new Vector3(1, 1, 0)), Vector3.Normalize(new Vector3(1, -1, 0)));
+            double elastic = SurfaceSeiche.ElasticExcess(k, depth, axis, diagonal);
             TestContext.Progress.WriteLine(
                 $"surface dispersion ({s.PressureSolver}, {s.SmoothingKernel} at {s.SmoothingRadius / s.ParticleSpacing:F2} spacings, " +
                 $"jitter {scene.SpawnBoxes.Single().Jitter} spacings, {scene.Container.Friction} walls), mode {mode} (k {k:F2}/m, a {1000 * a:F1} mm), N={sim.ParticleCount}: " +
@@ -180,18 +193,11 @@ namespace SphFluid.Tests.Physics
                 $"of settling: period {2 * Math.PI / fit.Omega:F4} s ({100 * (omega / fit.Omega - 1):+0.00;-0.00} %; omega^2 " +
                 $"{100 * (Math.Pow(fit.Omega / omega, 2) - 1):+0.00;-0.00} %), decay {fit.Gamma:F3}/s " +
                 $"(RMS residual {1000 * fit.Residual:F2} mm of the swing's {1000 * amplitudes.Max(v => Math.Abs(v - amplitudes[0])):F2}); " +
-                $"crossings at {string.Join(", ", crossings.Select(t => t.ToString("F3")))} s; the rest lattice's shear stiffness G / p " +
-                $"{LatticeShearStiffness(s):F4}; the kernel's RMS width along an axis {1000 * KernelWidth(s):F1} mm; {report}");
+                $"crossings at {string.Join(", ", crossings.Select(t => t.ToString("F3")))} s; the rest lattice's shear moduli per unit " +
+                $"pressure C44 / p {axis:F4}, C' / p {diagonal:F4}, whose elasticity adds {100 * elastic:+0.00;-0.00} % to omega^2, leaving " +
+                $"{100 * (Math.Pow(fit.Omega / omega, 2) - 1 - elastic):+0.00;-0.00} %; the kernel's RMS width along an axis " +
+                $"{1000 * KernelWidth(s):F1} mm; {report}");
             return (fit.Omega, omega, report);
-        }
-
-        /// <summary>The rest lattice's stiffness against a slip of one layer over the next, per unit of pressure: the slope
-        /// of <see cref="LatticeShearStrength.SlipStressRatio"/> at zero slip, per unit of shear strain (slip over
-        /// spacing).</summary>
-        static double LatticeShearStiffness(FluidSettings s)
-        {
-            const double strain = 1e-4;
-            return LatticeShearStrength.SlipStressRatio(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius, strain * s.ParticleSpacing) / strain;
         }
 
         /// <summary>The kernel's RMS width along one axis, sqrt(integral of x^2 W dV / integral of W dV), m: the length

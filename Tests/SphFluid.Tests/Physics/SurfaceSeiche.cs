@@ -27,6 +27,23 @@ namespace SphFluid.Tests.Physics
             return Math.Sqrt(gravity * k * Math.Tanh(k * depth));
         }
 
+        /// <summary>The fraction by which omega^2 exceeds g k tanh(k h) when the liquid is a lattice whose two shear
+        /// moduli grow with the hydrostatic pressure, C44 = <paramref name="axisModulusRatio"/> p and C' =
+        /// <paramref name="diagonalModulusRatio"/> p (<see cref="SphFluid.Simulation.LatticeStability.ShearModulusRatio"/>),
+        /// as an SPH lattice's do. The mode's potential flow strains the lattice (its displacement potential
+        /// psi = (a / k) cosh(k (z + h)) / sinh(k h) cos(k x)); the strain along the axes, psi_xx = -psi_zz, is resisted
+        /// by C' and grows as cosh(k (z + h)), the shear psi_xz by C44 and grows as sinh. With p = rho g (-z) the strain
+        /// energy, integrated over the depth, against the mode's potential energy rho g a^2 / 4 (Rayleigh's quotient,
+        /// the mode's shape unchanged) is
+        ///   c' + c44 + (c' - c44) (k h / sinh(k h))^2:
+        /// the same fraction for every mode in deep water, since the moduli grow with depth as fast as the strain
+        /// decays, whatever the spacing.</summary>
+        internal static double ElasticExcess(double k, double depth, double axisModulusRatio, double diagonalModulusRatio)
+        {
+            double shallow = k * depth / Math.Sinh(k * depth);
+            return diagonalModulusRatio + axisModulusRatio + (diagonalModulusRatio - axisModulusRatio) * shallow * shallow;
+        }
+
         /// <summary>The amplitude's laminar decay rate gamma, 1/s (amplitude ~ exp(-gamma t)), for a liquid of
         /// <paramref name="density"/> kg/m^3 and dynamic <paramref name="viscosity"/> Pa s; free-slip walls
         /// (<paramref name="noSlipWalls"/> false) take no Stokes layer.</summary>
