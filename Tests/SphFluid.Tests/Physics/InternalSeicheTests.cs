@@ -146,6 +146,27 @@ namespace SphFluid.Tests.Physics
             Assert.That(SurfaceSeiche.DecayRate(0.4, 0.2, 10, 9.81, 1000, 1e-3, noSlipWalls: true), Is.GreaterThan(2 * freeSlip));
         }
 
+        /// <summary>The fraction a pressure-stressed lattice adds to omega^2 is the wave's strain energy over its
+        /// potential energy rho g a^2 / 4, here integrated over the depth by the midpoint rule: with moduli
+        /// c p = c rho g (-z), the x-averaged energy density is c' (a k cosh(k (z + h)) / sinh(k h))^2 +
+        /// c44 (a k sinh(k (z + h)) / sinh(k h))^2. In deep water it is c' + c44 for every k.</summary>
+        [TestCase(1.17)]
+        [TestCase(2.36)]
+        [TestCase(7.07)]
+        public void TheLatticesExcessIsTheWavesStrainEnergyOverItsPotentialEnergy(double kh)
+        {
+            const double axis = 0.006, diagonal = 0.076, depth = 0.3, steps = 200000;
+            double k = kh / depth, strain = 0;
+            for (int i = 0; i < steps; i++)
+            {
+                double z = -depth * (i + 0.5) / steps, c = Math.Cosh(k * (z + depth)), s = Math.Sinh(k * (z + depth));
+                strain += -z * (diagonal * c * c + axis * s * s) * k * k / Math.Pow(Math.Sinh(kh), 2) * depth / steps;
+            }
+            double excess = SurfaceSeiche.ElasticExcess(k, depth, axis, diagonal);
+            Assert.That(excess, Is.EqualTo(strain / 0.25).Within(1e-6));
+            if (kh > 7) Assert.That(excess, Is.EqualTo(axis + diagonal).Within(1e-4));
+        }
+
         [Test]
         public void Fit_RecoversADampedOscillation_ThroughNoise()
         {

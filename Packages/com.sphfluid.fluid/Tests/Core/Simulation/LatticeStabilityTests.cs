@@ -43,7 +43,7 @@ namespace SphFluid.Tests.Core.Simulation
         [TestCase(4.0)]
         public void WendlandC2AtThreeAndFourSpacingsGrowsSlowly(double supportRatio) =>
             Assert.That(Growth(KernelFamily.WendlandC2, supportRatio), Is.LessThan(5.0));
-    
+
         static readonly Vector3 X = Vector3.UnitX, Y = Vector3.UnitY, Diagonal = Vector3.Normalize(new Vector3(1, 1, 0)),
             OtherDiagonal = Vector3.Normalize(new Vector3(1, -1, 0));
 
