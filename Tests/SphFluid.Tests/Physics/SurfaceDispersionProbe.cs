@@ -35,7 +35,7 @@ namespace SphFluid.Tests.Physics
     /// mode's, to be read against 1 : 1 : 1, 1 : 2 : 3 and 1 : 4 : 9.
     /// </para>
     /// <para>
-    /// Fixtures: WCSPH as shipped (Wendland C2 at 2.85 spacings); WCSPH with the cubic spline at 2 spacings (a lattice
+    /// Fixtures (<see cref="SloshingTankConfiguration"/>): WCSPH as shipped (Wendland C2 at 2.85 spacings); WCSPH with the cubic spline at 2 spacings (a lattice
     /// about three times as strong in shear); DFSPH as <c>--solver dfsph</c> runs the scene; the shipped scene spawned
     /// with a quarter spacing of jitter, which disorders the lattice that the crystal's shear stiffness needs; its walls
     /// free-slip, which push only along their normals; its swing halved (k a = 0.05), for a stiffness that depends on
@@ -99,31 +99,7 @@ namespace SphFluid.Tests.Physics
 
         void Measure(int mode)
         {
-            var scene = SceneLoader.Load(RunnerPaths.Scene("RestingTank"), RunnerPaths.Project).Description;
-            if (_configuration.StartsWith("dfsph")) new SolverChoice { Solver = PressureSolver.Dfsph }.ApplyTo(scene, "DFSPH RestingTank");
-            if (_configuration == "cubic spline")
-            {
-                scene.Settings.SmoothingKernel = KernelFamily.CubicSpline;
-                scene.Settings.SmoothingRadius = 2f * scene.Settings.ParticleSpacing;
-            }
-            if (_configuration.StartsWith("support "))
-                scene.Settings.SmoothingRadius = float.Parse(_configuration.Substring("support ".Length), CultureInfo.InvariantCulture) *
-                    scene.Settings.ParticleSpacing;
-            if (_configuration == "jittered") scene.SpawnBoxes.Single().Jitter = 0.25f;
-            if (_configuration == "free-slip") scene.Container.Friction = WallFriction.Slip;
-            var water = scene.SpawnBoxes.Single();
-            if (_configuration == "long tank")
-            {
-                scene.Container.Size = new Vector3(2 * scene.Container.Size.X, scene.Container.Size.Y, scene.Container.Size.Z);
-                water.Size = new Vector3(scene.Container.Size.X, water.Size.Y, water.Size.Z);
-                water.Center = new Vector3(scene.Container.Position.X, water.Center.Y, water.Center.Z);
-            }
-            if (_configuration.Contains("narrow"))
-            {
-                scene.Container.Size = new Vector3(scene.Container.Size.X, scene.Container.Size.Y, 0.1f);
-                water.Size = new Vector3(water.Size.X, water.Size.Y, 0.1f);
-            }
-            if (_configuration.EndsWith("half the spacing")) ParticleScaling.ScaleBy(scene, 8);
+            var scene = SloshingTankConfiguration.Load(_configuration);
             var (measured, theory, report) = Run(scene, mode, Steepness);
             _excess[mode] = Math.Pow(measured / theory, 2) - 1;
             Assert.That(report.NanCount, Is.EqualTo(0));

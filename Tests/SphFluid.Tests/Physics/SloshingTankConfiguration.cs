@@ -1,0 +1,73 @@
+using System;
+using System.Globalization;
+using System.Linq;
+using System.Numerics;
+using System.Text.RegularExpressions;
+using SphFluid.Headless.Cli;
+using SphFluid.Headless.Runs;
+using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
+using SphFluid.Tests.Runner;
+
+namespace SphFluid.Tests.Physics
+{
+    /// <summary>
+    /// The shipped RestingTank scene changed as a surface probe's fixture names it (<see cref="SurfaceSeicheProbe"/>,
+    /// <see cref="SurfaceDispersionProbe"/>), so that one name means one configuration in both. The name lists its
+    /// changes, comma-separated, from these: "dfsph" (the scene switched as <c>--solver dfsph</c> switches it), "Wendland
+    /// C2 relaxed" (OilAndWater's DFSPH kernel: Wendland C2 at 2.85 spacings, relaxation 0.3), "cubic spline" (at 2
+    /// spacings), "support S" (the scene's kernel reaching S spacings), "jittered" (a quarter spacing of spawn jitter),
+    /// "free-slip" (walls that push only along their normals), "long tank" (the tank and its water twice as long),
+    /// "narrow" (tank and water 0.1 m across) and "half the spacing" (8 times the particles); "wcsph" is the scene as
+    /// shipped, and "half swing" is the dispersion probe's smaller kick, no change to the scene. A name with any other part is refused, so that a mistyped fixture cannot run the shipped scene unnoticed.
+    /// </summary>
+    public static class SloshingTankConfiguration
+    {
+        static readonly string[] Known =
+            { "wcsph", "dfsph", "Wendland C2 relaxed", "cubic spline", "jittered", "free-slip", "long tank", "narrow", "half the spacing", "half swing" };
+        static readonly Regex Support = new Regex(@"^support (\d+(\.\d+)?)$");
+
+        /// <summary>The RestingTank scene in the named configuration.</summary>
+        public static FluidSceneDescription Load(string configuration)
+        {
+            var parts = configuration.Split(',').Select(p => p.Trim()).ToList();
+            var unknown = parts.Where(p => !Known.Contains(p) && !Support.IsMatch(p)).ToList();
+            if (unknown.Count > 0)
+                throw new ArgumentException($"'{configuration}': no such change to the sloshing tank: {string.Join(", ", unknown)}", nameof(configuration));
+            var scene = SceneLoader.Load(RunnerPaths.Scene("RestingTank"), RunnerPaths.Project).Description;
+            var water = scene.SpawnBoxes.Single();
+            // Applied in this order whatever the name's: the solver's switch first, since it may fit the kernel to DFSPH's
+            // band, and the particle scaling last, since it scales the tank's final spacing.
+            if (parts.Contains("dfsph")) new SolverChoice { Solver = PressureSolver.Dfsph }.ApplyTo(scene, $"DFSPH RestingTank ({configuration})");
+            var s = scene.Settings;
+            if (parts.Contains("Wendland C2 relaxed"))
+            {
+                s.SmoothingKernel = KernelFamily.WendlandC2;
+                s.SmoothingRadius = 2.85f * s.ParticleSpacing;
+                s.SolverRelaxation = 0.3f;
+            }
+            if (parts.Contains("cubic spline"))
+            {
+                s.SmoothingKernel = KernelFamily.CubicSpline;
+                s.SmoothingRadius = 2f * s.ParticleSpacing;
+            }
+            foreach (var match in parts.Select(p => Support.Match(p)).Where(m => m.Success))
+                s.SmoothingRadius = float.Parse(match.Groups[1].Value, CultureInfo.InvariantCulture) * s.ParticleSpacing;
+            if (parts.Contains("jittered")) water.Jitter = 0.25f;
+            if (parts.Contains("free-slip")) scene.Container.Friction = WallFriction.Slip;
+            if (parts.Contains("long tank"))
+            {
+                scene.Container.Size = new Vector3(2 * scene.Container.Size.X, scene.Container.Size.Y, scene.Container.Size.Z);
+                water.Size = new Vector3(scene.Container.Size.X, water.Size.Y, water.Size.Z);
+                water.Center = new Vector3(scene.Container.Position.X, water.Center.Y, water.Center.Z);
+            }
+            if (parts.Contains("narrow"))
+            {
+                scene.Container.Size = new Vector3(scene.Container.Size.X, scene.Container.Size.Y, 0.1f);
+                water.Size = new Vector3(water.Size.X, water.Size.Y, 0.1f);
+            }
+            if (parts.Contains("half the spacing")) ParticleScaling.ScaleBy(scene, 8);
+            return scene;
+        }
+    }
+}

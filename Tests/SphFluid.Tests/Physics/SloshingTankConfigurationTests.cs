@@ -1,0 +1,42 @@
+using System;
+using System.Linq;
+using System.Reflection;
+using NUnit.Framework;
+using SphFluid.Simulation;
+
+namespace SphFluid.Tests.Physics
+{
+    /// <summary>The surface probes run by name, not in CI, so CI checks here that each of their fixtures names a
+    /// configuration <see cref="SloshingTankConfiguration"/> knows, and that it changes what the name says.</summary>
+    public sealed class SloshingTankConfigurationTests
+    {
+        static readonly Type[] Probes = { typeof(SurfaceSeicheProbe), typeof(SurfaceDispersionProbe) };
+
+        [Test]
+        public void EverySurfaceProbeFixtureNamesAKnownConfiguration()
+        {
+            var names = Probes.SelectMany(p => p.GetCustomAttributes<TestFixtureAttribute>()).Select(f => (string)f.Arguments.Single()!).ToList();
+            Assert.That(names, Has.Count.EqualTo(22));
+            foreach (var name in names)
+                Assert.That(() => SloshingTankConfiguration.Load(name), Throws.Nothing, name);
+        }
+
+        [Test]
+        public void AMistypedChangeIsRefusedByName()
+        {
+            Assert.That(() => SloshingTankConfiguration.Load("dfsph, narow"),
+                Throws.ArgumentException.With.Message.Contains("no such change to the sloshing tank: narow"));
+        }
+
+        [Test]
+        public void TheChangesAreApplied()
+        {
+            var shipped = SloshingTankConfiguration.Load("wcsph");
+            var changed = SloshingTankConfiguration.Load("dfsph, support 3.5, narrow, half the spacing");
+            Assert.That(changed.Settings.PressureSolver, Is.EqualTo(PressureSolver.Dfsph));
+            Assert.That(changed.Container.Size.Z, Is.EqualTo(0.1f));
+            Assert.That(changed.Settings.ParticleSpacing, Is.EqualTo(shipped.Settings.ParticleSpacing / 2).Within(1e-7));
+            Assert.That(changed.Settings.SmoothingRadius / changed.Settings.ParticleSpacing, Is.EqualTo(3.5).Within(1e-5));
+        }
+    }
+}
