@@ -14,12 +14,13 @@ namespace SphFluid.Tests.Physics
     /// <summary>
     /// The shipped RestingTank scene changed as a surface probe's fixture names it (<see cref="SurfaceSeicheProbe"/>,
     /// <see cref="SurfaceDispersionProbe"/>), so that one name means one configuration in both. The name lists its
-    /// changes, comma-separated, from these: "dfsph" (the scene switched as <c>--solver dfsph</c> switches it), "Wendland
-    /// C2 relaxed" (OilAndWater's DFSPH kernel: Wendland C2 at 2.85 spacings, relaxation 0.3), "cubic spline" (at 2
-    /// spacings), "support S" (the scene's kernel reaching S spacings), "jittered" (a quarter spacing of spawn jitter),
-    /// "free-slip" (walls that push only along their normals), "long tank" (the tank and its water twice as long),
-    /// "narrow" (tank and water 0.1 m across) and "half the spacing" (8 times the particles); "wcsph" is the scene as
-    /// shipped, and "half swing" is the dispersion probe's smaller kick, no change to the scene. A name with any other part is refused, so that a mistyped fixture cannot run the shipped scene unnoticed.
+    /// changes, comma-separated, from these: "dfsph" (the scene switched as <c>--solver dfsph</c> switches it),
+    /// "Wendland C2 relaxed" (OilAndWater's DFSPH kernel: Wendland C2 at 2.85 spacings, relaxation 0.3), "cubic spline"
+    /// (at 2 spacings), "support S" (the scene's kernel reaching S spacings), "jittered" (a quarter spacing of spawn
+    /// jitter), "free-slip" (walls that push only along their normals), "long tank" (the tank and its water twice as
+    /// long), "narrow" (tank and water 0.1 m across) and "half the spacing" (8 times the particles); "wcsph" is the
+    /// scene as shipped, and "half swing" is the dispersion probe's smaller kick, no change to the scene. A name with
+    /// any other part is refused, so that a mistyped fixture cannot run the shipped scene unnoticed.
     /// </summary>
     public static class SloshingTankConfiguration
     {

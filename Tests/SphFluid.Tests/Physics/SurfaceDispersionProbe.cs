@@ -1,14 +1,9 @@
 using System;
 using System.Collections.Generic;
-using System.Globalization;
 using System.Linq;
 using System.Numerics;
 using NUnit.Framework;
-using SphFluid.Headless.Cli;
-using SphFluid.Headless.Runs;
-using SphFluid.Headless.Scenes;
 using SphFluid.Simulation;
-using SphFluid.Tests.Runner;
 
 namespace SphFluid.Tests.Physics
 {
@@ -35,16 +30,16 @@ namespace SphFluid.Tests.Physics
     /// mode's, to be read against 1 : 1 : 1, 1 : 2 : 3 and 1 : 4 : 9.
     /// </para>
     /// <para>
-    /// Fixtures (<see cref="SloshingTankConfiguration"/>): WCSPH as shipped (Wendland C2 at 2.85 spacings); WCSPH with the cubic spline at 2 spacings (a lattice
-    /// about three times as strong in shear); DFSPH as <c>--solver dfsph</c> runs the scene; the shipped scene spawned
-    /// with a quarter spacing of jitter, which disorders the lattice that the crystal's shear stiffness needs; its walls
-    /// free-slip, which push only along their normals; its swing halved (k a = 0.05), for a stiffness that depends on
-    /// how far the particles move; the tank and its water twice as long (0.8 m), whose second mode has the first mode's
-    /// k in the shipped tank, to tell an error that follows k from one that follows the mode's shape; the tank
-    /// narrowed to 0.1 m across at the scene's spacing and at half of it (8 times the particles), under each solver, to
-    /// tell an error that follows the spacing from one that follows the tank; and the shipped kernel's support set to
-    /// 2.7, 3, 3.5 and 4 spacings, where the lattice's stiffness against a stretch (C') swings from 8.6 % of the pressure
-    /// to below zero and back while the kernel widens steadily.
+    /// Fixtures (<see cref="SloshingTankConfiguration"/>): WCSPH as shipped (Wendland C2 at 2.85 spacings); WCSPH with
+    /// the cubic spline at 2 spacings (a lattice about three times as strong in shear); DFSPH as <c>--solver dfsph</c>
+    /// runs the scene; the shipped scene spawned with a quarter spacing of jitter, which disorders the lattice that the
+    /// crystal's shear stiffness needs; its walls free-slip, which push only along their normals; its swing halved (k a
+    /// = 0.05), for a stiffness that depends on how far the particles move; the tank and its water twice as long (0.8
+    /// m), whose second mode has the first mode's k in the shipped tank, to tell an error that follows k from one that
+    /// follows the mode's shape; the tank narrowed to 0.1 m across at the scene's spacing and at half of it (8 times
+    /// the particles), under each solver, to tell an error that follows the spacing from one that follows the tank; and
+    /// the shipped kernel's support set to 2.7, 3, 3.5 and 4 spacings, where the lattice's stiffness against a stretch
+    /// (C') swings from 8.6 % of the pressure to below zero and back while the kernel widens steadily.
     /// </para>
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]

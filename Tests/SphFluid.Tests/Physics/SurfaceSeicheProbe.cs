@@ -3,13 +3,13 @@ using NUnit.Framework;
 namespace SphFluid.Tests.Physics
 {
     /// <summary>
-    /// The sloshing tank of <see cref="SurfaceSeicheTests"/> under other solvers, kernels and resolutions: a measurement
-    /// run by name, `bash Headless/test.sh --filter FullyQualifiedName~SurfaceSeicheProbe`, which CI does not run.
-    /// Fixtures (<see cref="SloshingTankConfiguration"/>): DFSPH as <c>--solver dfsph</c> runs the scene (the cubic
-    /// spline at 2 spacings); DFSPH with Wendland C2 at 2.85 spacings relaxed to 0.3 (OilAndWater's DFSPH kernel); WCSPH
-    /// with the cubic spline at 2 spacings; and the tank narrowed to 0.1 m across at the scene's spacing and at half of it
-    /// (tilted by two of its spacings, the same swing), under each solver, for the convergence of the period with
-    /// resolution.
+    /// The sloshing tank of <see cref="SurfaceSeicheTests"/> under other solvers, kernels and resolutions: a
+    /// measurement run by name, `bash Headless/test.sh --filter FullyQualifiedName~SurfaceSeicheProbe`, which CI does
+    /// not run. Fixtures (<see cref="SloshingTankConfiguration"/>): DFSPH as <c>--solver dfsph</c> runs the scene (the
+    /// cubic spline at 2 spacings); DFSPH with Wendland C2 at 2.85 spacings relaxed to 0.3 (OilAndWater's DFSPH
+    /// kernel); WCSPH with the cubic spline at 2 spacings; and the tank narrowed to 0.1 m across at the scene's spacing
+    /// and at half of it (tilted by two of its spacings, the same swing), under each solver, for the convergence of the
+    /// period with resolution.
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]
     [TestFixture("dfsph")]
