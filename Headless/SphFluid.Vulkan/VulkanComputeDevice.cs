@@ -74,6 +74,9 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
 
     /// <summary>Adapter name, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".</summary>
     public string DeviceName { get; }
+    /// <summary>The driver's own version string (Vulkan 1.2 <c>driverInfo</c>), e.g. "Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)" for
+    /// lavapipe, whose adapter name is the same across Mesa releases that differ threefold in speed; empty on a 1.1 device.</summary>
+    public string Driver { get; }
     /// <summary>Vulkan device type: DiscreteGpu, IntegratedGpu, VirtualGpu, Cpu or Other.</summary>
     public string DeviceType { get; }
 
@@ -121,6 +124,7 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
             ApiVersion = $"{props.ApiVersion >> 22}.{(props.ApiVersion >> 12) & 0x3FF}.{props.ApiVersion & 0xFFF}";
             _limits = props.Limits;
             _deviceApiVersion = props.ApiVersion;
+            Driver = DriverInfo();
             _vk.GetPhysicalDeviceMemoryProperties(_physical, out _memory);
             _canTime = timestampBits > 0 && props.Limits.TimestampPeriod > 0;
             _timestampPeriodNs = props.Limits.TimestampPeriod;
@@ -327,6 +331,15 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
         }
         finally { SilkMarshal.Free((nint)extensionName); }
         _vk.GetDeviceQueue(_device, _queueFamily, 0, out _queue);
+    }
+
+    string DriverInfo()
+    {
+        if (_deviceApiVersion < Vk.Version12) return "";
+        var driver = new PhysicalDeviceDriverProperties { SType = StructureType.PhysicalDeviceDriverProperties };
+        var query = new PhysicalDeviceProperties2 { SType = StructureType.PhysicalDeviceProperties2, PNext = &driver };
+        _vk.GetPhysicalDeviceProperties2(_physical, &query);
+        return SilkMarshal.PtrToString((nint)driver.DriverInfo) ?? "";
     }
 
     const string ScalarBlockLayoutExtension = "VK_EXT_scalar_block_layout";

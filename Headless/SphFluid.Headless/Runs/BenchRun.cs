@@ -62,7 +62,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         try
         {
             stdout.WriteLine(string.Format(C, "bench: {0} on {1}; {2} warm-up sub-steps (at least {3:G3} s) + {4} timed sub-steps per row, one submit each",
-                scene.Path, device.DeviceName, options.Warmup, options.WarmupSeconds, options.Steps));
+                scene.Path, DeviceFactory.Describe(device), options.Warmup, options.WarmupSeconds, options.Steps));
             stdout.WriteLine(SolverChoice.Describe(descriptions[0].Settings));
             if (_solverNote != null) stdout.WriteLine(_solverNote);
             SolverName = SolverChoice.ShortName(descriptions[0].Settings.PressureSolver);

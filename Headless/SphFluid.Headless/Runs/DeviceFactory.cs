@@ -22,6 +22,12 @@ public static class DeviceFactory
         return opened;
     }
 
+    /// <summary>The device as the runs' first line names it: the adapter, and for a Vulkan device its driver's version.</summary>
+    public static string Describe(IComputeDevice device)
+    {
+        return device is VulkanComputeDevice vulkan && vulkan.Driver.Length > 0 ? $"{device.DeviceName}, driver {vulkan.Driver}" : device.DeviceName;
+    }
+
     public static VulkanComputeDevice Open(string projectRoot, string? deviceName, string command)
     {
         var options = new VulkanComputeOptions

@@ -87,7 +87,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         stdout.WriteLine(sim.Plan.ToString());
         stdout.WriteLine(SolverChoice.Describe(settings, sim));
         if (_solverNote != null) stdout.WriteLine(_solverNote);
-        stdout.WriteLine(string.Format(C, "device: {0}", device.DeviceName));
+        stdout.WriteLine(string.Format(C, "device: {0}", DeviceFactory.Describe(device)));
         stdout.WriteLine(string.Format(C, "run: {0:G4} s simulated in {1} frames of {2:G4} ms; output: {3}", duration, frames, options.FrameSeconds * 1000, Path.GetFullPath(output.Path)));
         stdout.Flush();
 

@@ -89,7 +89,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "study", out IDisposable? owned);
         try
         {
-            stdout.WriteLine(string.Format(C, "study: {0} on {1}; {2} configuration(s) of {3:G3} s simulated each{4}", scene.Path, device.DeviceName, configs.Count,
+            stdout.WriteLine(string.Format(C, "study: {0} on {1}; {2} configuration(s) of {3:G3} s simulated each{4}", scene.Path, DeviceFactory.Describe(device), configs.Count,
                 options.Seconds, options.Quick ? " (--quick)" : ""));
             if (_supportNote != null) stdout.WriteLine(_supportNote + " (the DFSPH rows)");
             for (int i = 0; i < configs.Count; i++)
