@@ -10,9 +10,10 @@ command -v spirv-val >/dev/null 2>&1 || need+=(spirv-tools)
 # grep reads the whole list (no -q): with pipefail, grep -q's early exit fails ldconfig on SIGPIPE and reinstalls.
 ldconfig -p 2>/dev/null | grep 'libvulkan.so.1 ' >/dev/null || need+=(libvulkan1)
 # Debian 12's own lavapipe (Mesa 22.3) runs a DFSPH sub-step three times slower than bookworm-backports' Mesa 25 does
-# (README, the test command; the suite's longest runs are DFSPH's), so there the driver comes from backports.
+# (README, the test command; the suite's longest runs are DFSPH's), so there the driver comes from backports, unless
+# SPHFLUID_SYSTEM_LAVAPIPE=1 keeps the release's.
 backports=""
-if [ "$(. /etc/os-release 2>/dev/null; echo "${VERSION_CODENAME:-}")" = bookworm ] \
+if [ "${SPHFLUID_SYSTEM_LAVAPIPE:-0}" != 1 ] && [ "$(. /etc/os-release 2>/dev/null; echo "${VERSION_CODENAME:-}")" = bookworm ] \
     && ! dpkg --compare-versions "$(dpkg-query -W -f '${Version}' mesa-vulkan-drivers 2>/dev/null || echo 0)" ge 25; then
     backports=bookworm-backports
 elif ! ls /usr/share/vulkan/icd.d/lvp_icd*.json >/dev/null 2>&1; then
@@ -35,7 +36,8 @@ if [ -n "$backports" ]; then
     list=/etc/apt/sources.list.d/sphfluid-$backports.list
     [ -f "$list" ] || echo "deb http://deb.debian.org/debian $backports main" | $sudo tee "$list" >/dev/null
     if ! { $sudo apt-get update -qq && $sudo apt-get install -y -qq --no-install-recommends -t "$backports" mesa-vulkan-drivers >/dev/null; }; then
-        echo "install-deps: $backports could not be reached; Debian 12's lavapipe runs the suite about three times slower" >&2
+        echo "install-deps: $backports could not be reached; Debian 12's lavapipe runs the suite about three times slower" \
+            "(SPHFLUID_SYSTEM_LAVAPIPE=1 stops this attempt)" >&2
         $sudo rm -f "$list"
         ls /usr/share/vulkan/icd.d/lvp_icd*.json >/dev/null 2>&1 \
             || $sudo apt-get install -y -qq --no-install-recommends mesa-vulkan-drivers >/dev/null
