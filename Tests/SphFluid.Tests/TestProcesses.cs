@@ -3,15 +3,12 @@ namespace SphFluid.Tests
     /// <summary>
     /// Headless/test.sh runs this suite as two processes at once, one on each of CI's two cores: the tests of
     /// <see cref="LongDfsphRuns"/> in one, every other test in the other. The category holds DFSPH's longest runs (OilAndWater
-    /// layering under the Jacobi and the Chebyshev solve, the loose-tolerance runs, the column depths of the iteration
-    /// scaling and the lock exchange at the top of its band), chosen so that the two processes end together; a test joins
-    /// it or leaves it to keep them even.
+    /// layering under the Jacobi and the Chebyshev solve, the loose-tolerance runs and the column depths of the iteration
+    /// scaling), chosen so that the two processes end together; a test joins it or leaves it to keep them even.
     /// <para>At fb7739b the category was OilAndWater's three layering runs, WCSPH's among them, and that process ended three
     /// minutes after the other (17.7 minutes against 14.4 in a clean clone's CI run). WCSPH's run (3 min 19 s there) now
     /// runs with the rest, and LooseToleranceTests and SolverIterationScalingTests (about a minute each with their
     /// fixtures' runs) here; a run of as much work then took 1099 s against 1187 (README, the test command).</para>
-    /// <para>On Mesa 25's lavapipe (Headless/install-deps.sh) a clean clone of 1555b80 ended the rest 1.7 minutes after this
-    /// process (16.9 minutes against 15.2); the lock exchange at the top of DFSPH's band (1 minute there) moved here.</para>
     /// </summary>
     public static class TestProcesses
     {

@@ -61,7 +61,6 @@ namespace SphFluid.Tests.Physics
         /// face at an edge, with 122 centres within 0.35 spacings at 1 s (WallCreepProbe). With the walls' pressure held at
         /// least at the fluid's (WallStepAtLeast) 13 are, and the closest is 0.256 spacings from a face.</summary>
         [Test]
-        [Category(TestProcesses.LongDfsphRuns)]
         public void OilAndWaterAtTheTopOfTheBand_KeepsItsCentresOffTheWalls()
         {
             string path = RunnerPaths.EditedScene("OilAndWater", "SmoothingRadius: 0.04275", "SmoothingRadius: 0.0435");
