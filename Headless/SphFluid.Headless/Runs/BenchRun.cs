@@ -79,7 +79,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
                 Rows.Add(row);
                 stderr.WriteLine(string.Format(C, "bench: {0} particles: {1:F3} ms/sub-step wall, {2:F3} ms GPU", row.Particles, row.WallMs, row.GpuMs));
             }
-            stdout.Write(Table(scene.Name, device.DeviceName));
+            stdout.Write(Table(scene.Name, DeviceFactory.Describe(device)));
             stdout.Write(SizingText());
             if (!options.SkipSavings) MeasureSavings(descriptions[^1], device);
             stdout.Write(SavingsTable());

@@ -182,7 +182,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         if (sim.Phases.Count > 1)
             LayeringChart.Build(scene.Name, layering, sim.Phases).Save(output, LayeringChart.Stem);
 
-        Summary = new RunSummary(scene, sim, device.DeviceName, sim.SimulatedTime, frame, substeps, cappedFrames, wall, snapshots,
+        Summary = new RunSummary(scene, sim, DeviceFactory.Describe(device), sim.SimulatedTime, frame, substeps, cappedFrames, wall, snapshots,
             first, last, layering.Count > 0 ? layering[^1] : null, failure, Path.GetFullPath(output.Path)) { Exports = export?.Count ?? 0, Settings = settings };
         File.WriteAllText(output.PathOf("summary.txt"), Summary.ToText());
         stdout.WriteLine(Summary.OneLine());

@@ -107,7 +107,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
             }
             CompareWithFinest(scene.Description.Container);
             File.WriteAllText(output.PathOf("study.csv"), Csv());
-            string table = Markdown(scene.Name, device.DeviceName);
+            string table = Markdown(scene.Name, DeviceFactory.Describe(device));
             File.WriteAllText(output.PathOf("study.md"), table);
             stdout.Write(table);
             StudyParetoChart.Build(scene.Name, device.DeviceName, Rows).Save(output, StudyParetoChart.Stem);
