@@ -30,15 +30,23 @@ if [ ${#need[@]} -gt 0 ]; then
     $sudo apt-get update -qq
     $sudo apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
 fi
+# Every step may fail (no network, no sudo): the suite then runs on the release's driver, as it did before.
+install_backports_lavapipe() {
+    # Backports are pinned below the release, so the suite added here upgrades nothing that is not asked for by name.
+    local list=/etc/apt/sources.list.d/sphfluid-$backports.list
+    if [ ! -f "$list" ]; then
+        echo "deb http://deb.debian.org/debian $backports main" | $sudo tee "$list" >/dev/null || return 1
+    fi
+    if ! { $sudo apt-get update -qq && $sudo apt-get install -y -qq --no-install-recommends -t "$backports" mesa-vulkan-drivers >/dev/null; }; then
+        $sudo rm -f "$list"
+        return 1
+    fi
+}
 if [ -n "$backports" ]; then
     echo "install-deps: installing mesa-vulkan-drivers (lavapipe) from $backports" >&2
-    # Backports are pinned below the release, so the suite added here upgrades nothing that is not asked for by name.
-    list=/etc/apt/sources.list.d/sphfluid-$backports.list
-    [ -f "$list" ] || echo "deb http://deb.debian.org/debian $backports main" | $sudo tee "$list" >/dev/null
-    if ! { $sudo apt-get update -qq && $sudo apt-get install -y -qq --no-install-recommends -t "$backports" mesa-vulkan-drivers >/dev/null; }; then
-        echo "install-deps: $backports could not be reached; Debian 12's lavapipe runs the suite about three times slower" \
-            "(SPHFLUID_SYSTEM_LAVAPIPE=1 stops this attempt)" >&2
-        $sudo rm -f "$list"
+    if ! install_backports_lavapipe; then
+        echo "install-deps: $backports could not be reached or written to; Debian 12's lavapipe runs the suite about" \
+            "three times slower (SPHFLUID_SYSTEM_LAVAPIPE=1 stops this attempt)" >&2
         ls /usr/share/vulkan/icd.d/lvp_icd*.json >/dev/null 2>&1 \
             || $sudo apt-get install -y -qq --no-install-recommends mesa-vulkan-drivers >/dev/null
     fi
