@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what the headless side needs on a fresh Debian/Ubuntu machine, only when missing:
-# Vulkan (Mesa's lavapipe), glslang's HLSL compiler, SPIRV-Tools, the validation layers and the charts' font.
+# Vulkan (Mesa's lavapipe), glslang's HLSL compiler, SPIRV-Tools, the validation layers and the charts' font; on
+# Debian 12 it also upgrades lavapipe to bookworm-backports' Mesa 25 (below).
 # The .NET SDK (10 or newer) must already be on PATH; NuGet packages come with `dotnet restore`.
 set -euo pipefail
 

@@ -1,5 +1,6 @@
 using System;
 using NUnit.Framework;
+using SphFluid.Headless.Runs;
 using SphFluid.Vulkan;
 
 namespace SphFluid.Tests.Backend
@@ -20,6 +21,17 @@ namespace SphFluid.Tests.Backend
             Assert.That(device.DeviceName, Is.Not.Empty);
             Assert.That(device.DeviceType, Is.Not.Empty);
             Assert.That(device.RobustBufferAccess, Is.True, "out-of-range reads return zero, as in D3D/Unity");
+        }
+
+        /// <summary>lavapipe's adapter name is the same under Mesa releases that run the suite three times apart, so the
+        /// runs name the driver's version beside it (a Vulkan 1.2 device reports one).</summary>
+        [Test]
+        public void TheRunsNameTheDriverBesideTheAdapter()
+        {
+            var device = GpuTestDevice.Shared;
+            Assume.That(Version.Parse(device.ApiVersion), Is.GreaterThanOrEqualTo(new Version(1, 2)), "a Vulkan 1.1 device reports no driver version");
+            Assert.That(device.Driver, Is.Not.Empty);
+            Assert.That(DeviceFactory.Describe(device), Is.EqualTo($"{device.DeviceName}, driver {device.Driver}"));
         }
 
         [Test]
