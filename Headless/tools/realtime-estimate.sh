@@ -9,8 +9,11 @@
 # rounds and n corrections. Every other kernel of the table runs a fixed number of times a sub-step whatever the
 # iterations (the sort, FindNeighbours, DensityFactor, NonPressureForces, the drift): the fixed part. A solve makes
 # two corrections at the least (SolveFinal), so 2 and 2 at the longest sub-step is the cheapest a sub-step gets. Each
-# kernel's cost a dispatch is its milliseconds over its dispatches in the table. Prints the split, the GPU seconds per
-# simulated second and the real-time factor (simulated over GPU seconds; a bound, as the wall adds the host's time).
+# kernel's cost a dispatch is its milliseconds over the dispatches that ran groups (the table's "ran" column): the rounds
+# a solve records beyond its convergence dispatch no groups, and counting them would cheapen a round. A table printed
+# before that column (the committed H200 profiles) has only all dispatches to divide by, which understates a round by
+# the share of its rounds that were empty; the estimate says which it read. Prints the split, the GPU seconds per simulated second and the real-time factor (simulated over
+# GPU seconds; a bound, as the wall adds the host's time).
 #   Headless/tools/realtime-estimate.sh FILE SUBSTEP_MS DENSITY_ITERATIONS DIVERGENCE_ITERATIONS
 # e.g. the 1M slice (LockExchangeSliceProbe) on the H200's profile:
 #   Headless/tools/realtime-estimate.sh Headless/figures/gpu-h200-realtime.txt 1.3889 7.3 6.2
@@ -31,8 +34,11 @@ awk -v file="$file" -v step="$step" -v nd="$density" -v nv="$divergence" '
     /^solver: DFSPH/ { dfsph = 1 }
     /^solver: / && !/^solver: DFSPH/ { dfsph = 0 }
     dfsph && !done && /^Per kernel at / { inTable = 1; particles = $4; next }
-    inTable && /^\| [A-Za-z]/ && $2 != "kernel" {
-        name = $2; calls[name] = $4; ms[name] = $6; order[++kernels] = name; next
+    inTable && $2 == "kernel" { ranColumn = ($6 == "ran"); next }
+    inTable && /^\| [A-Za-z]/ {
+        name = $2; order[++kernels] = name
+        if (ranColumn) { calls[name] = $6; ms[name] = $8 } else { calls[name] = $4; ms[name] = $6 }
+        next
     }
     inTable && /^$/ && kernels > 0 { inTable = 0; done = 1 }
     END {
@@ -57,7 +63,8 @@ awk -v file="$file" -v step="$step" -v nd="$density" -v nv="$divergence" '
         divergenceSolve = (nv + 1) * divergenceRound + nv * apply
         substep = fixed + warm + densitySolve + divergenceSolve
         perSecond = 1000 / step
-        printf "profile: %s, DFSPH at %s particles\n", file, particles
+        printf "profile: %s, DFSPH at %s particles; %s\n", file, particles, ranColumn ? "each kernel'"'"'s cost over the dispatches that ran groups" \
+            : "a table without the ran column: each kernel'"'"'s cost over all its dispatches, a converged solve'"'"'s empty rounds among them"
         printf "fixed a sub-step: %.3f ms (%s)\n", fixed, list
         printf "warm starts: %.3f ms (2 x ApplyStiffness %.3f)\n", warm, apply
         printf "a correction: constant density %.3f ms (DensitySolveError + BoundarySolveError + SolveFinal %.3f, ApplyStiffness %.3f), divergence-free %.3f ms (%.3f + %.3f)\n", densityRound + apply, densityRound, apply, divergenceRound + apply, divergenceRound, apply

@@ -34,8 +34,13 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
     /// <param name="FrameWallMs">Wall ms per sub-step when a 60 Hz frame's sub-steps are recorded and submitted
     /// together, as the simulation steps a frame: the host cost of a submit and wait is shared by the frame.</param>
     /// <param name="FrameSubsteps">Sub-steps of dt in one 60 Hz frame.</param>
+    /// <param name="Kernels">Per kernel, a sub-step: the dispatches recorded, those of them that ran groups (DFSPH's solves
+    /// record rounds they may not need, <see cref="FluidSimulation.SolveDispatchesThatRun"/>) and their milliseconds.</param>
+    /// <param name="Solves">DFSPH: the diagnostics of the timed sub-steps, whose solves' mean corrections and cut-off shares
+    /// say which dispatches ran; null under WCSPH.</param>
     public sealed record Row(int Particles, string Plan, double WallMs, double GpuMs, IReadOnlyDictionary<string, double> PassMs,
-        IReadOnlyList<(string Kernel, int Dispatches, double Ms)> Kernels, float TimeStep, bool Finite, double FrameWallMs, int FrameSubsteps, int Lanes)
+        IReadOnlyList<(string Kernel, int Dispatches, double Ran, double Ms)> Kernels, float TimeStep, bool Finite, double FrameWallMs, int FrameSubsteps, int Lanes,
+        DiagnosticsReport? Solves)
     {
         /// <summary>GPU ms a 60 Hz frame costs: the sub-step's GPU time times the frame's sub-steps.</summary>
         public double FrameGpuMs => GpuMs * FrameSubsteps;
@@ -227,6 +232,8 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
     {
         float dt = sim.TimeStep.StableTimeStep(out _);
         WarmUp(sim, device, dt);
+        bool dfsph = sim.Plan.PressureSolver == PressureSolver.Dfsph;
+        if (dfsph) sim.ReadDiagnostics(); // the solves' counts start again here, so the next report covers the timed sub-steps alone
         var pass = Passes.ToDictionary(p => p, _ => 0.0);
         var kernels = new Dictionary<string, (int Dispatches, double Ms)>();
         double wall = 0, gpu = 0;
@@ -248,6 +255,10 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
                     kernels[kernel] = (k.Dispatches + 1, k.Ms + ms);
                 }
         }
+        DiagnosticsReport? solves = dfsph ? sim.ReadDiagnostics() : null;
+        var ran = solves == null ? new Dictionary<string, double>()
+            : FluidSimulation.SolveDispatchesThatRun(solves.DensitySolveIterations, solves.DensitySolvesCutOff, solves.DivergenceSolveIterations,
+                solves.DivergenceSolvesCutOff).ToDictionary(k => k.Kernel, k => k.Dispatches);
         // The same sub-steps again, a frame at a time: what a running simulation pays per sub-step.
         int frameSubsteps = Math.Max(1, (int)Math.Ceiling(FrameSizing.FrameSeconds / dt));
         int frames = Math.Max(1, options.Steps / frameSubsteps);
@@ -259,8 +270,12 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         int n = options.Steps;
         return new Row(sim.ParticleCount, sim.Plan.ToString(), wall / n, gpu / n,
             pass.Where(p => sim.Plan.Runs(p.Key)).ToDictionary(p => p.Key, p => p.Value / n),
-            kernels.OrderByDescending(k => k.Value.Ms).Select(k => (k.Key, (int)Math.Round((double)k.Value.Dispatches / n), k.Value.Ms / n)).ToList(),
-            dt, report.NanCount == 0 && report.OutsideCount == 0, frameWall, frameSubsteps, sim.LanesPerParticle);
+            kernels.OrderByDescending(k => k.Value.Ms).Select(k =>
+            {
+                double dispatches = (double)k.Value.Dispatches / n;
+                return (k.Key, (int)Math.Round(dispatches), ran.TryGetValue(k.Key, out double r) ? r : dispatches, k.Value.Ms / n);
+            }).ToList(),
+            dt, report.NanCount == 0 && report.OutsideCount == 0, frameWall, frameSubsteps, sim.LanesPerParticle, solves);
     }
 
     static void StepAndWait(FluidSimulation sim, IComputeDevice device, float dt, int substeps = 1)
@@ -288,13 +303,22 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         if (last != null && last.Kernels.Count > 0)
         {
             b.AppendLine();
-            b.AppendLine($"Per kernel at {last.Particles} particles (ms per sub-step, all dispatches of the kernel):");
+            b.AppendLine($"Per kernel at {last.Particles} particles (ms per sub-step, all dispatches of the kernel; ran: the dispatches that ran groups):");
             b.AppendLine();
-            b.AppendLine("| kernel | dispatches | ms | share |");
-            b.AppendLine("|---|---:|---:|---:|");
+            b.AppendLine("| kernel | dispatches | ran | ms | ms a dispatch that ran | share |");
+            b.AppendLine("|---|---:|---:|---:|---:|---:|");
             double total = last.Kernels.Sum(k => k.Ms);
-            foreach (var (kernel, dispatches, ms) in last.Kernels)
-                b.AppendLine(string.Format(C, "| {0} | {1} | {2:F3} | {3:P1} |", kernel, dispatches, ms, total > 0 ? ms / total : 0));
+            foreach (var (kernel, dispatches, ran, ms) in last.Kernels)
+                b.AppendLine(string.Format(C, "| {0} | {1} | {2:0.#} | {3:F3} | {4:F3} | {5:P1} |", kernel, dispatches, ran, ms, ran > 0 ? ms / ran : 0,
+                    total > 0 ? ms / total : 0));
+            if (last.Solves is { } solves)
+            {
+                b.AppendLine();
+                b.AppendLine(string.Format(C, "DFSPH over the timed sub-steps: {0:F1} constant-density and {1:F1} divergence-free corrections a sub-step "
+                    + "({2:P0} and {3:P0} of the solves cut off). A round recorded after its solve has converged dispatches no groups: a solve "
+                    + "of k corrections runs its error passes k + 1 times (k when cut off) and its correction k + 1 times, the warm start's first.",
+                    solves.DensitySolveIterations, solves.DivergenceSolveIterations, solves.DensitySolvesCutOff, solves.DivergenceSolvesCutOff));
+            }
         }
         return b.ToString();
     }

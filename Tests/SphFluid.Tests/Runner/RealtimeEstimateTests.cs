@@ -1,6 +1,11 @@
 using System.Diagnostics;
+using System.Globalization;
 using System.IO;
+using System.Linq;
+using System.Text.RegularExpressions;
 using NUnit.Framework;
+using SphFluid.Headless.Cli;
+using SphFluid.Headless.Runs;
 
 namespace SphFluid.Tests.Runner
 {
@@ -44,6 +49,34 @@ namespace SphFluid.Tests.Runner
             Assert.That(exitCode, Is.EqualTo(0), error);
             Assert.That(output, Does.Contain("12.837 ms GPU"));
             Assert.That(output, Does.Contain("200.0 sub-steps, 2.57 s GPU (1.37 s fixed and warm starts, 1.20 s solves); real-time factor at most 0.389x"));
+        }
+
+        /// <summary>A table the bench prints today carries the dispatches that ran, and a correction is costed by them: a
+        /// DFSPH bench of a small scene on lavapipe, whose ApplyStiffness the estimate must cost at its milliseconds over
+        /// the dispatches that ran, not over every dispatch recorded.</summary>
+        [Test]
+        public void ATableWithTheRanColumnCostsTheDispatchesThatRan()
+        {
+            var stdout = new StringWriter();
+            var bench = new BenchRun(BenchOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--solver", "dfsph", "--steps", "3", "--warmup", "2",
+                "--skip-savings", "--out", RunnerPaths.ScratchFolder("estimate-bench") }), stdout, new StringWriter())
+            {
+                Device = GpuTestDevice.Shared,
+            };
+            Assert.That(bench.Execute(), Is.EqualTo(0));
+            string table = Path.Combine(RunnerPaths.ScratchFolder("estimate-table"), "bench.txt");
+            File.WriteAllText(table, stdout.ToString());
+            var apply = bench.Rows[^1].Kernels.Single(k => k.Kernel == "ApplyStiffness");
+            Assert.That(apply.Ran, Is.LessThan(apply.Dispatches), "the budget records rounds the solves did not need");
+
+            var (exitCode, output, error) = Estimate(table, "5", "2", "2");
+            Assert.That(exitCode, Is.EqualTo(0), error);
+            Assert.That(output, Does.Contain("each kernel's cost over the dispatches that ran groups"));
+            // The table's rounding: ms to three places, ran to one.
+            var row = Regex.Match(stdout.ToString(), @"^\| ApplyStiffness \| \d+ \| ([0-9.]+) \| ([0-9.]+) \|", RegexOptions.Multiline);
+            Assert.That(row.Success, Is.True, "the bench's ApplyStiffness row");
+            double perRun = double.Parse(row.Groups[2].Value, CultureInfo.InvariantCulture) / double.Parse(row.Groups[1].Value, CultureInfo.InvariantCulture);
+            Assert.That(output, Does.Contain($"warm starts: {2 * perRun:F3} ms (2 x ApplyStiffness {perRun:F3})"));
         }
 
         [TestCase(new[] { Profile, "5", "2" }, "usage: realtime-estimate.sh FILE SUBSTEP_MS DENSITY_ITERATIONS DIVERGENCE_ITERATIONS")]

@@ -146,6 +146,8 @@ namespace SphFluid.Tests.Runner
             Assert.That(bench.Rows.Count, Is.EqualTo(2));
             Assert.That(bench.Rows[0].Particles, Is.EqualTo(150).Within(15));
             Assert.That(stdout.ToString(), Does.Contain("| particles | lanes | dt (ms) | wall ms | GPU ms | wall ms in a frame (sub-steps) | GPU ms per 60 Hz frame |"));
+            Assert.That(stdout.ToString(), Does.Contain("| kernel | dispatches | ran | ms | ms a dispatch that ran | share |"));
+            Assert.That(bench.Rows[^1].Kernels.All(k => k.Ran == k.Dispatches), Is.True, "under WCSPH every dispatch runs groups");
             foreach (var row in bench.Rows)
             {
                 Assert.That(row.FrameSubsteps, Is.EqualTo((int)Math.Ceiling(1.0 / 60.0 / row.TimeStep)), "a 60 Hz frame's sub-steps");

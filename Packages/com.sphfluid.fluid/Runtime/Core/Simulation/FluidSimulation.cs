@@ -139,10 +139,10 @@ namespace SphFluid.Simulation
             _predictVelocity = _solver.FindKernel("PredictVelocity");
             _beginDensitySolve = _solver.FindKernel("BeginDensitySolve");
             _beginDivergenceSolve = _solver.FindKernel("BeginDivergenceSolve");
-            _densitySolveError = _solver.FindKernel("DensitySolveError");
-            _divergenceSolveError = _solver.FindKernel("DivergenceSolveError");
+            _densitySolveError = _solver.FindKernel(DensitySolveErrorKernel);
+            _divergenceSolveError = _solver.FindKernel(DivergenceSolveErrorKernel);
             _solveFinal = _solver.FindKernel("SolveFinal");
-            _applyStiffness = _solver.FindKernel("ApplyStiffness");
+            _applyStiffness = _solver.FindKernel(ApplyStiffnessKernel);
             _drift = _solver.FindKernel("Drift");
             _divergenceRate = _solver.FindKernel("DivergenceRate");
             _findNeighbours = _solver.FindKernel("FindNeighbours");
@@ -152,7 +152,7 @@ namespace SphFluid.Simulation
             _applyShift = _solver.FindKernel("ApplyShift");
             _boundaryDensityFactor = _solver.FindKernel("BoundaryDensityFactor");
             _boundaryBeginSolve = _solver.FindKernel("BoundaryBeginSolve");
-            _boundarySolveError = _solver.FindKernel("BoundarySolveError");
+            _boundarySolveError = _solver.FindKernel(BoundarySolveErrorKernel);
             _densityRate = _solver.FindKernel("DensityRate");
             _continuityDensity = _solver.FindKernel("ContinuityDensity");
             _deltaSph = !_divergenceFree && _scene.Settings.WcsphDensity == WcsphDensity.DeltaSph;
@@ -584,6 +584,31 @@ namespace SphFluid.Simulation
                 _device.Dispatch(_solver, _solveFinal, 1, 1, 1);
                 _device.DispatchIndirect(_solver, _applyStiffness, _buffers.SolverArguments, 0);
             }
+        }
+
+        const string DensitySolveErrorKernel = "DensitySolveError", DivergenceSolveErrorKernel = "DivergenceSolveError",
+            BoundarySolveErrorKernel = "BoundarySolveError", ApplyStiffnessKernel = "ApplyStiffness";
+
+        /// <summary>
+        /// Of the indirect dispatches a DFSPH sub-step records for its two solves (<see cref="Solve"/>), how many run groups,
+        /// by kernel. Per-dispatch timings count the empty rounds that the budget keeps in reserve beside those that ran,
+        /// so a kernel's milliseconds over its dispatches understate what a running one costs wherever the solve converges
+        /// well within its rounds. A solve of k corrections runs its error passes k + 1 times (the last finds it converged)
+        /// or k times when its rounds run out first, and its correction k + 1 times, the warm start's first. Takes each
+        /// solve's mean corrections and share cut off (<see cref="DiagnosticsReport"/>); SolveFinal and the solves' set-up
+        /// kernels are plain dispatches that always run.
+        /// </summary>
+        public static IReadOnlyList<(string Kernel, double Dispatches)> SolveDispatchesThatRun(float densityIterations, float densityCutOff,
+            float divergenceIterations, float divergenceCutOff)
+        {
+            double densityErrors = densityIterations + 1.0 - densityCutOff, divergenceErrors = divergenceIterations + 1.0 - divergenceCutOff;
+            return new[]
+            {
+                (DensitySolveErrorKernel, densityErrors),
+                (DivergenceSolveErrorKernel, divergenceErrors),
+                (BoundarySolveErrorKernel, densityErrors + divergenceErrors),
+                (ApplyStiffnessKernel, densityIterations + divergenceIterations + 2.0),
+            };
         }
 
         /// <summary>Sort by cell, then density and pressure, normals, forces: a valid acceleration for the
