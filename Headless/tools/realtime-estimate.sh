@@ -9,11 +9,11 @@
 # rounds and n corrections. Every other kernel of the table runs a fixed number of times a sub-step whatever the
 # iterations (the sort, FindNeighbours, DensityFactor, NonPressureForces, the drift): the fixed part. A solve makes
 # two corrections at the least (SolveFinal), so 2 and 2 at the longest sub-step is the cheapest a sub-step gets. Each
-# kernel's cost a dispatch is its milliseconds over the dispatches that ran groups (the table's "ran" column): the rounds
-# a solve records beyond its convergence dispatch no groups, and counting them would cheapen a round. A table printed
-# before that column (the committed H200 profiles) has only all dispatches to divide by, which understates a round by
-# the share of its rounds that were empty; the estimate says which it read. Prints the split, the GPU seconds per simulated second and the real-time factor (simulated over
-# GPU seconds; a bound, as the wall adds the host's time).
+# kernel's cost a dispatch is its milliseconds over the dispatches that ran groups (the table's "ran" column): the
+# rounds a solve records beyond its convergence dispatch no groups, and counting them would cheapen a round. A table
+# printed before that column (the committed H200 profiles) has only all dispatches to divide by, which understates a
+# round by the share of its rounds that were empty; the estimate says which it read. Prints the split, the GPU seconds
+# per simulated second and the real-time factor (simulated over GPU seconds; a bound, as the wall adds the host's time).
 #   Headless/tools/realtime-estimate.sh FILE SUBSTEP_MS DENSITY_ITERATIONS DIVERGENCE_ITERATIONS
 # e.g. the 1M slice (LockExchangeSliceProbe) on the H200's profile:
 #   Headless/tools/realtime-estimate.sh Headless/figures/gpu-h200-realtime.txt 1.3889 7.3 6.2

@@ -12,8 +12,8 @@ namespace SphFluid.Tests.Physics
     /// <summary>
     /// The collapse of a water column of width a and height 2a against the end wall of a tank ("An experimental
     /// study of the collapse of liquid columns on a rigid horizontal plane", Martin and Moyce 1952), at two
-    /// resolutions, a / s = 8 and 12 (probes add finer ones). The surge front x (from the back wall) is compared as Z = x / a against
-    /// T = t sqrt(2 g / a), the paper's variables, at the times of the paper's measurements for the a = 2.25 in
+    /// resolutions, a / s = 8 and 12 (probes add finer ones). The surge front x (from the back wall) is compared as
+    /// Z = x / a against T = t sqrt(2 g / a), the paper's variables, at the times of the paper's measurements for the a = 2.25 in
     /// column (its figure 3, n^2 = 2). The tank is a slice a / 2 deep with slip walls, standing in for the paper's
     /// two-dimensional collapse. The front is the farthest particle centre on the floor (<see cref="DamBreakFront"/>)
     /// plus half a spacing: the lattice's outermost centres sit half a spacing inside the fluid's edge.
