@@ -53,17 +53,10 @@ namespace SphFluid.Tests.Physics
                 frames++;
                 if (frames == 30) sim.ReadDiagnostics(); // the iteration means below cover the last half second
                 if (frames <= 30) continue;
-                // The pressure each solve applied in the frame's last sub-step, p = q delta^2: the constant-density solve's in
-                // Densities.y (its readout), the divergence-free solve's summed q in WarmStart.y, by particle id.
                 sim.Particles.GetData(particles);
                 sim.Densities.GetData(densities);
                 sim.WarmStart.GetData(warmStart);
-                var total = new Vector4[densities.Length];
-                for (int i = 0; i < densities.Length; i++)
-                {
-                    float delta = densities[i].Z;
-                    total[i] = new Vector4(0f, densities[i].Y + warmStart[particles[i].Id].Y * delta * delta, 0f, 0f);
-                }
+                var total = TankMeasures.AppliedPressure(particles, densities, warmStart, PressureSolver.Dfsph);
                 double surface = Floor + TankMeasures.ColumnHeight(particles, Floor);
                 _densitySolveGradient += TankMeasures.PressureGradient(particles, densities, Floor + 0.75 * support, surface - 1.25 * support);
                 _pressureGradient += TankMeasures.PressureGradient(particles, total, Floor + 0.75 * support, surface - 1.25 * support);

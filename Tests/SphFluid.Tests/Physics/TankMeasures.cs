@@ -28,6 +28,23 @@ namespace SphFluid.Tests.Physics
             return sxy / sxx;
         }
 
+        /// <summary>
+        /// Each particle's pressure in <see cref="PressureGradient"/>'s layout (Y): WCSPH's from its equation of state
+        /// (Densities.y); under DFSPH what both solves applied in the last sub-step, p = q delta^2, the constant-density
+        /// solve's in Densities.y (its readout) and the divergence-free solve's summed q in the warm start's y, by id.
+        /// </summary>
+        public static Vector4[] AppliedPressure(Particle[] particles, Vector4[] densities, Vector2[] warmStart, PressureSolver solver)
+        {
+            var pressures = new Vector4[particles.Length];
+            for (int i = 0; i < particles.Length; i++)
+            {
+                float delta = densities[i].Z;
+                float divergenceFree = solver == PressureSolver.Dfsph ? warmStart[particles[i].Id].Y * delta * delta : 0f;
+                pressures[i] = new Vector4(0f, densities[i].Y + divergenceFree, 0f, 0f);
+            }
+            return pressures;
+        }
+
         public static double MaxSpeed(Particle[] particles) => particles.Max(p => (double)p.Velocity.Length());
 
         /// <summary>The smallest distance from a particle centre to a face of the container, m (inside: positive).</summary>
