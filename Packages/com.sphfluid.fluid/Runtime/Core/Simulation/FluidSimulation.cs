@@ -225,6 +225,18 @@ namespace SphFluid.Simulation
         /// <summary>Per particle: the particle shift (xyz) of the last sub-step when shifting is on, m (ParticleShifting.hlsl).</summary>
         public IComputeBuffer Shifts => _buffers.Shifts;
 
+        /// <summary>DFSPH: the last error pass's sums of its particles' errors, one per phase and thread group, phase-major
+        /// (<c>[phase * SolverPartialGroups + group]</c>), which SolveFinal folds into each phase's average error to stop the
+        /// solve (DivergenceFree.hlsl's StoreGroupErrors).</summary>
+        public IComputeBuffer SolverPartials => _buffers.SolverPartials;
+
+        /// <summary>Thread groups of a DFSPH error pass, each of which writes one sum per phase to <see cref="SolverPartials"/>:
+        /// <see cref="LanesPerParticle"/> threads for each particle.</summary>
+        public int SolverPartialGroups => ComputeDispatch.GroupsFor(ParticleCount * LanesPerParticle, ParticleThreads);
+
+        /// <summary>Threads of a group of the solver's particle passes (PARTICLE_THREADS in FluidSolver.compute).</summary>
+        public const uint ParticleThreads = 128;
+
         /// <summary>The boundary particles (<see cref="BoundaryParticle"/>) in world space, sorted by grid cell.</summary>
         public IComputeBuffer BoundaryParticles => _buffers.BoundarySorted;
 

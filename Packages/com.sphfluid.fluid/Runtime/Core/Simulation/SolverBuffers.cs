@@ -24,7 +24,6 @@ namespace SphFluid.Simulation
     {
         /// <summary>Words of the solver state: two solve slots of 8 words and the open solve's slot (FluidSolver.compute).</summary>
         public const int SolverStateWords = 18;
-        const uint ParticleThreads = 128; // PARTICLE_THREADS in FluidSolver.compute
 
         /// <summary>When a binding must be made again.</summary>
         public enum Group
@@ -168,7 +167,7 @@ namespace SphFluid.Simulation
             SolverStiffness = Zeroed("FluidSimulation.SolverStiffness", n, 4);
             WarmStart = Zeroed("FluidSimulation.WarmStart", n, 8);
             // One error sum per phase and group of the laned error pass, at the most lanes a particle can be given.
-            SolverPartials = Zeroed("FluidSimulation.SolverPartials", phaseTable.Length * ComputeDispatch.GroupsFor(n * NeighbourLanes.Max, ParticleThreads), 4);
+            SolverPartials = Zeroed("FluidSimulation.SolverPartials", phaseTable.Length * ComputeDispatch.GroupsFor(n * NeighbourLanes.Max, FluidSimulation.ParticleThreads), 4);
             SolverState = Zeroed("FluidSimulation.SolverState", SolverStateWords, 4);
             SolverArguments = device.CreateArgumentsBuffer("FluidSimulation.SolverArguments", 6);
             // The solve's laned group counts come from BeginSolve on the GPU before any dispatch reads them; until
