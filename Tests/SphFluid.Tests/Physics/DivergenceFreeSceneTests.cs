@@ -62,6 +62,7 @@ namespace SphFluid.Tests.Physics
         /// face at an edge, with 122 centres within 0.35 spacings at 1 s (WallCreepProbe). With the walls' pressure held at
         /// least at the fluid's (WallStepAtLeast) 13 are, and the closest is 0.256 spacings from a face.</summary>
         [Test]
+        [Category(TestProcesses.LongDfsphRuns)]
         public void OilAndWaterAtTheTopOfTheBand_KeepsItsCentresOffTheWalls()
         {
             string path = RunnerPaths.EditedScene("OilAndWater", "SmoothingRadius: 0.04275", "SmoothingRadius: 0.0435");
@@ -97,6 +98,7 @@ namespace SphFluid.Tests.Physics
         /// (BoundarySampling.OwnNumberDensities) they read up to 22 % above rest, and the constraint pushed the fluid off the
         /// still sphere: 8.2 m/s and 2.1 J of energy gained by 0.13 s, unhealthy at 0.37 s.</summary>
         [Test]
+        [Category(TestProcesses.LongDfsphRuns)]
         public void SphereWake_StillSphereLeavesThePoolAtRest_AndTheDrivenOneRunsClean()
         {
             var loaded = SceneLoader.Load(RunnerPaths.Scene("SphereWake"), RunnerPaths.Project);
@@ -155,12 +157,23 @@ namespace SphFluid.Tests.Physics
         /// Wendland C2 at 2.85 spacings relaxed to 0.3, passes. It then took 22 minutes of lavapipe for 6 s and ran only by
         /// hand; with the neighbour lists (SphNeighbourhood.hlsl) a sub-step costs a third, and the run stops at the first
         /// measure that meets every bar.
-        /// <para>With the Chebyshev-accelerated solve (<see cref="SolverIteration"/>, as <c>--solver-iteration chebyshev</c> sets it)
-        /// the same bars hold (4.2 constant-density iterations a sub-step against Jacobi's 15).</para></summary>
+        /// The scene's own solve, Jacobi's.</summary>
+        [Test]
         [Category(TestProcesses.LongDfsphRuns)]
-        [TestCase(SolverIteration.Jacobi, TestName = "DefaultOilAndWater_LayersFlatWithin6Seconds_AndNoOilStaysOnTheFloor")]
-        [TestCase(SolverIteration.Chebyshev, TestName = "DefaultOilAndWater_LayersFlatWithin6Seconds_AndNoOilStaysOnTheFloor_Chebyshev")]
-        public void DefaultOilAndWater_LayersFlatWithin6Seconds_AndNoOilStaysOnTheFloor(SolverIteration iteration)
+        public void DefaultOilAndWater_LayersFlatWithin6Seconds_AndNoOilStaysOnTheFloor() => LayersFlatWithin6Seconds(SolverIteration.Jacobi);
+
+        /// <summary>The same bars with the Chebyshev-accelerated solve (<see cref="SolverIteration"/>, as
+        /// <c>--solver-iteration chebyshev</c> sets it), which the scene leaves off: met at 6.0 s (layering 0.997, no floor
+        /// oil, 0.9 mm; 4.5 constant-density iterations a sub-step against Jacobi's 14.5). Run by name (`bash
+        /// Headless/test.sh --filter "Name~LayersFlatWithin6Seconds_AndNoOilStaysOnTheFloor_Chebyshev"`, six minutes of
+        /// lavapipe): with it CI ran past its 20-minute goal (Headless/docs/known-limits.md), and CI holds the accelerated
+        /// solve to the resting tank (DivergenceFreeTankTests), the column depths (SolverIterationScalingTests) and this
+        /// scene's first frames at 1 % (LooseToleranceTests).</summary>
+        [Test]
+        [Explicit("six minutes of lavapipe: run it by name (CI runs the Jacobi solve's)")]
+        public void DefaultOilAndWater_LayersFlatWithin6Seconds_AndNoOilStaysOnTheFloor_Chebyshev() => LayersFlatWithin6Seconds(SolverIteration.Chebyshev);
+
+        static void LayersFlatWithin6Seconds(SolverIteration iteration)
         {
             var scene = SceneLoader.Load(RunnerPaths.Scene("OilAndWater"), RunnerPaths.Project).Description;
             Assert.That(new SolverChoice { Solver = PressureSolver.Dfsph, Iteration = iteration }.ApplyTo(scene, "DFSPH OilAndWater"), Is.Null,
