@@ -14,7 +14,6 @@ namespace SphFluid.Tests.Physics
     /// (10.2 and 13.0 %) or no XSPH (9.1 and 11.0 %) leave it (hand edits of this fixture's settings, at e6e1d57). What is
     /// checked is what holds for any fluid here and that the front is not behind the paper's.
     /// </summary>
-    [Category(TestProcesses.LongDfsphRuns)] // a short run, in the process that ended first (TestProcesses)
     public sealed class DivergenceFreeDamBreakTests : DamBreakCollapse
     {
         protected override void Configure(FluidSettings settings) => settings.PressureSolver = PressureSolver.Dfsph;

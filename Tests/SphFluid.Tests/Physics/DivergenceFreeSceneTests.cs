@@ -29,7 +29,6 @@ namespace SphFluid.Tests.Physics
         }
 
         [Test]
-        [Category(TestProcesses.LongDfsphRuns)] // 23 s, moved to the process that ended half a minute first (TestProcesses)
         public void DamBreak_StaysFiniteAndLosesNothingForTwoSeconds()
         {
             var scene = DivergenceFree("DamBreak");
