@@ -67,6 +67,7 @@ namespace SphFluid.Tests.Physics
             {
                 var scene = Column(perWidth);
                 Configure(scene.Settings);
+                var wall = System.Diagnostics.Stopwatch.StartNew();
                 using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
                 var particles = new Particle[sim.ParticleCount];
                 var frame = new GravityFrame(scene.Container, scene.Settings.Gravity);
@@ -89,7 +90,7 @@ namespace SphFluid.Tests.Physics
                 Fronts[perWidth] = Measured.Select(m => Interpolate(times, fronts, m.T / TimeScale) / A).ToArray();
                 TestContext.Progress.WriteLine($"dam break ({Label}) a/s = {perWidth}: N = {sim.ParticleCount}, {sim.BoundaryCount} boundary; Z at T " +
                     string.Join(", ", Measured.Select((m, k) => $"{m.T:F2}: {Fronts[perWidth][k]:F3} (M&M {m.Z:F3}, {100 * (Fronts[perWidth][k] / m.Z - 1):+0.0;-0.0} %)")) +
-                    $"; {_reports[perWidth]}");
+                    $"; {_reports[perWidth]}; {wall.Elapsed.TotalSeconds:F0} s of wall");
             }
         }
 
