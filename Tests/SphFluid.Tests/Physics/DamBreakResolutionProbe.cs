@@ -10,7 +10,7 @@ namespace SphFluid.Tests.Physics
     /// Measured (lavapipe, e6e1d57), the lead over the paper at T = 3.35: WCSPH without artificial viscosity 7.0, 8.0,
     /// 8.6 and 9.7 %, DFSPH 12.7, 9.6, 10.5 and 11.1 %, so the two solvers of the same nearly inviscid fluid close on
     /// each other as the particles get finer (1.4 % of the paper's front apart at 24); WCSPH as shipped 1.8, 2.3, 3.0 and
-    /// 3.6 %, its artificial viscosity shrinking with the spacing; with delta-SPH (b9ae5cd) 3.3, 4.7, 5.4 and 5.5 %,
+    /// 3.6 %, its artificial viscosity shrinking with the spacing; with delta-SPH (19d0817) 3.3, 4.7, 5.4 and 5.5 %,
     /// converged by 16, for a quarter more wall time. Run by name: <c>bash Headless/test.sh --filter
     /// "FullyQualifiedName~DamBreakResolutionProbe"</c> (about ten minutes on lavapipe).
     /// </summary>
