@@ -22,10 +22,19 @@ public sealed class SolverChoice
     /// <summary>How DFSPH's solves iterate instead of the scene's; null = the scene's.</summary>
     public SolverIteration? Iteration { get; init; }
 
+    /// <summary>How WCSPH finds each particle's density instead of the scene's; null = the scene's.</summary>
+    public WcsphDensity? Density { get; init; }
+
     public static readonly IReadOnlyDictionary<string, SolverIteration> IterationWords = new Dictionary<string, SolverIteration>
     {
         ["jacobi"] = SolverIteration.Jacobi,
         ["chebyshev"] = SolverIteration.Chebyshev,
+    };
+
+    public static readonly IReadOnlyDictionary<string, WcsphDensity> DensityWords = new Dictionary<string, WcsphDensity>
+    {
+        ["summation"] = WcsphDensity.Summation,
+        ["delta-sph"] = WcsphDensity.DeltaSph,
     };
 
     public static readonly IReadOnlyDictionary<string, PressureSolver> Words = new Dictionary<string, PressureSolver>
@@ -35,8 +44,8 @@ public sealed class SolverChoice
     };
 
     /// <summary>Applies the choice to the scene's settings (a copy, so the loaded scene is untouched). A DFSPH setting
-    /// for a run that ends up on WCSPH would be silently ignored, so it is refused by name. Returns the line that says
-    /// what <see cref="FitSupport"/> changed, or null.</summary>
+    /// for a run that ends up on WCSPH, or a WCSPH one for a DFSPH run, would be silently ignored, so it is refused by
+    /// name. Returns the line that says what <see cref="FitSupport"/> changed, or null.</summary>
     public string? ApplyTo(FluidSceneDescription scene, string command)
     {
         var settings = scene.Settings.Clone();
@@ -47,6 +56,10 @@ public sealed class SolverChoice
             settings.DivergenceTolerance = (float)DfsphOnly(settings, command, "--divergence-tolerance", DivergenceTolerance.Value);
         if (Iteration.HasValue)
             settings.SolverIteration = DfsphOnly(settings, command, "--solver-iteration", Iteration.Value);
+        if (Density.HasValue)
+            settings.WcsphDensity = settings.PressureSolver == PressureSolver.Wcsph ? Density.Value
+                : throw new UsageException($"{command}: --wcsph-density applies to the WCSPH solver only; this run uses DFSPH "
+                    + "(add --solver wcsph, or set Fluid.pressureSolver in the scene)");
         scene.Settings = settings;
         return Solver.HasValue ? FitSupport(settings, command) : null;
     }
@@ -89,19 +102,21 @@ public sealed class SolverChoice
                 : simulation == null || simulation.AcceleratesDensitySolve ? "Chebyshev-accelerated"
                 : "Chebyshev-accelerated divergence-free solve, Jacobi constant-density solve at this tolerance and depth",
             settings.SolverRelaxation)
-        : string.Format(C, "solver: WCSPH (Tait stiffness {0:G4} Pa, gamma {1:G3})", settings.Stiffness, settings.Gamma);
+        : string.Format(C, "solver: WCSPH (Tait stiffness {0:G4} Pa, gamma {1:G3}, {2})", settings.Stiffness, settings.Gamma,
+            settings.WcsphDensity == WcsphDensity.DeltaSph ? "delta-SPH density" : "summation density");
 
     public static string ShortName(PressureSolver solver) => solver == PressureSolver.Dfsph ? "DFSPH" : "WCSPH";
 }
 
-/// <summary>The <c>--solver</c>, <c>--density-tolerance</c>, <c>--divergence-tolerance</c> and <c>--solver-iteration</c>
-/// options, shared by the commands that run the solver.</summary>
+/// <summary>The <c>--solver</c>, <c>--density-tolerance</c>, <c>--divergence-tolerance</c>, <c>--solver-iteration</c> and
+/// <c>--wcsph-density</c> options, shared by the commands that run the solver.</summary>
 public sealed class SolverOptions
 {
     readonly Option<PressureSolver> _solver;
     readonly Option<double> _densityTolerance;
     readonly Option<double> _divergenceTolerance;
     readonly Option<SolverIteration> _iteration;
+    readonly Option<WcsphDensity> _density;
 
     public SolverOptions(string command)
     {
@@ -115,6 +130,10 @@ public sealed class SolverOptions
         _iteration = OptionKinds.Choice(command, "--solver-iteration", SolverChoice.IterationWords,
             "DFSPH: how each solve iterates, overriding the scene's Fluid.solverIteration: jacobi (compression-only relaxed "
             + "Jacobi steps) or chebyshev (accelerated, projected steps; default: the scene's; refused when the run uses WCSPH)");
+        _density = OptionKinds.Choice(command, "--wcsph-density", SolverChoice.DensityWords,
+            "WCSPH: how each particle's density is found, overriding the scene's WcsphDensity: summation (the kernel sum over "
+            + "its neighbours, every sub-step) or delta-sph (carried, integrated with delta-SPH's diffusion, started hydrostatic; "
+            + "default: the scene's; refused when the run uses DFSPH)");
     }
 
     public void AddTo(Command command)
@@ -123,6 +142,7 @@ public sealed class SolverOptions
         command.Add(_densityTolerance);
         command.Add(_divergenceTolerance);
         command.Add(_iteration);
+        command.Add(_density);
     }
 
     public SolverChoice Read(ParseResult r) => new()
@@ -131,5 +151,6 @@ public sealed class SolverOptions
         DensityTolerance = r.GetResult(_densityTolerance) != null ? r.GetValue(_densityTolerance) : null,
         DivergenceTolerance = r.GetResult(_divergenceTolerance) != null ? r.GetValue(_divergenceTolerance) : null,
         Iteration = r.GetResult(_iteration) != null ? r.GetValue(_iteration) : null,
+        Density = r.GetResult(_density) != null ? r.GetValue(_density) : null,
     };
 }

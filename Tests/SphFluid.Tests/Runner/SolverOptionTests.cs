@@ -7,7 +7,8 @@ using SphFluid.Simulation;
 
 namespace SphFluid.Tests.Runner
 {
-    /// <summary>--solver and DFSPH's tolerances: parsed, refused by name with their range, applied to the run and printed.</summary>
+    /// <summary>--solver, DFSPH's tolerances and WCSPH's density: parsed, refused by name with their range, applied to the
+    /// run and printed.</summary>
     public sealed class SolverOptionTests
     {
         static int Run(out string stderr, params string[] args)
@@ -49,6 +50,36 @@ namespace SphFluid.Tests.Runner
         {
             Assert.That(Run(out string err, "simulate", RunnerPaths.Scene("PlayModeTest"), option, value, "--steps", "1"), Is.EqualTo(ExitCodes.BadArguments));
             Assert.That(err, Does.Contain(option + " applies to the DFSPH solver only"));
+        }
+
+        [TestCase("simulate")]
+        [TestCase("bench")]
+        public void AnUnknownWcsphDensityIsRefusedWithTheChoices(string command)
+        {
+            Assert.That(Run(out string err, command, RunnerPaths.Scene("PlayModeTest"), "--wcsph-density", "riemann"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain($"{command}: --wcsph-density must be one of summation | delta-sph (was 'riemann')"));
+        }
+
+        [Test]
+        public void AWcsphDensityForADfsphRunIsRefusedInsteadOfIgnored()
+        {
+            Assert.That(Run(out string err, "simulate", RunnerPaths.Scene("PlayModeTest"), "--solver", "dfsph", "--wcsph-density", "delta-sph", "--steps", "1"),
+                Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain("--wcsph-density applies to the WCSPH solver only"));
+        }
+
+        [Test]
+        public void TheWcsphDensityOverridesTheScenesAndIsPrinted()
+        {
+            var scene = new FluidSceneDescription { Settings = new FluidSettings() };
+            Assert.That(scene.Settings.WcsphDensity, Is.EqualTo(WcsphDensity.Summation));
+
+            SimulateOptions.Parse(new[] { "x.unity", "--wcsph-density", "Delta-SPH" }).Solver.ApplyTo(scene, "simulate");
+
+            Assert.That(scene.Settings.WcsphDensity, Is.EqualTo(WcsphDensity.DeltaSph));
+            Assert.That(SolverChoice.Describe(scene.Settings), Does.EndWith("gamma 7, delta-SPH density)"));
+            Assert.That(SolverChoice.Describe(new FluidSettings()), Does.EndWith("gamma 7, summation density)"));
+            Assert.That(SimulateOptions.Parse(new[] { "x.unity" }).Solver.Density, Is.Null, "without --wcsph-density the scene's density runs");
         }
 
         [Test]
