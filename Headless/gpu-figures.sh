@@ -21,6 +21,10 @@
 #   layering  OilAndWater at its own size for 6.5 simulated seconds under WCSPH and under DFSPH with each of ITERATIONS,
 #             diagnostics every 0.5 s: the interface's tilt and the layering of issue #5, at a speed lavapipe cannot give
 #             (sphfluid simulate).
+#   experiments  each experiment the kit carries (gpu-kit.sh's EXPERIMENTS): bench at BENCH_PARTICLES under each of its
+#             solvers (DFSPH with EXPERIMENT_ITERATION, default chebyshev), once with the kit's own build on this tree and
+#             once with the experiment's assemblies on a copy of the tree with its patched files, no savings: the
+#             per-pass and per-kernel milliseconds a GPU gives each, side by side.
 # The stages are named as arguments, run in the order given (default: realtime bench pareto). Each step has a time
 # limit, so a slow step costs only itself. The environment can change the sizes, the solvers the bench stage times and
 # each step's limit in seconds: REALTIME_SCALES, PARETO_SCALES, ITERATIONS ("jacobi chebyshev"), BENCH_PARTICLES,
@@ -41,7 +45,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 stages=("$@")
 [ ${#stages[@]} -gt 0 ] || stages=(realtime bench pareto)
 for stage in "${stages[@]}"; do
-    case "$stage" in realtime|bench|pareto|scenes|layering) ;; *) echo "gpu-figures: a stage is realtime, bench, pareto, scenes or layering, not '$stage'" >&2; exit 2 ;; esac
+    case "$stage" in realtime|bench|pareto|scenes|layering|experiments) ;; *) echo "gpu-figures: a stage is realtime, bench, pareto, scenes, layering or experiments, not '$stage'" >&2; exit 2 ;; esac
 done
 realtime_scales="${REALTIME_SCALES:-24 60 240 481}"
 pareto_scales="${PARETO_SCALES:-24 60}"
@@ -62,6 +66,7 @@ slower_gpus="${SLOWER_GPUS:-3 16.7}"
 scenes_limit="${SCENES_LIMIT:-90}"
 layering_seconds="${LAYERING_SECONDS:-6.5}"
 layering_limit="${LAYERING_LIMIT:-150}"
+experiment_iteration="${EXPERIMENT_ITERATION:-chebyshev}"
 scene="Assets/FluidDemo/Scenes/OilAndWater.unity"
 cfl="$(awk '/^    CflNumber:/ { print $2; exit }' "$root/$scene")" # the scene's own, so the study runs one CFL number
 
@@ -110,6 +115,11 @@ for stage in "${stages[@]}"; do
     pareto) budget=$((budget + pareto_limit)) ;;
     scenes) budget=$((budget + scenes_limit * ($(echo "$scene_names" | wc -w) + 1))) ;;
     layering) budget=$((budget + (1 + $(echo "$iterations" | wc -w)) * layering_limit)) ;;
+    experiments)
+        # a bench of each experiment under each of its solvers, and one of the kit's own build under each solver
+        budget=$((budget + bench_limit * $(cat "$home"/experiments/*/solvers 2>/dev/null | wc -w)))
+        budget=$((budget + bench_limit * $(cat "$home"/experiments/*/solvers 2>/dev/null | tr ' ' '\n' | sort -u | grep -c . || true)))
+        ;;
     esac
 done
 if [ "$budget" -gt 600 ]; then
@@ -117,12 +127,20 @@ if [ "$budget" -gt 600 ]; then
 fi
 command -v nvidia-smi >/dev/null && nvidia-smi -L | tee -a "$log" || true
 
-step() { # seconds allowed, then sphfluid's arguments
+step() { # seconds allowed, then sphfluid's arguments; SPHFLUID_APP names another build's folder
     local limit=$1; shift
-    say "\$ sphfluid $*"
+    local app="${SPHFLUID_APP:-$home/app}"
+    say "\$ ${app#"$unpacked"/}/sphfluid $*"
     local code=0
-    timeout --kill-after=10 "$limit" "$home/app/sphfluid" "$@" >>"$log" 2>&1 || code=$?
+    timeout --kill-after=10 "$limit" "$app/sphfluid" "$@" >>"$log" 2>&1 || code=$?
     say "exit $code"
+}
+
+# bench at BENCH_PARTICLES of the scene under $2 (wcsph or dfsph) in the tree rooted at $1, into $scratch/$3
+experiment_bench() {
+    local solve=(--solver "$2")
+    if [ "$2" = dfsph ]; then solve+=(--solver-iteration "$experiment_iteration"); fi
+    step "$bench_limit" bench "$1/$scene" --particles "$bench_particles" "${solve[@]}" --skip-savings --out "$scratch/$3"
 }
 
 scratch="$unpacked/runs"
@@ -182,6 +200,28 @@ for stage in "${stages[@]}"; do
             step "$layering_limit" simulate "$scene" "${solve[@]}" --seconds "$layering_seconds" --diagnostics-every 0.5 \
                 --out "$scratch/layering-$run"
             if [ -f "$scratch/layering-$run/diagnostics.csv" ]; then cp "$scratch/layering-$run/diagnostics.csv" "$out/layering-$run.csv"; fi
+        done
+        ;;
+    experiments)
+        [ -d "$home/experiments" ] || { say "gpu-figures: the kit carries no experiments (gpu-kit.sh's EXPERIMENTS)"; continue; }
+        benched=" "
+        for dir in "$home"/experiments/*/; do
+            name="$(basename "$dir")"
+            tree="$scratch/tree-$name" app="$scratch/app-$name"
+            mkdir -p "$tree"
+            cp -r "$root/Assets" "$root/Packages" "$root/ProjectSettings" "$tree/"
+            cp -r "$dir/tree/." "$tree/"
+            cp -r "$home/app" "$app"
+            for dll in "$dir"/*.dll; do if [ -f "$dll" ]; then cp "$dll" "$app/"; fi; done
+            for solver in $(cat "$dir/solvers"); do
+                if [[ "$benched" != *" $solver "* ]]; then
+                    say "gpu-figures: the kit's own build, $solver"
+                    experiment_bench "$root" "$solver" "experiment-baseline-$solver"
+                    benched="$benched$solver "
+                fi
+                say "gpu-figures: experiment $name, $solver"
+                SPHFLUID_APP="$app" experiment_bench "$tree" "$solver" "experiment-$name-$solver"
+            done
         done
         ;;
     esac

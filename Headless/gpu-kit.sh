@@ -5,6 +5,11 @@
 # git) holding a self-contained linux-x64 build of sphfluid, glslangValidator and spirv-val (they compile the
 # .compute kernels there, as here), the Vulkan loader and the charts' font. Headless/gpu-figures.sh unpacks it there
 # and prints the GPU figures; a device call carries it with `carry: [".gpu"]`.
+# Each experiment named in EXPERIMENTS (NAME:SOLVERS, a patch of Headless/experiments and the solvers to bench it
+# under; default below: the ones measured on lavapipe and not yet on a GPU) goes in as experiments/NAME: the files its
+# patch changes, from a patched copy of the committed tree, and the assemblies built from that copy that differ from
+# the kit's own. Headless/gpu-figures.sh's experiments stage benches each beside the kit's own build. EXPERIMENTS=""
+# packs none.
 # It writes only .gpu/sphfluid-gpu.tar.xz (through a temporary name beside it) and a scratch folder it removes.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
@@ -26,6 +31,27 @@ loader="$(ldconfig -p | awk '/libvulkan\.so\.1 / && /x86-64/ { print $NF; exit }
 cp -L "$loader" "$top/lib/libvulkan.so.1"
 cp /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf "$top/"
 git -C "$root" describe --always --dirty >"$top/commit" 2>/dev/null || echo unknown >"$top/commit"
+
+for entry in ${EXPERIMENTS-half-support-cells:wcsph,dfsph cached-pair-gradients:dfsph}; do
+    name="${entry%%:*}" solvers="${entry#*:}"
+    patch="$root/Headless/experiments/$name.patch"
+    [ -f "$patch" ] || { echo "gpu-kit: EXPERIMENTS names $name, but $patch is missing" >&2; exit 2; }
+    [ "$solvers" != "$entry" ] || { echo "gpu-kit: EXPERIMENTS entry '$entry' is NAME:SOLVERS (e.g. $name:wcsph,dfsph)" >&2; exit 2; }
+    copy="$stage/copy-$name" into="$top/experiments/$name"
+    mkdir -p "$copy" "$into/tree"
+    git -C "$root" archive HEAD | tar -x -C "$copy"
+    (cd "$copy" && git apply "$patch") || { echo "gpu-kit: $name.patch does not apply to HEAD" >&2; exit 1; }
+    dotnet publish "$copy/Headless/SphFluid.Headless/SphFluid.Headless.csproj" -c Release -r linux-x64 --self-contained true \
+        -p:DebugType=none --artifacts-path "$stage/artifacts-$name" -o "$stage/app-$name" -nologo -v quiet -clp:ErrorsOnly >&2
+    for dll in "$stage/app-$name"/[Ss]ph[Ff]luid*.dll; do
+        cmp -s "$dll" "$top/app/$(basename "$dll")" || cp "$dll" "$into/"
+    done
+    (cd "$copy" && sed -n 's|^diff --git a/.* b/||p' "$patch" | while read -r file; do
+        if [ -f "$file" ]; then mkdir -p "$into/tree/$(dirname "$file")" && cp "$file" "$into/tree/$file"; fi
+    done)
+    echo "$solvers" | tr ',' ' ' >"$into/solvers"
+    echo "gpu-kit: experiment $name ($(cd "$into" && ls *.dll 2>/dev/null | tr '\n' ' ')and $(find "$into/tree" -type f | wc -l) patched files) for $solvers" >&2
+done
 
 mkdir -p "$kit"
 tar -C "$stage" -cf - sphfluid-gpu | xz -T0 -6 >"$archive.partial"
