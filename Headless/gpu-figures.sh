@@ -21,10 +21,13 @@
 #   layering  OilAndWater at its own size for 6.5 simulated seconds under WCSPH and under DFSPH with each of ITERATIONS,
 #             diagnostics every 0.5 s: the interface's tilt and the layering of issue #5, at a speed lavapipe cannot give
 #             (sphfluid simulate).
-#   experiments  each experiment the kit carries (gpu-kit.sh's EXPERIMENTS): bench at BENCH_PARTICLES under each of its
-#             solvers (DFSPH with EXPERIMENT_ITERATION, default chebyshev), once with the kit's own build on this tree and
-#             once with the experiment's assemblies on a copy of the tree with its patched files, no savings: the
-#             per-pass and per-kernel milliseconds a GPU gives each, side by side.
+#   experiments  each experiment the kit carries (gpu-kit.sh's EXPERIMENTS), or those of EXPERIMENT_NAMES: bench at
+#             BENCH_PARTICLES under each of its solvers (DFSPH with EXPERIMENT_ITERATION, default chebyshev), once with
+#             the kit's own build on this tree and once with the experiment's assemblies on a copy of the tree with its
+#             patched files, no savings: the per-pass and per-kernel milliseconds a GPU gives each, side by side. An
+#             experiment whose solver is "study" (a change to the step, which a bench's sub-steps do not show) runs the
+#             study of the realtime stage instead, DFSPH only, at EXPERIMENT_SCALE (240) and each of
+#             EXPERIMENT_DIVERGENCE_TOLERANCES (10 36 %/s): wall time per simulated second and the real-time factor.
 # The stages are named as arguments, run in the order given (default: realtime bench pareto). Each step has a time
 # limit, so a slow step costs only itself. The environment can change the sizes, the solvers the bench stage times and
 # each step's limit in seconds: REALTIME_SCALES, PARETO_SCALES, ITERATIONS ("jacobi chebyshev"), BENCH_PARTICLES,
@@ -67,6 +70,9 @@ scenes_limit="${SCENES_LIMIT:-90}"
 layering_seconds="${LAYERING_SECONDS:-6.5}"
 layering_limit="${LAYERING_LIMIT:-150}"
 experiment_iteration="${EXPERIMENT_ITERATION:-chebyshev}"
+experiment_names="${EXPERIMENT_NAMES:-}"
+experiment_scale="${EXPERIMENT_SCALE:-240}"
+experiment_divergence="${EXPERIMENT_DIVERGENCE_TOLERANCES:-10 36}"
 scene="Assets/FluidDemo/Scenes/OilAndWater.unity"
 cfl="$(awk '/^    CflNumber:/ { print $2; exit }' "$root/$scene")" # the scene's own, so the study runs one CFL number
 
@@ -77,6 +83,13 @@ mkdir -p "$out"
 log="$out/gpu-figures.log"
 : >"$log"
 say() { echo "$*" | tee -a "$log"; }
+# The kit's experiment folders that EXPERIMENT_NAMES picks (all when it is empty).
+experiment_dirs() {
+    for dir in "$home"/experiments/*/; do
+        [ -d "$dir" ] || continue
+        if [ -z "$experiment_names" ] || [[ " $experiment_names " == *" $(basename "$dir") "* ]]; then echo "${dir%/}"; fi
+    done
+}
 
 unpacked="$(mktemp -d)"
 trap 'rm -rf "$unpacked"' EXIT
@@ -116,9 +129,11 @@ for stage in "${stages[@]}"; do
     scenes) budget=$((budget + scenes_limit * ($(echo "$scene_names" | wc -w) + 1))) ;;
     layering) budget=$((budget + (1 + $(echo "$iterations" | wc -w)) * layering_limit)) ;;
     experiments)
-        # a bench of each experiment under each of its solvers, and one of the kit's own build under each solver
-        budget=$((budget + bench_limit * $(cat "$home"/experiments/*/solvers 2>/dev/null | wc -w)))
-        budget=$((budget + bench_limit * $(cat "$home"/experiments/*/solvers 2>/dev/null | tr ' ' '\n' | sort -u | grep -c . || true)))
+        # a bench (or study) of each experiment under each of its solvers, and one of the kit's own build under each
+        runs="$(for dir in $(experiment_dirs); do cat "$dir/solvers"; done | tr ' ' '\n' | grep . || true)"
+        for solver in $runs $(echo "$runs" | sort -u); do
+            if [ "$solver" = study ]; then budget=$((budget + realtime_limit)); else budget=$((budget + bench_limit)); fi
+        done
         ;;
     esac
 done
@@ -136,8 +151,16 @@ step() { # seconds allowed, then sphfluid's arguments; SPHFLUID_APP names anothe
     say "exit $code"
 }
 
-# bench at BENCH_PARTICLES of the scene under $2 (wcsph or dfsph) in the tree rooted at $1, into $scratch/$3
+# bench at BENCH_PARTICLES of the scene under $2 (wcsph or dfsph) in the tree rooted at $1, into $scratch/$3; or, for
+# "study", DFSPH's real time at EXPERIMENT_SCALE and each of EXPERIMENT_DIVERGENCE_TOLERANCES
 experiment_bench() {
+    if [ "$2" = study ]; then
+        # shellcheck disable=SC2086 # a word list
+        step "$realtime_limit" study "$1/$scene" --solvers dfsph --particles-scales "$experiment_scale" --density-tolerances 0.1 \
+            --divergence-tolerances $experiment_divergence --solver-iterations "$experiment_iteration" --cfl "$cfl" \
+            --seconds "$seconds" --out "$scratch/$3" # its table goes to the log with the rest of its output
+        return
+    fi
     local solve=(--solver "$2")
     if [ "$2" = dfsph ]; then solve+=(--solver-iteration "$experiment_iteration"); fi
     step "$bench_limit" bench "$1/$scene" --particles "$bench_particles" "${solve[@]}" --skip-savings --out "$scratch/$3"
@@ -203,9 +226,9 @@ for stage in "${stages[@]}"; do
         done
         ;;
     experiments)
-        [ -d "$home/experiments" ] || { say "gpu-figures: the kit carries no experiments (gpu-kit.sh's EXPERIMENTS)"; continue; }
+        [ -n "$(experiment_dirs)" ] || { say "gpu-figures: the kit carries no experiments${experiment_names:+ named $experiment_names} (gpu-kit.sh's EXPERIMENTS)"; continue; }
         benched=" "
-        for dir in "$home"/experiments/*/; do
+        for dir in $(experiment_dirs); do
             name="$(basename "$dir")"
             tree="$scratch/tree-$name" app="$scratch/app-$name"
             mkdir -p "$tree"

@@ -6,10 +6,10 @@
 # .compute kernels there, as here), the Vulkan loader and the charts' font. Headless/gpu-figures.sh unpacks it there
 # and prints the GPU figures; a device call carries it with `carry: [".gpu"]`.
 # Each experiment named in EXPERIMENTS (NAME:SOLVERS, a patch of Headless/experiments and the solvers to bench it
-# under; default below: the ones measured on lavapipe and not yet on a GPU) goes in as experiments/NAME: the files its
-# patch changes, from a patched copy of the committed tree, and the assemblies built from that copy that differ from
-# the kit's own. Headless/gpu-figures.sh's experiments stage benches each beside the kit's own build. EXPERIMENTS=""
-# packs none.
+# under, or "study" for a change to the step; default below: the ones measured on lavapipe and not yet on a GPU) goes
+# in as experiments/NAME: the files its patch changes, from a patched copy of the committed tree, and the assemblies
+# built from that copy that differ from the kit's own. Headless/gpu-figures.sh's experiments stage runs each beside
+# the kit's own build. EXPERIMENTS="" packs none.
 # It writes only .gpu/sphfluid-gpu.tar.xz (through a temporary name beside it) and a scratch folder it removes.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
@@ -32,7 +32,7 @@ cp -L "$loader" "$top/lib/libvulkan.so.1"
 cp /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf "$top/"
 git -C "$root" describe --always --dirty >"$top/commit" 2>/dev/null || echo unknown >"$top/commit"
 
-for entry in ${EXPERIMENTS-half-support-cells:wcsph,dfsph cached-pair-gradients:dfsph}; do
+for entry in ${EXPERIMENTS-half-support-cells:wcsph,dfsph cached-pair-gradients:dfsph longer-dfsph-step:study}; do
     name="${entry%%:*}" solvers="${entry#*:}"
     patch="$root/Headless/experiments/$name.patch"
     [ -f "$patch" ] || { echo "gpu-kit: EXPERIMENTS names $name, but $patch is missing" >&2; exit 2; }
