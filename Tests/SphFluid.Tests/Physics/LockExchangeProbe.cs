@@ -1,0 +1,79 @@
+using System;
+using System.Globalization;
+using System.Linq;
+using NUnit.Framework;
+using SphFluid.Headless.Runs;
+using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
+using SphFluid.Tests.Runner;
+
+namespace SphFluid.Tests.Physics
+{
+    /// <summary>
+    /// <see cref="LockExchangeTests"/>' exchange in other configurations: a measurement run by name, `bash Headless/test.sh
+    /// --filter FullyQualifiedName~LockExchangeProbe`, which CI does not run. A configuration is the solver followed by
+    /// any of: <c>thin</c> (a tenth of each liquid's viscosity), <c>slip</c> (slip walls), <c>noav</c> (no artificial
+    /// viscosity), <c>summation</c> (WCSPH's summation density), <c>k4</c> (four times the stiffness), <c>lid</c> (a rigid lid on the liquids) and <c>xN</c> (N times
+    /// the particles), joined by hyphens (the test adapter's filter takes no spaces).
+    /// </summary>
+    [Explicit("a measurement, not a check: run it by name")]
+    [TestFixture("wcsph")]
+    [TestFixture("dfsph")]
+    [TestFixture("wcsph-x2")]
+    [TestFixture("dfsph-x2")]
+    [TestFixture("dfsph-x4")]
+    [TestFixture("wcsph-thin-slip")]
+    [TestFixture("wcsph-thin-slip-noav")]
+    [TestFixture("wcsph-summation")]
+    [TestFixture("wcsph-k4")]
+    [TestFixture("dfsph-thin-slip")]
+    [TestFixture("dfsph-thin-slip-x2")]
+    [TestFixture("dfsph-thin-slip-x4")]
+    [TestFixture("dfsph-thin-slip-lid")]
+    public sealed class LockExchangeProbe
+    {
+        readonly string _configuration;
+
+        public LockExchangeProbe(string configuration) => _configuration = configuration;
+
+        [Test]
+        public void TheFrontsAgainstBenjaminsCurrent()
+        {
+            var run = LockExchangeTests.Run(Configure(_configuration, out double seconds), _configuration, seconds);
+            Assert.That(run.Report.NanCount, Is.EqualTo(0));
+        }
+
+        /// <summary>The shipped OilAndWater scene changed as <paramref name="configuration"/> names it, and how long its
+        /// exchange runs.</summary>
+        internal static FluidSceneDescription Configure(string configuration, out double seconds)
+        {
+            var scene = SceneLoader.Load(RunnerPaths.Scene("OilAndWater"), RunnerPaths.Project).Description;
+            var words = configuration.Split('-');
+            var s = scene.Settings;
+            s.PressureSolver = words[0] == "dfsph" ? PressureSolver.Dfsph : PressureSolver.Wcsph;
+            foreach (string word in words.Skip(1))
+            {
+                if (word == "thin")
+                    foreach (var box in scene.SpawnBoxes) box.Phase.Viscosity /= 10;
+                else if (word == "slip") scene.Container.Friction = WallFriction.Slip;
+                else if (word == "noav") s.ArtificialViscosity = 0;
+                else if (word == "summation") s.WcsphDensity = WcsphDensity.Summation;
+                else if (word == "k4") s.Stiffness *= 4;
+                else if (word == "lid")
+                {
+                    // The container cut down to the liquids' spawned height: a rigid lid on the oil, Benjamin's own setting.
+                    var c = scene.Container;
+                    float top = scene.SpawnBoxes.Max(b => b.Center.Y + b.Size.Y / 2), floor = c.Position.Y - c.Size.Y / 2;
+                    c.Size = new System.Numerics.Vector3(c.Size.X, top - floor, c.Size.Z);
+                    c.Position = new System.Numerics.Vector3(c.Position.X, (top + floor) / 2, c.Position.Z);
+                }
+                else if (word.StartsWith("x", StringComparison.Ordinal))
+                    ParticleScaling.ScaleBy(scene, double.Parse(word.Substring(1), CultureInfo.InvariantCulture));
+                else throw new ArgumentException($"unknown configuration word '{word}' in '{configuration}'", nameof(configuration));
+            }
+            Assert.That(scene.Validate(), Is.Empty, configuration);
+            seconds = 1.4;
+            return scene;
+        }
+    }
+}
