@@ -30,6 +30,7 @@ namespace SphFluid.Tests.Physics
     [TestFixture("dfsph-thin-slip-x2")]
     [TestFixture("dfsph-thin-slip-x4")]
     [TestFixture("dfsph-thin-slip-lid")]
+    [TestFixture("wcsph-thin-slip-lid")]
     public sealed class LockExchangeProbe
     {
         readonly string _configuration;
