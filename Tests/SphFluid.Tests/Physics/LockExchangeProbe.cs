@@ -1,6 +1,7 @@
 using System;
 using System.Globalization;
 using System.Linq;
+using System.Numerics;
 using NUnit.Framework;
 using SphFluid.Headless.Runs;
 using SphFluid.Headless.Scenes;
@@ -13,8 +14,9 @@ namespace SphFluid.Tests.Physics
     /// <see cref="LockExchangeTests"/>' exchange in other configurations: a measurement run by name, `bash Headless/test.sh
     /// --filter FullyQualifiedName~LockExchangeProbe`, which CI does not run. A configuration is the solver followed by
     /// any of: <c>thin</c> (a tenth of each liquid's viscosity), <c>slip</c> (slip walls), <c>noav</c> (no artificial
-    /// viscosity), <c>summation</c> (WCSPH's summation density), <c>k4</c> (four times the stiffness), <c>lid</c> (a rigid lid on the liquids) and <c>xN</c> (N times
-    /// the particles), joined by hyphens (the test adapter's filter takes no spaces).
+    /// viscosity), <c>summation</c> (WCSPH's summation density), <c>k4</c> (four times the stiffness), <c>lid</c> (a
+    /// rigid lid on the liquids) and <c>xN</c> (N times the particles), joined by hyphens (the test adapter's filter
+    /// takes no spaces).
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]
     [TestFixture("wcsph")]
@@ -65,8 +67,8 @@ namespace SphFluid.Tests.Physics
                     // The container cut down to the liquids' spawned height: a rigid lid on the oil, Benjamin's own setting.
                     var c = scene.Container;
                     float top = scene.SpawnBoxes.Max(b => b.Center.Y + b.Size.Y / 2), floor = c.Position.Y - c.Size.Y / 2;
-                    c.Size = new System.Numerics.Vector3(c.Size.X, top - floor, c.Size.Z);
-                    c.Position = new System.Numerics.Vector3(c.Position.X, (top + floor) / 2, c.Position.Z);
+                    c.Size = new Vector3(c.Size.X, top - floor, c.Size.Z);
+                    c.Position = new Vector3(c.Position.X, (top + floor) / 2, c.Position.Z);
                 }
                 else if (word.StartsWith("x", StringComparison.Ordinal))
                     ParticleScaling.ScaleBy(scene, double.Parse(word.Substring(1), CultureInfo.InvariantCulture));
