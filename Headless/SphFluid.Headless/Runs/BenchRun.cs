@@ -35,7 +35,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
     /// together, as the simulation steps a frame: the host cost of a submit and wait is shared by the frame.</param>
     /// <param name="FrameSubsteps">Sub-steps of dt in one 60 Hz frame.</param>
     /// <param name="Kernels">Per kernel, a sub-step: the dispatches recorded, those of them that ran groups (DFSPH's solves
-    /// record rounds they may not need, <see cref="FluidSimulation.SolveDispatchesThatRun"/>) and their milliseconds.</param>
+    /// record rounds they may not need, <see cref="SolveBudget.DispatchesThatRun"/>) and their milliseconds.</param>
     /// <param name="Solves">DFSPH: the diagnostics of the timed sub-steps, whose solves' mean corrections and cut-off shares
     /// say which dispatches ran; null under WCSPH.</param>
     public sealed record Row(int Particles, string Plan, double WallMs, double GpuMs, IReadOnlyDictionary<string, double> PassMs,
@@ -257,7 +257,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         }
         DiagnosticsReport? solves = dfsph ? sim.ReadDiagnostics() : null;
         var ran = solves == null ? new Dictionary<string, double>()
-            : FluidSimulation.SolveDispatchesThatRun(solves.DensitySolveIterations, solves.DensitySolvesCutOff, solves.DivergenceSolveIterations,
+            : SolveBudget.DispatchesThatRun(solves.DensitySolveIterations, solves.DensitySolvesCutOff, solves.DivergenceSolveIterations,
                 solves.DivergenceSolvesCutOff).ToDictionary(k => k.Kernel, k => k.Dispatches);
         // The same sub-steps again, a frame at a time: what a running simulation pays per sub-step.
         int frameSubsteps = Math.Max(1, (int)Math.Ceiling(FrameSizing.FrameSeconds / dt));

@@ -12,7 +12,7 @@ using SphFluid.Vulkan;
 namespace SphFluid.Tests.Solver
 {
     /// <summary>
-    /// Which of a DFSPH sub-step's recorded solve dispatches run groups (FluidSimulation.SolveDispatchesThatRun), the count
+    /// Which of a DFSPH sub-step's recorded solve dispatches run groups (SolveBudget.DispatchesThatRun), the count
     /// the benchmark divides a kernel's milliseconds by: a per-kernel table that divides by every recorded dispatch counts
     /// the empty rounds the solve budget keeps in reserve: OilAndWater's (`sphfluid bench Assets/FluidDemo/Scenes/OilAndWater.unity
     /// --solver dfsph --steps 10 --skip-savings`, lavapipe) read DensitySolveError at 2.2 ms a dispatch and DivergenceSolveError
@@ -25,12 +25,12 @@ namespace SphFluid.Tests.Solver
         [Test]
         public void AConvergedSolveRunsOneErrorPassMoreThanItsCorrections_ACutOffOneAsMany()
         {
-            var converged = FluidSimulation.SolveDispatchesThatRun(7f, 0f, 3f, 0f);
+            var converged = SolveBudget.DispatchesThatRun(7f, 0f, 3f, 0f);
             Assert.That(Ran(converged, "DensitySolveError"), Is.EqualTo(8.0));
             Assert.That(Ran(converged, "DivergenceSolveError"), Is.EqualTo(4.0));
             Assert.That(Ran(converged, "BoundarySolveError"), Is.EqualTo(12.0));
             Assert.That(Ran(converged, "ApplyStiffness"), Is.EqualTo(12.0), "each solve's corrections and its warm start");
-            var cutOff = FluidSimulation.SolveDispatchesThatRun(100f, 1f, 2f, 0f);
+            var cutOff = SolveBudget.DispatchesThatRun(100f, 1f, 2f, 0f);
             Assert.That(Ran(cutOff, "DensitySolveError"), Is.EqualTo(100.0), "a solve cut off runs every round it was given");
             Assert.That(Ran(cutOff, "ApplyStiffness"), Is.EqualTo(104.0));
         }
@@ -61,7 +61,7 @@ namespace SphFluid.Tests.Solver
                 device.WaitIdle();
                 var timings = device.LastDispatchTimings.ToList();
                 var report = sim.ReadDiagnostics(); // the solves' counts of this one sub-step, and a fresh count for the next
-                var ran = FluidSimulation.SolveDispatchesThatRun(report.DensitySolveIterations, report.DensitySolvesCutOff,
+                var ran = SolveBudget.DispatchesThatRun(report.DensitySolveIterations, report.DensitySolvesCutOff,
                     report.DivergenceSolveIterations, report.DivergenceSolvesCutOff);
                 foreach (string kernel in solveKernels)
                 {

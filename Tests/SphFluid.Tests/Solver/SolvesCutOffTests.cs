@@ -73,7 +73,7 @@ namespace SphFluid.Tests.Solver
         }
 
         /// <summary>A loose tolerance under the default cap: the block at rest converges within the rounds its budget
-        /// (FluidSimulation.SolveBudget) records, so no solve is cut off (measured: 2 iterations of each solve, 8 rounds
+        /// (SolveBudget.Next) records, so no solve is cut off (measured: 2 iterations of each solve, 8 rounds
         /// recorded).</summary>
         [Test]
         public void ALooseToleranceCutsOffNoSolveOfABlockAtRest()

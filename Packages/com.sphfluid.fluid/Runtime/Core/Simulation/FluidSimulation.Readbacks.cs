@@ -50,7 +50,7 @@ namespace SphFluid.Simulation
             PushConstants();
             FindNeighbours(); // DivergenceRate reads them; after a shift they are found again
             _device.BeginSample(PassNames.Diagnostics);
-            _device.DispatchThreads(_solver, _divergenceRate, ParticleCount);
+            _device.DispatchThreads(_solver, _kernels.DivergenceRate, ParticleCount);
             _device.Dispatch(_diagnostics, _diagnosticsPartial, _reductionGroups, 1, 1);
             _device.Dispatch(_diagnostics, _diagnosticsFinal, 1, 1, 1);
             _device.EndSample(PassNames.Diagnostics);

@@ -12,7 +12,8 @@ namespace SphFluid.Simulation
     /// is <see cref="Step"/>; one sub-step is <see cref="Substep"/>.
     /// </summary>
     /// <remarks>
-    /// Concerns kept elsewhere: the GPU buffers and their bindings in <see cref="SolverBuffers"/>, the constants in
+    /// Concerns kept elsewhere: the solver's kernels in <see cref="SolverKernels"/>, the rounds each DFSPH solve records in
+    /// <see cref="SolveBudget"/>, the GPU buffers and their bindings in <see cref="SolverBuffers"/>, the constants in
     /// <see cref="FluidConstants"/> (recorded as one upload when they change), the motion and diagnostics read-backs in
     /// FluidSimulation.Readbacks.cs, and the container and obstacle updates in FluidSimulation.SceneUpdates.cs.
     /// </remarks>
@@ -46,15 +47,10 @@ namespace SphFluid.Simulation
         readonly Particle[] _spawn;
         readonly TimeStepController _timeStep;
         readonly IComputeProgram _solver, _diagnostics;
-        readonly int _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep;
-        readonly int _densityFactor, _wallMovedDensityFactor, _nonPressureForces, _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError,
-            _solveFinal, _applyStiffness, _drift, _divergenceRate, _findNeighbours, _wallNumberDensity;
+        readonly SolverKernels _kernels;
         readonly bool _divergenceFree;
-        readonly int _particleShift, _applyShift, _boundaryDensityFactor, _boundaryBeginSolve, _boundarySolveError;
-        readonly int _densityRate, _continuityDensity; // delta-SPH (SphDensityDiffusion.hlsl)
-        readonly bool _deltaSph;
+        readonly bool _deltaSph; // delta-SPH's continuity density (SphDensityDiffusion.hlsl)
         readonly float[] _spawnNumberDensities;
-        readonly int[] _solverKernels;
         readonly int _motionPartial, _motionFinal, _diagnosticsPartial, _diagnosticsFinal;
         readonly int _reductionGroups;
 
@@ -86,8 +82,8 @@ namespace SphFluid.Simulation
         int _boundaryCount;
         IReadbackRequest _motionReadback, _diagnosticsReadback;
         double _diagnosticsRequestTime;
-        readonly Vector4[] _motionRow = new Vector4[2]; // [0] vmax, amax; [1] the DFSPH solves' iterations (SolveBudget)
-        readonly int[] _solveRounds = new int[2];       // rounds recorded per solve, by solve slot (SolveBudget)
+        readonly Vector4[] _motionRow = new Vector4[2]; // [0] vmax, amax; [1] the DFSPH solves' iterations (SolveBudget.Next)
+        readonly int[] _solveRounds = new int[2];       // rounds recorded per solve, by solve slot (SolveBudget.Next)
         // Kept for the simulation's lifetime so that a steady frame makes no garbage (Unity's GC stalls show as hitches).
         readonly int[] _diagnosticsKernels;
         readonly Obstacle[] _obstacleRows = new Obstacle[FluidSceneDescription.MaxObstacles];
@@ -126,43 +122,9 @@ namespace SphFluid.Simulation
 
             _solver = device.LoadProgram(SolverProgramName);
             _diagnostics = device.LoadProgram(DiagnosticsProgramName);
-            _halfStep = _solver.FindKernel("HalfStep");
-            _placeBoundary = _solver.FindKernel("PlaceBoundary");
-            _densityPressure = _solver.FindKernel("DensityPressure");
-            _wallPressure = _solver.FindKernel("WallPressure");
-            _normals = _solver.FindKernel("Normals");
-            _forces = _solver.FindKernel("Forces");
-            _fullStep = _solver.FindKernel("FullStep");
-            _densityFactor = _solver.FindKernel("DensityFactor");
-            _wallMovedDensityFactor = _solver.FindKernel("WallMovedDensityFactor");
-            _nonPressureForces = _solver.FindKernel("NonPressureForces");
-            _predictVelocity = _solver.FindKernel("PredictVelocity");
-            _beginDensitySolve = _solver.FindKernel("BeginDensitySolve");
-            _beginDivergenceSolve = _solver.FindKernel("BeginDivergenceSolve");
-            _densitySolveError = _solver.FindKernel(DensitySolveErrorKernel);
-            _divergenceSolveError = _solver.FindKernel(DivergenceSolveErrorKernel);
-            _solveFinal = _solver.FindKernel("SolveFinal");
-            _applyStiffness = _solver.FindKernel(ApplyStiffnessKernel);
-            _drift = _solver.FindKernel("Drift");
-            _divergenceRate = _solver.FindKernel("DivergenceRate");
-            _findNeighbours = _solver.FindKernel("FindNeighbours");
-            _wallNumberDensity = _solver.FindKernel("WallNumberDensity");
+            _kernels = new SolverKernels(_solver);
             _divergenceFree = _scene.Settings.PressureSolver == PressureSolver.Dfsph;
-            _particleShift = _solver.FindKernel("ParticleShift");
-            _applyShift = _solver.FindKernel("ApplyShift");
-            _boundaryDensityFactor = _solver.FindKernel("BoundaryDensityFactor");
-            _boundaryBeginSolve = _solver.FindKernel("BoundaryBeginSolve");
-            _boundarySolveError = _solver.FindKernel(BoundarySolveErrorKernel);
-            _densityRate = _solver.FindKernel("DensityRate");
-            _continuityDensity = _solver.FindKernel("ContinuityDensity");
             _deltaSph = !_divergenceFree && _scene.Settings.WcsphDensity == WcsphDensity.DeltaSph;
-            _solverKernels = new[]
-            {
-                _halfStep, _placeBoundary, _densityPressure, _wallPressure, _normals, _forces, _fullStep, _densityFactor, _nonPressureForces,
-                _predictVelocity, _beginDensitySolve, _beginDivergenceSolve, _densitySolveError, _divergenceSolveError, _solveFinal, _applyStiffness, _drift, _divergenceRate,
-                _particleShift, _applyShift, _densityRate, _continuityDensity, _boundaryDensityFactor, _boundaryBeginSolve, _boundarySolveError,
-                _findNeighbours, _wallNumberDensity, _wallMovedDensityFactor,
-            };
             _motionPartial = _diagnostics.FindKernel("MotionPartial");
             _motionFinal = _diagnostics.FindKernel("MotionFinal");
             _diagnosticsPartial = _diagnostics.FindKernel("DiagnosticsPartial");
@@ -172,7 +134,7 @@ namespace SphFluid.Simulation
 
             try
             {
-                _buffers = new SolverBuffers(device, _solver, _solverKernels, _diagnostics, _diagnosticsKernels, ParticleCount, _phaseTable,
+                _buffers = new SolverBuffers(device, _solver, _kernels.All, _diagnostics, _diagnosticsKernels, ParticleCount, _phaseTable,
                     _reductionGroups, device.PropertyId("FluidConstants"), _spawnNumberDensities);
                 RebuildGrid();
                 CreateBoundary();
@@ -427,12 +389,12 @@ namespace SphFluid.Simulation
         void PlaceWalls()
         {
             _device.BeginSample(PassNames.PlaceBoundary);
-            _device.DispatchThreads(_solver, _placeBoundary, _boundaryCount);
+            _device.DispatchThreads(_solver, _kernels.PlaceBoundary, _boundaryCount);
             _buffers.BoundarySorter.Sort(_grid, _buffers.BoundaryPlaced, _buffers.BoundarySorted, _boundaryCount);
             _neighboursFound = false;
             if (_divergenceFree)
             {
-                _device.DispatchThreads(_solver, _wallNumberDensity, _boundaryCount);
+                _device.DispatchThreads(_solver, _kernels.WallNumberDensity, _boundaryCount);
                 _wallsResorted = true;
             }
             _device.EndSample(PassNames.PlaceBoundary);
@@ -480,15 +442,15 @@ namespace SphFluid.Simulation
             if (_deltaSph)
             {
                 FindNeighbours(); // found after the last sort, unless a shift or the walls' placement moved them since
-                LanedPass(PassNames.DensityRate, _densityRate, ParticleCount);
+                LanedPass(PassNames.DensityRate, _kernels.DensityRate, ParticleCount);
             }
 
-            SolverPass(PassNames.HalfStep, _halfStep);
+            SolverPass(PassNames.HalfStep, _kernels.HalfStep);
 
             AdvanceWalls(_constants[0].TimeStep);
             SortAndComputeForces();
 
-            SolverPass(PassNames.FullStep, _fullStep);
+            SolverPass(PassNames.FullStep, _kernels.FullStep);
 
             if (Plan.Shifting)
                 Shift();
@@ -498,8 +460,8 @@ namespace SphFluid.Simulation
         /// applied in a second pass so that no particle moves while its neighbours still read it.</summary>
         void Shift()
         {
-            SolverPass(PassNames.ParticleShift, _particleShift);
-            SolverPass(PassNames.ApplyShift, _applyShift);
+            SolverPass(PassNames.ParticleShift, _kernels.ParticleShift);
+            SolverPass(PassNames.ApplyShift, _kernels.ApplyShift);
             _neighboursFound = false;
         }
 
@@ -511,58 +473,41 @@ namespace SphFluid.Simulation
             {
                 // The fluid's density and factor were last summed with the walls where they stood before this frame.
                 FindNeighbours();
-                _device.DispatchThreads(_solver, _wallMovedDensityFactor, ParticleCount * LanesPerParticle);
-                _device.DispatchThreads(_solver, _boundaryDensityFactor, _boundaryCount * LanesPerParticle);
+                _device.DispatchThreads(_solver, _kernels.WallMovedDensityFactor, ParticleCount * LanesPerParticle);
+                _device.DispatchThreads(_solver, _kernels.BoundaryDensityFactor, _boundaryCount * LanesPerParticle);
             }
-            if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _normals);
-            LanedPass(PassNames.NonPressureForces, _nonPressureForces, ParticleCount);
+            if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _kernels.Normals);
+            LanedPass(PassNames.NonPressureForces, _kernels.NonPressureForces, ParticleCount);
 
-            SolverPass(PassNames.PredictVelocity, _predictVelocity);
+            SolverPass(PassNames.PredictVelocity, _kernels.PredictVelocity);
 
             _device.BeginSample(PassNames.DensitySolve);
-            Solve(DensitySolveSlot, _beginDensitySolve, _densitySolveError);
+            Solve(DensitySolveSlot, _kernels.BeginDensitySolve, _kernels.DensitySolveError);
             _device.EndSample(PassNames.DensitySolve);
 
-            SolverPass(PassNames.Drift, _drift);
+            SolverPass(PassNames.Drift, _kernels.Drift);
 
             AdvanceWalls(_constants[0].TimeStep);
             SortAndComputeForces(false);
 
             _device.BeginSample(PassNames.DivergenceSolve);
-            Solve(DivergenceSolveSlot, _beginDivergenceSolve, _divergenceSolveError);
+            Solve(DivergenceSolveSlot, _kernels.BeginDivergenceSolve, _kernels.DivergenceSolveError);
             _device.EndSample(PassNames.DivergenceSolve);
         }
 
         const int DensitySolveSlot = 0, DivergenceSolveSlot = 1;
 
         /// <summary>Rounds (error pass, SolveFinal, correction) recorded for each DFSPH solve of the next sub-steps:
-        /// [0] constant density, [1] divergence-free. At most MaxSolverIterations; see <see cref="SolveBudget"/>.</summary>
+        /// [0] constant density, [1] divergence-free. At most MaxSolverIterations; see <see cref="SolveBudget.Next"/>.</summary>
         public IReadOnlyList<int> SolveRounds => _solveRounds;
 
-        /// <summary>
-        /// The rounds a solve needs to converge after <paramref name="mostIterations"/> corrections (the most any solve of
-        /// its kind made since the last motion read-back) are that many plus one, the round whose SolveFinal sees the
-        /// error within tolerance. Twice that plus a margin is recorded, so that a flow that turns harder from one frame
-        /// to the next still converges within the rounds of the frame planned before it was known; a solve that ran out
-        /// of rounds anyway (<paramref name="cutOff"/> &gt; 0) at least doubles the budget. Never more than
-        /// <paramref name="maxIterations"/> (the setting's hard limit), never fewer than the three rounds the first
-        /// possible convergence takes; no solve since (0 and 0) keeps <paramref name="rounds"/>.
-        /// </summary>
-        public static int SolveBudget(int rounds, int mostIterations, int cutOff, int maxIterations)
-        {
-            if (mostIterations <= 0 && cutOff <= 0) return rounds;
-            int next = 2 * mostIterations + 4;
-            if (cutOff > 0) next = Math.Max(next, 2 * rounds);
-            return Math.Min(maxIterations, Math.Max(3, next));
-        }
-
-        /// <summary>Sizes the next solves from the iterations the motion reduction read back (<see cref="SolveBudget"/>).</summary>
+        /// <summary>Sizes the next solves from the iterations the motion reduction read back (<see cref="SolveBudget.Next"/>).</summary>
         void ReportSolveIterations(Vector4 solves)
         {
             if (!_divergenceFree) return;
             int max = _scene.Settings.MaxSolverIterations;
-            _solveRounds[DensitySolveSlot] = SolveBudget(_solveRounds[DensitySolveSlot], (int)Math.Round(solves.X), (int)Math.Round(solves.Y), max);
-            _solveRounds[DivergenceSolveSlot] = SolveBudget(_solveRounds[DivergenceSolveSlot], (int)Math.Round(solves.Z), (int)Math.Round(solves.W), max);
+            _solveRounds[DensitySolveSlot] = SolveBudget.Next(_solveRounds[DensitySolveSlot], (int)Math.Round(solves.X), (int)Math.Round(solves.Y), max);
+            _solveRounds[DivergenceSolveSlot] = SolveBudget.Next(_solveRounds[DivergenceSolveSlot], (int)Math.Round(solves.Z), (int)Math.Round(solves.W), max);
             WriteSolveRounds();
         }
 
@@ -581,46 +526,21 @@ namespace SphFluid.Simulation
         /// <see cref="SolveRounds"/> rounds of error pass, SolveFinal and correction. The error pass and the correction are
         /// indirect dispatches whose group count SolveFinal sets to zero once the solve has converged (FluidSolver.compute),
         /// so the rounds recorded beyond convergence cost the GPU an empty dispatch each; the budget keeps their number
-        /// (and their recording) near what the solves have been using.
+        /// (and their recording) near what the solves have been using (<see cref="SolveBudget"/>).
         /// </summary>
         void Solve(int slot, int beginKernel, int errorKernel)
         {
             int rounds = _solveRounds[slot];
             _device.Dispatch(_solver, beginKernel, 1, 1, 1);
-            _device.DispatchThreads(_solver, _boundaryBeginSolve, _boundaryCount);
-            _device.DispatchThreads(_solver, _applyStiffness, ParticleCount * LanesPerParticle);
+            _device.DispatchThreads(_solver, _kernels.BoundaryBeginSolve, _boundaryCount);
+            _device.DispatchThreads(_solver, _kernels.ApplyStiffness, ParticleCount * LanesPerParticle);
             for (int l = 0; l < rounds; l++)
             {
                 _device.DispatchIndirect(_solver, errorKernel, _buffers.SolverArguments, 0);
-                _device.DispatchIndirect(_solver, _boundarySolveError, _buffers.SolverArguments, 12);
-                _device.Dispatch(_solver, _solveFinal, 1, 1, 1);
-                _device.DispatchIndirect(_solver, _applyStiffness, _buffers.SolverArguments, 0);
+                _device.DispatchIndirect(_solver, _kernels.BoundarySolveError, _buffers.SolverArguments, 12);
+                _device.Dispatch(_solver, _kernels.SolveFinal, 1, 1, 1);
+                _device.DispatchIndirect(_solver, _kernels.ApplyStiffness, _buffers.SolverArguments, 0);
             }
-        }
-
-        const string DensitySolveErrorKernel = "DensitySolveError", DivergenceSolveErrorKernel = "DivergenceSolveError",
-            BoundarySolveErrorKernel = "BoundarySolveError", ApplyStiffnessKernel = "ApplyStiffness";
-
-        /// <summary>
-        /// Of the indirect dispatches a DFSPH sub-step records for its two solves (<see cref="Solve"/>), how many run groups,
-        /// by kernel. Per-dispatch timings count the empty rounds that the budget keeps in reserve beside those that ran,
-        /// so a kernel's milliseconds over its dispatches understate what a running one costs wherever the solve converges
-        /// well within its rounds. A solve of k corrections runs its error passes k + 1 times (the last finds it converged)
-        /// or k times when its rounds run out first, and its correction k + 1 times, the warm start's first. Takes each
-        /// solve's mean corrections and share cut off (<see cref="DiagnosticsReport"/>); SolveFinal and the solves' set-up
-        /// kernels are plain dispatches that always run.
-        /// </summary>
-        public static IReadOnlyList<(string Kernel, double Dispatches)> SolveDispatchesThatRun(float densityIterations, float densityCutOff,
-            float divergenceIterations, float divergenceCutOff)
-        {
-            double densityErrors = densityIterations + 1.0 - densityCutOff, divergenceErrors = divergenceIterations + 1.0 - divergenceCutOff;
-            return new[]
-            {
-                (DensitySolveErrorKernel, densityErrors),
-                (DivergenceSolveErrorKernel, divergenceErrors),
-                (BoundarySolveErrorKernel, densityErrors + divergenceErrors),
-                (ApplyStiffnessKernel, densityIterations + divergenceIterations + 2.0),
-            };
         }
 
         /// <summary>Sort by cell, then density and pressure, normals, forces: a valid acceleration for the
@@ -659,22 +579,22 @@ namespace SphFluid.Simulation
             if (_divergenceFree)
             {
                 FindNeighbours();
-                LanedPass(PassNames.DensityFactor, _densityFactor, ParticleCount);
-                _device.DispatchThreads(_solver, _boundaryDensityFactor, _boundaryCount * LanesPerParticle);
+                LanedPass(PassNames.DensityFactor, _kernels.DensityFactor, ParticleCount);
+                _device.DispatchThreads(_solver, _kernels.BoundaryDensityFactor, _boundaryCount * LanesPerParticle);
                 if (!withForces) return;
-                if (Plan.SurfaceTension) _device.DispatchThreads(_solver, _normals, ParticleCount);
-                _device.DispatchThreads(_solver, _nonPressureForces, ParticleCount * LanesPerParticle);
+                if (Plan.SurfaceTension) _device.DispatchThreads(_solver, _kernels.Normals, ParticleCount);
+                _device.DispatchThreads(_solver, _kernels.NonPressureForces, ParticleCount * LanesPerParticle);
                 return;
             }
 
             FindNeighbours();
-            LanedPass(PassNames.DensityPressure, _deltaSph ? _continuityDensity : _densityPressure, ParticleCount);
+            LanedPass(PassNames.DensityPressure, _deltaSph ? _kernels.ContinuityDensity : _kernels.DensityPressure, ParticleCount);
 
-            LanedPass(PassNames.WallPressure, _wallPressure, _boundaryCount);
+            LanedPass(PassNames.WallPressure, _kernels.WallPressure, _boundaryCount);
 
-            if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _normals);
+            if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _kernels.Normals);
 
-            LanedPass(PassNames.Forces, _forces, ParticleCount);
+            LanedPass(PassNames.Forces, _kernels.Forces, ParticleCount);
         }
 
         /// <summary>The neighbour lists (SphNeighbourhood.hlsl) of every fluid and boundary particle where they stand, unless
@@ -685,7 +605,7 @@ namespace SphFluid.Simulation
             if (!_neighboursFound && ReadsNeighbourLists)
             {
                 _device.BeginSample(PassNames.FindNeighbours);
-                _device.DispatchThreads(_solver, _findNeighbours, ParticleCount + _boundaryCount);
+                _device.DispatchThreads(_solver, _kernels.FindNeighbours, ParticleCount + _boundaryCount);
                 _device.EndSample(PassNames.FindNeighbours);
             }
             _neighboursFound = true;
@@ -744,7 +664,7 @@ namespace SphFluid.Simulation
                 SetTimeStep(0f);
                 Sort();
                 FindNeighbours();
-                LanedPass(PassNames.DensityRate, _densityRate, ParticleCount);
+                LanedPass(PassNames.DensityRate, _kernels.DensityRate, ParticleCount);
                 DensityAndForces();
             }
             else
