@@ -104,6 +104,9 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         int snapshots = 0, frame = 0, substeps = 0, cappedFrames = 0;
         double nextSnapshot = 0, nextDiagnostics = 0, nextExport = 0;
         DiagnosticsReport? first = null, last = null;
+        // Sub-steps whose solves were cut off, from each row's share of the sub-steps since the row before.
+        double densityCutOff = 0, divergenceCutOff = 0;
+        int substepsReported = 0;
         string? failure = null;
         var container = restContainer;
         IReadOnlyList<RigidSphere> obstacles = restObstacles;
@@ -131,6 +134,9 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
                 stdout.Flush();
                 first ??= report;
                 last = report;
+                densityCutOff += report.DensitySolvesCutOff * (substeps - substepsReported);
+                divergenceCutOff += report.DivergenceSolvesCutOff * (substeps - substepsReported);
+                substepsReported = substeps;
                 failure ??= Health(health, report, particles);
                 while (nextDiagnostics <= t + 1e-9) nextDiagnostics += options.DiagnosticsEvery;
             }
@@ -183,9 +189,16 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             LayeringChart.Build(scene.Name, layering, sim.Phases).Save(output, LayeringChart.Stem);
 
         Summary = new RunSummary(scene, sim, DeviceFactory.Describe(device), sim.SimulatedTime, frame, substeps, cappedFrames, wall, snapshots,
-            first, last, layering.Count > 0 ? layering[^1] : null, failure, Path.GetFullPath(output.Path)) { Exports = export?.Count ?? 0, Settings = settings };
+            first, last, layering.Count > 0 ? layering[^1] : null, failure, Path.GetFullPath(output.Path))
+        {
+            Exports = export?.Count ?? 0,
+            Settings = settings,
+            DensitySolvesCutOff = substepsReported > 0 ? densityCutOff / substepsReported : 0,
+            DivergenceSolvesCutOff = substepsReported > 0 ? divergenceCutOff / substepsReported : 0,
+        };
         File.WriteAllText(output.PathOf("summary.txt"), Summary.ToText());
         stdout.WriteLine(Summary.OneLine());
+        if (Summary.CutOffWarning() is string warning) stderr.WriteLine($"simulate: {warning}");
         if (failure != null)
         {
             stderr.WriteLine($"simulate: {failure}");

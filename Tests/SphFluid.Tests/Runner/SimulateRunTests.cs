@@ -64,6 +64,32 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Summary.OrFail("the run's summary").Frames, Is.EqualTo(2));
         }
 
+        /// <summary>A DFSPH run whose solves run out of iterations is healthy, but holds its error above the tolerance it
+        /// asked for: the summary gives the share of sub-steps cut off, and above a tenth the run warns and says what to
+        /// change. At the scene's own tolerance nothing is cut off and nothing is said.</summary>
+        [Test]
+        public void SolvesCutOffAreSummedAndWarnedOf()
+        {
+            string outDir = RunnerPaths.ScratchFolder("cut-off");
+            var run = Simulate("OilAndWater", out var stdout, out var stderr, "--steps", "3", "--particles-scale", "0.1", "--solver", "dfsph",
+                "--divergence-tolerance", "0.01", "--out", outDir);
+
+            Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
+            var summary = run.Summary.OrFail("the run's summary");
+            Assert.That(summary.DivergenceSolvesCutOff, Is.GreaterThan(RunSummary.CutOffWarningShare));
+            Assert.That(File.ReadAllText(Path.Combine(outDir, "summary.txt")), Does.Contain("solves cut off at MaxSolverIterations: constant density in "));
+            Assert.That(stderr.ToString(), Does.Contain("simulate: warning: DFSPH's solves ran out of their 100 iterations (MaxSolverIterations) in "));
+            Assert.That(stderr.ToString(), Does.Contain("a fluid that fills its closed container exactly cannot get below the tolerance"));
+
+            run = Simulate("OilAndWater", out stdout, out stderr, "--steps", "3", "--particles-scale", "0.1", "--solver", "dfsph", "--out", outDir);
+
+            Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
+            summary = run.Summary.OrFail("the run's summary");
+            Assert.That(summary.DensitySolvesCutOff, Is.EqualTo(0.0));
+            Assert.That(summary.DivergenceSolvesCutOff, Is.EqualTo(0.0));
+            Assert.That(stderr.ToString(), Does.Not.Contain("warning"));
+        }
+
         /// <summary>--cpu-particles-scale scales the fluid only on a CPU device (the main job's half particles on lavapipe)
         /// and says so; on a GPU the scene runs as it is.</summary>
         [Test]
