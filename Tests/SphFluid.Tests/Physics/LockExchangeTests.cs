@@ -85,7 +85,8 @@ namespace SphFluid.Tests.Physics
                 Sample();
                 int k = times.Count - 1;
                 if (k % 12 == 0)
-                    TestContext.Progress.WriteLine($"{name}: t={times[k]:F2} s, water front {1000 * waterFront[k]:F1} mm and oil front {1000 * oilFront[k]:F1} mm from the lock");
+                    TestContext.Progress.WriteLine($"{name}: t={times[k]:F2} s, water front {1000 * waterFront[k]:F1} mm and oil front {1000 * oilFront[k]:F1} mm from the lock" +
+                        (s.PressureSolver == PressureSolver.Dfsph ? Solves(sim, particles, container) : ""));
             }
             var report = sim.ReadDiagnostics();
 
@@ -105,6 +106,28 @@ namespace SphFluid.Tests.Physics
                 $"oil front {o.Speed:F4} m/s over {o.Samples} frames (Benjamin's {uo:F4}: Froude {o.Speed / (2 * uo):F3}); " +
                 $"clamp hits {report.ClampHits}, outside {report.OutsideCount}");
             return new Exchange(depth, w.Speed, o.Speed, uw, uo, report);
+        }
+
+        /// <summary>DFSPH's solves since the last call and the pressure on the floor beside what the liquids weigh: a solve
+        /// that cannot reach its tolerance runs out of iterations while its warm-started pressure climbs.</summary>
+        static string Solves(FluidSimulation sim, Particle[] particles, ContainerDescription container)
+        {
+            var report = sim.ReadDiagnostics();
+            var densities = new Vector4[sim.ParticleCount];
+            sim.Densities.GetData(densities);
+            double floor = container.Position.Y - container.Size.Y / 2, spacing = sim.Scene.Settings.ParticleSpacing, mass = 0, pressure = 0;
+            int bottom = 0;
+            for (int i = 0; i < particles.Length; i++)
+            {
+                mass += sim.PhaseRows[(int)particles[i].Phase].ParticleMass;
+                if (particles[i].Position.Y - floor >= spacing) continue;
+                pressure += densities[i].Y;
+                bottom++;
+            }
+            double weight = mass * sim.Scene.Settings.Gravity.Length() / (container.Size.X * container.Size.Z);
+            return $"; solves: density {report.DensitySolveIterations:F1} iterations ({report.DensitySolvesCutOff:P0} cut off), " +
+                $"divergence {report.DivergenceSolveIterations:F1} ({report.DivergenceSolvesCutOff:P0}); bottom row's pressure " +
+                $"{pressure / Math.Max(1, bottom):F0} Pa, the liquids' weight over the floor {weight:F0} Pa";
         }
     }
 }
