@@ -23,35 +23,11 @@ public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, s
     /// <summary>The settings the run simulated (after the command line's overrides).</summary>
     public required FluidSettings Settings { get; init; }
 
-    /// <summary>DFSPH: the share of the run's sub-steps whose constant-density solve ran out of iterations before its
-    /// tolerance (each diagnostics row's share weighted by the sub-steps it covers); 0 under WCSPH.</summary>
-    public double DensitySolvesCutOff { get; init; }
+    /// <summary>DFSPH: how much of the run's time its solves ran out of iterations (empty under WCSPH).</summary>
+    public SolveCutOffs CutOffs { get; init; } = new SolveCutOffs();
 
-    /// <summary>DFSPH: the same for the divergence-free solve.</summary>
-    public double DivergenceSolvesCutOff { get; init; }
-
-    /// <summary>Above this share of sub-steps cut off, the run ends with <see cref="CutOffWarning"/>.</summary>
-    public const double CutOffWarningShare = 0.1;
-
-    /// <summary>
-    /// What a run whose DFSPH solves ran out of iterations in more than <see cref="CutOffWarningShare"/> of its sub-steps
-    /// should be told, or null. Such a run is healthy but holds its error above the tolerance it asked for, pays the
-    /// whole iteration budget in those sub-steps, and its pressure, warm-started from one sub-step to the next, climbs;
-    /// a fluid that fills its closed container exactly is one cause, since it reads compressed at the tolerance itself
-    /// and has no free volume to give (Headless/docs/physics.md, the lock exchange under a rigid lid).
-    /// </summary>
-    public string? CutOffWarning()
-    {
-        if (Settings.PressureSolver != PressureSolver.Dfsph) return null;
-        double worst = System.Math.Max(DensitySolvesCutOff, DivergenceSolvesCutOff);
-        if (!(worst > CutOffWarningShare)) return null;
-        return string.Format(C,
-            "warning: DFSPH's solves ran out of their {0} iterations (MaxSolverIterations) in {1:P0} of the sub-steps' constant-density solves " +
-            "and {2:P0} of their divergence-free ones: the errors exceeded the tolerances of {3} % and {4} %/s there, and each such sub-step cost the " +
-            "whole budget. Raise MaxSolverIterations, loosen --density-tolerance or --divergence-tolerance, or leave the fluid free " +
-            "volume: a fluid that fills its closed container exactly cannot get below the tolerance.",
-            Settings.MaxSolverIterations, DensitySolvesCutOff, DivergenceSolvesCutOff, Settings.DensityTolerance, Settings.DivergenceTolerance);
-    }
+    /// <summary>What a run whose DFSPH solves ran out in more than a tenth of its time should be told, or null.</summary>
+    public string? CutOffWarning() => CutOffs.Warning(Settings);
 
     public string OneLine() => string.Format(C,
         "{0} ({11}): {1:F3} s simulated in {2} frames / {3} sub-steps, {4:F1} s wall ({5:F2} s per simulated s){6}; {7} snapshot(s){8}{9}; mass {10}",
@@ -74,9 +50,9 @@ public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, s
         b.AppendLine(string.Format(C, "wall clock: {0:F2} s", WallSeconds));
         b.AppendLine($"result: {(Ok ? "ok" : "FAILED: " + Failure)}");
         if (Settings.PressureSolver == PressureSolver.Dfsph)
-            b.AppendLine(string.Format(C, "solves cut off at MaxSolverIterations: constant density in {0:P1} of the sub-steps, divergence-free in {1:P1}",
-                DensitySolvesCutOff, DivergenceSolvesCutOff));
-        if (CutOffWarning() is string warning) b.AppendLine(warning);
+            b.AppendLine(string.Format(C, "solves cut off at MaxSolverIterations: constant density in {0:P1} of the simulated time, divergence-free in {1:P1}",
+                CutOffs.DensityShare, CutOffs.DivergenceShare));
+        if (CutOffWarning() is string warning) b.AppendLine("warning: " + warning);
         if (First != null) b.AppendLine($"first diagnostics: {First}");
         if (Last != null) b.AppendLine($"last diagnostics:  {Last}");
         if (Measures != null) AppendMeasures(b, Measures);

@@ -104,9 +104,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         int snapshots = 0, frame = 0, substeps = 0, cappedFrames = 0;
         double nextSnapshot = 0, nextDiagnostics = 0, nextExport = 0;
         DiagnosticsReport? first = null, last = null;
-        // Sub-steps whose solves were cut off, from each row's share of the sub-steps since the row before.
-        double densityCutOff = 0, divergenceCutOff = 0;
-        int substepsReported = 0;
+        var cutOffs = new SolveCutOffs();
         string? failure = null;
         var container = restContainer;
         IReadOnlyList<RigidSphere> obstacles = restObstacles;
@@ -134,9 +132,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
                 stdout.Flush();
                 first ??= report;
                 last = report;
-                densityCutOff += report.DensitySolvesCutOff * (substeps - substepsReported);
-                divergenceCutOff += report.DivergenceSolvesCutOff * (substeps - substepsReported);
-                substepsReported = substeps;
+                cutOffs.Observe(report);
                 failure ??= Health(health, report, particles);
                 while (nextDiagnostics <= t + 1e-9) nextDiagnostics += options.DiagnosticsEvery;
             }
@@ -193,12 +189,11 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         {
             Exports = export?.Count ?? 0,
             Settings = settings,
-            DensitySolvesCutOff = substepsReported > 0 ? densityCutOff / substepsReported : 0,
-            DivergenceSolvesCutOff = substepsReported > 0 ? divergenceCutOff / substepsReported : 0,
+            CutOffs = cutOffs,
         };
         File.WriteAllText(output.PathOf("summary.txt"), Summary.ToText());
         stdout.WriteLine(Summary.OneLine());
-        if (Summary.CutOffWarning() is string warning) stderr.WriteLine($"simulate: {warning}");
+        if (Summary.CutOffWarning() is string warning) stderr.WriteLine($"simulate: warning: {warning}");
         if (failure != null)
         {
             stderr.WriteLine($"simulate: {failure}");

@@ -63,6 +63,8 @@ namespace SphFluid.Runtime
         HealthCheck _health;
         HealthProblem _healthProblem;
         double _lastCheckedTime = double.NaN;
+        SolveCutOffs _cutOffs;
+        bool _cutOffsWarned;
 
         // ------------------------------------------------------------------ read-only state
 
@@ -262,6 +264,8 @@ namespace SphFluid.Runtime
             }
 
             _health = new HealthCheck(scene, _simulation.ParticleCount);
+            _cutOffs = new SolveCutOffs();
+            _cutOffsWarned = false;
             _properties = new MaterialPropertyBlock();
             _containerPosition = _container.transform.position;
             _containerRotation = _container.transform.rotation;
@@ -288,6 +292,7 @@ namespace SphFluid.Runtime
             _health = null;
             _healthProblem = null;
             _lastCheckedTime = double.NaN;
+            _cutOffs = null;
             _simulation?.Dispose();
             _simulation = null;
             _device?.Dispose(); // releases any buffer the simulation did not
@@ -350,10 +355,23 @@ namespace SphFluid.Runtime
             if (_health == null || _healthProblem != null || report == null) return;
             _lastCheckedTime = report.SimulatedTime;
             HealthProblem problem = _health.Check(report);
+            WarnOfCutOffSolves(report);
             if (problem == null) return;
             _healthProblem = problem;
             _paused = true;
             Debug.LogError($"Fluid '{name}': {problem.Message}; paused (Reset respawns)", this);
+        }
+
+        /// <summary>Logs once per start when DFSPH's solves ran out of iterations in more than a tenth of the time since,
+        /// once a second of it has been seen (a settling start alone does not speak): a healthy run, but one whose error
+        /// stands above the tolerance it asked for, which nothing else in the package shows.</summary>
+        void WarnOfCutOffSolves(DiagnosticsReport report)
+        {
+            if (_cutOffs == null || _cutOffsWarned) return;
+            _cutOffs.Observe(report);
+            if (_cutOffs.ObservedSeconds < 1.0 || !(_cutOffs.Warning(_simulation.Scene.Settings) is string warning)) return;
+            _cutOffsWarned = true;
+            Debug.LogWarning($"Fluid '{name}': {warning}", this);
         }
 
         void PushContainer(float seconds)

@@ -65,7 +65,7 @@ namespace SphFluid.Tests.Runner
         }
 
         /// <summary>A DFSPH run whose solves run out of iterations is healthy, but holds its error above the tolerance it
-        /// asked for: the summary gives the share of sub-steps cut off, and above a tenth the run warns and says what to
+        /// asked for: the summary gives the share of its time cut off, and above a tenth the run warns and says what to
         /// change. At the scene's own tolerance nothing is cut off and nothing is said.</summary>
         [Test]
         public void SolvesCutOffAreSummedAndWarnedOf()
@@ -76,8 +76,8 @@ namespace SphFluid.Tests.Runner
 
             Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
             var summary = run.Summary.OrFail("the run's summary");
-            Assert.That(summary.DivergenceSolvesCutOff, Is.GreaterThan(RunSummary.CutOffWarningShare));
-            Assert.That(File.ReadAllText(Path.Combine(outDir, "summary.txt")), Does.Contain("solves cut off at MaxSolverIterations: constant density in "));
+            Assert.That(summary.CutOffs.DivergenceShare, Is.GreaterThan(SolveCutOffs.WarningShare));
+            Assert.That(File.ReadAllText(Path.Combine(outDir, "summary.txt")), Does.Contain("solves cut off at MaxSolverIterations: constant density in 0.0 % of the simulated time, divergence-free in "));
             Assert.That(stderr.ToString(), Does.Contain("simulate: warning: DFSPH's solves ran out of their 100 iterations (MaxSolverIterations) in "));
             Assert.That(stderr.ToString(), Does.Contain("a fluid that fills its closed container exactly cannot get below the tolerance"));
 
@@ -85,8 +85,8 @@ namespace SphFluid.Tests.Runner
 
             Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
             summary = run.Summary.OrFail("the run's summary");
-            Assert.That(summary.DensitySolvesCutOff, Is.EqualTo(0.0));
-            Assert.That(summary.DivergenceSolvesCutOff, Is.EqualTo(0.0));
+            Assert.That(summary.CutOffs.DensityShare, Is.EqualTo(0.0));
+            Assert.That(summary.CutOffs.DivergenceShare, Is.EqualTo(0.0));
             Assert.That(stderr.ToString(), Does.Not.Contain("warning"));
         }
 
