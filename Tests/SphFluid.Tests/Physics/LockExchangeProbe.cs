@@ -31,6 +31,7 @@ namespace SphFluid.Tests.Physics
     [TestFixture("dfsph-thin-slip")]
     [TestFixture("dfsph-thin-slip-x2")]
     [TestFixture("dfsph-thin-slip-x4")]
+    [TestFixture("dfsph-thin-slip-x8")]
     [TestFixture("dfsph-thin-slip-lid")]
     [TestFixture("wcsph-thin-slip-lid")]
     [TestFixture("dfsph-thin-slip-lid-flush")]

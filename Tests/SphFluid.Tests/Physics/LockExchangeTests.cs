@@ -16,8 +16,8 @@ namespace SphFluid.Tests.Physics
     /// oil's along the free surface at 0.75 (Froude numbers 0.315 and 0.377 against his 1/2): at this resolution the
     /// current's head spans about two supports, and WCSPH's artificial viscosity and delta-SPH diffusion, both in
     /// proportion to the speed of sound, slow it further. In the limit his theory describes (DFSPH, a tenth of each
-    /// liquid's viscosity, slip walls) the oil's front closes on his speed as the particles get finer, 0.83, 0.96 and
-    /// 1.02 of it at 1, 1.26 and 1.59 times finer spacings, while the water's stays near 0.8 (<see cref="LockExchangeProbe"/>;
+    /// liquid's viscosity, slip walls) the water's front stays near 0.8 of his speed through a halving of the spacing, and
+    /// the oil's fitted speed rises to 1.06 of it on a front that is no steady current's (<see cref="LockExchangeProbe"/>;
     /// Headless/docs/physics.md, "The lock exchange, against Benjamin's gravity current").
     /// </summary>
     public sealed class LockExchangeTests
