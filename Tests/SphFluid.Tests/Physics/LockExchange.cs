@@ -47,6 +47,58 @@ namespace SphFluid.Tests.Physics
             return (Farthest(heavy, +1), Farthest(light, -1));
         }
 
+        /// <summary>Width, m, of the column behind a front over which <see cref="Heads"/> takes a liquid's share of the depth:
+        /// the shipped scene's spacing, fixed, so that the measure does not change with the resolution.</summary>
+        public const double HeadColumn = 0.015;
+
+        /// <summary>The share of the depth that makes a head: half the body of Benjamin's current, which fills half.</summary>
+        public const double HeadShare = 0.25;
+
+        /// <summary>
+        /// The two fronts measured by depth rather than by neighbours, container-local x as <see cref="Fronts"/>: the
+        /// farthest x at which a liquid makes up at least <see cref="HeadShare"/> of the particles in the
+        /// <see cref="HeadColumn"/>-wide column behind it. Every particle of either liquid stands for the same volume, so
+        /// that is its share of the depth there. A film running ahead a few particles thick sets no front at any
+        /// resolution, where the neighbour rule of <see cref="Fronts"/> counts a thinner film as the support shrinks. A
+        /// steady head reads a constant distance ahead of its nose, which leaves its speed as it is.
+        /// </summary>
+        public static (double Heavy, double Light) Heads(Particle[] particles, Vector3 containerCentre, uint heavy, uint light)
+        {
+            const double bin = 0.001;
+            int window = (int)Math.Round(HeadColumn / bin);
+            double low = particles.Min(p => p.Position.X - containerCentre.X), high = particles.Max(p => p.Position.X - containerCentre.X);
+            int bins = (int)Math.Ceiling((high - low) / bin) + 1;
+            var all = new int[bins + 1];
+            var heavyCount = new int[bins + 1];
+            var lightCount = new int[bins + 1];
+            foreach (var p in particles)
+            {
+                int b = Math.Min(bins - 1, (int)((p.Position.X - containerCentre.X - low) / bin)) + 1;
+                all[b]++;
+                if (p.Phase == heavy) heavyCount[b]++;
+                else if (p.Phase == light) lightCount[b]++;
+            }
+            for (int b = 1; b <= bins; b++)
+            {
+                all[b] += all[b - 1];
+                heavyCount[b] += heavyCount[b - 1];
+                lightCount[b] += lightCount[b - 1];
+            }
+            bool IsHead(int[] own, int first, int last) // bins first..last, 0-based and clamped
+            {
+                first = Math.Max(0, first);
+                last = Math.Min(bins - 1, last);
+                int total = all[last + 1] - all[first];
+                return total > 0 && own[last + 1] - own[first] >= HeadShare * total;
+            }
+            double heavyHead = double.NaN, lightHead = double.NaN;
+            for (int b = bins - 1; b >= 0; b--)
+                if (IsHead(heavyCount, b - window + 1, b)) { heavyHead = low + (b + 1) * bin; break; }
+            for (int b = 0; b < bins; b++)
+                if (IsHead(lightCount, b, b + window - 1)) { lightHead = low + b * bin; break; }
+            return (heavyHead, lightHead);
+        }
+
         /// <summary>Least-squares speed, m/s, of a front's distance from the lock over the samples where it lies between
         /// <paramref name="from"/> and <paramref name="to"/> metres from it.</summary>
         public static (double Speed, int Samples) Speed(IReadOnlyList<double> times, IReadOnlyList<double> distances, double from, double to)

@@ -70,13 +70,18 @@ namespace SphFluid.Tests.Physics
             var times = new List<double>();
             var waterFront = new List<double>();
             var oilFront = new List<double>();
+            var waterHead = new List<double>();
+            var oilHead = new List<double>();
             void Sample()
             {
                 sim.Particles.GetData(particles);
                 var fronts = LockExchange.Fronts(particles, container.Position, water, oil, s.SmoothingRadius);
+                var heads = LockExchange.Heads(particles, container.Position, water, oil);
                 times.Add(sim.SimulatedTime);
                 waterFront.Add(fronts.Heavy);
                 oilFront.Add(-fronts.Light);
+                waterHead.Add(heads.Heavy);
+                oilHead.Add(-heads.Light);
             }
             Sample();
             while (sim.SimulatedTime < seconds - 1e-6)
@@ -85,7 +90,8 @@ namespace SphFluid.Tests.Physics
                 Sample();
                 int k = times.Count - 1;
                 if (k % 12 == 0)
-                    TestContext.Progress.WriteLine($"{name}: t={times[k]:F2} s, water front {1000 * waterFront[k]:F1} mm and oil front {1000 * oilFront[k]:F1} mm from the lock" +
+                    TestContext.Progress.WriteLine($"{name}: t={times[k]:F2} s, water front {1000 * waterFront[k]:F1} mm and oil front {1000 * oilFront[k]:F1} mm from the lock " +
+                        $"(heads {1000 * waterHead[k]:F1} and {1000 * oilHead[k]:F1} mm)" +
                         (s.PressureSolver == PressureSolver.Dfsph ? Solves(sim, particles, container) : ""));
             }
             var report = sim.ReadDiagnostics();
@@ -99,12 +105,17 @@ namespace SphFluid.Tests.Physics
             double uw = LockExchange.FrontSpeed(g, depth, rw, ro, ro), uo = LockExchange.FrontSpeed(g, depth, rw, ro, rw);
             var w = LockExchange.Speed(times, waterFront, 0.05, 0.22);
             var o = LockExchange.Speed(times, oilFront, 0.05, 0.22);
+            // The heads read a steady front about half a column ahead of its nose: the same window, moved by that.
+            double ahead = LockExchange.HeadColumn / 2;
+            var wh = LockExchange.Speed(times, waterHead, 0.05 + ahead, 0.22 + ahead);
+            var oh = LockExchange.Speed(times, oilHead, 0.05 + ahead, 0.22 + ahead);
             TestContext.Progress.WriteLine(
                 $"lock exchange ({name}: {s.PressureSolver}, {s.SmoothingKernel} at {s.SmoothingRadius / s.ParticleSpacing:F2} spacings, " +
                 $"spacing {1000 * s.ParticleSpacing:F2} mm, {container.Friction} walls), N={sim.ParticleCount}, depth {1000 * depth:F1} mm: " +
                 $"water front {w.Speed:F4} m/s over {w.Samples} frames (Benjamin's {uw:F4}: Froude {w.Speed / (2 * uw):F3}), " +
                 $"oil front {o.Speed:F4} m/s over {o.Samples} frames (Benjamin's {uo:F4}: Froude {o.Speed / (2 * uo):F3}); " +
-                $"clamp hits {report.ClampHits}, outside {report.OutsideCount}");
+                $"clamp hits {report.ClampHits}, outside {report.OutsideCount}; by the heads ({LockExchange.HeadShare:P0} of the depth over " +
+                $"{1000 * LockExchange.HeadColumn:F0} mm): water {wh.Speed:F4} m/s (Froude {wh.Speed / (2 * uw):F3}), oil {oh.Speed:F4} m/s (Froude {oh.Speed / (2 * uo):F3})");
             return new Exchange(depth, w.Speed, o.Speed, uw, uo, report);
         }
 
