@@ -16,8 +16,9 @@ namespace SphFluid.Tests.Physics
     /// oil's along the free surface at 0.75 (Froude numbers 0.315 and 0.377 against his 1/2): at this resolution the
     /// current's head spans about two supports, and WCSPH's artificial viscosity and delta-SPH diffusion, both in
     /// proportion to the speed of sound, slow it further. In the limit his theory describes (DFSPH, a tenth of each
-    /// liquid's viscosity, slip walls) the water's front stays near 0.8 of his speed through a halving of the spacing, and
-    /// the oil's fitted speed rises to 1.06 of it on a front that is no steady current's (<see cref="LockExchangeProbe"/>;
+    /// liquid's viscosity, slip walls) both currents run at about 0.8 of his speed by <see cref="LockExchange.Heads"/>,
+    /// which does not change with the spacing, while the oil's front here counts a film running ahead along the surface
+    /// as the support shrinks, reading 1.06 of his speed at twice the resolution (<see cref="LockExchangeProbe"/>;
     /// Headless/docs/physics.md, "The lock exchange, against Benjamin's gravity current").
     /// </summary>
     public sealed class LockExchangeTests
