@@ -47,6 +47,16 @@ namespace SphFluid.Tests.Physics
             Assert.That(_run.OilSpeed, Is.GreaterThanOrEqualTo(0.5 * _run.OilTheory));
         }
 
+        /// <summary>The same two bounds on the heads (<see cref="LockExchange.Heads"/>: where each liquid fills a quarter of
+        /// the depth), which no film running ahead along the surface or the floor can set: as shipped 0.61 and 0.58 of
+        /// Benjamin's speed.</summary>
+        [Test]
+        public void BothHeadsRunBetweenHalfAndBenjaminsSpeed()
+        {
+            Assert.That(_run.WaterHeadSpeed, Is.InRange(0.5 * _run.WaterTheory, 1.05 * _run.WaterTheory));
+            Assert.That(_run.OilHeadSpeed, Is.InRange(0.5 * _run.OilTheory, 1.05 * _run.OilTheory));
+        }
+
         [Test]
         public void NothingLeavesAndTheLastResortClampStaysIdle()
         {
@@ -55,7 +65,13 @@ namespace SphFluid.Tests.Physics
             Assert.That(_run.Report.NanCount, Is.EqualTo(0));
         }
 
-        internal sealed record Exchange(double Depth, double WaterSpeed, double OilSpeed, double WaterTheory, double OilTheory, DiagnosticsReport Report);
+        internal sealed record Exchange(double Depth, double WaterSpeed, double OilSpeed, double WaterTheory, double OilTheory, DiagnosticsReport Report)
+        {
+            /// <summary>The fronts' speeds measured by their heads (<see cref="LockExchange.Heads"/>), m/s.</summary>
+            public double WaterHeadSpeed { get; init; }
+
+            public double OilHeadSpeed { get; init; }
+        }
 
         /// <summary>Runs the exchange for <paramref name="seconds"/>, sampling both fronts every frame, and prints their
         /// fitted speeds beside Benjamin's for the liquids' measured depth.</summary>
@@ -117,7 +133,7 @@ namespace SphFluid.Tests.Physics
                 $"oil front {o.Speed:F4} m/s over {o.Samples} frames (Benjamin's {uo:F4}: Froude {o.Speed / (2 * uo):F3}); " +
                 $"clamp hits {report.ClampHits}, outside {report.OutsideCount}; by the heads ({LockExchange.HeadShare:P0} of the depth over " +
                 $"{1000 * LockExchange.HeadColumn:F0} mm): water {wh.Speed:F4} m/s (Froude {wh.Speed / (2 * uw):F3}), oil {oh.Speed:F4} m/s (Froude {oh.Speed / (2 * uo):F3})");
-            return new Exchange(depth, w.Speed, o.Speed, uw, uo, report);
+            return new Exchange(depth, w.Speed, o.Speed, uw, uo, report) { WaterHeadSpeed = wh.Speed, OilHeadSpeed = oh.Speed };
         }
 
         /// <summary>DFSPH's solves since the last call and the pressure on the floor beside what the liquids weigh: a solve
