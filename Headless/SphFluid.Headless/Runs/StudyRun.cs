@@ -55,12 +55,12 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         public readonly double[] DensityErrorAverage = new double[phaseNames.Length], DensityErrorMax = new double[phaseNames.Length];
         public double DivergenceError, EnergyDrift, SolverIterations;
 
-        /// <summary>DFSPH: mean over the samples of the share of constant-density solves cut off at their rounds before
-        /// their tolerance (DiagnosticsReport.DensitySolvesCutOff); 0 with WCSPH. Above 0 the row's density error is not
+        /// <summary>DFSPH: the share of the simulated time whose constant-density solves were cut off at their rounds
+        /// before their tolerance (SolveCutOffs.DensityShare); 0 with WCSPH. Above 0 the row's density error is not
         /// the tolerance's.</summary>
         public double DensitySolvesCutOff;
 
-        /// <summary>The same for the divergence-free solves (DiagnosticsReport.DivergenceSolvesCutOff).</summary>
+        /// <summary>The same for the divergence-free solves (SolveCutOffs.DivergenceShare).</summary>
         public double DivergenceSolvesCutOff;
         public double Layering, SurgeFront, Column;
         public double LayeringError, FrontError, ColumnError, ObservableError;
@@ -182,9 +182,12 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         // State figures (density error, divergence, energy) are averaged over every sample, the spawn's included. The
         // solver's figures describe the sub-steps since the sample before, so only samples that follow sub-steps count
         // for them. The spawn's sample follows none, and a last sample repeated after the loop none either: averaged in,
-        // the two read a 1 s run's iterations and cut-off shares low by 2 parts in 22.
+        // the two read a 1 s run's iterations and cut-off shares low by 2 parts in 22. The cut-off shares are weighted by
+        // the simulated time each sample covers, as simulate's summary and Unity's warning weigh them: the last interval
+        // of a run is shorter than the others.
         int samples = 0, intervals = 0, substepsSampled = 0;
-        double energy0 = double.NaN, energy = double.NaN, divergence = 0, iterations = 0, densityCutOff = 0, divergenceCutOff = 0;
+        double energy0 = double.NaN, energy = double.NaN, divergence = 0, iterations = 0;
+        var cutOffs = new SolveCutOffs();
         FluidMeasures Sample()
         {
             var report = sim.ReadDiagnostics();
@@ -197,11 +200,10 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
                 row.DensityErrorMax[k] = Math.Max(row.DensityErrorMax[k], report.Phases[k].MaxDensityError);
             }
             divergence += report.DivergenceError;
+            cutOffs.Observe(report);
             if (row.Substeps > substepsSampled)
             {
                 iterations += report.DensitySolveIterations + report.DivergenceSolveIterations;
-                densityCutOff += report.DensitySolvesCutOff;
-                divergenceCutOff += report.DivergenceSolvesCutOff;
                 intervals++;
                 substepsSampled = row.Substeps;
             }
@@ -247,8 +249,8 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         row.DivergenceError = divergence / samples;
         int measured = Math.Max(intervals, 1);
         row.SolverIterations = iterations / measured;
-        row.DensitySolvesCutOff = densityCutOff / measured;
-        row.DivergenceSolvesCutOff = divergenceCutOff / measured;
+        row.DensitySolvesCutOff = cutOffs.DensityShare;
+        row.DivergenceSolvesCutOff = cutOffs.DivergenceShare;
         row.EnergyDrift = Math.Abs(energy0) > 0 ? (energy - energy0) / Math.Abs(energy0) : 0;
         row.Layering = last.LayeringIndex;
         row.SurgeFront = last.SurgeFront;
