@@ -1,9 +1,7 @@
 using System;
 using System.Collections.Generic;
 using SphFluid.Simulation;
-using Unity.Mathematics;
 using UnityEngine;
-using UnityEngine.Rendering;
 
 namespace SphFluid.Runtime
 {
@@ -20,9 +18,6 @@ namespace SphFluid.Runtime
     {
         /// <summary>One press of single-step advances this much simulated time, s.</summary>
         public const float SingleStepSeconds = 1f / 60f;
-
-        /// <summary>Fastest wall or sphere motion passed on, m/s and rad/s.</summary>
-        const float MaxWallSpeed = 50f, MaxWallSpin = 50f;
 
         [Header("Rendering")]
         [SerializeField, Range(0.25f, 3f), Tooltip("Drawn particle radius in half particle spacings (1 = spheres just touching).")]
@@ -45,19 +40,10 @@ namespace SphFluid.Runtime
 
         UnityComputeDevice _device;
         FluidSimulation _simulation;
-        MaterialPropertyBlock _properties;
         FluidResources _resources; // the package's shaders and material (Resources), found at start
-        Material _universalMaterial; // the particle material's values on the URP shader, made on the first URP frame
-        bool _pipelineWarned;
         FluidContainer _container;
-        readonly List<SphereObstacle> _obstacles = new List<SphereObstacle>();
-        readonly List<Vector3> _obstaclePositions = new List<Vector3>();
-        // Refilled every frame, never remade: the per-frame push is free of garbage (the simulation copies what changed).
-        readonly ContainerDescription _containerDescription = new ContainerDescription();
-        readonly List<RigidSphere> _obstacleRows = new List<RigidSphere>();
-        readonly List<RigidSphere> _obstacleDescriptions = new List<RigidSphere>();
-        Vector3 _containerPosition;
-        Quaternion _containerRotation;
+        BoundaryMotion _motion;
+        ParticleDrawing _drawing;
         bool _paused, _stepRequested;
         string _failure, _lastMotionError;
         HealthCheck _health;
@@ -266,18 +252,8 @@ namespace SphFluid.Runtime
             _health = new HealthCheck(scene, _simulation.ParticleCount);
             _cutOffs = new SolveCutOffs();
             _cutOffsWarned = false;
-            _properties = new MaterialPropertyBlock();
-            _containerPosition = _container.transform.position;
-            _containerRotation = _container.transform.rotation;
-            _obstacles.Clear();
-            _obstacles.AddRange(ActiveObstacles());
-            _obstaclePositions.Clear();
-            _obstacleRows.Clear();
-            foreach (SphereObstacle sphere in _obstacles)
-            {
-                _obstaclePositions.Add(sphere.transform.position);
-                _obstacleRows.Add(sphere.Describe(Vector3.zero)); // its Name is read here, once
-            }
+            _motion = new BoundaryMotion(_container, ActiveObstacles());
+            _drawing = new ParticleDrawing(_resources, this);
         }
 
         void Fail(string reason)
@@ -297,13 +273,9 @@ namespace SphFluid.Runtime
             _simulation = null;
             _device?.Dispose(); // releases any buffer the simulation did not
             _device = null;
-            if (_universalMaterial != null) Destroy(_universalMaterial);
-            _universalMaterial = null;
-            _pipelineWarned = false;
-            _obstacles.Clear();
-            _obstaclePositions.Clear();
-            _obstacleRows.Clear();
-            _obstacleDescriptions.Clear();
+            _drawing?.Dispose();
+            _drawing = null;
+            _motion = null;
         }
 
         // ------------------------------------------------------------------ per frame
@@ -315,13 +287,11 @@ namespace SphFluid.Runtime
             float frame = FrameSeconds;
             _stepRequested = false;
 
-            // Walls and spheres go where their Transforms stand now, with the velocity that brought them there over the
-            // simulated frame: the simulation sweeps them there from where the last frame left them.
-            float motionSeconds = advance ? frame : Time.deltaTime;
+            // Paused, the walls and spheres still follow their Transforms (their velocities over the wall-clock frame), so
+            // that a resumed run sweeps them on from where they stand, not from where the pause found them.
             try
             {
-                PushContainer(motionSeconds);
-                PushObstacles(motionSeconds);
+                _motion.Push(_simulation, advance ? frame : Time.deltaTime);
                 _lastMotionError = null;
             }
             catch (ArgumentException e)
@@ -345,7 +315,7 @@ namespace SphFluid.Runtime
                 Fail("the simulation stopped: " + e.Message);
                 return;
             }
-            Draw();
+            if (_container != null) _drawing.Draw(_simulation, _container.transform, ParticleRadius, gameObject.layer);
         }
 
         /// <summary>Checks one diagnostics report (each arriving one, from Update; tests pass a made-up one): the
@@ -372,115 +342,6 @@ namespace SphFluid.Runtime
             if (_cutOffs.ObservedSeconds < 1.0 || !(_cutOffs.Warning(_simulation.Scene.Settings) is string warning)) return;
             _cutOffsWarned = true;
             Debug.LogWarning($"Fluid '{name}': {warning}", this);
-        }
-
-        void PushContainer(float seconds)
-        {
-            if (_container == null) return;
-            Transform t = _container.transform;
-            Vector3 position = t.position;
-            Quaternion rotation = t.rotation;
-            ContainerDescription description = _container.DescribeInto(_containerDescription);
-            description.Velocity = System.Numerics.Vector3.Zero;
-            description.AngularVelocity = System.Numerics.Vector3.Zero;
-            if (seconds > 0f)
-            {
-                // A teleport (editing the Transform) is not a motion the walls should fling fluid with.
-                description.Velocity = Vector3.ClampMagnitude((position - _containerPosition) / seconds, MaxWallSpeed).ToNumerics();
-                description.AngularVelocity = Vector3.ClampMagnitude(AngularVelocity(_containerRotation, rotation) / seconds, MaxWallSpin).ToNumerics();
-            }
-            _containerPosition = position;
-            _containerRotation = rotation;
-            _simulation.UpdateContainer(description);
-        }
-
-        /// <summary>Rotation from <paramref name="from"/> to <paramref name="to"/> as axis times angle, rad (shortest way).</summary>
-        static Vector3 AngularVelocity(Quaternion from, Quaternion to)
-        {
-            // The quaternion logarithm of the frame-to-frame turn is half its rotation vector; q and -q are the same
-            // turn, so the short way round is the one with w >= 0.
-            quaternion delta = math.mul(to, math.inverse(from));
-            if (delta.value.w < 0f) delta.value = -delta.value;
-            float3 rotation = 2f * math.log(delta).value.xyz;
-            return math.all(math.isfinite(rotation)) ? (Vector3)rotation : Vector3.zero; // no turn: log is 0/0
-        }
-
-        void PushObstacles(float seconds)
-        {
-            if (_obstacles.Count == 0) return;
-            _obstacleDescriptions.Clear();
-            for (int i = 0; i < _obstacles.Count; i++)
-            {
-                SphereObstacle sphere = _obstacles[i];
-                if (sphere == null) continue; // destroyed while running: it simply stops pushing
-                Vector3 position = sphere.transform.position;
-                Vector3 velocity = seconds > 0f ? Vector3.ClampMagnitude((position - _obstaclePositions[i]) / seconds, MaxWallSpeed) : Vector3.zero;
-                _obstaclePositions[i] = position;
-                _obstacleDescriptions.Add(sphere.DescribeInto(_obstacleRows[i], velocity));
-            }
-            _simulation.UpdateObstacles(_obstacleDescriptions);
-        }
-
-        void Draw()
-        {
-            Material material = MaterialForPipeline();
-            if (material == null || _container == null) return;
-            var particles = (UnityComputeBuffer)_simulation.Particles; // alternates every sort: fetch each frame
-            var phases = (UnityComputeBuffer)_simulation.PhaseTable;
-            _properties.SetBuffer(ShaderIds.Particles, particles.Buffer);
-            _properties.SetBuffer(ShaderIds.Phases, phases.Buffer);
-            _properties.SetFloat(ShaderIds.ParticleRadius, ParticleRadius);
-
-            Transform box = _container.transform;
-            float reach = box.lossyScale.magnitude + 4f * ParticleRadius; // any rotation of the box fits
-            var parameters = new RenderParams(material)
-            {
-                worldBounds = new Bounds(box.position, new Vector3(reach, reach, reach)),
-                matProps = _properties,
-                layer = gameObject.layer,
-                shadowCastingMode = ShadowCastingMode.Off,
-                receiveShadows = false,
-            };
-            Graphics.RenderPrimitives(parameters, MeshTopology.Triangles, 6, _simulation.ParticleCount);
-        }
-
-        /// <summary>
-        /// The material for the active render pipeline: the resources' particle material itself in the Built-in
-        /// pipeline (no pipeline asset), a copy of its values on the URP particle shader in URP, null (not drawn, one
-        /// warning) for any other pipeline. Asked every frame: the pipeline asset may change with the quality level.
-        /// </summary>
-        Material MaterialForPipeline()
-        {
-            Material particleMaterial = _resources.ParticleMaterial;
-            RenderPipelineAsset pipeline = GraphicsSettings.currentRenderPipeline;
-            if (pipeline == null) return particleMaterial;
-            if (pipeline.renderPipelineShaderTag != UniversalPipelineTag)
-            {
-                if (!_pipelineWarned)
-                    Debug.LogWarning($"Fluid '{name}': render pipeline '{pipeline.name}' (shader tag '{pipeline.renderPipelineShaderTag}') is neither Built-in nor URP ('{UniversalPipelineTag}'); the fluid is simulated but not drawn", this);
-                _pipelineWarned = true;
-                return null;
-            }
-            if (_universalMaterial == null)
-            {
-                _universalMaterial = new Material(_resources.UniversalParticleShader) { name = particleMaterial.name + " (URP)", hideFlags = HideFlags.DontSave };
-                string missing = UniversalOpaqueTexture.MissingReason(pipeline, Camera.main);
-                if (missing != null)
-                    Debug.LogWarning($"Fluid '{name}': {missing}; the liquid shows no scene behind it", this);
-            }
-            _universalMaterial.CopyPropertiesFromMaterial(particleMaterial); // inspector edits of the material carry over
-            return _universalMaterial;
-        }
-
-        /// <summary>The "RenderPipeline" SubShader tag URP's asset reports; FluidParticlesUniversal.shader carries it.</summary>
-        const string UniversalPipelineTag = "UniversalPipeline";
-
-        /// <summary>Material property ids, looked up once (on first use, on the main thread).</summary>
-        static class ShaderIds
-        {
-            public static readonly int Particles = Shader.PropertyToID("_Particles");
-            public static readonly int Phases = Shader.PropertyToID("_Phases");
-            public static readonly int ParticleRadius = Shader.PropertyToID("_ParticleRadius");
         }
     }
 }

@@ -1,0 +1,98 @@
+using System;
+using SphFluid.Simulation;
+using UnityEngine;
+using UnityEngine.Rendering;
+using Object = UnityEngine.Object;
+
+namespace SphFluid.Runtime
+{
+    /// <summary>
+    /// Draws a simulation's particles with one procedural call, six vertices a particle placed by the particle shader
+    /// from the particle buffer: in the Built-in pipeline with the package's particle material, in URP with a copy of its
+    /// values on the URP particle shader, and not at all (one warning) in any other pipeline. Owns that copy; Dispose
+    /// destroys it.
+    /// </summary>
+    sealed class ParticleDrawing : IDisposable
+    {
+        /// <summary>The "RenderPipeline" SubShader tag URP's asset reports; FluidParticlesUniversal.shader carries it.</summary>
+        const string UniversalPipelineTag = "UniversalPipeline";
+
+        readonly FluidResources _resources;
+        readonly Fluid _owner; // names the fluid in the Console, and is the messages' context
+        readonly MaterialPropertyBlock _properties = new MaterialPropertyBlock();
+        Material _universalMaterial; // the particle material's values on the URP shader, made on the first URP frame
+        bool _pipelineWarned;
+
+        public ParticleDrawing(FluidResources resources, Fluid owner)
+        {
+            _resources = resources;
+            _owner = owner;
+        }
+
+        /// <summary>Draws <paramref name="simulation"/>'s particles at <paramref name="radius"/> (m) on
+        /// <paramref name="layer"/>, culled by a bound that holds <paramref name="container"/> at any rotation.</summary>
+        public void Draw(FluidSimulation simulation, Transform container, float radius, int layer)
+        {
+            Material material = MaterialForPipeline();
+            if (material == null) return;
+            var particles = (UnityComputeBuffer)simulation.Particles; // alternates every sort: fetch each frame
+            var phases = (UnityComputeBuffer)simulation.PhaseTable;
+            _properties.SetBuffer(ShaderIds.Particles, particles.Buffer);
+            _properties.SetBuffer(ShaderIds.Phases, phases.Buffer);
+            _properties.SetFloat(ShaderIds.ParticleRadius, radius);
+
+            float reach = container.lossyScale.magnitude + 4f * radius;
+            var parameters = new RenderParams(material)
+            {
+                worldBounds = new Bounds(container.position, new Vector3(reach, reach, reach)),
+                matProps = _properties,
+                layer = layer,
+                shadowCastingMode = ShadowCastingMode.Off,
+                receiveShadows = false,
+            };
+            Graphics.RenderPrimitives(parameters, MeshTopology.Triangles, 6, simulation.ParticleCount);
+        }
+
+        public void Dispose()
+        {
+            if (_universalMaterial != null) Object.Destroy(_universalMaterial);
+            _universalMaterial = null;
+        }
+
+        /// <summary>
+        /// The material for the active render pipeline: the resources' particle material itself in the Built-in
+        /// pipeline (no pipeline asset), a copy of its values on the URP particle shader in URP, null (not drawn, one
+        /// warning) for any other pipeline. Asked every frame: the pipeline asset may change with the quality level.
+        /// </summary>
+        Material MaterialForPipeline()
+        {
+            Material particleMaterial = _resources.ParticleMaterial;
+            RenderPipelineAsset pipeline = GraphicsSettings.currentRenderPipeline;
+            if (pipeline == null) return particleMaterial;
+            if (pipeline.renderPipelineShaderTag != UniversalPipelineTag)
+            {
+                if (!_pipelineWarned)
+                    Debug.LogWarning($"Fluid '{_owner.name}': render pipeline '{pipeline.name}' (shader tag '{pipeline.renderPipelineShaderTag}') is neither Built-in nor URP ('{UniversalPipelineTag}'); the fluid is simulated but not drawn", _owner);
+                _pipelineWarned = true;
+                return null;
+            }
+            if (_universalMaterial == null)
+            {
+                _universalMaterial = new Material(_resources.UniversalParticleShader) { name = particleMaterial.name + " (URP)", hideFlags = HideFlags.DontSave };
+                string missing = UniversalOpaqueTexture.MissingReason(pipeline, Camera.main);
+                if (missing != null)
+                    Debug.LogWarning($"Fluid '{_owner.name}': {missing}; the liquid shows no scene behind it", _owner);
+            }
+            _universalMaterial.CopyPropertiesFromMaterial(particleMaterial); // inspector edits of the material carry over
+            return _universalMaterial;
+        }
+
+        /// <summary>Material property ids, looked up once (on first use, on the main thread).</summary>
+        static class ShaderIds
+        {
+            public static readonly int Particles = Shader.PropertyToID("_Particles");
+            public static readonly int Phases = Shader.PropertyToID("_Phases");
+            public static readonly int ParticleRadius = Shader.PropertyToID("_ParticleRadius");
+        }
+    }
+}
