@@ -13,10 +13,12 @@ namespace SphFluid.Tests.Physics
     /// <summary>
     /// <see cref="LockExchangeTests"/>' exchange in other configurations: a measurement run by name, `bash Headless/test.sh
     /// --filter FullyQualifiedName~LockExchangeProbe`, which CI does not run. A configuration is the solver followed by
-    /// any of: <c>thin</c> (a tenth of each liquid's viscosity), <c>slip</c> (slip walls), <c>noav</c> (no artificial
-    /// viscosity), <c>summation</c> (WCSPH's summation density), <c>k4</c> (four times the stiffness), <c>lid</c> (a
-    /// rigid lid a tenth of a spacing above the liquids), <c>flush</c> (with <c>lid</c>: the lid on the liquids' top)
-    /// and <c>xN</c> (N times the particles), joined by hyphens (the test adapter's filter takes no spaces).
+    /// any of: <c>thin</c> (a tenth of each liquid's viscosity), <c>inviscid</c> (none), <c>slip</c> (slip walls),
+    /// <c>noav</c> (no artificial viscosity), <c>summation</c> (WCSPH's summation density), <c>k4</c> (four times the
+    /// stiffness), <c>lid</c> (a rigid lid a tenth of a spacing above the liquids), <c>flush</c> (with <c>lid</c>: the
+    /// lid on the liquids' top), <c>supportN</c> (the kernel's support, N spacings), <c>stepN</c> (the longest sub-step,
+    /// N ms), <c>densityN</c> and <c>divergenceN</c> (DFSPH's tolerances, % and %/s) and <c>xN</c> (N times the
+    /// particles), joined by hyphens (the test adapter's filter takes no spaces).
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]
     [TestFixture("wcsph")]
@@ -32,6 +34,13 @@ namespace SphFluid.Tests.Physics
     [TestFixture("dfsph-thin-slip-x2")]
     [TestFixture("dfsph-thin-slip-x4")]
     [TestFixture("dfsph-thin-slip-x8")]
+    [TestFixture("dfsph-inviscid-slip")]
+    [TestFixture("dfsph-inviscid-slip-x2")]
+    [TestFixture("dfsph-inviscid-slip-step2")]
+    [TestFixture("dfsph-inviscid-slip-density1-divergence100")]
+    [TestFixture("dfsph-inviscid-slip-density0.01-divergence1")]
+    [TestFixture("wcsph-inviscid-slip-noav")]
+    [TestFixture("wcsph-inviscid-slip-noav-support3.5")]
     [TestFixture("dfsph-thin-slip-lid")]
     [TestFixture("wcsph-thin-slip-lid")]
     [TestFixture("dfsph-thin-slip-lid-flush")]
@@ -64,6 +73,8 @@ namespace SphFluid.Tests.Physics
             {
                 if (word == "thin")
                     foreach (var box in scene.SpawnBoxes) box.Phase.Viscosity /= 10;
+                else if (word == "inviscid")
+                    foreach (var box in scene.SpawnBoxes) box.Phase.Viscosity = 0;
                 else if (word == "slip") scene.Container.Friction = WallFriction.Slip;
                 else if (word == "noav") s.ArtificialViscosity = 0;
                 else if (word == "summation") s.WcsphDensity = WcsphDensity.Summation;
@@ -82,6 +93,14 @@ namespace SphFluid.Tests.Physics
                     c.Position = new Vector3(c.Position.X, (top + floor) / 2, c.Position.Z);
                 }
                 else if (word == "flush" && words.Contains("lid")) continue; // read by "lid"
+                else if (word.StartsWith("support", StringComparison.Ordinal))
+                    s.SmoothingRadius = Number(word, "support") * s.ParticleSpacing;
+                else if (word.StartsWith("step", StringComparison.Ordinal))
+                    s.MaxTimeStep = Number(word, "step") / 1000;
+                else if (word.StartsWith("density", StringComparison.Ordinal))
+                    s.DensityTolerance = Number(word, "density");
+                else if (word.StartsWith("divergence", StringComparison.Ordinal))
+                    s.DivergenceTolerance = Number(word, "divergence");
                 else if (word.StartsWith("x", StringComparison.Ordinal))
                     ParticleScaling.ScaleBy(scene, double.Parse(word.Substring(1), CultureInfo.InvariantCulture));
                 else throw new ArgumentException($"unknown configuration word '{word}' in '{configuration}'", nameof(configuration));
@@ -90,5 +109,7 @@ namespace SphFluid.Tests.Physics
             seconds = 1.4;
             return scene;
         }
+
+        static float Number(string word, string prefix) => float.Parse(word.Substring(prefix.Length), CultureInfo.InvariantCulture);
     }
 }
