@@ -51,6 +51,7 @@ namespace SphFluid.Runtime
 
         void PushContainer(FluidSimulation simulation, float seconds)
         {
+            if (_container == null) return; // destroyed while running: the walls stay where it left them
             Transform t = _container.transform;
             Vector3 position = t.position;
             Quaternion rotation = t.rotation;
