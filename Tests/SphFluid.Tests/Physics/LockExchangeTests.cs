@@ -116,9 +116,11 @@ namespace SphFluid.Tests.Physics
             var start = Energies(sim, particles);
             var line = start;
             (double Kinetic, double Potential)? windowStart = null, windowEnd = null;
+            int frames = 0, substeps = 0;
             while (sim.SimulatedTime < seconds - 1e-6)
             {
-                sim.Step(1f / 60f);
+                substeps += sim.Step(1f / 60f).Substeps;
+                frames++;
                 Sample();
                 int k = times.Count - 1;
                 if (k % 12 == 0)
@@ -155,7 +157,7 @@ namespace SphFluid.Tests.Physics
                 $"clamp hits {report.ClampHits}, outside {report.OutsideCount}; by the heads ({LockExchange.HeadShare:P0} of the depth over " +
                 $"{1000 * LockExchange.HeadColumn:F0} mm): water {wh.Speed:F4} m/s (Froude {wh.Speed / (2 * uw):F3}), oil {oh.Speed:F4} m/s (Froude {oh.Speed / (2 * uo):F3})" +
                 (s.PressureSolver == PressureSolver.Dfsph && windowStart is { } a && windowEnd is { } b
-                    ? $"; kinetic share of the potential energy released from {BudgetWindow.Start} to {BudgetWindow.End} s: {(b.Kinetic - a.Kinetic) / (a.Potential - b.Potential):P1}"
+                    ? $"; kinetic share of the potential energy released from {BudgetWindow.Start} to {BudgetWindow.End} s: {(b.Kinetic - a.Kinetic) / (a.Potential - b.Potential):P1}, at {(double)substeps / frames:F2} sub-steps a frame"
                     : ""));
             return new Exchange(depth, w.Speed, o.Speed, uw, uo, report) { WaterHeadSpeed = wh.Speed, OilHeadSpeed = oh.Speed };
         }
