@@ -21,7 +21,7 @@ public static class OptionKinds
         var option = new Option<double>(name) { Description = description, HelpName = valueName, Arity = ArgumentArity.ZeroOrOne };
         option.CustomParser = r => Guard(r, command, name, text => Ranges.ParseDouble(command, name, text, min, max, minExclusive, unit));
         if (fallback.HasValue) option.DefaultValueFactory = _ => fallback.Value;
-        return option;
+        return NeedsAValue(option, command, name);
     }
 
     /// <summary>A number that overrides a declared <see cref="FluidSettings"/> field: its range, unit and
@@ -53,7 +53,7 @@ public static class OptionKinds
         var option = new Option<int>(name) { Description = description, HelpName = valueName, Arity = ArgumentArity.ZeroOrOne };
         option.CustomParser = r => Guard(r, command, name, text => Ranges.ParseInt(command, name, text, min, max));
         if (fallback.HasValue) option.DefaultValueFactory = _ => fallback.Value;
-        return option;
+        return NeedsAValue(option, command, name);
     }
 
     public static Option<string> Text(string command, string name, string valueName, string description)
@@ -134,6 +134,19 @@ public static class OptionKinds
         if (string.IsNullOrWhiteSpace(path))
             throw new UsageException($"{command}: the scene file argument is missing (e.g. sphfluid {command} {example})");
         return path;
+    }
+
+    /// <summary>Refuses the option written without its value. The parser below sees that case only for an option
+    /// without a default: with one, the library reads a bare <c>--seconds</c> as the default, and the run went ahead
+    /// on a value the user never gave.</summary>
+    static Option<T> NeedsAValue<T>(Option<T> option, string command, string name)
+    {
+        option.Validators.Add(r =>
+        {
+            if (!r.Implicit && r.Tokens.Count == 0 && r.Errors.Count() == 0)
+                r.AddError($"{command}: option {name} needs a value");
+        });
+        return option;
     }
 
     /// <summary>Parses the option's last token; a refusal is recorded on the result (the parse then fails) and the

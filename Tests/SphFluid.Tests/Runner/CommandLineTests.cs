@@ -1,4 +1,6 @@
+using System.Collections.Generic;
 using System.IO;
+using System.Text.RegularExpressions;
 using NUnit.Framework;
 using SphFluid.Headless;
 using SphFluid.Headless.Cli;
@@ -46,6 +48,27 @@ namespace SphFluid.Tests.Runner
             int code = Run(out _, out string err, args);
             Assert.That(code, Is.EqualTo(ExitCodes.BadArguments));
             Assert.That(err, Does.Contain(message));
+        }
+
+        /// <summary>Every option that takes a value, written last without one, is refused by name: the options with a
+        /// default (--seconds, --particles-scale, bench's --steps) once ran on that default instead. The scene does not
+        /// exist, so an option the parse let through fails on the scene (exit 3) and never runs a simulation.</summary>
+        [TestCase("simulate")]
+        [TestCase("bench")]
+        [TestCase("study")]
+        public void EveryValueOptionWithoutItsValueIsRefused(string command)
+        {
+            Run(out string help, out _, command, "--help");
+            var options = new List<string>();
+            foreach (Match m in Regex.Matches(help, @"^\s+(--[a-z-]+) <", RegexOptions.Multiline))
+                options.Add(m.Groups[1].Value);
+            Assert.That(options, Has.Member("--out"), help);
+            foreach (string option in options)
+            {
+                int code = Run(out _, out string err, command, "no-such-scene.unity", option);
+                Assert.That(code, Is.EqualTo(ExitCodes.BadArguments), $"{command} {option}: {err}");
+                Assert.That(err, Does.Contain($"option {option} needs a value"), $"{command} {option}");
+            }
         }
 
         [Test]
