@@ -19,6 +19,7 @@ namespace SphFluid.Tests.Runner
         const string Default = "OilAndWater";
         const string WaterTransform = "--- !u!4 &1104342179";
         const string OilTransform = "--- !u!4 &518734963";
+        const string ContainerTransformId = "280459232";
 
         sealed class Outcome
         {
@@ -58,6 +59,7 @@ namespace SphFluid.Tests.Runner
             text = text ?? File.ReadAllText(RunnerPaths.Scene(Default));
             int start = text.IndexOf(header, StringComparison.Ordinal);
             int end = text.IndexOf("\n--- ", start + 1, StringComparison.Ordinal);
+            if (end < 0) end = text.Length; // the file's last document
             int at = text.IndexOf(find, start, end - start, StringComparison.Ordinal);
             Assert.That(at, Is.GreaterThan(0), $"{Default}.unity has no '{find}' in '{header}'");
             line = text.Take(at).Count(c => c == '\n') + 1;
@@ -271,6 +273,39 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', Transform.m_LocalScale.x must be a finite number (was 'abc')"));
         }
+
+        /// <summary>A spawn box too thin once placed was named by its GameObject and Transform field but by no line.</summary>
+        [Test]
+        public void ASpawnBoxTooThinIsNamedAtItsScaleLine()
+        {
+            string path = Write(EditDocument(WaterTransform, "m_LocalScale: {x: 0.3, y: 0.2, z: 0.12}", "m_LocalScale: {x: 0.3, y: 0.2, z: 0.001}", out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"line {line}: GameObject 'Water', Transform.m_LocalScale: SpawnBox 'Water': each Size component must be in"));
+        }
+
+        /// <summary>Under a scaled parent the box's own scale is fine and its world size is not: the message names the
+        /// parent whose Transform counts too.</summary>
+        [Test]
+        public void ASpawnBoxUnderAParentNamesTheParent()
+        {
+            // Water under the container, as Unity writes a parent: the child in the parent's m_Children and no longer a root.
+            string text = EditDocument(WaterTransform, "m_Father: {fileID: 0}", "m_Father: {fileID: " + ContainerTransformId + "}", out _);
+            text = EditDocument("--- !u!4 &" + ContainerTransformId, "m_Children: []", "m_Children:\n  - {fileID: 1104342179}", out _, text);
+            text = EditDocument("SceneRoots:", "  - {fileID: 1104342179}\n", "", out _, text);
+            string path = Write(text);
+            int line = File.ReadAllLines(path).Select((l, i) => (l, i)).Skip(LineOf(path, WaterTransform))
+                .First(l => l.l.Contains("m_LocalScale")).i + 1;
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"line {line}: GameObject 'Water', Transform.m_LocalScale (in the world, under 'Container', whose Transforms count too): SpawnBox 'Water'"));
+        }
+
+        static int LineOf(string path, string text) => Array.FindIndex(File.ReadAllLines(path), l => l.StartsWith(text, StringComparison.Ordinal));
 
         /// <summary>A zero rotation was reported against the container's scale and the support radius, a tiny one as a
         /// spawn box's NaN rotation with no line; each is now named at its own line.</summary>
