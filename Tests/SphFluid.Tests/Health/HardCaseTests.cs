@@ -131,6 +131,21 @@ namespace SphFluid.Tests.Health
             AssertHealthy(HealthRun.Of(scene, 0.25));
         }
 
+        /// <summary>The viscosity's declared bound, 1000 Pa s (nu = 1 m^2/s): the viscous step rule of 0.125 H^2 / nu allowed
+        /// 0.8 ms sub-steps here, beyond the 0.55 ms at which the viscous force's stiffest wave grows (ViscousStepLimit).</summary>
+        [TestCase(PressureSolver.Wcsph)]
+        [TestCase(PressureSolver.Dfsph)]
+        public void ViscosityAtItsBound_StaysHealthy(PressureSolver solver)
+        {
+            float bound = (float)SettingRules.Of(typeof(PhaseDescription), nameof(PhaseDescription.Viscosity)).Max;
+            var scene = Pool(SolverScenes.Water(viscosity: bound));
+            scene.Settings.PressureSolver = solver;
+            Assert.That(scene.Validate(), Is.Empty);
+            var run = HealthRun.Of(scene, 0.15);
+            AssertHealthy(run);
+            TestContext.Progress.WriteLine($"{solver} at {bound} Pa s: {run.Substeps} sub-steps in {run.Frames} frames, fastest {run.FastestSeen:F3} m/s");
+        }
+
         [TestCase(2.5f)]
         [TestCase(0.4f)]
         public void ParticleMassFarFromTheDerivedOne_IsRefused(float factor)

@@ -4,16 +4,17 @@ namespace SphFluid.Simulation
 {
     /// <summary>
     /// Adaptive time stepping, engine-free. The stable step is
-    /// dt = min(cfl h / (c + vmax), 0.25 sqrt(h / amax), 0.125 h^2 / nu_max, dt_capillary, MaxTimeStep)
+    /// dt = min(cfl h / (c + vmax), 0.25 sqrt(h / amax), dt_viscous, dt_capillary, MaxTimeStep)
     /// (CFL with the Tait speed of sound c = sqrt(k gamma / rho0_min); acceleration condition; viscous
-    /// condition, Monaghan 1992 / Becker &amp; Teschner 2007; capillary condition
+    /// condition dt_viscous = 1 / (nu_max Lambda_max) of the viscous force's stiffest lattice wave
+    /// (<see cref="ViscousStepLimit"/>); capillary condition
     /// dt_capillary = sqrt(rho0_min s^3 / (2 pi sigma_max)) of Brackbill, Kothe &amp; Zemach 1992, "A continuum
     /// method for modeling surface tension", with the particle spacing s as the grid size). nu_max is taken over
     /// every pair of phases, 2 min(mu_i, mu_j) / rho0_i bounding the shader's harmonic mixing, because a light
     /// phase next to a viscous one feels more than its own nu. vmax and amax come from the GPU's max-reduction,
     /// read back asynchronously and possibly a frame stale, so the controller uses the larger of the last two
     /// reports. With DFSPH (<see cref="PressureSolver.Dfsph"/>) the solves keep the density, so no speed of sound enters:
-    /// dt = min(cfl h / max(vmax, u_walls, sqrt(g H)), 0.125 h^2 / nu_max, dt_capillary, MaxTimeStep) (the velocity CFL of
+    /// dt = min(cfl h / max(vmax, u_walls, sqrt(g H)), dt_viscous, dt_capillary, MaxTimeStep) (the velocity CFL of
     /// Bender &amp; Koschier 2017, sec. 6; the viscous and capillary limits stay because the non-pressure forces are still
     /// explicit, the acceleration limit goes because the pressure acceleration is no longer explicit). u_walls is the
     /// fastest wall or obstacle (<see cref="BoundarySpeed"/>): a sphere started at 6.26 m/s through fluid at rest crossed
@@ -40,6 +41,10 @@ namespace SphFluid.Simulation
         /// <summary>Largest kinematic viscosity nu = mu / rho0 over the phases, m^2/s.</summary>
         public float MaxKinematicViscosity { get; }
 
+        /// <summary>The viscous step limit, s (<see cref="ViscousStepLimit"/> at <see cref="MaxKinematicViscosity"/>; infinite
+        /// without viscosity).</summary>
+        public double ViscousTimeStep { get; }
+
         /// <summary>The capillary step limit of surface tension, s (infinite without tension).</summary>
         public float CapillaryTimeStep { get; }
 
@@ -62,6 +67,9 @@ namespace SphFluid.Simulation
             _settings = settings ?? throw new ArgumentNullException(nameof(settings));
             SpeedOfSound = SpeedOfSoundRule.SpeedOfSound(settings, minRestDensity);
             MaxKinematicViscosity = Math.Max(0f, maxKinematicViscosity);
+            ViscousTimeStep = MaxKinematicViscosity > 0f && settings.ParticleSpacing > 0f && settings.SmoothingRadius > 0f
+                ? ViscousStepLimit.For(settings.SmoothingKernel, settings.ParticleSpacing, settings.SmoothingRadius, MaxKinematicViscosity)
+                : double.PositiveInfinity;
             CapillaryTimeStep = capillaryTimeStep > 0f ? capillaryTimeStep : float.PositiveInfinity;
             Reset();
         }
@@ -127,11 +135,7 @@ namespace SphFluid.Simulation
                 double acc = 0.25 * Math.Sqrt(h / MaxAcceleration);
                 if (acc < dt) { dt = acc; limit = "acceleration"; }
             }
-            if (MaxKinematicViscosity > 0f)
-            {
-                double visc = 0.125 * h * h / MaxKinematicViscosity;
-                if (visc < dt) { dt = visc; limit = "viscous"; }
-            }
+            if (ViscousTimeStep < dt) { dt = ViscousTimeStep; limit = "viscous"; }
             if (CapillaryTimeStep < dt) { dt = CapillaryTimeStep; limit = "capillary"; }
             return (float)dt;
         }

@@ -55,7 +55,9 @@ namespace SphFluid.Tests.Core.Simulation
             var c = new TimeStepController(Settings(), 1000f, 1f); // nu = 1 m^2/s
             float dt = c.StableTimeStep(out string limit);
             Assert.That(limit, Is.EqualTo("viscous"));
-            Assert.That(dt, Is.EqualTo(0.125f * 0.04f * 0.04f).Within(1e-8f));
+            // The cubic spline at 2 spacings: Lambda_max s^2 = 5.82 (ViscousStepLimitTests), so 0.172 s^2 / nu.
+            Assert.That(dt, Is.EqualTo((float)(1.0 / ViscousStepLimit.StiffestMode(KernelFamily.CubicSpline, 0.02, 0.04))).Within(1e-8f));
+            Assert.That(dt, Is.EqualTo(0.172f * 0.02f * 0.02f).Within(0.01f * dt));
         }
 
         [Test]
