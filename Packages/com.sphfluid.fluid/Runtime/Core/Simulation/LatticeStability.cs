@@ -40,14 +40,8 @@ namespace SphFluid.Simulation
         public static double SoftestMode(KernelFamily kind, double spacing, double support)
         {
             var neighbours = Neighbours(kind, spacing, support);
-            double softest = 0.0;
-            for (int a = 0; a <= Samples; a++)
-            for (int b = 0; b <= a; b++)
-            for (int c = 0; c <= b; c++)
-            {
-                var k = (float)(Math.PI / spacing / Samples) * new Vector3(a, b, c);
-                softest = Math.Min(softest, TransverseEigenvalue(neighbours, k));
-            }
+            double softest = LatticeZone.Smallest(Samples, 0.0,
+                (a, b, c) => TransverseEigenvalue(neighbours, (float)(Math.PI / spacing / Samples) * new Vector3(a, b, c)));
             return softest / SmoothingKernels.LatticeNumberDensity(kind, spacing, support);
         }
 

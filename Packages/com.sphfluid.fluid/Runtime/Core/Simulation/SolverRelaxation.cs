@@ -44,13 +44,8 @@ namespace SphFluid.Simulation
         public static double StiffestMode(KernelFamily kind, double spacing, double support)
         {
             var (offsets, gradients, diagonal) = Neighbours(kind, spacing, support);
-            double stiffest = 0.0;
-            for (int a = 0; a <= Samples; a++)
-            for (int b = 0; b <= a; b++)
-            for (int c = 0; c <= b; c++)
-                stiffest = Math.Max(stiffest, Mode(offsets, gradients, diagonal, Math.PI / spacing / Samples * a,
-                    Math.PI / spacing / Samples * b, Math.PI / spacing / Samples * c));
-            return stiffest;
+            double step = Math.PI / spacing / Samples;
+            return LatticeZone.Largest(Samples, 0.0, (a, b, c) => Mode(offsets, gradients, diagonal, step * a, step * b, step * c));
         }
 
         /// <summary>lambda(k) at wave vector (kx, ky, kz), 1/m.</summary>

@@ -28,7 +28,7 @@ namespace SphFluid.Simulation
     /// </summary>
     public static class ViscousStepLimit
     {
-        /// <summary>Wave vectors sampled per axis over [0, pi / s]: the cubic lattice's zone, by symmetry.</summary>
+        /// <summary>Wave vectors sampled per axis over [0, pi / s] (<see cref="LatticeZone"/>).</summary>
         const int Samples = 16;
 
         /// <summary>The longest sub-step for kinematic viscosity <paramref name="nu"/> (m^2/s), s: 1 / (nu Lambda_max);
@@ -40,15 +40,8 @@ namespace SphFluid.Simulation
         public static double StiffestMode(KernelFamily kind, double spacing, double support)
         {
             var neighbours = Neighbours(kind, spacing, support);
-            double stiffest = 0.0;
-            for (int a = 0; a <= Samples; a++)
-            for (int b = 0; b <= a; b++)
-            for (int c = 0; c <= b; c++)
-            {
-                double step = Math.PI / spacing / Samples;
-                stiffest = Math.Max(stiffest, Mode(neighbours, step * a, step * b, step * c));
-            }
-            return stiffest;
+            double step = Math.PI / spacing / Samples;
+            return LatticeZone.Largest(Samples, 0.0, (a, b, c) => Mode(neighbours, step * a, step * b, step * c));
         }
 
         /// <summary>Lambda(k) at wave vector (kx, ky, kz), 1/m^2: the acceleration per unit velocity and unit kinematic
