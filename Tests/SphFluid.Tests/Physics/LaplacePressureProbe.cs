@@ -14,26 +14,35 @@ namespace SphFluid.Tests.Physics
     /// inside a droplet of radius R stands 2 sigma / R above the outside's. Three droplets of 10, 14 and 20 spacings a side
     /// (WCSPH, a soft Tait stiffness so the pressure reads clearly) give the pressure at their cores, averaged over 0.5 to
     /// 1.5 s, and a least-squares fit p = p_flat + 2 sigma / R gives sigma. p_flat is the cohesion's pull on a flat
-    /// surface, which compresses the liquid as a whole and which no liquid's surface tension does. A measurement (about 10
-    /// minutes of lavapipe for the four fixtures), run by name:
+    /// surface, which compresses the liquid as a whole and which no liquid's surface tension does. Further fixtures vary
+    /// the support ratio and the rest density. A measurement (one to three minutes of lavapipe a fixture, about 20 for
+    /// all nine), run by name:
     /// <c>bash Headless/test.sh --filter FullyQualifiedName~LaplacePressureProbe</c>.
     /// </summary>
     [Explicit("a measurement, minutes of lavapipe")]
-    [TestFixture(KernelFamily.CubicSpline, 2f, 0.005f)]
-    [TestFixture(KernelFamily.CubicSpline, 2f, 0.01f)]
-    [TestFixture(KernelFamily.WendlandC2, 2.85f, 0.005f)]
-    [TestFixture(KernelFamily.WendlandC2, 2.85f, 0.01f)]
+    [TestFixture(KernelFamily.CubicSpline, 2f, 0.005f, 1000f, 1f)]
+    [TestFixture(KernelFamily.CubicSpline, 2f, 0.01f, 1000f, 1f)]
+    [TestFixture(KernelFamily.WendlandC2, 2.85f, 0.005f, 1000f, 1f)]
+    [TestFixture(KernelFamily.WendlandC2, 2.85f, 0.01f, 1000f, 1f)]
+    // The support ratio, at the ends of each kernel's allowed range.
+    [TestFixture(KernelFamily.CubicSpline, 2.25f, 0.005f, 1000f, 1f)]
+    [TestFixture(KernelFamily.WendlandC2, 2f, 0.005f, 1000f, 1f)]
+    [TestFixture(KernelFamily.WendlandC2, 4f, 0.005f, 1000f, 1f)]
+    // The rest density, with gamma m^2 held (the cohesion's pull per pair the same, the curvature term's gamma m not).
+    [TestFixture(KernelFamily.CubicSpline, 2f, 0.005f, 500f, 4f)]
+    [TestFixture(KernelFamily.CubicSpline, 2f, 0.005f, 2000f, 0.25f)]
     public sealed class LaplacePressureProbe
     {
-        const float Gamma = 1f;
         readonly KernelFamily _kernel;
-        readonly float _supportRatio, _spacing;
+        readonly float _supportRatio, _spacing, _restDensity, _gamma;
 
-        public LaplacePressureProbe(KernelFamily kernel, float supportRatio, float spacing)
+        public LaplacePressureProbe(KernelFamily kernel, float supportRatio, float spacing, float restDensity, float gamma)
         {
             _kernel = kernel;
             _supportRatio = supportRatio;
             _spacing = spacing;
+            _restDensity = restDensity;
+            _gamma = gamma;
         }
 
         (double Radius, double Pressure) Droplet(int particlesASide)
@@ -46,8 +55,11 @@ namespace SphFluid.Tests.Physics
             settings.Stiffness = 2000f;
             settings.MaxSubsteps = 200;
             float side = particlesASide * _spacing;
-            // A viscous water (2 Pa s) so that the cube's rounding rings down within the half second before sampling.
-            var water = SolverScenes.Box("Water", SolverScenes.Water(2f, Gamma), Vector3.Zero, new Vector3(side), jitter: 0.05f);
+            // A viscous liquid (2 mm^2/s, water's 2 Pa s) so that the cube's rounding rings down within the half second
+            // before sampling.
+            var liquid = SolverScenes.Water(2f * _restDensity / 1000f, _gamma);
+            liquid.RestDensity = _restDensity;
+            var water = SolverScenes.Box("Water", liquid, Vector3.Zero, new Vector3(side), jitter: 0.05f);
             var scene = SolverScenes.Scene(settings, new Vector3(60 * _spacing), water);
             Assert.That(scene.Validate(), Is.Empty);
             using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
@@ -81,8 +93,9 @@ namespace SphFluid.Tests.Physics
             double slope = drops.Sum(d => (1 / d.Radius - mx) * (d.Pressure - my)) / drops.Sum(d => (1 / d.Radius - mx) * (1 / d.Radius - mx));
             double flat = my - slope * mx;
             double sigma = slope / 2;
-            TestContext.Progress.WriteLine($"{_kernel} at {_supportRatio} spacings of {_spacing} m, gamma {Gamma}: sigma {sigma:F3} N/m " +
-                $"({sigma / Gamma:F2} gamma; sigma / (gamma rho0^2 s^2) {sigma / (Gamma * 1e6 * _spacing * _spacing):F4}), p_flat {flat:F1} Pa; " +
+            TestContext.Progress.WriteLine($"{_kernel} at {_supportRatio} spacings of {_spacing} m, rho0 {_restDensity}, gamma {_gamma}: " +
+                $"sigma {sigma:F3} N/m ({sigma / _gamma:F2} gamma; sigma / (gamma rho0^2 s^2) " +
+                $"{sigma / (_gamma * _restDensity * _restDensity * _spacing * _spacing):F4}), p_flat {flat:F1} Pa; " +
                 "fit residuals " + string.Join(", ", drops.Select(d => $"{d.Pressure - flat - slope / d.Radius:F1} Pa")));
             Assert.That(sigma, Is.GreaterThan(0.0), "a droplet's core pressure falls as it grows");
         }
