@@ -43,7 +43,7 @@ cbuffer FluidConstants
     float _ArtificialViscosity;             // SphViscosity: alpha c h, m^2/s
     float _WallArtificialViscosity;         // SphViscosity: alpha_w c h against boundary particles, m^2/s
     float _WallContactNumberDensity;        // SphBoundary: the walls' share of delta beside a flat wall at rest, 1/m^3
-    float _CohesionCoefficient;             // SphSurfaceTension: 32 / (pi H^9)
+    float _SurfaceForceScale;               // SphSurfaceTension: 1 / (H share), the normals' H and SurfaceLayerShare's share undone, 1/m
     float _XsphEpsilon;                     // SphXsph: epsilon in [0, 1]
     float _ShiftingCoefficient;             // ParticleShifting: A h, m
     float _WallFriction;                    // SphBoundary: 0 free slip, 1 no slip

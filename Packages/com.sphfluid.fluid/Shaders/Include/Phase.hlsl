@@ -8,7 +8,7 @@ struct PhaseProperties
     float restDensity;    // rho0, kg/m^3
     float viscosity;      // mu, Pa s
     float particleMass;   // kg
-    float surfaceTension; // gamma, N/m
+    float surfaceTension; // sigma, N/m (SphSurfaceTension)
     float4 color;         // linear RGB tint, opacity
     float fresnelF0;      // Schlick reflectance at normal incidence
     float absorption;     // Beer-Lambert coefficient, 1/m

@@ -86,11 +86,9 @@ ForceSums ForceSumsOf(uint i, bool withPressure, uint lane)
             if (withPressure)
                 force += ArtificialViscosityForcePair(pi.velocity, pj.velocity, rij, r2, gradient, 0.5 * (di.x + dj.x), 1.0 / (di.z * dj.z));
 #if SURFACE_TENSION
-            if (r > 0.0 && phaseIndexJ == phaseIndexI && phaseI.surfaceTension > 0.0)
-            {
-                force += SurfaceTensionForcePair(phaseI.surfaceTension, phaseI.restDensity,
-                    phaseI.particleMass, phaseI.particleMass, di.x, dj.x, normalI, _Normals[j].xyz, rij, r);
-            }
+            if (phaseIndexJ == phaseIndexI && phaseI.surfaceTension > 0.0)
+                force += SurfaceTensionForcePair(phaseI.surfaceTension, normalI, _Normals[j].xyz,
+                    phaseI.particleMass / phaseI.restDensity, dj.z, gradient);
 #endif
 #if XSPH
             xsph += XsphPair(pi.velocity, pj.velocity, r2, di.z, dj.z);

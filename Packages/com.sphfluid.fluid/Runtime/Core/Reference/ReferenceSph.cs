@@ -18,7 +18,7 @@ namespace SphFluid.Reference
         readonly PhaseProperties[] _phases;
         readonly BoundaryParticle[] _boundaryRest;
         readonly float[] _ownNumberDensities;
-        readonly double _h, _h2, _cohesion, _flatWallNumberDensity;
+        readonly double _h, _h2, _surfaceForceScale, _flatWallNumberDensity;
 
         public ContainerDescription Container { get; set; }
         public List<RigidSphere> Obstacles { get; set; }
@@ -33,7 +33,7 @@ namespace SphFluid.Reference
             Obstacles = new List<RigidSphere>(scene.Obstacles ?? new List<RigidSphere>());
             _h = _settings.SmoothingRadius;
             _h2 = _h * _h;
-            _cohesion = 32.0 / (Math.PI * Math.Pow(_h, 9));
+            _surfaceForceScale = 1.0 / (_h * SurfaceLayerShare.For(_settings.SmoothingKernel, _h / _settings.ParticleSpacing));
             _flatWallNumberDensity = SmoothingKernels.FlatWallNumberDensity(_settings.SmoothingKernel, _settings.ParticleSpacing, _h);
             if (_settings.PressureSolver == PressureSolver.Dfsph && _settings.SolverIteration == SolverIteration.Chebyshev)
             {
@@ -62,20 +62,19 @@ namespace SphFluid.Reference
 
         public Double3 Gradient(Double3 rij, double r) => rij * (SmoothingKernels.Derivative(_settings.SmoothingKernel, r, _h) / r);
 
+        /// <summary>How much a normal of length |n| = H |grad c| counts: SphSurfaceTension.hlsl's smoothstep(0.05, 0.2, |n|).</summary>
+        static double SurfaceWeight(double normalLength)
+        {
+            double t = Math.Min(1.0, Math.Max(0.0, (normalLength - 0.05) / 0.15));
+            return t * t * (3.0 - 2.0 * t);
+        }
+
         /// <summary>gradW of a pair, a coincident pair given the id-signed diagonal (SphPressureForce.hlsl).</summary>
         public Double3 PairGradient(Double3 rij, double r, uint idI, uint idJ)
         {
             double rr = Math.Max(r, 0.01 * _h);
             Double3 direction = r > 0 ? rij / r : new Double3(1, 1, 1) * ((idI > idJ ? 1.0 : -1.0) / Math.Sqrt(3.0));
             return Gradient(direction * rr, rr);
-        }
-
-        public double Cohesion(double r)
-        {
-            if (r > _h || r <= 0) return 0;
-            double term = Math.Pow(_h - r, 3) * r * r * r;
-            if (2 * r > _h) return _cohesion * term;
-            return _cohesion * (2 * term - Math.Pow(_h, 6) / 64.0);
         }
 
         /// <summary>The boundary particles placed with the current container and obstacles (world space).</summary>
@@ -208,13 +207,16 @@ namespace SphFluid.Reference
                     force += (v[i] - v[j]) * (2 * mu / (di * s.NumberDensity[j]) * Double3.Dot(rij, gradient) / (r2 + 0.01 * _h2));
                     double approach = Math.Min(0.0, Double3.Dot(v[i] - v[j], rij)) / (r2 + 0.01 * _h2);
                     force += gradient * (pressureOn * artificial * 0.5 * (s.Density[i] + s.Density[j]) / (di * s.NumberDensity[j]) * approach);
-                    if (r > 0 && tension && particles[j].Phase == particles[i].Phase && phaseI.SurfaceTension > 0)
+                    if (tension && particles[j].Phase == particles[i].Phase && phaseI.SurfaceTension > 0)
                     {
-                        double gamma = phaseI.SurfaceTension;
-                        double k = 2 * phaseI.RestDensity / (s.Density[i] + s.Density[j]);
-                        var cohesion = rij * (-gamma * mi * phaseJ.ParticleMass * Cohesion(r) / r);
-                        var curvature = (s.Normal[i] - s.Normal[j]) * (-gamma * mi);
-                        force += (cohesion + curvature) * k;
+                        // The continuum surface force, weighted by how clear both normals are (SphSurfaceTension.hlsl).
+                        double ni = Math.Sqrt(s.Normal[i].LengthSquared()), nj = Math.Sqrt(s.Normal[j].LengthSquared());
+                        double weight = SurfaceWeight(ni) * SurfaceWeight(nj);
+                        if (weight > 0)
+                        {
+                            double divergence = weight * Double3.Dot(s.Normal[j] / nj - s.Normal[i] / ni, gradient) / s.NumberDensity[j];
+                            force += s.Normal[i] * (-phaseI.SurfaceTension * _surfaceForceScale * divergence * mi / phaseI.RestDensity);
+                        }
                     }
                     xsph += (v[j] - v[i]) * (2 * Kernel(r) / (di + s.NumberDensity[j]));
                 }

@@ -47,7 +47,7 @@ namespace SphFluid.Simulation
         public float ArtificialViscosity;
         public float WallArtificialViscosity;
         public float WallContactNumberDensity;
-        public float CohesionCoefficient;
+        public float SurfaceForceScale;
         public float XsphEpsilon;
         public float ShiftingCoefficient;
         public float WallFriction;

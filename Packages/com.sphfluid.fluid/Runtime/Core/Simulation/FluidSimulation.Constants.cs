@@ -63,7 +63,7 @@ namespace SphFluid.Simulation
             c.ChebyshevHigh = (float)high;
             c.AcceleratedDensitySolve = high > 0.0 && ChebyshevBounds.AcceleratesDensitySolve(s.DensityTolerance, depth, s.ParticleSpacing) ? 1u : 0u;
             c.WallFriction = _scene.Container.Friction == WallFriction.NoSlip ? 1f : 0f;
-            c.CohesionCoefficient = (float)(32.0 / (Math.PI * Math.Pow(h, 9)));
+            c.SurfaceForceScale = (float)(1.0 / (h * SurfaceLayerShare.For(s.SmoothingKernel, h / s.ParticleSpacing)));
             c.Stiffness = s.Stiffness;
             c.Gamma = s.Gamma;
             c.Gravity = s.Gravity;

@@ -27,7 +27,7 @@ namespace SphFluid.Simulation
         [Setting(Liquid, 0, 1e6, "kg", "Mass of one particle; 0 = derived so that the spawn lattice sits exactly at rest density. An explicit mass must lie within a factor (1 + gamma/2)^(1/gamma) of the derived one.")]
         public float ParticleMass;
 
-        [Setting(Liquid, 0, 10, "N/m", "Cohesion coefficient gamma of Akinci et al.'s surface tension, nominally N/m; the tension it makes grows as the particle spacing squared (Laplace-pressure measurements in the physics docs); 0 = off.")]
+        [Setting(Liquid, 0, 10, "N/m", "Surface tension sigma against air (water 0.072, oil about 0.03); an interface between two liquids carries both. 0 = off.")]
         public float SurfaceTension;
 
         // Linear, as the phase table and the shaders use it. Unity's inspector shows and picks sRGB, as for any colour,
@@ -63,6 +63,6 @@ namespace SphFluid.Simulation
         }
 
         public override string ToString() =>
-            $"{Name} (rho0 {RestDensity} kg/m^3, mu {Viscosity} Pa s, gamma {SurfaceTension} N/m)";
+            $"{Name} (rho0 {RestDensity} kg/m^3, mu {Viscosity} Pa s, sigma {SurfaceTension} N/m)";
     }
 }

@@ -21,7 +21,7 @@ namespace SphFluid.Simulation
         /// <summary>Mass of one particle of this phase, kg.</summary>
         public float ParticleMass;
 
-        /// <summary>Surface tension coefficient gamma, N/m (0 = none).</summary>
+        /// <summary>Surface tension sigma, N/m (0 = none).</summary>
         public float SurfaceTension;
 
         /// <summary>Linear RGB tint and opacity used by the point shader and the headless snapshots.</summary>
