@@ -47,7 +47,9 @@ namespace SphFluid.Tests.Physics
             };
         }
 
-        static (double Radius, double Pressure) Droplet(KernelFamily kernel, float supportRatio, float spacing, float restDensity,
+        /// <summary>The scene of one droplet: a cube of <paramref name="particlesASide"/> spacings a side in a container
+        /// 60 spacings wide, without gravity.</summary>
+        public static FluidSceneDescription Scene(KernelFamily kernel, float supportRatio, float spacing, float restDensity,
             float sigma, int particlesASide)
         {
             var settings = SolverScenes.Coarse(spacing);
@@ -65,7 +67,13 @@ namespace SphFluid.Tests.Physics
             var box = SolverScenes.Box("Water", liquid, Vector3.Zero, new Vector3(side), jitter: 0.05f);
             var scene = SolverScenes.Scene(settings, new Vector3(60 * spacing), box);
             Assert.That(scene.Validate(), Is.Empty);
-            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
+            return scene;
+        }
+
+        static (double Radius, double Pressure) Droplet(KernelFamily kernel, float supportRatio, float spacing, float restDensity,
+            float sigma, int particlesASide)
+        {
+            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, Scene(kernel, supportRatio, spacing, restDensity, sigma, particlesASide));
             var particles = new Particle[sim.ParticleCount];
             var densities = new Vector4[sim.ParticleCount];
             var pressures = new List<double>();

@@ -199,14 +199,17 @@ namespace SphFluid.Tests.Solver
             }
         }
 
+        /// <summary>The pair forces (pressure, viscosity) are antisymmetric, so they sum to zero. Surface tension is left
+        /// out: the continuum surface force is not a pair force (SphSurfaceTension.hlsl) and with it on this scene's net
+        /// force was 1.7e-5 of the sum of magnitudes.</summary>
         [Test]
         public void InternalForces_SumToZero_InZeroGravity()
         {
             var settings = SolverScenes.Coarse(0.02f);
             settings.Gravity = Vector3.Zero;
             var scene = SolverScenes.Scene(settings, new Vector3(0.4f, 0.4f, 0.4f),
-                SolverScenes.Box("W", SolverScenes.Water(0.1f, 0.5f), new Vector3(0f, -0.03f, 0f), new Vector3(0.12f, 0.06f, 0.12f), jitter: 0.3f),
-                SolverScenes.Box("O", SolverScenes.Oil(0.02f, 0.3f), new Vector3(0f, 0.03f, 0f), new Vector3(0.12f, 0.06f, 0.12f), jitter: 0.3f));
+                SolverScenes.Box("W", SolverScenes.Water(0.1f), new Vector3(0f, -0.03f, 0f), new Vector3(0.12f, 0.06f, 0.12f), jitter: 0.3f),
+                SolverScenes.Box("O", SolverScenes.Oil(0.02f), new Vector3(0f, 0.03f, 0f), new Vector3(0.12f, 0.06f, 0.12f), jitter: 0.3f));
             using (var sim = new FluidSimulation(GpuTestDevice.Shared, scene))
             {
                 var particles = SpawnLayout.Generate(scene);
