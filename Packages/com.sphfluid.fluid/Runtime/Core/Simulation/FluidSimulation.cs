@@ -141,6 +141,7 @@ namespace SphFluid.Simulation
                 CreateBoundary();
                 WriteConstants();
                 UploadObstacles();
+                if (_divergenceFree) _spawn = SettledSpawn(_spawn);
                 Reset();
             }
             catch

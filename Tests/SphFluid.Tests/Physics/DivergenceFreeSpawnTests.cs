@@ -1,0 +1,103 @@
+using System;
+using System.Linq;
+using System.Numerics;
+using NUnit.Framework;
+using SphFluid.Headless.Cli;
+using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
+using SphFluid.Tests.Runner;
+using SphFluid.Tests.Solver;
+
+namespace SphFluid.Tests.Physics
+{
+    /// <summary>
+    /// A DFSPH spawn settled by moving its particles, not by kicking them (FluidSimulation.SettledSpawn). The spawn's jitter
+    /// packs some particles above rest density (OilAndWater: 0.38 % on average, 3.08 % at most), and the first
+    /// constant-density solve removed that within one sub-step, so the velocity it left went as one over the step. At the
+    /// 0.64 ms steps that oil of 100 Pa s asks for (ViscousStepLimit), OilAndWater's fluid had 0.31 J of kinetic energy
+    /// and a fastest particle at 1.03 m/s at 0.05 s, 70 times the kinetic energy of its own 4.17 ms steps; the fluid rose
+    /// (1.39 J of potential energy) and stood 7.3 % expanded. A fluid let go at rest can only turn potential energy into
+    /// kinetic energy and heat, so its mechanical energy must not rise, and the step must not decide how it starts.
+    /// </summary>
+    public sealed class DivergenceFreeSpawnTests
+    {
+        const float Frame = 1f / 60f;
+        const float ShortStep = 0.00064f;
+
+        static FluidSceneDescription OilAndWater(string path)
+        {
+            var scene = SceneLoader.Load(path, RunnerPaths.Project).Description;
+            Assert.That(new SolverChoice { Solver = PressureSolver.Dfsph }.ApplyTo(scene, "DFSPH OilAndWater"), Is.Null);
+            return scene;
+        }
+
+        /// <summary>The spawn's average compression, its mechanical energy, and at 0.05 s the kinetic and mechanical energy.</summary>
+        static (double compression, double spawnEnergy, double kinetic, double energy, float step) Start(FluidSceneDescription scene)
+        {
+            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
+            var particles = new Particle[sim.ParticleCount];
+            sim.Particles.GetData(particles);
+            var gravity = scene.Settings.Gravity;
+            double spawnEnergy = FluidEnergy.Mechanical(particles, sim.PhaseRows, gravity);
+            double compression = sim.ReadDiagnostics().Phases.Max(p => p.AverageDensityError);
+            while (sim.SimulatedTime < 0.05 - 1e-6)
+                sim.Step(Frame);
+            var report = sim.ReadDiagnostics();
+            sim.Particles.GetData(particles);
+            double energy = FluidEnergy.Mechanical(particles, sim.PhaseRows, gravity);
+            TestContext.Progress.WriteLine($"DFSPH OilAndWater, steps of {1000 * sim.LastStep.TimeStep:F3} ms: spawn compressed " +
+                $"{100 * compression:F3} % on average, {spawnEnergy:F4} J; at 0.05 s kinetic {report.KineticEnergy:F5} J, fastest " +
+                $"{report.MaxSpeed:F3} m/s, mechanical {energy:F4} J ({energy - spawnEnergy:+0.0000;-0.0000} J)");
+            return (compression, spawnEnergy, report.KineticEnergy, energy, sim.LastStep.TimeStep);
+        }
+
+        [Test]
+        public void AShortStepDoesNotKickTheSpawn()
+        {
+            var scene = OilAndWater(RunnerPaths.Scene("OilAndWater"));
+            var own = Start(scene);
+            var shortScene = OilAndWater(RunnerPaths.EditedScene("OilAndWater", "MaxTimeStep: 0.005\n", $"MaxTimeStep: {ShortStep}\n"));
+            var shortSteps = Start(shortScene);
+
+            Assert.That(shortSteps.step, Is.LessThanOrEqualTo(ShortStep), "the edited scene runs the short step");
+            Assert.That(own.step, Is.GreaterThan(5 * ShortStep), "the scene's own step is the long one");
+            // Settled below a quarter of the solve's tolerance (the jittered spawn: 0.38 %).
+            Assert.That(own.compression, Is.LessThanOrEqualTo(0.25 * 0.01 * scene.Settings.DensityTolerance));
+            Assert.That(shortSteps.kinetic, Is.LessThanOrEqualTo(2.0 * own.kinetic), "the kick does not grow as the step shrinks");
+            foreach (var run in new[] { own, shortSteps })
+                Assert.That(run.energy - run.spawnEnergy, Is.LessThanOrEqualTo(0.0), "no work is done on a fluid let go at rest");
+        }
+
+        /// <summary>Settling moves particles and nothing else: every particle is kept, with its phase and its box's velocity,
+        /// and none moves further than its jitter displaced it from the lattice.</summary>
+        [Test]
+        public void SettlingKeepsEveryParticleItsPhaseAndItsBoxVelocity()
+        {
+            var settings = SolverScenes.Coarse(0.04f);
+            settings.PressureSolver = PressureSolver.Dfsph;
+            const float jitter = 0.25f;
+            var water = SolverScenes.Box("Water", SolverScenes.Water(), new Vector3(-0.1f, 0f, 0f), new Vector3(0.4f), jitter: jitter);
+            water.InitialVelocity = new Vector3(0.5f, 0f, 0f);
+            var oil = SolverScenes.Box("Oil", SolverScenes.Oil(), new Vector3(0.3f, 0f, 0f), new Vector3(0.32f, 0.4f, 0.4f), seed: 2, jitter: jitter);
+            oil.InitialVelocity = new Vector3(0f, 0f, -0.25f);
+            var scene = SolverScenes.Scene(settings, new Vector3(1.2f, 0.8f, 0.8f), water, oil);
+            var spawn = SpawnLayout.Generate(scene);
+
+            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
+            var particles = new Particle[sim.ParticleCount];
+            sim.Particles.GetData(particles);
+            Assert.That(particles.Select(p => p.Id).OrderBy(id => id), Is.EqualTo(Enumerable.Range(0, spawn.Length).Select(i => (uint)i)));
+            double furthest = 0.0;
+            foreach (var p in particles)
+            {
+                var born = spawn[p.Id];
+                Assert.That(p.Phase, Is.EqualTo(born.Phase));
+                Assert.That(p.Velocity, Is.EqualTo(born.Velocity));
+                furthest = Math.Max(furthest, (p.Position - born.Position).Length());
+            }
+            TestContext.Progress.WriteLine($"settled {particles.Length} particles: the furthest moved {furthest / settings.ParticleSpacing:F3} spacings");
+            Assert.That(furthest, Is.GreaterThan(0.0), "settling moved the jittered spawn");
+            Assert.That(furthest, Is.LessThanOrEqualTo(jitter * Math.Sqrt(3.0) * settings.ParticleSpacing));
+        }
+    }
+}
