@@ -51,6 +51,26 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(check.SpeedBound, Is.EqualTo(2f * (4.1222f + 3f) + 0.18708f).Within(1e-3f));
         }
 
+        /// <summary>Water's own tension on the droplet (0.04 m cube, s 0.02 m): the Taylor-Culick speed of a sheet one spacing
+        /// thick, sqrt(2 x 0.072 / (1000 x 0.02)) = 0.0849 m/s, joins the speed bound, and the cube's surface energy,
+        /// 0.072 x 6 x 0.04^2 = 6.91e-4 J, the energy bound.</summary>
+        [Test]
+        public void SurfaceTension_AddsTheCapillarySpeedAndTheSpawnsSurfaceEnergy()
+        {
+            var scene = Droplet();
+            float still = new HealthCheck(scene).SpeedBound;
+            double stillEnergy = new HealthCheck(scene).EnergyBound;
+            scene.SpawnBoxes[0].Phase.SurfaceTension = 0.072f;
+            var check = new HealthCheck(scene);
+            Assert.That(check.CapillarySpeed, Is.EqualTo(0.08485f).Within(1e-4f));
+            Assert.That(check.SpeedBound, Is.EqualTo(still + 2f * 0.08485f).Within(1e-4f));
+            Assert.That(check.SurfaceEnergy, Is.EqualTo(6.912e-4).Within(1e-7));
+            Assert.That(check.EnergyBound, Is.EqualTo(stillEnergy + 6.912e-4).Within(1e-7));
+            Assert.That(check.Check(Report(0.0, 0f), Particles(0f, -0.2f)), Is.Null);
+            Assert.That(check.Check(Report(0.1, 0f), Particles(0f, -0.2f)), Is.Null);
+            Assert.That(new HealthCheck(Droplet()).CapillarySpeed, Is.EqualTo(0f), "no tension, no capillary speed");
+        }
+
         [Test]
         public void MovingWallsAndSpheres_RaiseTheBoundToTheFastestSeen()
         {
