@@ -8,7 +8,7 @@ namespace SphFluid.Tests.Physics
     /// front. Its agreement leans on Monaghan's artificial viscosity (the setting's 0.02): at the column's speed of
     /// sound (18.7 m/s, the default stiffness) it is, by the usual equivalence nu = alpha c h / 10 with h half the support,
     /// 310 to 470 times water's kinematic viscosity at these spacings. Without it the front leads the paper by 7.0 and
-    /// 8.0 % at the last measurement, and by 9.7 % at a / s = 24, where DFSPH, which has none, leads by 11.1 %
+    /// 8.0 % at the last measurement, and by 9.7 % at a / s = 24, where DFSPH, which has none, leads by 10.7 %
     /// (<see cref="DamBreakResolutionProbe"/>); with it the lead grows as the spacing shrinks the viscosity, 3.0 % at 16
     /// and 3.6 % at 24. So the bar checks the shipped configuration at these resolutions, not a converged front.
     /// </summary>
