@@ -43,12 +43,8 @@ namespace SphFluid.Tests.Physics
             while (sim.SimulatedTime < 2.0 - 1e-6)
             {
                 sim.Step(1f / 60f);
-                sim.Particles.GetData(particles);
-                sim.Densities.GetData(densities);
-                sim.WarmStart.GetData(warmStart);
-                var total = TankMeasures.AppliedPressure(particles, densities, warmStart, PressureSolver.Dfsph);
-                double surface = Floor + TankMeasures.ColumnHeight(particles, Floor);
-                double offBy = 100 * (-TankMeasures.PressureGradient(particles, total, Floor + 0.75 * support, surface - 1.25 * support) / RhoG - 1);
+                double applied = TankMeasures.DivergenceFreePressureGradients(sim, particles, densities, warmStart, Floor, support).Applied;
+                double offBy = 100 * (-applied / RhoG - 1);
                 block += offBy;
                 if (++inBlock == 6)
                 {

@@ -91,13 +91,9 @@ namespace SphFluid.Tests.Physics
             {
                 sim.Step(1f / 60f);
                 if (sim.SimulatedTime <= 0.5 + 1e-6) continue;
-                sim.Particles.GetData(particles);
-                sim.Densities.GetData(densities);
-                sim.WarmStart.GetData(warmStart);
-                var total = TankMeasures.AppliedPressure(particles, densities, warmStart, PressureSolver.Dfsph);
-                double surface = Floor + TankMeasures.ColumnHeight(particles, Floor);
-                densitySolve += TankMeasures.PressureGradient(particles, densities, Floor + 0.75 * support, surface - 1.25 * support);
-                applied += TankMeasures.PressureGradient(particles, total, Floor + 0.75 * support, surface - 1.25 * support);
+                var gradients = TankMeasures.DivergenceFreePressureGradients(sim, particles, densities, warmStart, Floor, support);
+                applied += gradients.Applied;
+                densitySolve += gradients.DensitySolve;
                 measured++;
             }
             return (applied / measured, densitySolve / measured);

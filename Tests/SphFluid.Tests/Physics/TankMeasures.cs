@@ -45,6 +45,21 @@ namespace SphFluid.Tests.Physics
             return pressures;
         }
 
+        /// <summary>A DFSPH tank's pressure gradients now, read back into the given arrays: the pressure both solves applied
+        /// in the last sub-step (<see cref="AppliedPressure"/>) and the constant-density solve's alone, each fitted over the
+        /// band from 0.75 supports above the floor to 1.25 below the surface, Pa/m.</summary>
+        public static (double Applied, double DensitySolve) DivergenceFreePressureGradients(FluidSimulation sim, Particle[] particles,
+            Vector4[] densities, Vector2[] warmStart, float floorY, double support)
+        {
+            sim.Particles.GetData(particles);
+            sim.Densities.GetData(densities);
+            sim.WarmStart.GetData(warmStart);
+            var total = AppliedPressure(particles, densities, warmStart, PressureSolver.Dfsph);
+            double surface = floorY + ColumnHeight(particles, floorY);
+            double from = floorY + 0.75 * support, to = surface - 1.25 * support;
+            return (PressureGradient(particles, total, from, to), PressureGradient(particles, densities, from, to));
+        }
+
         public static double MaxSpeed(Particle[] particles) => particles.Max(p => (double)p.Velocity.Length());
 
         /// <summary>The smallest distance from a particle centre to a face of the container, m (inside: positive).</summary>
