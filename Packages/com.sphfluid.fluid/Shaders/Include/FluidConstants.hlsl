@@ -68,6 +68,8 @@ cbuffer FluidConstants
 
     float _ChebyshevHigh;                   // DivergenceFreeSolver: b, highest; 0 for the Jacobi solve (ChebyshevBounds.cs)
     uint _AcceleratedDensitySolve;          // DivergenceFreeSolver: 1 when the constant-density solve is accelerated too (ChebyshevBounds.cs)
+    float _ViscositySolveLow;               // SphViscositySolve: a, lowest eigenvalue the implicit viscosity solve is tuned for
+    float _ViscositySolveHigh;              // SphViscositySolve: b, highest; 0 while the viscosity is explicit (ImplicitViscosity.cs)
 };
 
 // Grid.hlsl reads its three values from here instead of declaring its own.

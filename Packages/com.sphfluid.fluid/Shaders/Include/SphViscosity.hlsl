@@ -19,12 +19,19 @@ float MixedViscosity(float muI, float muJ)
     return sum > 0.0 ? 2.0 * muI * muJ / sum : 0.0;
 }
 
-// volumeIJ = V_i V_j (for a boundary neighbour: V_i times its volume).
+// The pair's coupling c_ij = -2 mu_ij V_i V_j (r_ij . gradW_ij) / (r_ij^2 + 0.01 H^2) >= 0, kg/s: the force is
+// c_ij (v_j - v_i). volumeIJ = V_i V_j (for a boundary neighbour: V_i times its volume). The implicit viscosity solve
+// (SphViscositySolve.hlsl) sums it for its diagonal.
+float ViscosityCoupling(float mixedViscosity, float3 rij, float r2, float3 gradient, float volumeIJ)
+{
+    float radial = dot(rij, gradient) / (r2 + 0.01 * _SmoothingRadius2);
+    return -2.0 * mixedViscosity * volumeIJ * radial;
+}
+
 float3 ViscosityForcePair(float mixedViscosity, float3 velocityI, float3 velocityJ, float3 rij, float r2,
                           float3 gradient, float volumeIJ)
 {
-    float radial = dot(rij, gradient) / (r2 + 0.01 * _SmoothingRadius2);
-    return (2.0 * mixedViscosity * volumeIJ * radial) * (velocityI - velocityJ);
+    return ViscosityCoupling(mixedViscosity, rij, r2, gradient, volumeIJ) * (velocityJ - velocityI);
 }
 
 // Artificial viscosity of Monaghan 1992 ("Smoothed particle hydrodynamics", ARA&A 30, eq. 4.1), the

@@ -96,6 +96,8 @@ void PredictVelocity(uint3 id : SV_DispatchThreadID)
     Particle p = _Particles[i];
     p.velocity = PredictedVelocity(p.velocity, _Accelerations[i].xyz, _VelocityCorrections[i].xyz);
     _Particles[i] = p;
+    if (i == 0u)
+        _SolverState[VISCOSITY_WORD] = 0u; // the viscosity solve's first round has no rho before it
     float warm = DENSITY_WARM_START * _WarmStart[p.id].x;
     _SolverStiffness[i] = warm;
     _WarmStart[p.id] = float2(0.0, _WarmStart[p.id].y); // ApplyStiffness counts the warm start as it applies it

@@ -53,6 +53,8 @@ ForceSums ForceSumsOf(uint i, bool withPressure, uint lane)
 #if SURFACE_TENSION
     float3 normalI = _Normals[i].xyz;
 #endif
+    // Under DFSPH the viscosity may be the implicit solve's instead (ViscositySolve.hlsl).
+    bool explicitViscosity = withPressure || !ViscosityIsImplicit();
     float3 force = float3(0.0, 0.0, 0.0);
     float3 xsph = float3(0.0, 0.0, 0.0);
     float3 wallGradients = float3(0.0, 0.0, 0.0);
@@ -82,7 +84,8 @@ ForceSums ForceSumsOf(uint i, bool withPressure, uint lane)
             float3 gradient = PairGradient(rij, r, pi.id, pj.id);
             if (withPressure)
                 force += PressureForcePair(di.w, dj.w, gradient);
-            force += ViscosityForcePair(muIJ, pi.velocity, pj.velocity, rij, r2, gradient, 1.0 / (di.z * dj.z));
+            if (explicitViscosity)
+                force += ViscosityForcePair(muIJ, pi.velocity, pj.velocity, rij, r2, gradient, 1.0 / (di.z * dj.z));
             if (withPressure)
                 force += ArtificialViscosityForcePair(pi.velocity, pj.velocity, rij, r2, gradient, 0.5 * (di.x + dj.x), 1.0 / (di.z * dj.z));
 #if SURFACE_TENSION
@@ -108,8 +111,9 @@ ForceSums ForceSumsOf(uint i, bool withPressure, uint lane)
             float weight = WallWeight(wall, phaseI);
             if (withPressure)
                 force += BoundaryPressureForcePair(di.y, _BoundaryPressures[b], di.z, weight, gradient);
-            force += ViscosityForcePair(_WallFriction * phaseI.viscosity, pi.velocity, wall.velocity, rib, r2, gradient,
-                weight / (di.z * di.z));
+            if (explicitViscosity)
+                force += ViscosityForcePair(_WallFriction * phaseI.viscosity, pi.velocity, wall.velocity, rib, r2, gradient,
+                    weight / (di.z * di.z));
             if (withPressure)
             {
                 force += ArtificialViscosityForcePair(pi.velocity, wall.velocity, rib, r2, gradient, di.x, weight / (di.z * di.z));

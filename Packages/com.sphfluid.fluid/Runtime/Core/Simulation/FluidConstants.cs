@@ -72,5 +72,7 @@ namespace SphFluid.Simulation
 
         public float ChebyshevHigh;
         public uint AcceleratedDensitySolve;
+        public float ViscositySolveLow;
+        public float ViscositySolveHigh;
     }
 }

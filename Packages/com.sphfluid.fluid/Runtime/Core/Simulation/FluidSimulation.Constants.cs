@@ -15,9 +15,22 @@ namespace SphFluid.Simulation
             if (_constants[0].TimeStep != dt)
             {
                 _constants[0].TimeStep = dt;
+                SetViscositySolve(dt);
                 _constantsChanged = true;
             }
             PushConstants();
+        }
+
+        /// <summary>The implicit viscosity solve for sub-steps of <paramref name="dt"/> beyond the explicit force's limit
+        /// (<see cref="ImplicitViscosity"/>), or none: its interval tells the kernels which.</summary>
+        void SetViscositySolve(float dt)
+        {
+            var s = _scene.Settings;
+            _viscosity = ImplicitViscosity.Needed(s.PressureSolver, dt, _timeStep.ViscousTimeStep)
+                ? ImplicitViscosity.For(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius, _timeStep.MaxKinematicViscosity, dt)
+                : default;
+            _constants[0].ViscositySolveLow = _viscosity.Rounds > 0 ? _viscosity.Low : 0f;
+            _constants[0].ViscositySolveHigh = _viscosity.Rounds > 0 ? ImplicitViscosity.High : 0f;
         }
 
         /// <summary>The rounds each DFSPH solve records (<see cref="SolveRounds"/>), which SolveFinal counts against.</summary>

@@ -47,6 +47,7 @@ namespace SphFluid.Simulation
         readonly IReadOnlyList<PhaseDescription> _phases;
         readonly Particle[] _spawn;
         readonly TimeStepController _timeStep;
+        ImplicitViscosity _viscosity; // the sub-steps' implicit viscosity solve, none (0 rounds) while the force is explicit
         readonly IComputeProgram _solver, _diagnostics;
         readonly SolverKernels _kernels;
         readonly bool _divergenceFree;
@@ -278,7 +279,7 @@ namespace SphFluid.Simulation
         public static IReadOnlyList<string> SampleNames { get; } = new[]
         {
             PassNames.UploadContainer, PassNames.PlaceBoundary, PassNames.DensityRate, PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals,
-            PassNames.Forces, PassNames.FullStep, PassNames.NonPressureForces, PassNames.PredictVelocity, PassNames.DensitySolve, PassNames.Drift,
+            PassNames.Forces, PassNames.FullStep, PassNames.NonPressureForces, PassNames.PredictVelocity, PassNames.DensitySolve, PassNames.ViscositySolve, PassNames.Drift,
             PassNames.FindNeighbours, PassNames.DensityFactor, PassNames.DivergenceSolve, PassNames.ParticleShift, PassNames.ApplyShift, PassNames.MotionReduction, PassNames.Diagnostics,
         };
 
@@ -477,6 +478,10 @@ namespace SphFluid.Simulation
             Solve(DensitySolveSlot, _kernels.BeginDensitySolve, _kernels.DensitySolveError);
             _device.EndSample(PassNames.DensitySolve);
 
+            // After the pressure's kick, so that it is damped in the step it is given (SphViscositySolve.hlsl).
+            if (_viscosity.Rounds > 0)
+                SolveViscosity();
+
             SolverPass(PassNames.Drift, _kernels.Drift);
 
             AdvanceWalls(_constants[0].TimeStep);
@@ -485,6 +490,19 @@ namespace SphFluid.Simulation
             _device.BeginSample(PassNames.DivergenceSolve);
             Solve(DivergenceSolveSlot, _kernels.BeginDivergenceSolve, _kernels.DivergenceSolveError);
             _device.EndSample(PassNames.DivergenceSolve);
+        }
+
+        /// <summary>The implicit viscosity solve (SphViscositySolve.hlsl) on the predicted velocities: its recorded rounds of
+        /// the viscous Jacobi step, Chebyshev-accelerated, and its application.</summary>
+        void SolveViscosity()
+        {
+            _device.BeginSample(PassNames.ViscositySolve);
+            for (int k = 0; k < _viscosity.Rounds; k++)
+            {
+                _device.DispatchThreads(_solver, _kernels.ViscosityStep, ParticleCount * LanesPerParticle);
+                _device.DispatchThreads(_solver, _kernels.ViscosityApply, ParticleCount);
+            }
+            _device.EndSample(PassNames.ViscositySolve);
         }
 
         const int DensitySolveSlot = 0, DivergenceSolveSlot = 1;
@@ -653,6 +671,22 @@ namespace SphFluid.Simulation
             {
                 SortAndComputeForces();
             }
+            _device.Submit();
+        }
+
+        /// <summary>DFSPH: a sub-step of <paramref name="timeStep"/> s up to its drift, without the constant-density solve, on
+        /// the current particles re-sorted: the non-pressure forces, the predicted velocity and, beyond the explicit viscous
+        /// limit, the implicit viscosity solve (tests compare the velocities with the CPU reference). Nothing moves.</summary>
+        public void PredictVelocities(float timeStep)
+        {
+            ThrowIfDisposed();
+            if (!_divergenceFree) throw new InvalidOperationException("FluidSimulation: PredictVelocities is DFSPH's sub-step start");
+            BeginFrame(0f);
+            SetTimeStep(timeStep);
+            SortAndComputeForces();
+            SolverPass(PassNames.PredictVelocity, _kernels.PredictVelocity);
+            if (_viscosity.Rounds > 0)
+                SolveViscosity();
             _device.Submit();
         }
 

@@ -15,6 +15,7 @@ namespace SphFluid.Simulation
         public const string FullStep = "FullStep";
         public const string NonPressureForces = "NonPressureForces";
         public const string PredictVelocity = "PredictVelocity";
+        public const string ViscositySolve = "ViscositySolve";
         public const string DensitySolve = "DensitySolve";
         public const string Drift = "Drift";
         public const string FindNeighbours = "FindNeighbours";

@@ -16,13 +16,16 @@ namespace SphFluid.Simulation
             var settings = scene.Settings;
             bool shifting = settings.ParticleShifting > 0f;
             bool deltaSph = settings.WcsphDensity == WcsphDensity.DeltaSph;
+            // A DFSPH step is as long as MaxTimeStep at most (TimeStepController), so only a viscous limit below it can bind.
+            bool implicitViscosity = ImplicitViscosity.Needed(settings.PressureSolver, settings.MaxTimeStep,
+                TimeStepController.ForScene(scene).ViscousTimeStep);
             if (forced == null)
                 return new SimulationPlan(phases.Count, obstacles, tension, settings.XsphEpsilon > 0f,
                     settings.VelocityDamping > 0f, containerMoved, settings.PressureSolver, shifting: shifting, deltaSph: deltaSph,
-                    neighbourLists: neighbourLists);
+                    neighbourLists: neighbourLists, implicitViscosity: implicitViscosity);
             return new SimulationPlan(phases.Count, obstacles, tension || forced.SurfaceTension, settings.XsphEpsilon > 0f || forced.Xsph,
                 settings.VelocityDamping > 0f, containerMoved || forced.ContainerMoving, settings.PressureSolver, forced.Multiphase, forced.Obstacles,
-                shifting, deltaSph, neighbourLists);
+                shifting, deltaSph, neighbourLists, implicitViscosity);
         }
     }
 }

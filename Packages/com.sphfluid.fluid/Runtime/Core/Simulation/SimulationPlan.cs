@@ -39,6 +39,10 @@ namespace SphFluid.Simulation
         /// one lane per particle); DFSPH's always do.</summary>
         public bool NeighbourLists { get; }
 
+        /// <summary>DFSPH whose sub-steps may pass the explicit viscous limit: those solve the viscosity implicitly
+        /// (<see cref="Simulation.ImplicitViscosity"/>), and the ViscositySolve pass runs after the constant-density solve.</summary>
+        public bool ImplicitViscosity { get; }
+
         /// <summary>VelocityDamping &gt; 0.</summary>
         public bool Damping { get; }
 
@@ -59,10 +63,12 @@ namespace SphFluid.Simulation
         /// <param name="shifting">Run the particle-shifting passes after each WCSPH sub-step (ParticleShifting &gt; 0).</param>
         /// <param name="deltaSph">WCSPH carries the number density (WcsphDensity = DeltaSph).</param>
         /// <param name="neighbourLists">WCSPH's passes read neighbour lists (DFSPH's always do).</param>
+        /// <param name="implicitViscosity">DFSPH sub-steps may pass the explicit viscous limit.</param>
         public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform,
             PressureSolver pressureSolver = PressureSolver.Wcsph, bool forceMultiphase = false, bool forceObstacles = false, bool shifting = false,
-            bool deltaSph = false, bool neighbourLists = false)
+            bool deltaSph = false, bool neighbourLists = false, bool implicitViscosity = false)
         {
+            ImplicitViscosity = implicitViscosity && pressureSolver == PressureSolver.Dfsph;
             NeighbourLists = neighbourLists || pressureSolver == PressureSolver.Dfsph;
             PressureSolver = pressureSolver;
             Shifting = shifting && pressureSolver == PressureSolver.Wcsph;
@@ -91,6 +97,7 @@ namespace SphFluid.Simulation
                 passes.Add(PassNames.NonPressureForces);
                 passes.Add(PassNames.PredictVelocity);
                 passes.Add(PassNames.DensitySolve);
+                if (ImplicitViscosity) passes.Add(PassNames.ViscositySolve);
                 passes.Add(PassNames.Drift);
                 passes.Add(PassNames.Sort);
                 passes.Add(PassNames.FindNeighbours);
@@ -133,6 +140,7 @@ namespace SphFluid.Simulation
             b.Append("plan: ").Append(PhaseCount).Append(PhaseCount == 1 ? " phase, " : " phases, ")
              .Append(ObstacleCount).Append(ObstacleCount == 1 ? " obstacle" : " obstacles");
             b.Append(" | solver: ").Append(PressureSolver == PressureSolver.Dfsph ? "DFSPH" : "WCSPH");
+            if (ImplicitViscosity) b.Append(" | viscosity: implicit beyond its explicit step");
             b.Append(" | variants: ").Append(Keywords.Count == 0 ? "(none)" : string.Join(" ", Keywords));
             b.Append(" | sub-step: ").Append(string.Join(" > ", SubstepPasses));
             b.Append(" | damping: ").Append(Damping ? "on" : "off");

@@ -23,7 +23,7 @@ namespace SphFluid.Simulation
     sealed class SolverBuffers : IDisposable
     {
         /// <summary>Words of the solver state: two solve slots of 8 words and the open solve's slot (FluidSolver.compute).</summary>
-        public const int SolverStateWords = 18;
+        public const int SolverStateWords = 19;
 
         /// <summary>When a binding must be made again.</summary>
         public enum Group
@@ -80,6 +80,8 @@ namespace SphFluid.Simulation
             new Binding("_SolverState", b => b.SolverState, Readers.Both, Group.Fixed),
             new Binding("_SolverArguments", b => b.SolverArguments, Readers.Solver, Group.Fixed),
             new Binding("_DivergenceRates", b => b.DivergenceRates, Readers.Both, Group.Fixed),
+            new Binding("_ViscosityTargets", b => b.ViscosityTargets, Readers.Solver, Group.Fixed),
+            new Binding("_ViscositySteps", b => b.ViscositySteps, Readers.Solver, Group.Fixed),
             new Binding("_NumberDensities", b => b.NumberDensities, Readers.Solver, Group.Fixed),
             new Binding("_NumberDensitiesHalf", b => b.NumberDensitiesHalf, Readers.Solver, Group.Fixed),
             new Binding("_DensityRates", b => b.DensityRates, Readers.Solver, Group.Fixed),
@@ -116,6 +118,7 @@ namespace SphFluid.Simulation
         public IComputeBuffer Phases, Densities, Normals, Accelerations, VelocityCorrections, Shifts, Obstacles, ClampHits;
         public IComputeBuffer Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
         public IComputeBuffer NumberDensities, NumberDensitiesHalf, DensityRates; // delta-SPH (SphDensityDiffusion.hlsl)
+        public IComputeBuffer ViscosityTargets, ViscositySteps; // DFSPH's implicit viscosity (ViscositySolve.hlsl)
         public IComputeBuffer MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
         public IComputeBuffer BoundaryRest, BoundaryPlaced, BoundarySorted, BoundaryPressures, BoundarySolve, BoundaryWarmStart, WallNumberDensities;
         public IComputeBuffer BoundaryOwnNumberDensities; // DFSPH by boundary id: its own body's number density at rest (BoundarySampling)
@@ -174,6 +177,8 @@ namespace SphFluid.Simulation
             // then they dispatch nothing.
             SolverArguments.SetData(new uint[] { 0u, 1u, 1u, 0u, 1u, 1u });
             DivergenceRates = Zeroed("FluidSimulation.DivergenceRates", n, 4);
+            ViscosityTargets = Zeroed("FluidSimulation.ViscosityTargets", n, 16);
+            ViscositySteps = Zeroed("FluidSimulation.ViscositySteps", n, 16);
             NumberDensities = device.CreateBuffer("FluidSimulation.NumberDensities", n, 4);
             NumberDensities.SetData(spawnNumberDensities);
             NumberDensitiesHalf = device.CreateBuffer("FluidSimulation.NumberDensitiesHalf", n, 4);
@@ -287,12 +292,12 @@ namespace SphFluid.Simulation
         {
             foreach (var buffer in new[] { Particles, ParticlesOther, Phases, Densities, Normals, Accelerations, VelocityCorrections, Shifts,
                          Obstacles, ClampHits, Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments,
-                         DivergenceRates, NumberDensities, NumberDensitiesHalf, DensityRates, MotionPartials, MotionTotals, DiagnosticsPartials,
-                         DiagnosticsTotals, Constants })
+                         DivergenceRates, NumberDensities, NumberDensitiesHalf, DensityRates, ViscosityTargets, ViscositySteps, MotionPartials,
+                         MotionTotals, DiagnosticsPartials, DiagnosticsTotals, Constants })
                 buffer?.Dispose();
             Particles = ParticlesOther = Phases = Densities = Normals = Accelerations = VelocityCorrections = Shifts = null;
             Obstacles = ClampHits = Factors = SolverStiffness = WarmStart = SolverPartials = SolverState = SolverArguments = null;
-            NumberDensities = NumberDensitiesHalf = DensityRates = null;
+            NumberDensities = NumberDensitiesHalf = DensityRates = ViscosityTargets = ViscositySteps = null;
             DivergenceRates = MotionPartials = MotionTotals = DiagnosticsPartials = DiagnosticsTotals = Constants = null;
             ReleaseBoundary();
             Sorter?.Dispose();

@@ -17,6 +17,9 @@ namespace SphFluid.Simulation
             NonPressureForces, PredictVelocity, BeginDensitySolve, BeginDivergenceSolve, DensitySolveError, DivergenceSolveError,
             SolveFinal, ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity;
 
+        // DFSPH's implicit viscosity solve (ViscositySolve.hlsl).
+        public readonly int ViscosityStep, ViscosityApply;
+
         public readonly int[] All;
 
         public SolverKernels(IComputeProgram solver)
@@ -49,12 +52,15 @@ namespace SphFluid.Simulation
             DivergenceRate = solver.FindKernel(nameof(DivergenceRate));
             FindNeighbours = solver.FindKernel(nameof(FindNeighbours));
             WallNumberDensity = solver.FindKernel(nameof(WallNumberDensity));
+            ViscosityStep = solver.FindKernel(nameof(ViscosityStep));
+            ViscosityApply = solver.FindKernel(nameof(ViscosityApply));
             All = new[]
             {
                 HalfStep, PlaceBoundary, DensityPressure, DensityRate, ContinuityDensity, WallPressure, Normals, Forces, FullStep,
                 ParticleShift, ApplyShift, DensityFactor, WallMovedDensityFactor, BoundaryDensityFactor, BoundaryBeginSolve,
                 BoundarySolveError, NonPressureForces, PredictVelocity, BeginDensitySolve, BeginDivergenceSolve, DensitySolveError,
                 DivergenceSolveError, SolveFinal, ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity,
+                ViscosityStep, ViscosityApply,
             };
         }
     }

@@ -14,9 +14,10 @@ namespace SphFluid.Simulation
     /// phase next to a viscous one feels more than its own nu. vmax and amax come from the GPU's max-reduction,
     /// read back asynchronously and possibly a frame stale, so the controller uses the larger of the last two
     /// reports. With DFSPH (<see cref="PressureSolver.Dfsph"/>) the solves keep the density, so no speed of sound enters:
-    /// dt = min(cfl h / max(vmax, u_walls, sqrt(g H)), dt_viscous, dt_capillary, MaxTimeStep) (the velocity CFL of
-    /// Bender &amp; Koschier 2017, sec. 6; the viscous and capillary limits stay because the non-pressure forces are still
-    /// explicit, the acceleration limit goes because the pressure acceleration is no longer explicit). u_walls is the
+    /// dt = min(cfl h / max(vmax, u_walls, sqrt(g H)), dt_capillary, MaxTimeStep) (the velocity CFL of
+    /// Bender &amp; Koschier 2017, sec. 6; the capillary limit stays because the tension is still explicit, the
+    /// acceleration limit goes because the pressure acceleration is no longer explicit, and the viscous limit because a
+    /// sub-step beyond it solves the viscosity implicitly: <see cref="ImplicitViscosity"/>). u_walls is the
     /// fastest wall or obstacle (<see cref="BoundarySpeed"/>): a sphere started at 6.26 m/s through fluid at rest crossed
     /// 0.78 spacings a 5 ms sub-step, and the pool went unhealthy at 0.05 s (HardCaseTests' driven sphere under DFSPH).
     /// sqrt(g H) is <see cref="GravityWaveSpeed"/>, the speed of the longest gravity wave over the fluid's height H: a fluid
@@ -135,7 +136,7 @@ namespace SphFluid.Simulation
                 double acc = 0.25 * Math.Sqrt(h / MaxAcceleration);
                 if (acc < dt) { dt = acc; limit = "acceleration"; }
             }
-            if (ViscousTimeStep < dt) { dt = ViscousTimeStep; limit = "viscous"; }
+            if (ViscousTimeStep < dt && !divergenceFree) { dt = ViscousTimeStep; limit = "viscous"; }
             if (CapillaryTimeStep < dt) { dt = CapillaryTimeStep; limit = "capillary"; }
             return (float)dt;
         }

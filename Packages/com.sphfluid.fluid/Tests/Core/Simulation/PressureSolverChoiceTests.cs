@@ -114,5 +114,24 @@ namespace SphFluid.Tests.Core.Simulation
             }));
             Assert.That(dfsph.ToString(), Does.Contain("solver: DFSPH"));
         }
+
+        /// <summary>A viscous liquid whose explicit limit falls below the step DFSPH may take gets the implicit viscosity
+        /// solve after its constant-density solve; WCSPH, whose step keeps the limit, never does.</summary>
+        [Test]
+        public void AViscousLiquidUnderDfsphPlansTheViscositySolve()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.Settings.PressureSolver = PressureSolver.Dfsph;
+            foreach (var box in scene.SpawnBoxes)
+                if (box.Phase.Name == "Oil") box.Phase.Viscosity = 100f;
+            var dfsph = PipelinePlanner.Plan(scene, false);
+            Assert.That(dfsph.ImplicitViscosity, Is.True);
+            Assert.That(dfsph.SubstepPasses[3], Is.EqualTo(PassNames.ViscositySolve));
+            Assert.That(dfsph.ToString(), Does.Contain("viscosity: implicit"));
+            scene.Settings.PressureSolver = PressureSolver.Wcsph;
+            var wcsph = PipelinePlanner.Plan(scene, false);
+            Assert.That(wcsph.ImplicitViscosity, Is.False);
+            Assert.That(wcsph.SubstepPasses, Does.Not.Contain(PassNames.ViscositySolve));
+        }
     }
 }

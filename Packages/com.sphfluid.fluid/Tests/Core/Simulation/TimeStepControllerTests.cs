@@ -60,6 +60,20 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(dt, Is.EqualTo(0.172f * 0.02f * 0.02f).Within(0.01f * dt));
         }
 
+        /// <summary>Under DFSPH a sub-step beyond the explicit viscous limit solves the viscosity implicitly
+        /// (<see cref="ImplicitViscosity"/>), so the limit no longer shortens its step.</summary>
+        [Test]
+        public void HighViscosity_DoesNotLimitDfsph()
+        {
+            var settings = Settings();
+            settings.PressureSolver = PressureSolver.Dfsph;
+            var c = new TimeStepController(settings, 1000f, 1f);
+            float dt = c.StableTimeStep(out string limit);
+            Assert.That(limit, Is.Not.EqualTo("viscous"));
+            Assert.That(dt, Is.GreaterThan(10.0 * c.ViscousTimeStep));
+            Assert.That(ImplicitViscosity.Needed(PressureSolver.Dfsph, dt, c.ViscousTimeStep), Is.True);
+        }
+
         [Test]
         public void StaleReport_IsUsedConservatively()
         {

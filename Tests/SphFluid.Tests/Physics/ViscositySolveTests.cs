@@ -1,0 +1,204 @@
+using System;
+using System.Linq;
+using System.Numerics;
+using NUnit.Framework;
+using SphFluid.Headless.Cli;
+using SphFluid.Headless.Scenes;
+using SphFluid.Reference;
+using SphFluid.Simulation;
+using SphFluid.Tests.Runner;
+using SphFluid.Tests.Solver;
+
+namespace SphFluid.Tests.Physics
+{
+    /// <summary>
+    /// DFSPH's implicit viscosity solve (SphViscositySolve.hlsl) against the explicit force it replaces beyond the explicit
+    /// step. A cellular flow in a box with free-slip walls, u = U sin(k x) cos(k z), w = -U cos(k x) sin(k z), k = pi / L,
+    /// is divergence-free, parallel to every wall and free of shear at them: a Stokes mode that decays as
+    /// exp(-2 nu k^2 t). The explicit force at a step inside its limit measures the scheme's own decay rate lambda; backward
+    /// Euler at n steps of dt takes the mode to (1 + lambda dt)^-n of itself, which the implicit solve at ten times the
+    /// explicit limit must meet.
+    /// </summary>
+    public sealed class ViscositySolveTests
+    {
+        const float Spacing = 0.02f;
+        const int Cells = 16;                 // L = 16 spacings along x and z
+        const float Viscosity = 100f;         // Pa s: nu = 0.1 m^2/s, the explicit limit 1.27 ms
+        const float U = 0.005f;               // m/s: Stokes flow (Re = U L / nu = 0.016)
+        const double Seconds = 0.05;
+        const int Chunk = 10;
+
+        static FluidSceneDescription Box()
+        {
+            var settings = SolverScenes.Coarse(Spacing);
+            settings.PressureSolver = PressureSolver.Dfsph;
+            settings.SmoothingKernel = KernelFamily.WendlandC2;
+            settings.SmoothingRadius = 2.85f * Spacing;
+            settings.Gravity = Vector3.Zero;
+            settings.XsphEpsilon = 0f;
+            settings.SolverRelaxation = 0.3f;
+            settings.MaxSubsteps = 1000;
+            var size = new Vector3(Cells * Spacing, 8 * Spacing, Cells * Spacing);
+            var water = SolverScenes.Box("Water", SolverScenes.Water(Viscosity), Vector3.Zero, size, jitter: 0f);
+            var scene = SolverScenes.Scene(settings, size, water);
+            scene.Container.Friction = WallFriction.Slip;
+            return scene;
+        }
+
+        static double K => Math.PI / (Cells * Spacing);
+
+        static Vector3 Cell(Vector3 p)
+        {
+            float half = 0.5f * Cells * Spacing;
+            double kx = K * (p.X + half), kz = K * (p.Z + half);
+            return new Vector3((float)(Math.Sin(kx) * Math.Cos(kz)), 0f, (float)(-Math.Cos(kx) * Math.Sin(kz)));
+        }
+
+        /// <summary>The flow's amplitude: the particles' velocities projected on the mode, over its square.</summary>
+        static double Amplitude(Particle[] particles)
+        {
+            double dot = 0.0, norm = 0.0;
+            foreach (var p in particles)
+            {
+                var mode = Cell(p.Position);
+                dot += Vector3.Dot(p.Velocity, mode);
+                norm += Vector3.Dot(mode, mode);
+            }
+            return dot / norm;
+        }
+
+        /// <summary>The mode's amplitude over U after <paramref name="steps"/> sub-steps covering <see cref="Seconds"/>, the
+        /// fluid's momentum over its mass times U, and the implicit solve's rounds a sub-step (0: explicit).</summary>
+        static (double amplitude, double momentum, int rounds) Decay(int steps)
+        {
+            var scene = Box();
+            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
+            var particles = new Particle[sim.ParticleCount];
+            sim.Particles.GetData(particles);
+            for (int i = 0; i < particles.Length; i++)
+                particles[i].Velocity = U * Cell(particles[i].Position);
+            sim.SetParticles(particles);
+            float dt = (float)(Seconds / steps);
+            for (int done = 0; done < steps; done += Chunk)
+                sim.StepFixed(Math.Min(Chunk, steps - done), dt); // a frame's recording of 100 DFSPH sub-steps crashed lavapipe
+            sim.Particles.GetData(particles);
+            var momentum = particles.Aggregate(Vector3.Zero, (sum, p) => sum + p.Velocity);
+            var limit = sim.TimeStep.ViscousTimeStep;
+            int rounds = ImplicitViscosity.Needed(PressureSolver.Dfsph, dt, limit)
+                ? ImplicitViscosity.For(KernelFamily.WendlandC2, Spacing, scene.Settings.SmoothingRadius, sim.TimeStep.MaxKinematicViscosity, dt).Rounds
+                : 0;
+            TestContext.Progress.WriteLine($"{steps} steps of {1000 * dt:F3} ms ({dt / limit:F2} of the explicit limit, {rounds} rounds): " +
+                $"amplitude {Amplitude(particles) / U:F4} U, momentum {momentum.Length() / particles.Length / U:E2} U");
+            return (Amplitude(particles) / U, momentum.Length() / particles.Length / U, rounds);
+        }
+
+        /// <summary>The decay rate the implicit solve gives the flow, -ln(A) / t, falls behind the explicit force's as the
+        /// step grows, and approaches it as the step comes down to the explicit limit. Backward Euler's own lag at the
+        /// explicit rate, ln(1 + lambda dt) / dt, is a part of it (Headless/docs/physics.md, "Viscosity solved implicitly").</summary>
+        [Test]
+        public void TheCellularFlowDecaysAtTheExplicitForcesRateAsTheStepComesDownToItsLimit()
+        {
+            var explicitRun = Decay(100);
+            Assert.That(explicitRun.rounds, Is.EqualTo(0), "100 steps are within the explicit limit");
+            double lambda = -Math.Log(explicitRun.amplitude) / Seconds;
+            double stokes = 2.0 * (Viscosity / 1000.0) * K * K;
+            TestContext.Progress.WriteLine($"explicit decay rate {lambda:F3}/s against Stokes's 2 nu k^2 = {stokes:F3}/s");
+            double previousLag = 0.0;
+            foreach (int steps in new[] { 32, 8, 4 })
+            {
+                var run = Decay(steps);
+                double dt = Seconds / steps;
+                double rate = -Math.Log(run.amplitude) / Seconds;
+                double lag = 1.0 - rate / lambda;
+                double eulerLag = 1.0 - Math.Log(1.0 + lambda * dt) / dt / lambda;
+                TestContext.Progress.WriteLine($"  decay rate {rate:F3}/s: {100 * lag:F1} % behind the explicit force's " +
+                    $"(backward Euler's own lag at that rate: {100 * eulerLag:F1} %)");
+                Assert.That(run.rounds, Is.GreaterThan(0), "the step is beyond the explicit limit");
+                Assert.That(lag, Is.GreaterThan(previousLag), "the lag grows with the step");
+                Assert.That(lag, Is.LessThan(steps == 32 ? 0.10 : 0.30));
+                Assert.That(run.momentum, Is.LessThan(1e-3), "free-slip walls take no momentum");
+                previousLag = lag;
+            }
+        }
+
+        /// <summary>The solve against the equation it solves, in double precision on the CPU (ReferenceSph's viscous force):
+        /// a block of jittered water with a free surface and no-slip walls, random velocities, one prediction at ten times
+        /// the explicit limit. The residual of backward Euler, (v* - x) + dt a_visc(x), must be a small part of the change.</summary>
+        [TestCase(false)]
+        [TestCase(true)]
+        public void ThePredictedVelocitiesSolveBackwardEulerToItsTolerance(bool oilOnWater)
+        {
+            var settings = SolverScenes.Coarse(Spacing);
+            settings.PressureSolver = PressureSolver.Dfsph;
+            settings.SmoothingKernel = KernelFamily.WendlandC2;
+            settings.SmoothingRadius = 2.85f * Spacing;
+            settings.SolverRelaxation = 0.3f;
+            settings.Gravity = Vector3.Zero;
+            settings.XsphEpsilon = 0f;
+            var block = new Vector3(10 * Spacing, 8 * Spacing, 10 * Spacing);
+            var container = new Vector3(10 * Spacing, 12 * Spacing, 10 * Spacing);
+            var scene = oilOnWater
+                ? SolverScenes.Scene(settings, container,
+                    SolverScenes.Box("Water", SolverScenes.Water(0.05f), new Vector3(0f, -4 * Spacing, 0f), block * new Vector3(1f, 0.5f, 1f), jitter: 0.1f),
+                    SolverScenes.Box("Oil", SolverScenes.Oil(Viscosity), new Vector3(0f, 0f, 0f), block * new Vector3(1f, 0.5f, 1f), seed: 2, jitter: 0.1f))
+                : SolverScenes.Scene(settings, container,
+                    SolverScenes.Box("Water", SolverScenes.Water(Viscosity), new Vector3(0f, -2 * Spacing, 0f), block, jitter: 0.1f));
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            var particles = new Particle[sim.ParticleCount];
+            sim.Particles.GetData(particles);
+            var rng = new SolverScenes.Rng(7);
+            for (int i = 0; i < particles.Length; i++)
+                particles[i].Velocity = new Vector3(rng.Range(-1f, 1f), rng.Range(-1f, 1f), rng.Range(-1f, 1f)) * 0.01f;
+            sim.SetParticles(particles);
+            sim.Particles.GetData(particles);
+            var predicted = particles.ToDictionary(p => p.Id, p => p.Velocity);
+            float dt = (float)(10.0 * sim.TimeStep.ViscousTimeStep);
+            sim.PredictVelocities(dt);
+            sim.Particles.GetData(particles);
+
+            var state = new ReferenceSph(scene).Evaluate(particles, false);
+            double worstResidual = 0.0, largestChange = 0.0;
+            for (int i = 0; i < particles.Length; i++)
+            {
+                var x = new Double3(particles[i].Velocity);
+                var change = new Double3(predicted[particles[i].Id]) - x;
+                var residual = change + state.Acceleration[i] * dt;
+                worstResidual = Math.Max(worstResidual, Math.Sqrt(residual.LengthSquared()));
+                largestChange = Math.Max(largestChange, Math.Sqrt(change.LengthSquared()));
+            }
+            TestContext.Progress.WriteLine($"{particles.Length} particles, {dt / sim.TimeStep.ViscousTimeStep:F1} explicit limits: largest change " +
+                $"{largestChange:E3} m/s, largest residual {worstResidual:E3} m/s ({worstResidual / largestChange:E2} of it)");
+            // Every wave's error is within the tolerance of its change; the operator multiplies an error by at most
+            // 1 + dt nu Lambda_max = 1 + dt / (the explicit limit) into the residual.
+            Assert.That(largestChange, Is.GreaterThan(0.005), "the viscosity changed the velocities");
+            Assert.That(worstResidual, Is.LessThan(ImplicitViscosity.Tolerance * (1.0 + dt / sim.TimeStep.ViscousTimeStep) * largestChange));
+        }
+
+        /// <summary>A viscous liquid's flow that buoyancy drives: OilAndWater with its oil at 100 Pa s, whose explicit limit
+        /// is 0.64 ms. Solved implicitly at the scene's own 4.17 ms steps, its kinetic energy at 0.1 s must stay near the
+        /// explicit force's at 0.64 ms steps. With the viscosity solved before the constant-density solve instead, each
+        /// step's pressure kick went undamped into the drift, a flow that viscosity holds ran 1 + lambda dt times its speed,
+        /// and the fluid had 7.3 times the kinetic energy (SphViscositySolve.hlsl).</summary>
+        [Test]
+        public void ABuoyancyDrivenViscousFlowRunsAsWithTheExplicitForce()
+        {
+            double KineticAt(string maxTimeStep)
+            {
+                var path = RunnerPaths.EditedScene("OilAndWater", "MaxTimeStep: 0.005\n", $"MaxTimeStep: {maxTimeStep}\n");
+                var scene = SceneLoader.Load(path, RunnerPaths.Project).Description;
+                Assert.That(new SolverChoice { Solver = PressureSolver.Dfsph }.ApplyTo(scene, "DFSPH OilAndWater"), Is.Null);
+                foreach (var box in scene.SpawnBoxes)
+                    if (box.Phase.Name == "Oil") box.Phase.Viscosity = 100f;
+                using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
+                while (sim.SimulatedTime < 0.1 - 1e-6)
+                    sim.Step(1f / 60f);
+                double kinetic = sim.ReadDiagnostics().KineticEnergy;
+                TestContext.Progress.WriteLine($"steps of {1000 * sim.LastStep.TimeStep:F3} ms ({sim.LastStep.TimeStep / sim.TimeStep.ViscousTimeStep:F2} " +
+                    $"explicit limits): kinetic energy at 0.1 s {kinetic:E3} J");
+                return kinetic;
+            }
+            double explicitForce = KineticAt("0.00064"), implicitSolve = KineticAt("0.005");
+            Assert.That(implicitSolve / explicitForce, Is.InRange(0.5, 1.6));
+        }
+    }
+}
