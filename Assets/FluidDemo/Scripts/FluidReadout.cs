@@ -117,6 +117,9 @@ namespace SphFluid.Demo
                         diagnostics.DivergenceSolvesCutOff, diagnostics.DivergenceError, IterationName(target));
                 else
                     _text.AppendFormat(c, "Divergence error {0:F2} %/s\n", diagnostics.DivergenceError);
+                FluidSimulation simulation = target.Simulation;
+                if (simulation != null && simulation.ViscositySolveRounds > 0)
+                    _text.AppendFormat(c, "Viscosity solved implicitly: {0} rounds per sub-step\n", simulation.ViscositySolveRounds);
             }
 
             SimulationPlan plan = target.Plan;

@@ -505,6 +505,10 @@ namespace SphFluid.Simulation
             _device.EndSample(PassNames.ViscositySolve);
         }
 
+        /// <summary>Rounds of the implicit viscosity solve each sub-step of the last frame recorded; 0 while the viscosity
+        /// was explicit (<see cref="ImplicitViscosity"/>).</summary>
+        public int ViscositySolveRounds => _viscosity.Rounds;
+
         const int DensitySolveSlot = 0, DivergenceSolveSlot = 1;
 
         /// <summary>Rounds (error pass, SolveFinal, correction) recorded for each DFSPH solve of the next sub-steps:
