@@ -25,6 +25,7 @@ public sealed unsafe partial class VulkanComputeDevice
         public ulong ChunkOffset;
         public readonly List<QueryPool> QueryPools = new();
         public uint QueriesUsed;
+        public int Dispatches;
         public readonly List<(string Kernel, uint Query)> DispatchQueries = new();
         public readonly List<(string Name, uint Begin, uint End)> Samples = new();
     }
@@ -94,6 +95,12 @@ public sealed unsafe partial class VulkanComputeDevice
         CreatePipeline(v);
 
         var frame = BeginRecording();
+        if (frame.Dispatches >= DispatchesPerSubmit)
+        {
+            SubmitPart();
+            frame = BeginRecording();
+        }
+        frame.Dispatches++;
         var cmd = frame.Cmd;
         var set = AllocateDescriptorSet(frame, v.SetLayout);
         int nWrites = v.Reflection.Resources.Count;
@@ -241,6 +248,7 @@ public sealed unsafe partial class VulkanComputeDevice
         f.ChunkIndex = 0;
         f.ChunkOffset = 0;
         f.QueriesUsed = 0;
+        f.Dispatches = 0;
         f.DispatchQueries.Clear();
         f.Samples.Clear();
         f.Serial = _submittedSerial + 1;
@@ -317,9 +325,24 @@ public sealed unsafe partial class VulkanComputeDevice
     public void Submit()
     {
         ThrowIfDisposed();
+        _openSamples.Clear();
+        _samplesCutBySubmit.Clear();
+        SubmitRecording();
+    }
+
+    /// <summary>Submits the part of a frame recorded so far (<see cref="DispatchesPerSubmit"/>); the samples open across
+    /// it go untimed, and their EndSample is accepted.</summary>
+    void SubmitPart()
+    {
+        _samplesCutBySubmit.UnionWith(_openSamples.Keys);
+        _openSamples.Clear();
+        SubmitRecording();
+    }
+
+    void SubmitRecording()
+    {
         var f = _recording;
         if (f == null) return;
-        _openSamples.Clear();
         FullBarrier(f.Cmd);
         Check(_vk.EndCommandBuffer(f.Cmd), "vkEndCommandBuffer");
         var cmd = f.Cmd;

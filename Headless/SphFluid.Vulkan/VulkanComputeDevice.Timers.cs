@@ -43,6 +43,7 @@ public sealed unsafe partial class VulkanComputeDevice
         uint q = AllocateQuery(f, 1);
         WriteTimestamp(f, q);
         _openSamples[name] = q;
+        _samplesCutBySubmit.Remove(name);
     }
 
     public void EndSample(string name)
@@ -50,6 +51,8 @@ public sealed unsafe partial class VulkanComputeDevice
         ThrowIfDisposed();
         if (name == null) throw new ArgumentNullException(nameof(name));
         if (!_canTime) return;
+        if (_samplesCutBySubmit.Remove(name))
+            return;
         if (_recording == null || !_openSamples.Remove(name, out uint begin))
             throw new ComputeException($"EndSample('{name}') without a matching BeginSample('{name}') since the last Submit");
         var f = _recording;
