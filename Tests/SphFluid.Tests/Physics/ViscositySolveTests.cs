@@ -30,15 +30,22 @@ namespace SphFluid.Tests.Physics
         // frames of 100 sub-steps record the full cap each and took this test twice as long.
         const int FrameSteps = 10;
 
-        static FluidSceneDescription Box()
+        /// <summary>DFSPH with the shipped kernel (Wendland C2 at 2.85 spacings), no gravity and no XSPH.</summary>
+        static FluidSettings Weightless()
         {
             var settings = SolverScenes.Coarse(Spacing);
             settings.PressureSolver = PressureSolver.Dfsph;
             settings.SmoothingKernel = KernelFamily.WendlandC2;
             settings.SmoothingRadius = 2.85f * Spacing;
+            settings.SolverRelaxation = 0.3f;
             settings.Gravity = Vector3.Zero;
             settings.XsphEpsilon = 0f;
-            settings.SolverRelaxation = 0.3f;
+            return settings;
+        }
+
+        static FluidSceneDescription Box()
+        {
+            var settings = Weightless();
             settings.MaxSubsteps = 1000;
             var size = new Vector3(Cells * Spacing, 8 * Spacing, Cells * Spacing);
             var water = SolverScenes.Box("Water", SolverScenes.Water(Viscosity), Vector3.Zero, size, jitter: 0f);
@@ -130,13 +137,7 @@ namespace SphFluid.Tests.Physics
         [TestCase(true)]
         public void ThePredictedVelocitiesSolveBackwardEulerToItsTolerance(bool oilOnWater)
         {
-            var settings = SolverScenes.Coarse(Spacing);
-            settings.PressureSolver = PressureSolver.Dfsph;
-            settings.SmoothingKernel = KernelFamily.WendlandC2;
-            settings.SmoothingRadius = 2.85f * Spacing;
-            settings.SolverRelaxation = 0.3f;
-            settings.Gravity = Vector3.Zero;
-            settings.XsphEpsilon = 0f;
+            var settings = Weightless();
             var block = new Vector3(10 * Spacing, 8 * Spacing, 10 * Spacing);
             var container = new Vector3(10 * Spacing, 12 * Spacing, 10 * Spacing);
             var scene = oilOnWater
