@@ -12,12 +12,12 @@ using SphFluid.Tests.Solver;
 namespace SphFluid.Tests.Physics
 {
     /// <summary>
-    /// DFSPH's implicit viscosity solve (SphViscositySolve.hlsl) against the explicit force it replaces beyond the explicit
-    /// step. A cellular flow in a box with free-slip walls, u = U sin(k x) cos(k z), w = -U cos(k x) sin(k z), k = pi / L,
-    /// is divergence-free, parallel to every wall and free of shear at them: a Stokes mode that decays as
-    /// exp(-2 nu k^2 t). The explicit force at a step inside its limit measures the scheme's own decay rate lambda; backward
-    /// Euler at n steps of dt takes the mode to (1 + lambda dt)^-n of itself, which the implicit solve at ten times the
-    /// explicit limit must meet.
+    /// DFSPH's implicit viscosity solve (SphViscositySolve.hlsl) against the equation it solves and against the explicit
+    /// force it replaces beyond the explicit step: the solved velocities against the CPU reference's force; a cellular flow
+    /// in a box with free-slip walls, u = U sin(k x) cos(k z), w = -U cos(k x) sin(k z), k = pi / L, divergence-free,
+    /// parallel to every wall and free of shear at them, a Stokes mode that decays as exp(-2 nu k^2 t), whose decay rate
+    /// under the explicit force the solve must approach as its step comes down to the limit; and OilAndWater's flow with
+    /// its oil at 100 Pa s.
     /// </summary>
     public sealed class ViscositySolveTests
     {
