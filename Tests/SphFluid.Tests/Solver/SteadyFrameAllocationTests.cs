@@ -72,6 +72,28 @@ namespace SphFluid.Tests.Solver
             }
         }
 
+        /// <summary>DFSPH with its oil at 100 Pa s, frames of two lengths: each frame's new step sizes the implicit viscosity
+        /// solve again (ImplicitViscosity), from the lattice's row sum the simulation keeps.</summary>
+        [Test]
+        public void ViscousLiquidUnderDfsph_ChangingItsStepEveryFrame_WithNoGarbage()
+        {
+            var scene = TankWithBall();
+            scene.Settings.PressureSolver = PressureSolver.Dfsph;
+            scene.Settings.SolverRelaxation = 0.3f;
+            scene.SpawnBoxes[1].Phase.Viscosity = 100f;
+            var device = new StandInDevice();
+            using (var sim = new FluidSimulation(device, scene))
+            {
+                int frames = 0;
+                Action frame = () => sim.Step(frames++ % 2 == 0 ? Frame : 1.2f * Frame);
+                AllocatedBy(frame, Frames);
+                long bytes = AllocatedBy(frame, Frames);
+
+                Assert.That(sim.ViscositySolveRounds, Is.GreaterThan(0), "the viscosity was solved implicitly");
+                Assert.That(bytes, Is.EqualTo(0L), $"bytes allocated by {Frames} frames of a viscous liquid under DFSPH");
+            }
+        }
+
         [Test]
         public void TurningContainer_StepsWithNoGarbage()
         {

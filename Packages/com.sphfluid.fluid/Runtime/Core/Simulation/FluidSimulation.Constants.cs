@@ -25,9 +25,8 @@ namespace SphFluid.Simulation
         /// (<see cref="ImplicitViscosity"/>), or none: its interval tells the kernels which.</summary>
         void SetViscositySolve(float dt)
         {
-            var s = _scene.Settings;
-            _viscosity = ImplicitViscosity.Needed(s.PressureSolver, dt, _timeStep.ViscousTimeStep)
-                ? ImplicitViscosity.For(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius, _timeStep.MaxKinematicViscosity, dt)
+            _viscosity = ImplicitViscosity.Needed(_scene.Settings.PressureSolver, dt, _timeStep.ViscousTimeStep)
+                ? ImplicitViscosity.For(_viscousRowSum, _timeStep.MaxKinematicViscosity, dt)
                 : default;
             _constants[0].ViscositySolveLow = _viscosity.Rounds > 0 ? _viscosity.Low : 0f;
             _constants[0].ViscositySolveHigh = _viscosity.Rounds > 0 ? ImplicitViscosity.High : 0f;

@@ -48,6 +48,7 @@ namespace SphFluid.Simulation
         readonly Particle[] _spawn;
         readonly TimeStepController _timeStep;
         ImplicitViscosity _viscosity; // the sub-steps' implicit viscosity solve, none (0 rounds) while the force is explicit
+        readonly double _viscousRowSum; // ImplicitViscosity.LatticeRowSum of the scene's lattice, 1/m^2
         readonly IComputeProgram _solver, _diagnostics;
         readonly SolverKernels _kernels;
         readonly bool _divergenceFree;
@@ -117,6 +118,8 @@ namespace SphFluid.Simulation
             if (DeviceCapacity.Problem(ParticleCount, 0, device) is string tooMany)
                 throw new ArgumentException("FluidSimulation: " + tooMany, nameof(scene));
             _timeStep = TimeStepController.ForScene(_scene);
+            _viscousRowSum = ImplicitViscosity.LatticeRowSum(_scene.Settings.SmoothingKernel, _scene.Settings.ParticleSpacing,
+                _scene.Settings.SmoothingRadius);
             if (_scene.Settings.PressureSolver == PressureSolver.Dfsph)
                 _timeStep.GravityWaveSpeed = (float)Math.Sqrt(_scene.Settings.Gravity.Length() *
                     SpawnLayout.Depth(_spawn, _scene.Settings.Gravity, _scene.Settings.ParticleSpacing));

@@ -48,9 +48,19 @@ namespace SphFluid.Simulation
         /// <summary>The solve for sub-steps of <paramref name="timeStep"/> s at kinematic viscosity <paramref name="nu"/>
         /// (m^2/s, the largest a pair of phases meets) on a lattice of <paramref name="spacing"/> m with support
         /// <paramref name="support"/> m.</summary>
-        public static ImplicitViscosity For(KernelFamily kind, double spacing, double support, double nu, double timeStep)
+        public static ImplicitViscosity For(KernelFamily kind, double spacing, double support, double nu, double timeStep) =>
+            For(LatticeRowSum(kind, spacing, support), nu, timeStep);
+
+        /// <summary>sum_j w_j over the lattice's neighbours, 1/m^2 (half <see cref="ViscousStepLimit.RowBound"/>): what a
+        /// simulation keeps, so that a frame's new step allocates nothing.</summary>
+        public static double LatticeRowSum(KernelFamily kind, double spacing, double support) =>
+            0.5 * ViscousStepLimit.RowBound(kind, spacing, support);
+
+        /// <summary>The solve for sub-steps of <paramref name="timeStep"/> s at kinematic viscosity <paramref name="nu"/>
+        /// (m^2/s) on a lattice whose <see cref="LatticeRowSum"/> is <paramref name="rowSum"/>.</summary>
+        public static ImplicitViscosity For(double rowSum, double nu, double timeStep)
         {
-            double beta = RowMargin * timeStep * nu * 0.5 * ViscousStepLimit.RowBound(kind, spacing, support);
+            double beta = RowMargin * timeStep * nu * rowSum;
             double low = 1.0 / (1.0 + beta);
             double ratio = (High + low) / (High - low);
             int rounds = (int)Math.Ceiling(Acosh(1.0 / Tolerance) / Acosh(ratio) - 1e-9);
