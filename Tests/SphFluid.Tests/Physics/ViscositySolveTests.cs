@@ -93,9 +93,7 @@ namespace SphFluid.Tests.Physics
             sim.Particles.GetData(particles);
             var momentum = particles.Aggregate(Vector3.Zero, (sum, p) => sum + p.Velocity);
             var limit = sim.TimeStep.ViscousTimeStep;
-            int rounds = ImplicitViscosity.Needed(PressureSolver.Dfsph, dt, limit)
-                ? ImplicitViscosity.For(KernelFamily.WendlandC2, Spacing, scene.Settings.SmoothingRadius, sim.TimeStep.MaxKinematicViscosity, dt).Rounds
-                : 0;
+            int rounds = sim.ViscositySolveRounds;
             TestContext.Progress.WriteLine($"{steps} steps of {1000 * dt:F3} ms ({dt / limit:F2} of the explicit limit, {rounds} rounds): " +
                 $"amplitude {Amplitude(particles) / U:F4} U, momentum {momentum.Length() / particles.Length / U:E2} U");
             return (Amplitude(particles) / U, momentum.Length() / particles.Length / U, rounds);
