@@ -33,6 +33,17 @@ void Normals(uint3 id : SV_DispatchThreadID)
     _Normals[i] = float4(_SmoothingRadius * normal, 0.0);
 }
 
+// mu_ij of a fluid pair whose first particle has viscosity muI (SphViscosity.hlsl's mixing rule); with one phase
+// every pair has the phase's own.
+float PairViscosity(float muI, uint phaseIndexJ)
+{
+#if MULTIPHASE
+    return MixedViscosity(muI, _Phases[phaseIndexJ].viscosity);
+#else
+    return muI;
+#endif
+}
+
 // What lane `lane` of particle i's neighbourhood (every _NeighbourLanes-th neighbour, NeighbourLanes.hlsl) adds to
 // the sums AccelerationOf turns into its acceleration.
 struct ForceSums
@@ -76,11 +87,7 @@ ForceSums ForceSumsOf(uint i, bool withPressure, uint lane)
             float r = sqrt(r2);
             float4 dj = _Densities[j];
             uint phaseIndexJ = PHASE_OF(pj);
-#if MULTIPHASE
-            float muIJ = MixedViscosity(phaseI.viscosity, _Phases[phaseIndexJ].viscosity);
-#else
-            float muIJ = phaseI.viscosity;
-#endif
+            float muIJ = PairViscosity(phaseI.viscosity, phaseIndexJ);
             float3 gradient = PairGradient(rij, r, pi.id, pj.id);
             if (withPressure)
                 force += PressureForcePair(di.w, dj.w, gradient);

@@ -27,12 +27,7 @@ float4 ViscousSumsOf(uint i, uint lane)
             float r2 = dot(rij, rij);
             if (r2 >= _SmoothingRadius2 || j == i)
                 continue;
-#if MULTIPHASE
-            float muIJ = MixedViscosity(phaseI.viscosity, _Phases[PHASE_OF(pj)].viscosity);
-#else
-            float muIJ = phaseI.viscosity;
-#endif
-            float c = ViscosityCoupling(muIJ, rij, r2, PairGradient(rij, sqrt(r2), pi.id, pj.id), 1.0 / (di.z * _Densities[j].z));
+            float c = ViscosityCoupling(PairViscosity(phaseI.viscosity, PHASE_OF(pj)), rij, r2, PairGradient(rij, sqrt(r2), pi.id, pj.id), 1.0 / (di.z * _Densities[j].z));
             force += c * (pj.velocity - pi.velocity);
             couplings += c;
         }
