@@ -70,6 +70,8 @@ cbuffer FluidConstants
     uint _AcceleratedDensitySolve;          // DivergenceFreeSolver: 1 when the constant-density solve is accelerated too (ChebyshevBounds.cs)
     float _ViscositySolveLow;               // SphViscositySolve: a, lowest eigenvalue the implicit viscosity solve is tuned for
     float _ViscositySolveHigh;              // SphViscositySolve: b, highest; 0 while the viscosity is explicit (ImplicitViscosity.cs)
+
+    float _ViscositySolveStep;              // SphViscositySolve: h = gamma dt, the step each of its two stages solves for, s
 };
 
 // Grid.hlsl reads its three values from here instead of declaring its own.

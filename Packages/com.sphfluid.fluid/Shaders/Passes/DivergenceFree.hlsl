@@ -94,10 +94,10 @@ void PredictVelocity(uint3 id : SV_DispatchThreadID)
     if (i >= _ParticleCount)
         return;
     Particle p = _Particles[i];
+    if (ViscosityIsImplicit())
+        _ViscosityStart[i] = float4(p.velocity, 0.0); // v_n, and no stage opened yet (ViscosityStage)
     p.velocity = PredictedVelocity(p.velocity, _Accelerations[i].xyz, _VelocityCorrections[i].xyz);
     _Particles[i] = p;
-    if (i == 0u)
-        _SolverState[VISCOSITY_WORD] = 0u; // the viscosity solve's first round has no rho before it
     float warm = DENSITY_WARM_START * _WarmStart[p.id].x;
     _SolverStiffness[i] = warm;
     _WarmStart[p.id] = float2(0.0, _WarmStart[p.id].y); // ApplyStiffness counts the warm start as it applies it

@@ -2,8 +2,8 @@
 #define SPHFLUID_PASSES_VISCOSITY_SOLVE_INCLUDED
 
 // FluidSolver.compute's implicit viscosity solve (SphViscositySolve.hlsl), between DFSPH's constant-density solve and its
-// drift: the host records its rounds of ViscosityStep > ViscosityApply on the particles' velocities, whose values at the
-// first round ViscosityStep keeps in _ViscosityTargets (v*). PredictVelocity opens the solve (VISCOSITY_WORD = 0).
+// drift: for each stage the host records ViscosityStage, which sets the stage's target, and its rounds of ViscosityStep >
+// ViscosityApply on the particles' velocities. PredictVelocity keeps each particle's v_n in _ViscosityStart.
 
 // What lane `lane` of particle i's neighbourhood adds to the viscous force at the present velocities (xyz) and to the
 // couplings' sum (w), fluid and walls, as ForceSumsOf sums them.
@@ -60,17 +60,7 @@ void ViscosityStep(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupT
         return;
     Particle pi = _Particles[i];
     float previousRho = asfloat(_SolverState[VISCOSITY_WORD]);
-    float3 target;
-    if (previousRho == 0.0)
-    {
-        target = pi.velocity; // the first round: the velocities are v*, and only this thread reads its own
-        _ViscosityTargets[i] = float4(target, 0.0);
-    }
-    else
-    {
-        target = _ViscosityTargets[i].xyz;
-    }
-    float3 jacobi = ViscousJacobiStep(target, pi.velocity, sums.xyz, sums.w, _Phases[PHASE_OF(pi)].particleMass);
+    float3 jacobi = ViscousJacobiStep(_ViscosityTargets[i].xyz, pi.velocity, sums.xyz, sums.w, _Phases[PHASE_OF(pi)].particleMass);
     float3 weights = ChebyshevWeights(previousRho, _ViscositySolveLow, _ViscositySolveHigh);
     _ViscositySteps[i] = float4(weights.x * _ViscositySteps[i].xyz + weights.y * jacobi, 0.0);
 }
@@ -86,6 +76,34 @@ void ViscosityApply(uint3 id : SV_DispatchThreadID)
         return;
     Particle p = _Particles[i];
     p.velocity += _ViscositySteps[i].xyz;
+    _Particles[i] = p;
+}
+
+// A stage's start: its target (FirstStageTarget from v_n and v*, the velocities the constant-density solve left; then
+// SecondStageTarget from stage one's target and solution) into _ViscosityTargets and, as its first iterate, into the
+// velocities; _ViscosityStart.w counts the stages opened. The Chebyshev rounds start again.
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void ViscosityStage(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i == 0u)
+        _SolverState[VISCOSITY_WORD] = 0u; // no rho before the stage's first round
+    if (i >= _ParticleCount)
+        return;
+    Particle p = _Particles[i];
+    float4 start = _ViscosityStart[i];
+    float3 target;
+    if (start.w == 0.0)
+    {
+        target = FirstStageTarget(start.xyz, p.velocity);
+        _ViscosityStart[i] = float4(start.xyz, 1.0);
+    }
+    else
+    {
+        target = SecondStageTarget(start.xyz, _ViscosityTargets[i].xyz, p.velocity);
+    }
+    _ViscosityTargets[i] = float4(target, 0.0);
+    p.velocity = target;
     _Particles[i] = p;
 }
 

@@ -17,7 +17,7 @@ namespace SphFluid.Simulation
     public struct FluidConstants
     {
         /// <summary>The cbuffer's size in bytes, whole 16-byte rows (HLSL rounds a part row up).</summary>
-        public const int Bytes = 432;
+        public const int Bytes = 448;
 
         public Matrix4x4 WorldToContainer;
         public Matrix4x4 ContainerToWorld;
@@ -74,5 +74,7 @@ namespace SphFluid.Simulation
         public uint AcceleratedDensitySolve;
         public float ViscositySolveLow;
         public float ViscositySolveHigh;
+
+        public float ViscositySolveStep;
     }
 }

@@ -30,6 +30,7 @@ namespace SphFluid.Simulation
                 : default;
             _constants[0].ViscositySolveLow = _viscosity.Rounds > 0 ? _viscosity.Low : 0f;
             _constants[0].ViscositySolveHigh = _viscosity.Rounds > 0 ? ImplicitViscosity.High : 0f;
+            _constants[0].ViscositySolveStep = _viscosity.StageStep;
         }
 
         /// <summary>The rounds each DFSPH solve records (<see cref="SolveRounds"/>), which SolveFinal counts against.</summary>

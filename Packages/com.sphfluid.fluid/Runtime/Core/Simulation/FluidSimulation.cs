@@ -495,22 +495,27 @@ namespace SphFluid.Simulation
             _device.EndSample(PassNames.DivergenceSolve);
         }
 
-        /// <summary>The implicit viscosity solve (SphViscositySolve.hlsl) on the predicted velocities: its recorded rounds of
-        /// the viscous Jacobi step, Chebyshev-accelerated, and its application.</summary>
+        /// <summary>The implicit viscosity solve (SphViscositySolve.hlsl) on the predicted velocities: for each of its two
+        /// stages its target, then the recorded rounds of the viscous Jacobi step, Chebyshev-accelerated, and its
+        /// application.</summary>
         void SolveViscosity()
         {
             _device.BeginSample(PassNames.ViscositySolve);
-            for (int k = 0; k < _viscosity.Rounds; k++)
+            for (int stage = 0; stage < ImplicitViscosity.Stages; stage++)
             {
-                _device.DispatchThreads(_solver, _kernels.ViscosityStep, ParticleCount * LanesPerParticle);
-                _device.DispatchThreads(_solver, _kernels.ViscosityApply, ParticleCount);
+                _device.DispatchThreads(_solver, _kernels.ViscosityStage, ParticleCount);
+                for (int k = 0; k < _viscosity.Rounds; k++)
+                {
+                    _device.DispatchThreads(_solver, _kernels.ViscosityStep, ParticleCount * LanesPerParticle);
+                    _device.DispatchThreads(_solver, _kernels.ViscosityApply, ParticleCount);
+                }
             }
             _device.EndSample(PassNames.ViscositySolve);
         }
 
-        /// <summary>Rounds of the implicit viscosity solve each sub-step of the last frame recorded; 0 while the viscosity
-        /// was explicit (<see cref="ImplicitViscosity"/>).</summary>
-        public int ViscositySolveRounds => _viscosity.Rounds;
+        /// <summary>Rounds of the implicit viscosity solve each sub-step of the last frame recorded, both stages; 0 while the
+        /// viscosity was explicit (<see cref="ImplicitViscosity"/>).</summary>
+        public int ViscositySolveRounds => ImplicitViscosity.Stages * _viscosity.Rounds;
 
         const int DensitySolveSlot = 0, DivergenceSolveSlot = 1;
 

@@ -80,6 +80,7 @@ namespace SphFluid.Simulation
             new Binding("_SolverState", b => b.SolverState, Readers.Both, Group.Fixed),
             new Binding("_SolverArguments", b => b.SolverArguments, Readers.Solver, Group.Fixed),
             new Binding("_DivergenceRates", b => b.DivergenceRates, Readers.Both, Group.Fixed),
+            new Binding("_ViscosityStart", b => b.ViscosityStart, Readers.Solver, Group.Fixed),
             new Binding("_ViscosityTargets", b => b.ViscosityTargets, Readers.Solver, Group.Fixed),
             new Binding("_ViscositySteps", b => b.ViscositySteps, Readers.Solver, Group.Fixed),
             new Binding("_NumberDensities", b => b.NumberDensities, Readers.Solver, Group.Fixed),
@@ -118,7 +119,7 @@ namespace SphFluid.Simulation
         public IComputeBuffer Phases, Densities, Normals, Accelerations, VelocityCorrections, Shifts, Obstacles, ClampHits;
         public IComputeBuffer Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
         public IComputeBuffer NumberDensities, NumberDensitiesHalf, DensityRates; // delta-SPH (SphDensityDiffusion.hlsl)
-        public IComputeBuffer ViscosityTargets, ViscositySteps; // DFSPH's implicit viscosity (ViscositySolve.hlsl)
+        public IComputeBuffer ViscosityStart, ViscosityTargets, ViscositySteps; // DFSPH's implicit viscosity (ViscositySolve.hlsl)
         public IComputeBuffer MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
         public IComputeBuffer BoundaryRest, BoundaryPlaced, BoundarySorted, BoundaryPressures, BoundarySolve, BoundaryWarmStart, WallNumberDensities;
         public IComputeBuffer BoundaryOwnNumberDensities; // DFSPH by boundary id: its own body's number density at rest (BoundarySampling)
@@ -177,6 +178,7 @@ namespace SphFluid.Simulation
             // then they dispatch nothing.
             SolverArguments.SetData(new uint[] { 0u, 1u, 1u, 0u, 1u, 1u });
             DivergenceRates = Zeroed("FluidSimulation.DivergenceRates", n, 4);
+            ViscosityStart = Zeroed("FluidSimulation.ViscosityStart", n, 16);
             ViscosityTargets = Zeroed("FluidSimulation.ViscosityTargets", n, 16);
             ViscositySteps = Zeroed("FluidSimulation.ViscositySteps", n, 16);
             NumberDensities = device.CreateBuffer("FluidSimulation.NumberDensities", n, 4);
@@ -292,12 +294,12 @@ namespace SphFluid.Simulation
         {
             foreach (var buffer in new[] { Particles, ParticlesOther, Phases, Densities, Normals, Accelerations, VelocityCorrections, Shifts,
                          Obstacles, ClampHits, Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments,
-                         DivergenceRates, NumberDensities, NumberDensitiesHalf, DensityRates, ViscosityTargets, ViscositySteps, MotionPartials,
+                         DivergenceRates, NumberDensities, NumberDensitiesHalf, DensityRates, ViscosityStart, ViscosityTargets, ViscositySteps, MotionPartials,
                          MotionTotals, DiagnosticsPartials, DiagnosticsTotals, Constants })
                 buffer?.Dispose();
             Particles = ParticlesOther = Phases = Densities = Normals = Accelerations = VelocityCorrections = Shifts = null;
             Obstacles = ClampHits = Factors = SolverStiffness = WarmStart = SolverPartials = SolverState = SolverArguments = null;
-            NumberDensities = NumberDensitiesHalf = DensityRates = ViscosityTargets = ViscositySteps = null;
+            NumberDensities = NumberDensitiesHalf = DensityRates = ViscosityStart = ViscosityTargets = ViscositySteps = null;
             DivergenceRates = MotionPartials = MotionTotals = DiagnosticsPartials = DiagnosticsTotals = Constants = null;
             ReleaseBoundary();
             Sorter?.Dispose();

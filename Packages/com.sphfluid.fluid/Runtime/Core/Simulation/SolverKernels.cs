@@ -18,7 +18,7 @@ namespace SphFluid.Simulation
             SolveFinal, ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity;
 
         // DFSPH's implicit viscosity solve (ViscositySolve.hlsl).
-        public readonly int ViscosityStep, ViscosityApply;
+        public readonly int ViscosityStep, ViscosityApply, ViscosityStage;
 
         public readonly int[] All;
 
@@ -54,13 +54,14 @@ namespace SphFluid.Simulation
             WallNumberDensity = solver.FindKernel(nameof(WallNumberDensity));
             ViscosityStep = solver.FindKernel(nameof(ViscosityStep));
             ViscosityApply = solver.FindKernel(nameof(ViscosityApply));
+            ViscosityStage = solver.FindKernel(nameof(ViscosityStage));
             All = new[]
             {
                 HalfStep, PlaceBoundary, DensityPressure, DensityRate, ContinuityDensity, WallPressure, Normals, Forces, FullStep,
                 ParticleShift, ApplyShift, DensityFactor, WallMovedDensityFactor, BoundaryDensityFactor, BoundaryBeginSolve,
                 BoundarySolveError, NonPressureForces, PredictVelocity, BeginDensitySolve, BeginDivergenceSolve, DensitySolveError,
                 DivergenceSolveError, SolveFinal, ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity,
-                ViscosityStep, ViscosityApply,
+                ViscosityStep, ViscosityApply, ViscosityStage,
             };
         }
     }
