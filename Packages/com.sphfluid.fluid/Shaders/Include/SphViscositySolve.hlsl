@@ -19,11 +19,11 @@
 // whose solution is the new velocity. Backward Euler alone takes a wave of decay rate lambda down by 1 / (1 + lambda dt)
 // a step, and a slow flow lags: ViscositySolveTests' cellular flow kept 4 % more than the viscous operator's exact decay
 // leaves at 9.8 explicit limits, where the two stages, which take it down by (1 - (1 - 2 gamma) lambda dt) /
-// (1 + gamma lambda dt)^2, keep 0.1 % less. With the forcing inside the stages a flow that viscosity holds against it keeps its speed f / lambda at
-// any step (either stage's solution is f / lambda when v_n is); applied as a kick before them, the kick's part in a wave
-// stiffer than lambda dt = 1 + sqrt 2 came out with its sign turned (the two stages' factor is negative there), and
-// OilAndWater with its oil at 100 Pa s had 2.6 times the explicit force's kinetic energy at 0.1 s, where backward Euler
-// had 1.4 times. Each stage's x solves
+// (1 + gamma lambda dt)^2, keep 0.1 % less. With the forcing inside the stages a flow that viscosity holds against it
+// keeps its speed f / lambda at any step (either stage's solution is f / lambda when v_n is); applied as a kick before
+// them, the kick's part in a wave stiffer than lambda dt = 1 + sqrt 2 came out with its sign turned (the two stages'
+// factor is negative there), and OilAndWater with its oil at 100 Pa s had 2.6 times the explicit force's kinetic
+// energy at 0.1 s, where backward Euler had 1.4 times. Each stage's x solves
 //   m_i x_i + h sum_j c_ij (x_i - x_j) + h sum_b c_ib (x_i - v_b) = m_i t_i        (each component alone)
 // with t its target (the solve runs between the constant-density solve and the drift, so v* holds that solve's pressure)
 // and c = ViscosityCoupling >= 0, the same for i, j as for j, i. The matrix M + h L (L a weighted graph Laplacian, walls
