@@ -71,7 +71,8 @@ cbuffer FluidConstants
     float _ViscositySolveLow;               // SphViscositySolve: a, lowest eigenvalue the implicit viscosity solve is tuned for
     float _ViscositySolveHigh;              // SphViscositySolve: b, highest; 0 while the viscosity is explicit (ImplicitViscosity.cs)
 
-    float _ViscositySolveStep;              // SphViscositySolve: h = gamma dt, the step each of its two stages solves for, s
+    float _ViscositySolveStep;              // SphViscositySolve: h = gamma s, the step each of its two stages solves for, s
+    float _ViscositySolveSpan;              // SphViscositySolve: s, the step one solve covers (DFSPH's dt, a WCSPH half kick's dt/2)
 };
 
 // Grid.hlsl reads its three values from here instead of declaring its own.

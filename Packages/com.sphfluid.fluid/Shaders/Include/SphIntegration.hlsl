@@ -13,9 +13,14 @@
 // computed once so that a_0 is valid.
 // Reads _TimeStep and _VelocityDamping (FluidConstants.hlsl).
 
+float3 HalfKickedVelocity(float3 v, float3 a)
+{
+    return v + a * (0.5 * _TimeStep);
+}
+
 void KickDrift(inout float3 x, inout float3 v, float3 a)
 {
-    v += a * (0.5 * _TimeStep);
+    v = HalfKickedVelocity(v, a);
     x += v * _TimeStep;
 }
 

@@ -62,16 +62,16 @@ float3 ViscousJacobiStep(float3 target, float3 iterate, float3 viscousForce, flo
     return residual / (1.0 + _ViscositySolveStep * couplingSum / mass);
 }
 
-// Stage one's target t1 = v_n + gamma (v* - v_n) from the sub-step's first velocity v_n and v* (above).
+// Stage one's target t1 = v_n + gamma (v* - v_n) from the solve's first velocity v_n and v* (above).
 float3 FirstStageTarget(float3 start, float3 predicted)
 {
-    return start + (_ViscositySolveStep / _TimeStep) * (predicted - start);
+    return start + (_ViscositySolveStep / _ViscositySolveSpan) * (predicted - start);
 }
 
 // Stage two's target from v_n, stage one's target t1 (which gives v* back) and its solution Y1 (above).
 float3 SecondStageTarget(float3 start, float3 firstTarget, float3 firstStage)
 {
-    float stages = _TimeStep / _ViscositySolveStep; // 1 / gamma
+    float stages = _ViscositySolveSpan / _ViscositySolveStep; // 1 / gamma
     float3 predicted = start + stages * (firstTarget - start);
     return predicted + (stages - 1.0) * (firstStage - firstTarget);
 }

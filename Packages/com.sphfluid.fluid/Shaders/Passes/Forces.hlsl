@@ -64,8 +64,8 @@ ForceSums ForceSumsOf(uint i, bool withPressure, uint lane)
 #if SURFACE_TENSION
     float3 normalI = _Normals[i].xyz;
 #endif
-    // Under DFSPH the viscosity may be the implicit solve's instead (ViscositySolve.hlsl).
-    bool explicitViscosity = withPressure || !ViscosityIsImplicit();
+    // The viscosity may be the implicit solve's instead (ViscositySolve.hlsl).
+    bool explicitViscosity = !ViscosityIsImplicit();
     float3 force = float3(0.0, 0.0, 0.0);
     float3 xsph = float3(0.0, 0.0, 0.0);
     float3 wallGradients = float3(0.0, 0.0, 0.0);

@@ -76,5 +76,6 @@ namespace SphFluid.Simulation
         public float ViscositySolveHigh;
 
         public float ViscositySolveStep;
+        public float ViscositySolveSpan;
     }
 }

@@ -25,12 +25,15 @@ namespace SphFluid.Simulation
         /// (<see cref="ImplicitViscosity"/>), or none: its interval tells the kernels which.</summary>
         void SetViscositySolve(float dt)
         {
-            _viscosity = ImplicitViscosity.Needed(_scene.Settings.PressureSolver, dt, _timeStep.ViscousTimeStep)
-                ? ImplicitViscosity.For(_viscousRowSum, _timeStep.MaxKinematicViscosity, dt)
+            var solver = _scene.Settings.PressureSolver;
+            double span = ImplicitViscosity.Span(solver, dt);
+            _viscosity = ImplicitViscosity.Needed(dt, _timeStep.ViscousTimeStep)
+                ? ImplicitViscosity.For(_viscousRowSum, _timeStep.MaxKinematicViscosity, span)
                 : default;
             _constants[0].ViscositySolveLow = _viscosity.Rounds > 0 ? _viscosity.Low : 0f;
             _constants[0].ViscositySolveHigh = _viscosity.Rounds > 0 ? ImplicitViscosity.High : 0f;
             _constants[0].ViscositySolveStep = _viscosity.StageStep;
+            _constants[0].ViscositySolveSpan = (float)span;
         }
 
         /// <summary>The rounds each DFSPH solve records (<see cref="SolveRounds"/>), which SolveFinal counts against.</summary>

@@ -281,7 +281,7 @@ namespace SphFluid.Simulation
         /// <summary>Names of the GPU timing ranges a frame may record (device.TryGetSampleMilliseconds).</summary>
         public static IReadOnlyList<string> SampleNames { get; } = new[]
         {
-            PassNames.UploadContainer, PassNames.PlaceBoundary, PassNames.DensityRate, PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals,
+            PassNames.UploadContainer, PassNames.PlaceBoundary, PassNames.DensityRate, PassNames.HalfStep, PassNames.HalfKick, PassNames.HalfDrift, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals,
             PassNames.Forces, PassNames.FullStep, PassNames.NonPressureForces, PassNames.PredictVelocity, PassNames.DensitySolve, PassNames.ViscositySolve, PassNames.Drift,
             PassNames.FindNeighbours, PassNames.DensityFactor, PassNames.DivergenceSolve, PassNames.ParticleShift, PassNames.ApplyShift, PassNames.MotionReduction, PassNames.Diagnostics,
         };
@@ -432,7 +432,8 @@ namespace SphFluid.Simulation
                 VerletSubstep();
         }
 
-        /// <summary>One WCSPH Velocity Verlet sub-step: kick-drift, re-sort, forces, kick.</summary>
+        /// <summary>One WCSPH Velocity Verlet sub-step: kick-drift, re-sort, forces, kick; beyond the explicit viscous limit
+        /// each kick followed by the implicit viscosity solve over its half of the step.</summary>
         void VerletSubstep()
         {
             if (_deltaSph)
@@ -441,12 +442,26 @@ namespace SphFluid.Simulation
                 LanedPass(PassNames.DensityRate, _kernels.DensityRate, ParticleCount);
             }
 
-            SolverPass(PassNames.HalfStep, _kernels.HalfStep);
+            if (_viscosity.Rounds > 0)
+            {
+                // Each half kick is damped before the particles drift with it (ImplicitViscosity.SolvesPerStep); the
+                // solve reads the neighbours where the last sort left them, unless a shift has moved them since.
+                SolverPass(PassNames.HalfKick, _kernels.HalfKick);
+                FindNeighbours();
+                SolveViscosity();
+                SolverPass(PassNames.HalfDrift, _kernels.HalfDrift);
+            }
+            else
+            {
+                SolverPass(PassNames.HalfStep, _kernels.HalfStep);
+            }
 
             AdvanceWalls(_constants[0].TimeStep);
             SortAndComputeForces();
 
             SolverPass(PassNames.FullStep, _kernels.FullStep);
+            if (_viscosity.Rounds > 0)
+                SolveViscosity();
 
             if (Plan.Shifting)
                 Shift();
@@ -513,9 +528,10 @@ namespace SphFluid.Simulation
             _device.EndSample(PassNames.ViscositySolve);
         }
 
-        /// <summary>Rounds of the implicit viscosity solve each sub-step of the last frame recorded, both stages; 0 while the
-        /// viscosity was explicit (<see cref="ImplicitViscosity"/>).</summary>
-        public int ViscositySolveRounds => ImplicitViscosity.Stages * _viscosity.Rounds;
+        /// <summary>Rounds of the implicit viscosity solve each sub-step of the last frame recorded, every solve and stage; 0
+        /// while the viscosity was explicit (<see cref="ImplicitViscosity"/>).</summary>
+        public int ViscositySolveRounds =>
+            ImplicitViscosity.SolvesPerStep(_scene.Settings.PressureSolver) * ImplicitViscosity.Stages * _viscosity.Rounds;
 
         const int DensitySolveSlot = 0, DivergenceSolveSlot = 1;
 

@@ -3,13 +3,14 @@ using System;
 namespace SphFluid.Simulation
 {
     /// <summary>
-    /// The implicit viscosity solve of a DFSPH sub-step longer than the explicit force's limit (SphViscositySolve.hlsl):
+    /// The implicit viscosity solve of a sub-step longer than the explicit force's limit (SphViscositySolve.hlsl), once in
+    /// a DFSPH sub-step and on each half kick of a WCSPH one (<see cref="SolvesPerStep"/>):
     /// the step h each of its two stages solves for, the eigenvalue interval [a, b] their Chebyshev rounds are tuned for
     /// and the number of rounds, all from the spawn lattice, so that the host records the rounds without reading anything
     /// back.
     /// <para>
     /// The two stages are Alexander's L-stable, second-order diagonally implicit Runge-Kutta method, each a backward
-    /// Euler solve of step h = <see cref="StageFraction"/> dt. Backward Euler alone took a wave of decay rate lambda down
+    /// Euler solve of step h = <see cref="StageFraction"/> s, s the step the solve covers (<see cref="Span"/>). Backward Euler alone took a wave of decay rate lambda down
     /// by 1 / (1 + lambda dt) a step, so a slow flow lagged: a cellular flow at 9.8 explicit limits kept 4 % more than the
     /// viscous operator's exact decay leaves, the two stages 0.1 % less. Two stages of h cost about what one of dt did,
     /// since the rounds grow as sqrt(h).
@@ -64,7 +65,7 @@ namespace SphFluid.Simulation
             StageStep = stageStep;
         }
 
-        /// <summary>The solve for sub-steps of <paramref name="timeStep"/> s at kinematic viscosity <paramref name="nu"/>
+        /// <summary>The solve covering <paramref name="timeStep"/> s at kinematic viscosity <paramref name="nu"/>
         /// (m^2/s, the largest a pair of phases meets) on a lattice of <paramref name="spacing"/> m with support
         /// <paramref name="support"/> m.</summary>
         public static ImplicitViscosity For(KernelFamily kind, double spacing, double support, double nu, double timeStep) =>
@@ -75,8 +76,8 @@ namespace SphFluid.Simulation
         public static double LatticeRowSum(KernelFamily kind, double spacing, double support) =>
             0.5 * ViscousStepLimit.RowBound(kind, spacing, support);
 
-        /// <summary>The solve for sub-steps of <paramref name="timeStep"/> s at kinematic viscosity <paramref name="nu"/>
-        /// (m^2/s) on a lattice whose <see cref="LatticeRowSum"/> is <paramref name="rowSum"/>.</summary>
+        /// <summary>The solve covering <paramref name="timeStep"/> s (<see cref="Span"/>) at kinematic viscosity
+        /// <paramref name="nu"/> (m^2/s) on a lattice whose <see cref="LatticeRowSum"/> is <paramref name="rowSum"/>.</summary>
         public static ImplicitViscosity For(double rowSum, double nu, double timeStep)
         {
             double stageStep = StageFraction * timeStep;
@@ -87,10 +88,36 @@ namespace SphFluid.Simulation
             return new ImplicitViscosity((float)low, Math.Max(1, rounds), (float)stageStep);
         }
 
-        /// <summary>Whether sub-steps of <paramref name="timeStep"/> s need the implicit solve: DFSPH's, beyond the explicit
-        /// force's limit <paramref name="explicitLimit"/> s (<see cref="TimeStepController.ViscousTimeStep"/>).</summary>
-        public static bool Needed(PressureSolver solver, double timeStep, double explicitLimit) =>
-            solver == PressureSolver.Dfsph && timeStep > explicitLimit;
+        /// <summary>Whether sub-steps of <paramref name="timeStep"/> s need the implicit solve: beyond the explicit force's
+        /// limit <paramref name="explicitLimit"/> s (<see cref="TimeStepController.ViscousTimeStep"/>).</summary>
+        public static bool Needed(double timeStep, double explicitLimit) => timeStep > explicitLimit;
+
+        /// <summary>What a WCSPH sub-step costs in rounds of the solve: on lavapipe, OilAndWater's 4 160 particles took
+        /// 39 ms a sub-step and 7.3 ms a round (0.5 s with its oil at 100 Pa s: 810 explicit sub-steps in 31.9 s, 270
+        /// implicit ones of 24 rounds in 57.9 s). A DFSPH sub-step, with its two pressure solves, costs many times more.</summary>
+        public const double WcsphSubstepRounds = 5.3;
+
+        /// <summary>Whether a sub-step of <paramref name="timeStep"/> s beyond the explicit limit <paramref name="explicitLimit"/>
+        /// s costs less with the implicit solve than the explicit sub-steps it stands for: always under DFSPH; under
+        /// WCSPH when its rounds (<see cref="SolvesPerStep"/> times <see cref="Stages"/> times a stage's) cost less than
+        /// the ceil(timeStep / explicitLimit) - 1 further sub-steps (<see cref="WcsphSubstepRounds"/> each). OilAndWater's
+        /// oil at 100 Pa s meets WCSPH's 1.85 ms step at 2.9 limits, where 24 rounds cost more than 2 sub-steps (the
+        /// implicit run took 1.8 times the explicit one's wall time); a pool at 1000 Pa s at 7.6 limits.</summary>
+        public static bool PaysOff(PressureSolver solver, double timeStep, double explicitLimit, double rowSum, double nu)
+        {
+            if (!Needed(timeStep, explicitLimit)) return false;
+            if (solver == PressureSolver.Dfsph) return true;
+            int rounds = SolvesPerStep(solver) * Stages * For(rowSum, nu, Span(solver, timeStep)).Rounds;
+            return rounds < (Math.Ceiling(timeStep / explicitLimit) - 1.0) * WcsphSubstepRounds;
+        }
+
+        /// <summary>Solves a sub-step of <paramref name="solver"/> makes: DFSPH's one, between its constant-density solve and
+        /// its drift; WCSPH's two, one on each half kick of Velocity Verlet, so that the particles drift with a velocity
+        /// the viscosity has damped (SphIntegration.hlsl).</summary>
+        public static int SolvesPerStep(PressureSolver solver) => solver == PressureSolver.Dfsph ? 1 : 2;
+
+        /// <summary>The step one solve covers, s: a DFSPH sub-step's <paramref name="timeStep"/>, a WCSPH half kick's half.</summary>
+        public static double Span(PressureSolver solver, double timeStep) => timeStep / SolvesPerStep(solver);
 
         static double Acosh(double x) => Math.Log(x + Math.Sqrt(x * x - 1.0));
     }

@@ -7,6 +7,8 @@ namespace SphFluid.Simulation
         public const string PlaceBoundary = "PlaceBoundary";
         public const string DensityRate = "DensityRate";
         public const string HalfStep = "HalfStep";
+        public const string HalfKick = "HalfKick";
+        public const string HalfDrift = "HalfDrift";
         public const string Sort = "Sort";
         public const string DensityPressure = "DensityPressure";
         public const string WallPressure = "WallPressure";

@@ -16,9 +16,11 @@ namespace SphFluid.Simulation
             var settings = scene.Settings;
             bool shifting = settings.ParticleShifting > 0f;
             bool deltaSph = settings.WcsphDensity == WcsphDensity.DeltaSph;
-            // A DFSPH step is as long as MaxTimeStep at most (TimeStepController), so only a viscous limit below it can bind.
-            bool implicitViscosity = ImplicitViscosity.Needed(settings.PressureSolver, settings.MaxTimeStep,
-                TimeStepController.ForScene(scene).ViscousTimeStep);
+            // A step is as long as MaxTimeStep at most (TimeStepController), so the solve can only pay off below it.
+            var timeStep = TimeStepController.ForScene(scene);
+            bool implicitViscosity = ImplicitViscosity.PaysOff(settings.PressureSolver, settings.MaxTimeStep, timeStep.ViscousTimeStep,
+                ImplicitViscosity.LatticeRowSum(settings.SmoothingKernel, settings.ParticleSpacing, settings.SmoothingRadius),
+                timeStep.MaxKinematicViscosity);
             if (forced == null)
                 return new SimulationPlan(phases.Count, obstacles, tension, settings.XsphEpsilon > 0f,
                     settings.VelocityDamping > 0f, containerMoved, settings.PressureSolver, shifting: shifting, deltaSph: deltaSph,

@@ -39,8 +39,8 @@ namespace SphFluid.Simulation
         /// one lane per particle); DFSPH's always do.</summary>
         public bool NeighbourLists { get; }
 
-        /// <summary>DFSPH whose sub-steps may pass the explicit viscous limit: those solve the viscosity implicitly
-        /// (<see cref="Simulation.ImplicitViscosity"/>), and the ViscositySolve pass runs after the constant-density solve.</summary>
+        /// <summary>Sub-steps may pass the explicit viscous limit: those solve the viscosity implicitly
+        /// (<see cref="Simulation.ImplicitViscosity"/>), DFSPH's after its constant-density solve, WCSPH's after each half kick.</summary>
         public bool ImplicitViscosity { get; }
 
         /// <summary>VelocityDamping &gt; 0.</summary>
@@ -63,12 +63,12 @@ namespace SphFluid.Simulation
         /// <param name="shifting">Run the particle-shifting passes after each WCSPH sub-step (ParticleShifting &gt; 0).</param>
         /// <param name="deltaSph">WCSPH carries the number density (WcsphDensity = DeltaSph).</param>
         /// <param name="neighbourLists">WCSPH's passes read neighbour lists (DFSPH's always do).</param>
-        /// <param name="implicitViscosity">DFSPH sub-steps may pass the explicit viscous limit.</param>
+        /// <param name="implicitViscosity">Sub-steps may pass the explicit viscous limit.</param>
         public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform,
             PressureSolver pressureSolver = PressureSolver.Wcsph, bool forceMultiphase = false, bool forceObstacles = false, bool shifting = false,
             bool deltaSph = false, bool neighbourLists = false, bool implicitViscosity = false)
         {
-            ImplicitViscosity = implicitViscosity && pressureSolver == PressureSolver.Dfsph;
+            ImplicitViscosity = implicitViscosity;
             NeighbourLists = neighbourLists || pressureSolver == PressureSolver.Dfsph;
             PressureSolver = pressureSolver;
             Shifting = shifting && pressureSolver == PressureSolver.Wcsph;
@@ -107,7 +107,17 @@ namespace SphFluid.Simulation
             else
             {
                 if (DeltaSph) passes.Add(PassNames.DensityRate);
-                passes.Add(PassNames.HalfStep);
+                if (ImplicitViscosity)
+                {
+                    // While the step passes the viscous limit; below it HalfStep runs alone and Forces takes the viscosity.
+                    passes.Add(PassNames.HalfKick);
+                    passes.Add(PassNames.ViscositySolve);
+                    passes.Add(PassNames.HalfDrift);
+                }
+                else
+                {
+                    passes.Add(PassNames.HalfStep);
+                }
                 passes.Add(PassNames.Sort);
                 if (NeighbourLists) passes.Add(PassNames.FindNeighbours);
                 passes.Add(PassNames.DensityPressure);
@@ -115,6 +125,7 @@ namespace SphFluid.Simulation
                 if (SurfaceTension) passes.Add(PassNames.Normals);
                 passes.Add(PassNames.Forces);
                 passes.Add(PassNames.FullStep);
+                if (ImplicitViscosity) passes.Add(PassNames.ViscositySolve);
                 if (Shifting)
                 {
                     passes.Add(PassNames.ParticleShift);

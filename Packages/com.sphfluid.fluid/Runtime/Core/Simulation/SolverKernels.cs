@@ -8,8 +8,9 @@ namespace SphFluid.Simulation
     /// </summary>
     internal sealed class SolverKernels
     {
-        // WCSPH's Velocity Verlet sub-step, the walls and delta-SPH (SphDensityDiffusion.hlsl).
-        public readonly int HalfStep, PlaceBoundary, DensityPressure, DensityRate, ContinuityDensity, WallPressure, Normals, Forces,
+        // WCSPH's Velocity Verlet sub-step (HalfStep, or HalfKick and HalfDrift around an implicit viscosity solve), the
+        // walls and delta-SPH (SphDensityDiffusion.hlsl).
+        public readonly int HalfStep, HalfKick, HalfDrift, PlaceBoundary, DensityPressure, DensityRate, ContinuityDensity, WallPressure, Normals, Forces,
             FullStep, ParticleShift, ApplyShift;
 
         // DFSPH's sub-step and its two solves (DivergenceFree.hlsl).
@@ -17,7 +18,7 @@ namespace SphFluid.Simulation
             NonPressureForces, PredictVelocity, BeginDensitySolve, BeginDivergenceSolve, DensitySolveError, DivergenceSolveError,
             SolveFinal, ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity;
 
-        // DFSPH's implicit viscosity solve (ViscositySolve.hlsl).
+        // The implicit viscosity solve (ViscositySolve.hlsl).
         public readonly int ViscosityStep, ViscosityApply, ViscosityStage;
 
         public readonly int[] All;
@@ -25,6 +26,8 @@ namespace SphFluid.Simulation
         public SolverKernels(IComputeProgram solver)
         {
             HalfStep = solver.FindKernel(nameof(HalfStep));
+            HalfKick = solver.FindKernel(nameof(HalfKick));
+            HalfDrift = solver.FindKernel(nameof(HalfDrift));
             PlaceBoundary = solver.FindKernel(nameof(PlaceBoundary));
             DensityPressure = solver.FindKernel(nameof(DensityPressure));
             DensityRate = solver.FindKernel(nameof(DensityRate));
@@ -57,7 +60,7 @@ namespace SphFluid.Simulation
             ViscosityStage = solver.FindKernel(nameof(ViscosityStage));
             All = new[]
             {
-                HalfStep, PlaceBoundary, DensityPressure, DensityRate, ContinuityDensity, WallPressure, Normals, Forces, FullStep,
+                HalfStep, HalfKick, HalfDrift, PlaceBoundary, DensityPressure, DensityRate, ContinuityDensity, WallPressure, Normals, Forces, FullStep,
                 ParticleShift, ApplyShift, DensityFactor, WallMovedDensityFactor, BoundaryDensityFactor, BoundaryBeginSolve,
                 BoundarySolveError, NonPressureForces, PredictVelocity, BeginDensitySolve, BeginDivergenceSolve, DensitySolveError,
                 DivergenceSolveError, SolveFinal, ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity,

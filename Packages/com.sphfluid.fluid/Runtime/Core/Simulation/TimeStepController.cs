@@ -4,20 +4,20 @@ namespace SphFluid.Simulation
 {
     /// <summary>
     /// Adaptive time stepping, engine-free. The stable step is
-    /// dt = min(cfl h / (c + vmax), 0.25 sqrt(h / amax), dt_viscous, dt_capillary, MaxTimeStep)
-    /// (CFL with the Tait speed of sound c = sqrt(k gamma / rho0_min); acceleration condition; viscous
-    /// condition dt_viscous = 1 / (nu_max Lambda_max) of the viscous force's stiffest lattice wave
-    /// (<see cref="ViscousStepLimit"/>); capillary condition
+    /// dt = min(cfl h / (c + vmax), 0.25 sqrt(h / amax), dt_capillary, MaxTimeStep)
+    /// (CFL with the Tait speed of sound c = sqrt(k gamma / rho0_min); acceleration condition; capillary condition
     /// dt_capillary = sqrt(rho0_min s^3 / (2 pi sigma_max)) of Brackbill, Kothe &amp; Zemach 1992, "A continuum
-    /// method for modeling surface tension", with the particle spacing s as the grid size). nu_max is taken over
+    /// method for modeling surface tension", with the particle spacing s as the grid size). The explicit viscous force's
+    /// limit dt_viscous = 1 / (nu_max Lambda_max) of its stiffest lattice wave (<see cref="ViscousStepLimit"/>) bounds the
+    /// step only where the implicit solve a longer sub-step would need costs more than the explicit sub-steps it stands
+    /// for (<see cref="ImplicitViscosity.PaysOff"/>: never under DFSPH; under WCSPH below about six limits). nu_max is taken over
     /// every pair of phases, 2 min(mu_i, mu_j) / rho0_i bounding the shader's harmonic mixing, because a light
     /// phase next to a viscous one feels more than its own nu. vmax and amax come from the GPU's max-reduction,
     /// read back asynchronously and possibly a frame stale, so the controller uses the larger of the last two
     /// reports. With DFSPH (<see cref="PressureSolver.Dfsph"/>) the solves keep the density, so no speed of sound enters:
     /// dt = min(cfl h / max(vmax, u_walls, sqrt(g H)), dt_capillary, MaxTimeStep) (the velocity CFL of
     /// Bender &amp; Koschier 2017, sec. 6; the capillary limit stays because the tension is still explicit, the
-    /// acceleration limit goes because the pressure acceleration is no longer explicit, and the viscous limit because a
-    /// sub-step beyond it solves the viscosity implicitly: <see cref="ImplicitViscosity"/>). u_walls is the
+    /// acceleration limit goes because the pressure acceleration is no longer explicit). u_walls is the
     /// fastest wall or obstacle (<see cref="BoundarySpeed"/>): a sphere started at 6.26 m/s through fluid at rest crossed
     /// 0.78 spacings a 5 ms sub-step, and the pool went unhealthy at 0.05 s (HardCaseTests' driven sphere under DFSPH).
     /// sqrt(g H) is <see cref="GravityWaveSpeed"/>, the speed of the longest gravity wave over the fluid's height H: a fluid
@@ -34,6 +34,7 @@ namespace SphFluid.Simulation
     public sealed class TimeStepController
     {
         readonly FluidSettings _settings;
+        readonly double _viscousRowSum; // ImplicitViscosity.LatticeRowSum of the scene's lattice, 1/m^2
         float _reportedSpeed, _previousSpeed, _reportedAcceleration, _previousAcceleration;
 
         /// <summary>Speed of sound c = sqrt(k gamma / rho0_min), m/s.</summary>
@@ -72,6 +73,9 @@ namespace SphFluid.Simulation
                 ? ViscousStepLimit.For(settings.SmoothingKernel, settings.ParticleSpacing, settings.SmoothingRadius, MaxKinematicViscosity)
                 : double.PositiveInfinity;
             CapillaryTimeStep = capillaryTimeStep > 0f ? capillaryTimeStep : float.PositiveInfinity;
+            _viscousRowSum = settings.ParticleSpacing > 0f && settings.SmoothingRadius > 0f
+                ? ImplicitViscosity.LatticeRowSum(settings.SmoothingKernel, settings.ParticleSpacing, settings.SmoothingRadius)
+                : 0.0;
             Reset();
         }
 
@@ -136,7 +140,11 @@ namespace SphFluid.Simulation
                 double acc = 0.25 * Math.Sqrt(h / MaxAcceleration);
                 if (acc < dt) { dt = acc; limit = "acceleration"; }
             }
-            if (ViscousTimeStep < dt && !divergenceFree) { dt = ViscousTimeStep; limit = "viscous"; }
+            if (ViscousTimeStep < dt && !ImplicitViscosity.PaysOff(_settings.PressureSolver, dt, ViscousTimeStep, _viscousRowSum, MaxKinematicViscosity))
+            {
+                dt = ViscousTimeStep;
+                limit = "viscous";
+            }
             if (CapillaryTimeStep < dt) { dt = CapillaryTimeStep; limit = "capillary"; }
             return (float)dt;
         }

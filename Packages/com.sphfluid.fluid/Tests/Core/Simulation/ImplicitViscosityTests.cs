@@ -63,12 +63,34 @@ namespace SphFluid.Tests.Core.Simulation
         }
 
         [Test]
-        public void OnlyADivergenceFreeStepBeyondTheExplicitLimitSolvesIt()
+        public void OnlyAStepBeyondTheExplicitLimitSolvesIt()
         {
-            Assert.That(ImplicitViscosity.Needed(PressureSolver.Dfsph, 1.01 * ExplicitLimit, ExplicitLimit), Is.True);
-            Assert.That(ImplicitViscosity.Needed(PressureSolver.Dfsph, ExplicitLimit, ExplicitLimit), Is.False);
-            Assert.That(ImplicitViscosity.Needed(PressureSolver.Wcsph, 10 * ExplicitLimit, ExplicitLimit), Is.False);
-            Assert.That(ImplicitViscosity.Needed(PressureSolver.Dfsph, 0.005, double.PositiveInfinity), Is.False, "no viscosity");
+            Assert.That(ImplicitViscosity.Needed(1.01 * ExplicitLimit, ExplicitLimit), Is.True);
+            Assert.That(ImplicitViscosity.Needed(ExplicitLimit, ExplicitLimit), Is.False);
+            Assert.That(ImplicitViscosity.Needed(0.005, double.PositiveInfinity), Is.False, "no viscosity");
+        }
+
+        /// <summary>Beyond the explicit limit DFSPH always solves; WCSPH only where its rounds cost less than the sub-steps they
+        /// stand for: not at the 2.9 limits OilAndWater's oil at 100 Pa s meets at WCSPH's step, at ten limits and more.</summary>
+        [Test]
+        public void WcsphSolvesOnlyWhereItPaysOff()
+        {
+            double rowSum = ImplicitViscosity.LatticeRowSum(KernelFamily.WendlandC2, Spacing, Support);
+            Assert.That(ImplicitViscosity.PaysOff(PressureSolver.Dfsph, 1.01 * ExplicitLimit, ExplicitLimit, rowSum, Nu), Is.True);
+            Assert.That(ImplicitViscosity.PaysOff(PressureSolver.Wcsph, 2.9 * ExplicitLimit, ExplicitLimit, rowSum, Nu), Is.False);
+            Assert.That(ImplicitViscosity.PaysOff(PressureSolver.Wcsph, 10 * ExplicitLimit, ExplicitLimit, rowSum, Nu), Is.True);
+            Assert.That(ImplicitViscosity.PaysOff(PressureSolver.Wcsph, 100 * ExplicitLimit, ExplicitLimit, rowSum, Nu), Is.True);
+            Assert.That(ImplicitViscosity.PaysOff(PressureSolver.Dfsph, ExplicitLimit, ExplicitLimit, rowSum, Nu), Is.False, "within the limit");
+        }
+
+        /// <summary>DFSPH solves once a sub-step over its whole step; WCSPH on each half kick, over half of it.</summary>
+        [Test]
+        public void WcsphSolvesEachHalfKick()
+        {
+            Assert.That(ImplicitViscosity.SolvesPerStep(PressureSolver.Dfsph), Is.EqualTo(1));
+            Assert.That(ImplicitViscosity.Span(PressureSolver.Dfsph, 0.004), Is.EqualTo(0.004));
+            Assert.That(ImplicitViscosity.SolvesPerStep(PressureSolver.Wcsph), Is.EqualTo(2));
+            Assert.That(ImplicitViscosity.Span(PressureSolver.Wcsph, 0.004), Is.EqualTo(0.002));
         }
     }
 }

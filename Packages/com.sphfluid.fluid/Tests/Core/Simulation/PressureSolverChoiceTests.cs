@@ -115,10 +115,11 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(dfsph.ToString(), Does.Contain("solver: DFSPH"));
         }
 
-        /// <summary>A viscous liquid whose explicit limit falls below the step DFSPH may take gets the implicit viscosity
-        /// solve after its constant-density solve; WCSPH, whose step keeps the limit, never does.</summary>
+        /// <summary>A viscous liquid whose explicit limit falls below the step the scene may take gets the implicit viscosity
+        /// solve: under DFSPH after its constant-density solve, under WCSPH after each half kick, with the half step split
+        /// around it; a liquid whose limit the step cannot reach gets none.</summary>
         [Test]
-        public void AViscousLiquidUnderDfsphPlansTheViscositySolve()
+        public void AViscousLiquidPlansTheViscositySolve()
         {
             var scene = SimulationTestScenes.OilOnWater();
             scene.Settings.PressureSolver = PressureSolver.Dfsph;
@@ -130,8 +131,17 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(dfsph.ToString(), Does.Contain("viscosity: implicit"));
             scene.Settings.PressureSolver = PressureSolver.Wcsph;
             var wcsph = PipelinePlanner.Plan(scene, false);
-            Assert.That(wcsph.ImplicitViscosity, Is.False);
-            Assert.That(wcsph.SubstepPasses, Does.Not.Contain(PassNames.ViscositySolve));
+            Assert.That(wcsph.ImplicitViscosity, Is.True);
+            Assert.That(wcsph.SubstepPasses, Is.EqualTo(new[]
+            {
+                PassNames.HalfKick, PassNames.ViscositySolve, PassNames.HalfDrift, PassNames.Sort, PassNames.DensityPressure,
+                PassNames.WallPressure, PassNames.Forces, PassNames.FullStep, PassNames.ViscositySolve,
+            }));
+            foreach (var box in scene.SpawnBoxes)
+                box.Phase.Viscosity = 0.001f;
+            var water = PipelinePlanner.Plan(scene, false);
+            Assert.That(water.ImplicitViscosity, Is.False);
+            Assert.That(water.SubstepPasses, Does.Not.Contain(PassNames.ViscositySolve).And.Contains(PassNames.HalfStep));
         }
     }
 }

@@ -50,28 +50,27 @@ namespace SphFluid.Tests.Core.Simulation
         }
 
         [Test]
-        public void HighViscosity_Limits()
+        public void HighViscosity_SetsTheExplicitLimit()
         {
             var c = new TimeStepController(Settings(), 1000f, 1f); // nu = 1 m^2/s
-            float dt = c.StableTimeStep(out string limit);
-            Assert.That(limit, Is.EqualTo("viscous"));
             // The cubic spline at 2 spacings: Lambda_max s^2 = 5.82 (ViscousStepLimitTests), so 0.172 s^2 / nu.
-            Assert.That(dt, Is.EqualTo((float)(1.0 / ViscousStepLimit.StiffestMode(KernelFamily.CubicSpline, 0.02, 0.04))).Within(1e-8f));
-            Assert.That(dt, Is.EqualTo(0.172f * 0.02f * 0.02f).Within(0.01f * dt));
+            Assert.That(c.ViscousTimeStep, Is.EqualTo(1.0 / ViscousStepLimit.StiffestMode(KernelFamily.CubicSpline, 0.02, 0.04)).Within(1e-8));
+            Assert.That(c.ViscousTimeStep, Is.EqualTo(0.172 * 0.02 * 0.02).Within(0.01 * c.ViscousTimeStep));
         }
 
-        /// <summary>Under DFSPH a sub-step beyond the explicit viscous limit solves the viscosity implicitly
-        /// (<see cref="ImplicitViscosity"/>), so the limit no longer shortens its step.</summary>
-        [Test]
-        public void HighViscosity_DoesNotLimitDfsph()
+        /// <summary>A sub-step beyond the explicit viscous limit solves the viscosity implicitly (<see cref="ImplicitViscosity"/>)
+        /// under either solver, so the limit no longer shortens the step.</summary>
+        [TestCase(PressureSolver.Wcsph)]
+        [TestCase(PressureSolver.Dfsph)]
+        public void HighViscosity_DoesNotLimitTheStep(PressureSolver solver)
         {
             var settings = Settings();
-            settings.PressureSolver = PressureSolver.Dfsph;
+            settings.PressureSolver = solver;
             var c = new TimeStepController(settings, 1000f, 1f);
             float dt = c.StableTimeStep(out string limit);
             Assert.That(limit, Is.Not.EqualTo("viscous"));
             Assert.That(dt, Is.GreaterThan(10.0 * c.ViscousTimeStep));
-            Assert.That(ImplicitViscosity.Needed(PressureSolver.Dfsph, dt, c.ViscousTimeStep), Is.True);
+            Assert.That(ImplicitViscosity.Needed(dt, c.ViscousTimeStep), Is.True);
         }
 
         [Test]
