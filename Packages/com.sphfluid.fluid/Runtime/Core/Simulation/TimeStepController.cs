@@ -10,7 +10,8 @@ namespace SphFluid.Simulation
     /// method for modeling surface tension", with the particle spacing s as the grid size). The explicit viscous force's
     /// limit dt_viscous = 1 / (nu_max Lambda_max) of its stiffest lattice wave (<see cref="ViscousStepLimit"/>) bounds the
     /// step only where the implicit solve a longer sub-step would need costs more than the explicit sub-steps it stands
-    /// for (<see cref="ImplicitViscosity.PaysOff"/>: never under DFSPH; under WCSPH below about six limits). nu_max is taken over
+    /// for (<see cref="ImplicitViscosity.PaysOff"/>: never under DFSPH; under WCSPH at OilAndWater's 2.9 limits, not at a
+    /// pool's 7.6). nu_max is taken over
     /// every pair of phases, 2 min(mu_i, mu_j) / rho0_i bounding the shader's harmonic mixing, because a light
     /// phase next to a viscous one feels more than its own nu. vmax and amax come from the GPU's max-reduction,
     /// read back asynchronously and possibly a frame stale, so the controller uses the larger of the last two
