@@ -21,13 +21,28 @@ namespace SphFluid.Simulation
             PushConstants();
         }
 
+        /// <summary>False: the viscous force stays explicit at any step, past its limit too (tests of that limit, which
+        /// choose their steps with StepFixed: the step controller still plans with the solve). True by default.</summary>
+        public bool ImplicitViscosityAllowed
+        {
+            get => _implicitViscosityAllowed;
+            set
+            {
+                _implicitViscosityAllowed = value;
+                SetViscositySolve(_constants[0].TimeStep);
+                _constantsChanged = true;
+            }
+        }
+
+        bool _implicitViscosityAllowed = true;
+
         /// <summary>The implicit viscosity solve for sub-steps of <paramref name="dt"/> beyond the explicit force's limit
         /// (<see cref="ImplicitViscosity"/>), or none: its interval tells the kernels which.</summary>
         void SetViscositySolve(float dt)
         {
             var solver = _scene.Settings.PressureSolver;
             double span = ImplicitViscosity.Span(solver, dt);
-            _viscosity = ImplicitViscosity.Needed(dt, _timeStep.ViscousTimeStep)
+            _viscosity = _implicitViscosityAllowed && ImplicitViscosity.Needed(dt, _timeStep.ViscousTimeStep)
                 ? ImplicitViscosity.For(_viscousRowSum, _timeStep.MaxKinematicViscosity, span)
                 : default;
             _constants[0].ViscositySolveLow = _viscosity.Rounds > 0 ? _viscosity.Low : 0f;
