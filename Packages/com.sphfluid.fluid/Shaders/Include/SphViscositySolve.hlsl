@@ -3,8 +3,8 @@
 
 #include "FluidConstants.hlsl"
 
-// The viscous force of SphViscosity.hlsl taken implicitly, so that a DFSPH sub-step may be longer than the explicit
-// force's limit, 1 / (nu Lambda_max) (ViscousStepLimit.cs): a liquid of 100 Pa s held OilAndWater to steps 6.5 times
+// The viscous force of SphViscosity.hlsl taken implicitly, so that a sub-step (DFSPH's, or WCSPH's where it pays off)
+// may be longer than the explicit force's limit, 1 / (nu Lambda_max) (ViscousStepLimit.cs): a liquid of 100 Pa s held OilAndWater to steps 6.5 times
 // shorter than its flow's own. Weiler, Koschier, Brand & Bender 2018, "A physically consistent implicit viscosity solver
 // for SPH fluids", solve their own viscosity operator implicitly; this solve keeps the Morris form the explicit force
 // uses, so that either converges to the same viscosity as the step shrinks.

@@ -2,8 +2,9 @@
 #define SPHFLUID_PASSES_VISCOSITY_SOLVE_INCLUDED
 
 // FluidSolver.compute's implicit viscosity solve (SphViscositySolve.hlsl), between DFSPH's constant-density solve and its
-// drift: for each stage the host records ViscosityStage, which sets the stage's target, and its rounds of ViscosityStep >
-// ViscosityApply on the particles' velocities. PredictVelocity keeps each particle's v_n in _ViscosityStart.
+// drift, or after each of WCSPH's half kicks: for each stage the host records ViscosityStage, which sets the stage's
+// target, and its rounds of ViscosityStep > ViscosityApply on the particles' velocities. PredictVelocity (DFSPH) or
+// HalfKick and FullStep (WCSPH) keep each particle's v_n in _ViscosityStart.
 
 // What lane `lane` of particle i's neighbourhood adds to the viscous force at the present velocities (xyz) and to the
 // couplings' sum (w), fluid and walls, as ForceSumsOf sums them.

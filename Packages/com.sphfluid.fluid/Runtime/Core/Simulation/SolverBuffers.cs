@@ -119,7 +119,7 @@ namespace SphFluid.Simulation
         public IComputeBuffer Phases, Densities, Normals, Accelerations, VelocityCorrections, Shifts, Obstacles, ClampHits;
         public IComputeBuffer Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
         public IComputeBuffer NumberDensities, NumberDensitiesHalf, DensityRates; // delta-SPH (SphDensityDiffusion.hlsl)
-        public IComputeBuffer ViscosityStart, ViscosityTargets, ViscositySteps; // DFSPH's implicit viscosity (ViscositySolve.hlsl)
+        public IComputeBuffer ViscosityStart, ViscosityTargets, ViscositySteps; // the implicit viscosity (ViscositySolve.hlsl)
         public IComputeBuffer MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
         public IComputeBuffer BoundaryRest, BoundaryPlaced, BoundarySorted, BoundaryPressures, BoundarySolve, BoundaryWarmStart, WallNumberDensities;
         public IComputeBuffer BoundaryOwnNumberDensities; // DFSPH by boundary id: its own body's number density at rest (BoundarySampling)
