@@ -6,7 +6,7 @@ using SphFluid.Simulation;
 namespace SphFluid.Tests.Solver
 {
     /// <summary>
-    /// The per-phase error sums of DFSPH's error pass (DivergenceFree.hlsl's StoreGroupErrors), on which each solve stops.
+    /// The per-phase error sums of DFSPH's error pass (DivergenceFreeConvergence.hlsl's StoreGroupErrors), on which each solve stops.
     /// One fold sums up to sixteen phases; a scene with more takes a second. A column of twenty layers of the same water,
     /// each its own phase, against the same column as one phase: the same particles make the same errors, so each group's
     /// sums over the twenty phases must add up to its one-phase sum, a phase the group holds no particle of must sum to

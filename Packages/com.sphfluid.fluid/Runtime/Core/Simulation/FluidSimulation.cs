@@ -195,7 +195,7 @@ namespace SphFluid.Simulation
 
         /// <summary>DFSPH: the last error pass's sums of its particles' errors, one per phase and thread group, phase-major
         /// (<c>[phase * SolverPartialGroups + group]</c>), which SolveFinal folds into each phase's average error to stop the
-        /// solve (DivergenceFree.hlsl's StoreGroupErrors).</summary>
+        /// solve (DivergenceFreeConvergence.hlsl's StoreGroupErrors).</summary>
         public IComputeBuffer SolverPartials => _buffers.SolverPartials;
 
         /// <summary>Thread groups of a DFSPH error pass, each of which writes one sum per phase to <see cref="SolverPartials"/>:

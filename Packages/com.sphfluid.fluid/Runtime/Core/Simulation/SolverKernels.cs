@@ -13,7 +13,7 @@ namespace SphFluid.Simulation
         public readonly int HalfStep, HalfKick, HalfDrift, PlaceBoundary, DensityPressure, DensityRate, ContinuityDensity, WallPressure, Normals, Forces,
             FullStep, ParticleShift, ApplyShift;
 
-        // DFSPH's sub-step and its two solves (DivergenceFree.hlsl).
+        // DFSPH's sub-step and its two solves (Passes/DivergenceFree*.hlsl).
         public readonly int DensityFactor, WallMovedDensityFactor, BoundaryDensityFactor, BoundaryBeginSolve, BoundarySolveError,
             NonPressureForces, PredictVelocity, BeginDensitySolve, BeginDivergenceSolve, DensitySolveError, DivergenceSolveError,
             SolveFinal, ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity;
