@@ -38,7 +38,8 @@
 // Time integration (with SphIntegration's Velocity Verlet): along a sub-step's drift every particle moves with its
 // half-step velocity, and the continuity term is the time derivative of the kernel sum, so it is integrated by the
 // trapezoidal rule over the drift: half from the positions before it (DensityRate, with v + a dt / 2, the velocity
-// HalfStep will give), half after it (ContinuityDensity, after the re-sort). The diffusion is explicit, from the
+// HalfStep will give, or, where the viscosity is implicit, the velocity HalfKick and the solve gave), half after it
+// (ContinuityDensity, after the re-sort). The diffusion is explicit, from the
 // state before the drift. Both passes read their neighbours' delta from one buffer and write another, by particle
 // id (the particles are re-sorted every sub-step):
 //   DensityRate:        delta*_i      = delta_i^n + dt/2 C_i(x^n, v^{n+1/2}) + dt D_i(x^n, delta^n)

@@ -79,7 +79,9 @@ float NumberDensityRate(uint i, uint lane, uint lanes, out uint neighbours)
 
 // delta-SPH, before the drift (SphDensityDiffusion.hlsl): the continuity sum at x^n with the half-step velocities
 // v + a dt / 2 that HalfStep is about to give (the sorted order and accelerations are the last force pass's), and the
-// diffusion from every neighbour's delta^n.
+// diffusion from every neighbour's delta^n. Where the viscosity is implicit the pass runs after HalfKick and the
+// solve instead, on the half-step velocities the drift will take: ahead of the solve, the continuity saw the
+// undamped kick, and the two halves of its trapezoidal rule integrated two different velocity fields.
 // Laned (NeighbourLanes.hlsl).
 [numthreads(PARTICLE_THREADS, 1, 1)]
 void DensityRate(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
@@ -87,7 +89,7 @@ void DensityRate(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThr
     uint i = min(LaneOwner(id.x), _ParticleCount - 1u);
     uint lane = FirstCandidate(id.x, _ParticleCount);
     Particle pi = _Particles[i];
-    float halfKick = 0.5 * _TimeStep;
+    float halfKick = ViscosityIsImplicit() ? 0.0 : 0.5 * _TimeStep;
     float3 vi = pi.velocity + halfKick * _Accelerations[i].xyz;
     PhaseProperties phaseI = _Phases[PHASE_OF(pi)];
     float deltaI = _NumberDensities[pi.id];

@@ -436,23 +436,25 @@ namespace SphFluid.Simulation
         /// each kick followed by the implicit viscosity solve over its half of the step.</summary>
         void VerletSubstep()
         {
-            if (_deltaSph)
-            {
-                FindNeighbours(); // found after the last sort, unless a shift or the walls' placement moved them since
-                LanedPass(PassNames.DensityRate, _kernels.DensityRate, ParticleCount);
-            }
-
             if (_viscosity.Rounds > 0)
             {
                 // Each half kick is damped before the particles drift with it (ImplicitViscosity.SolvesPerStep); the
                 // solve reads the neighbours where the last sort left them, unless a shift has moved them since.
+                // delta-SPH's rate follows the solve, so that its continuity sees the velocity the drift takes.
                 SolverPass(PassNames.HalfKick, _kernels.HalfKick);
                 FindNeighbours();
                 SolveViscosity();
+                if (_deltaSph)
+                    LanedPass(PassNames.DensityRate, _kernels.DensityRate, ParticleCount);
                 SolverPass(PassNames.HalfDrift, _kernels.HalfDrift);
             }
             else
             {
+                if (_deltaSph)
+                {
+                    FindNeighbours(); // found after the last sort, unless a shift or the walls' placement moved them since
+                    LanedPass(PassNames.DensityRate, _kernels.DensityRate, ParticleCount);
+                }
                 SolverPass(PassNames.HalfStep, _kernels.HalfStep);
             }
 

@@ -32,7 +32,7 @@ namespace SphFluid.Simulation
         public bool Shifting { get; }
 
         /// <summary>WCSPH with WcsphDensity = DeltaSph: the number density is carried and integrated (SphDensityDiffusion.hlsl),
-        /// with the DensityRate pass before the half step.</summary>
+        /// with the DensityRate pass before the drift.</summary>
         public bool DeltaSph { get; }
 
         /// <summary>WCSPH's neighbour passes read lists that FindNeighbours fills after each sort (NeighbourCapacity.InUse:
@@ -106,16 +106,18 @@ namespace SphFluid.Simulation
             }
             else
             {
-                if (DeltaSph) passes.Add(PassNames.DensityRate);
                 if (ImplicitViscosity)
                 {
-                    // While the step passes the viscous limit; below it HalfStep runs alone and Forces takes the viscosity.
+                    // While the step passes the viscous limit; below it DensityRate and HalfStep run as in the other
+                    // branch and Forces takes the viscosity. DensityRate reads the velocity the solve leaves.
                     passes.Add(PassNames.HalfKick);
                     passes.Add(PassNames.ViscositySolve);
+                    if (DeltaSph) passes.Add(PassNames.DensityRate);
                     passes.Add(PassNames.HalfDrift);
                 }
                 else
                 {
+                    if (DeltaSph) passes.Add(PassNames.DensityRate);
                     passes.Add(PassNames.HalfStep);
                 }
                 passes.Add(PassNames.Sort);
