@@ -15,8 +15,9 @@ namespace SphFluid.Tests.Physics
     /// solve, on the undamped kick, the honey read 11.4 % less compressed than the explicit force left it (0.187 %
     /// against 0.211 %); with the rate after it, 1.3 % less (0.208 %).
     /// The solve's short run (81 steps) records on the validated device: no other validated test runs this single-phase
-    /// WCSPH scene with shifting, and the explicit force's 725 steps on the unvalidated one dispatch no other variant
-    /// (Headless/test.sh holds the unvalidated device to the variants the validated one ran).
+    /// WCSPH scene with shifting. The explicit force's 725 steps stay on the unvalidated one; the only variant they add,
+    /// HalfStep XSPH, other validated tests run (Headless/test.sh holds the unvalidated device to the variants the
+    /// validated one ran).
     /// </summary>
     public sealed class ViscousContinuityTests
     {
