@@ -366,7 +366,7 @@ namespace SphFluid.Tests.Physics
 
         /// <summary>A viscous liquid's flow that buoyancy drives: OilAndWater with its oil at 100 Pa s, whose explicit limit
         /// is 0.64 ms. Under DFSPH, solved implicitly at the scene's own 4.17 ms steps, its kinetic energy at 0.1 s must stay
-        /// within 0.5 to 1.6 times the explicit force's at 0.64 ms steps (1.42: the split between the viscous step and the
+        /// within 0.5 to 1.6 times the explicit force's at 0.64 ms steps (1.44: the split between the viscous step and the
         /// pressure solves is first order, Headless/docs/physics.md). WCSPH's own step, 1.85 ms, is 2.9 limits, where the
         /// solve's rounds cost more than the sub-steps they stand for (ImplicitViscosity.PaysOff), so it keeps the explicit
         /// force at the limit: no rounds, and the same energy to 1 %. (Solved there, it took 1.8 times the wall time at 1.04
