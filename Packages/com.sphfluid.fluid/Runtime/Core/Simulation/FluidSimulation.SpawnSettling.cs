@@ -35,9 +35,10 @@ namespace SphFluid.Simulation
         /// What they leave is still removed within the first step, so a short enough step turns even that into a kick:
         /// OilAndWater at a 0.039 ms step (which MaxTimeStep allows) was left 0.26 % compressed at most, took 0.85 J of
         /// kinetic energy within its first 1.25 ms, and boiled, both liquids 4 % expanded. So the settling goes on while
-        /// the most compressed particle, removed within MaxTimeStep, would be kicked by more than gravity adds in that
+        /// the most compressed particle, removed within the first step, would be kicked by more than gravity adds in that
         /// step: compression e over a step dt moves a particle about e times the spacing s in it, so it stops once
-        /// e s / dt is within g dt. At the scene's MaxTimeStep of 5 ms that allows 1.6 %, which two solves meet, so the
+        /// e s / dt is within g dt, dt the stable step at rest (MaxTimeStep, unless the gravity wave, the viscosity or
+        /// the tension bounds it shorter). At OilAndWater's 5 ms that allows 1.6 %, which two solves meet, so the
         /// shipped scenes start as before; at 0.039 ms twenty leave 0.001 %, and the first 1.25 ms holds 0.03 mJ.
         /// Once, at construction (blocking read-backs of the particles and of the diagnostics): <see cref="Reset"/>
         /// respawns the result.
@@ -53,7 +54,7 @@ namespace SphFluid.Simulation
             WriteSolveRounds();
             BeginFrame(0f);
             SetTimeStep(_scene.Settings.MaxTimeStep);
-            float step = _scene.Settings.MaxTimeStep;
+            float step = _timeStep.StableTimeStep();
             float allowed = _scene.Settings.Gravity.Length() * step * step / _scene.Settings.ParticleSpacing;
             for (int s = 0; s < MaxSpawnSettlingSolves; s++)
             {
