@@ -77,8 +77,8 @@ namespace SphFluid.Tests.Physics
         /// 0.01 ms) two settling solves left OilAndWater 0.26 % compressed at most, and its first 1.25 ms took 0.85 J of
         /// kinetic energy, its fastest particle at 0.895 m/s, and raised the fluid, which then boiled (both liquids 4 %
         /// expanded at 0.1 s). The settling now goes on while that leftover would kick the first step harder than gravity
-        /// does in the first step, whether MaxTimeStep or the CFL condition (the gravity wave's, at a Courant number of 0.01)
-        /// makes it short. From rest, over the first frame (32 sub-steps), the fluid's mechanical energy must not rise, and
+        /// does, whether MaxTimeStep or the CFL condition (the gravity wave's, at a Courant number of 0.01) makes that step
+        /// short. From rest, over the first frame (32 sub-steps), the fluid's mechanical energy must not rise, and
         /// no particle may outrun free fall, g t: the only pressure that could push one harder is the interface's, which
         /// drives the lock exchange at a tenth of g.
         /// </summary>
