@@ -26,7 +26,9 @@ mkdir -p "$top/bin" "$top/lib"
 dotnet publish "$root/Headless/SphFluid.Headless/SphFluid.Headless.csproj" -c Release -r linux-x64 --self-contained true \
     -p:DebugType=none --artifacts-path "$stage/artifacts" -o "$top/app" -nologo -v quiet -clp:ErrorsOnly >&2
 cp "$(command -v glslangValidator)" "$(command -v spirv-val)" "$top/bin/"
-loader="$(ldconfig -p | awk '/libvulkan\.so\.1 / && /x86-64/ { print $NF; exit }')"
+# awk reads to the end: an early exit can close the pipe while ldconfig still writes, and pipefail then stops the
+# script with SIGPIPE (exit 141, no message) on some runs.
+loader="$(ldconfig -p | awk '!found && /libvulkan\.so\.1 / && /x86-64/ { print $NF; found = 1 }')"
 [ -n "$loader" ] || { echo "gpu-kit: no x86-64 libvulkan.so.1 found by ldconfig" >&2; exit 1; }
 cp -L "$loader" "$top/lib/libvulkan.so.1"
 cp /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf "$top/"
