@@ -11,7 +11,7 @@ namespace SphFluid.Headless.Scenes;
 
 /// <summary>
 /// Whether a fluid scene can be built at all: the core's validation, plus the neighbour grid, whose cell count the
-/// validation does not bound (a 1000 m container passes it, then <see cref="CellGrid"/> refuses 3.7e13 cells).
+/// validation does not bound (a 1000 m container passes it, then <see cref="CellGrid"/> refuses 3.0e14 cells).
 /// Checked before a device is opened, so the refusal names the scene field or the argument that caused it.
 /// </summary>
 public static partial class SceneFit
@@ -24,7 +24,7 @@ public static partial class SceneFit
     {
         try
         {
-            _ = new CellGrid(scene.Container.Position, scene.Container.Rotation, scene.Container.Size, scene.Settings.SmoothingRadius);
+            _ = CellGrid.ForSupport(scene.Container.Position, scene.Container.Rotation, scene.Container.Size, scene.Settings.SmoothingRadius);
             return null;
         }
         catch (ArgumentOutOfRangeException e)

@@ -260,7 +260,7 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: the fluid scene is invalid"));
             Assert.That(run.Stderr, Does.Contain("GameObject 'Container', Transform.m_LocalScale and GameObject 'Fluid', Fluid.settings.SmoothingRadius"));
-            Assert.That(run.Stderr, Does.Contain("23394 x 23394 x 23394 = 1.28E+013 cells"));
+            Assert.That(run.Stderr, Does.Contain("46788 x 46788 x 46788 = 1.02E+014 cells"));
         }
 
         [Test]

@@ -1,5 +1,8 @@
+using System.IO;
+using System.Text.RegularExpressions;
 using NUnit.Framework;
 using SphFluid.Simulation;
+using SphFluid.Sorting;
 
 namespace SphFluid.Tests.Solver
 {
@@ -24,6 +27,21 @@ namespace SphFluid.Tests.Solver
             Assert.That(listed.Particles, Is.EqualTo(walked.Particles), "positions, velocities, phases and ids");
             Assert.That(listed.Densities, Is.EqualTo(walked.Densities));
             Assert.That(listed.Accelerations, Is.EqualTo(walked.Accelerations));
+        }
+
+        /// <summary>The host makes the cells (CellGrid.CellsPerSupport) and sizes the lists' row words (NeighbourCapacity.RowWords);
+        /// the kernels walk and write rows by CELLS_PER_SUPPORT. Were they to differ, a walk would miss the cells at its reach,
+        /// or a list's row words would overrun its entries.</summary>
+        [Test]
+        public void TheKernelsWalkTheCellsTheHostMakes()
+        {
+            string path = Path.Combine(GpuTestDevice.RepoRoot, "Packages", "com.sphfluid.fluid", "Shaders", "Include", "SphNeighbourhood.hlsl");
+            var define = Regex.Match(File.ReadAllText(path), @"^#define CELLS_PER_SUPPORT (\d+)u\s*$", RegexOptions.Multiline);
+            Assert.That(define.Success, Is.True, $"{path} defines CELLS_PER_SUPPORT");
+            Assert.That(int.Parse(define.Groups[1].Value), Is.EqualTo(CellGrid.CellsPerSupport), "CELLS_PER_SUPPORT");
+            int rowCells = 2 * CellGrid.CellsPerSupport + 1;
+            Assert.That(NeighbourCapacity.ListRows(PressureSolver.Wcsph), Is.EqualTo(rowCells * rowCells),
+                "NEIGHBOUR_ROW_WORDS and the walk's rows, one for each y and z the walk reaches");
         }
 
         static GpuState Run(WcsphDensity density, KernelFamily kernel, float shifting, bool lists)

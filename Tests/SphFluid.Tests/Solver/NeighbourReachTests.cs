@@ -7,7 +7,7 @@ using SphFluid.Sorting;
 namespace SphFluid.Tests.Solver
 {
     /// <summary>
-    /// The neighbour walk (the 27 cells about a particle's own, SphNeighbourhood.hlsl) must find every particle within h:
+    /// The neighbour walk (the 5 x 5 x 5 cells of h/2 about a particle's own, SphNeighbourhood.hlsl) must find every particle within h:
     /// the lists FindNeighbours makes from it hold exactly the fluid and wall particles a search of all pairs finds. The
     /// container is rotated (the grid's cells are not the world's axes) and holds a sphere, and the particles stand off
     /// the lattice, some of them in pairs across a cell's faces, edges and corners, where a walk that reached one cell
@@ -78,13 +78,16 @@ namespace SphFluid.Tests.Solver
 
         /// <summary>
         /// The first particles in pairs that only a walk reaching its full support finds: in each pair the owner stands
-        /// 0.9968 h from the nearest face, edge or corner of a neighbouring cell, and its partner 0.9985 h away in that
-        /// cell, beyond it.
+        /// 0.9968 h from the nearest face, edge or corner of the cell the walk's reach away (two cells of h/2), and its
+        /// partner 0.9985 h away in that cell, beyond it.
         /// </summary>
         static void PlacePairsAcrossCellBoundaries(Particle[] particles, FluidSceneDescription scene)
         {
             var c = scene.Container;
-            var grid = new CellGrid(c.Position, c.Rotation, c.Size, scene.Settings.SmoothingRadius);
+            var grid = CellGrid.ForSupport(c.Position, c.Rotation, c.Size, scene.Settings.SmoothingRadius);
+            const int reach = CellGrid.CellsPerSupport; // cells to h, and so the cells the walk reaches each side
+            const int first = CellGrid.MarginCells + reach; // owners whose partners stay within the container
+            // Owners a support apart, as many per h^3 as the walk's lists hold with the scattered particles around them.
             Assert.That(Matrix4x4.Invert(Matrix4x4.Transpose(grid.WorldToGrid), out var gridToWorld), Is.True);
             var directions = new[]
             {
@@ -93,17 +96,18 @@ namespace SphFluid.Tests.Solver
                 new Vector3(-1, -1, -1), new Vector3(1, 1, 1), new Vector3(1, -1, 1), // corners
             };
             int pairs = 0;
-            for (int z = 2; z <= 3; z++)
-            for (int y = 2; y <= 4; y++)
-            for (int x = 2; x <= 4; x++, pairs++)
+            for (int z = first; z <= first + reach; z += reach)
+            for (int y = first; y <= first + 2 * reach; y += reach)
+            for (int x = first; x <= first + 2 * reach; x += reach, pairs++)
             {
                 var u = directions[pairs % directions.Length];
                 var axes = new Vector3(MathF.Abs(u.X), MathF.Abs(u.Y), MathF.Abs(u.Z));
-                float gap = 0.9968f / MathF.Sqrt(axes.X + axes.Y + axes.Z); // to the neighbouring cell, along each axis of u
+                // To the cell the reach away, along each axis of u, in cells; less the reach's cells but one between.
+                float gap = reach * 0.9968f / MathF.Sqrt(axes.X + axes.Y + axes.Z) - (reach - 1);
                 // In the cell: gap from the face u points through, the middle along the axes u does not cross.
                 var inCell = new Vector3(0.5f) * (Vector3.One - axes) + axes * (0.5f * (Vector3.One + u) - u * gap);
                 var owner = new Vector3(x, y, z) + inCell;
-                var partner = owner + 0.9985f * Vector3.Normalize(u);
+                var partner = owner + reach * 0.9985f * Vector3.Normalize(u);
                 particles[2 * pairs] = Moved(particles[2 * pairs], Vector3.Transform(owner, gridToWorld));
                 particles[2 * pairs + 1] = Moved(particles[2 * pairs + 1], Vector3.Transform(partner, gridToWorld));
             }

@@ -63,7 +63,7 @@ cbuffer FluidConstants
 
     uint _NeighbourCapacity;                // SphNeighbourhood: entries of each neighbour list, 0 for no lists (NeighbourCapacity.cs)
     uint _NeighbourLanes;                   // NeighbourLanes: threads per particle in the laned neighbour loops, 1, 2, 4 or 8
-    uint _NeighbourListRows;                // SphNeighbourhood: order of a list's entries, 1 (DFSPH) or 9 (the grid walk's, WCSPH)
+    uint _NeighbourListRows;                // SphNeighbourhood: order of a list's entries, 1 (DFSPH) or 25, the grid walk's rows (WCSPH)
     float _ChebyshevLow;                    // DivergenceFreeSolver: a, lowest eigenvalue the accelerated solve is tuned for
 
     float _ChebyshevHigh;                   // DivergenceFreeSolver: b, highest; 0 for the Jacobi solve (ChebyshevBounds.cs)

@@ -1,23 +1,23 @@
 #ifndef SPHFLUID_GRID_INCLUDED
 #define SPHFLUID_GRID_INCLUDED
 
-// The uniform neighbour grid of the SPH solver (cell size = support radius h), built in
-// CONTAINER-LOCAL space so that rotating the container never resizes it. Uniform-grid neighbour
-// search after Green 2008 ("Particle Simulation using CUDA", NVIDIA) and Ihmsen et al. 2011
-// ("A parallel SPH implementation on multi-core CPUs"): with cells of size h, every neighbour j of
-// particle i (r_ij < h) lies in the 3x3x3 block of cells around i's cell.
+// The uniform neighbour grid of the SPH solver (cell size = h / CELLS_PER_SUPPORT, half the support radius h;
+// SphNeighbourhood.hlsl says why), built in CONTAINER-LOCAL space so that rotating the container never resizes it.
+// Uniform-grid neighbour search after Green 2008 ("Particle Simulation using CUDA", NVIDIA) and Ihmsen et al. 2011
+// ("A parallel SPH implementation on multi-core CPUs"): with cells of size h/2, every neighbour j of particle i
+// (r_ij < h) lies in the 5x5x5 block of cells around i's cell.
 //
-//   g    = mul(_WorldToGrid, float4(x, 1)).xyz        (grid units: one unit = h)
+//   g    = mul(_WorldToGrid, float4(x, 1)).xyz        (grid units: one unit = one cell, h/2)
 //   cell = clamp(floor(g), 0, _GridDims - 1)
 //   linear index = cell.x + _GridDims.x * (cell.y + _GridDims.y * cell.z)
-//   _WorldToGrid = scale(1/h) * translate(S/2 + margin*h) * R^T * translate(-c)
-// (container centre c, rotation R, size S; one margin cell on every side). Positions outside the
+//   _WorldToGrid = scale(1/cell) * translate(S/2 + margin*cell) * R^T * translate(-c)
+// (container centre c, rotation R, size S; two margin cells, one h, on every side). Positions outside the
 // grid clamp into its border cells, so every particle, even a NaN one, has a valid cell.
 //
 // The solver reads the grid from its constant buffer (FluidConstants.hlsl, included first); the cell sort sets
 // its own copy (SphFluid.Sorting.CellGrid.SetOn), declared here. The cell sort (ParticleSort.compute) provides _CellStart /
 // _CellCount per linear cell; the neighbour loops themselves are in SphNeighbourhood.hlsl, which visits
-// the 27 cells around a particle as 9 contiguous x-rows of the sorted buffer.
+// the 125 cells around a particle as 25 contiguous x-rows of the sorted buffer.
 
 #ifndef SPHFLUID_GRID_DECLARED
 float4x4 _WorldToGrid; // world -> grid units (column vectors, translation in the last column)

@@ -4,28 +4,38 @@
 #include "FluidConstants.hlsl" // first: the grid lives in the constant buffer
 #include "Grid.hlsl"
 
-// The 27-cell neighbour search over cell-sorted particles (uniform grid of cell size H, Green 2008; Ihmsen
-// et al. 2011). Because the counting sort stores cells in linear order (x fastest), the three cells of one
-// row (x-1, x, x+1 at fixed y, z) hold ONE contiguous range of sorted particles:
-// [CellStart[x-1], CellStart[x+1] + CellCount[x+1]). So the 27 cells are visited as 9 ranges, with a third
-// of the bookkeeping and longer, better-predicted inner loops. Fluid and boundary particles live in the
-// same grid, each sorted into its own buffer with its own CellStart/CellCount.
-// Usage: for (uint row = 0u; row < 9u; row++) { uint2 range = NeighbourRowRange(home, row); for (j in range) ... }
+// The neighbour search over cell-sorted particles (uniform grid, Green 2008; Ihmsen et al. 2011), in cells of
+// H / CELLS_PER_SUPPORT: every neighbour within H lies within CELLS_PER_SUPPORT cells of a particle's own on each
+// axis, so the walk covers a cube of NEIGHBOUR_ROW_CELLS^3 cells (5 x 5 x 5 of H/2). Because the counting sort stores
+// cells in linear order (x fastest), the cells of one row (x-2 .. x+2 at fixed y, z) hold ONE contiguous range of
+// sorted particles: [CellStart[x-2], CellStart[x+2] + CellCount[x+2]). So the cube is visited as NEIGHBOUR_WALK_ROWS
+// (25) ranges, with a fifth of the bookkeeping and longer, better-predicted inner loops. Fluid and boundary particles
+// live in the same grid, each sorted into its own buffer with its own CellStart/CellCount.
+// Cells of H/2, not H: the 125 cells of H/2 hold 58 % of the volume of the 27 cells of H, so every walk tests about
+// 3.7 candidates per neighbour instead of 6.4, the same for every particle (so the lanes of a loop stay in step). On an
+// NVIDIA H200 at 1M particles (OilAndWater) WCSPH's sub-step took 4.65 ms instead of 6.27 (FindNeighbours 1.63 instead
+// of 2.62, Forces 1.09 instead of 1.30, DensityRate 0.94 instead of 1.16) and DFSPH's 34.6 instead of 37.2. On lavapipe
+// at 4 160 particles FindNeighbours costs about a fifth less and the whole sub-step about 5 % less: neighbouring
+// particles no longer share one cell's ranges, and 25 rows cost more bookkeeping than 9 (Headless/experiments/
+// half-support-cells.patch, Headless/docs/accuracy-for-time.md). The price is 8 times the cells for a container
+// (CellGrid.MaxCellCount).
+// Usage: for (uint row = 0u; row < NEIGHBOUR_WALK_ROWS; row++)
+//            { uint2 range = NeighbourRowRange(home, row); for (j in range) ... }
 //
 // Neighbour lists. DFSPH's solves visit every particle's neighbourhood twice per iteration, at positions that do not
 // change between the sort and the next drift, so (as Bender & Koschier 2017, "Divergence-Free SPH for Incompressible
 // and Viscous Fluids", do with the result of their neighbour search) the neighbours are found once per sort
-// (FindNeighbours, Passes/NeighbourLists.hlsl) and read from a list by every pass until the next drift. A wide support makes
-// the difference: at 2.85 spacings the 27 cells hold about 6 candidates per neighbour. WCSPH's four neighbour passes of a
-// sub-step (density, wall pressure, forces, and delta-SPH's rate before the next drift) read the same lists when each
-// particle's loops run in one lane; with more lanes (NeighbourLanes.hlsl) the walk is already split, and FindNeighbours,
-// one thread per owner, would add a whole walk to the sub-step (NeighbourCapacity.cs). Each list owner (fluid particle
-// i, or wall particle b as owner _ParticleCount + b) has _NeighbourCapacity entries; entry k of owner o is at
-// k * (_ParticleCount + _BoundaryCount) + o, so that the threads of a group read neighbouring words. The entries come in
-// one of two orders (_NeighbourListRows, NeighbourCapacity.cs):
+// (FindNeighbours, Passes/NeighbourLists.hlsl) and read from a list by every pass until the next drift. A wide support
+// makes the difference: at 2.85 spacings the walk's cells hold about 3.7 candidates per neighbour. WCSPH's four
+// neighbour passes of a sub-step (density, wall pressure, forces, and delta-SPH's rate before the next drift) read the
+// same lists when each particle's loops run in one lane; with more lanes (NeighbourLanes.hlsl) the walk is already
+// split, and FindNeighbours, one thread per owner, would add a whole walk to the sub-step (NeighbourCapacity.cs). Each
+// list owner (fluid particle i, or wall particle b as owner _ParticleCount + b) has _NeighbourCapacity entries; entry k
+// of owner o is at k * (_ParticleCount + _BoundaryCount) + o, so that the threads of a group read neighbouring words.
+// The entries come in one of two orders (_NeighbourListRows, NeighbourCapacity.cs):
 //   1 (DFSPH)  fluid neighbours (the particle itself among them, as in the grid walk) fill the entries from the front,
 //              wall neighbours from the back: one range each;
-//   9 (WCSPH)  the grid walk's own order, row by row, each row's fluid neighbours and then its walls, after
+//   25 (WCSPH) the grid walk's own order, row by row, each row's fluid neighbours and then its walls, after
 //              NEIGHBOUR_ROW_WORDS words that hold where each row's fluid and walls end. A pass then visits the
 //              neighbours in the order the grid walk would, and sums them in that order, so reading a list changes no
 //              result, not even by rounding: in one lane WCSPH gives the grid walk's results to the bit.
@@ -48,16 +58,27 @@ RWStructuredBuffer<uint> _FoundNeighbourLists;
 
 #define NO_NEIGHBOUR_LIST 0xFFFFFFFFu
 
-// The row order's first words: entry r holds the end of row r's fluid neighbours | the end of its walls << 16.
-#define NEIGHBOUR_ROW_WORDS 9u
+// Cells of the grid to the support radius H, so the cells the walk reaches on each side of a particle's own; the C#
+// CellGrid.CellsPerSupport, which makes the cells, must match (checked by NeighbourListOrderTests).
+#define CELLS_PER_SUPPORT 2u
+// Cells in one row of the walk, along x.
+#define NEIGHBOUR_ROW_CELLS (2u * CELLS_PER_SUPPORT + 1u)
+// Rows of the walk, one for each y and z it reaches.
+#define NEIGHBOUR_WALK_ROWS (NEIGHBOUR_ROW_CELLS * NEIGHBOUR_ROW_CELLS)
 
-// First and last cell of row `row` (0..8: dy, dz in -1..1) around cell `home`; false outside the grid.
+// The row order's first words: entry r holds the end of row r's fluid neighbours | the end of its walls << 16
+// (NeighbourCapacity.RowWords).
+#define NEIGHBOUR_ROW_WORDS NEIGHBOUR_WALK_ROWS
+
+// First and last cell of row `row` (0 .. NEIGHBOUR_WALK_ROWS - 1: dy, dz in -CELLS_PER_SUPPORT .. CELLS_PER_SUPPORT)
+// around cell `home`; false outside the grid.
 bool NeighbourRowCells(int3 home, uint row, out uint firstCell, out uint lastCell)
 {
-    int3 c = home + int3(0, (int)(row % 3u) - 1, (int)(row / 3u) - 1);
+    int reach = (int)CELLS_PER_SUPPORT;
+    int3 c = home + int3(0, (int)(row % NEIGHBOUR_ROW_CELLS) - reach, (int)(row / NEIGHBOUR_ROW_CELLS) - reach);
     int top = (int)_GridDims.x - 1;
-    int3 first = int3(max(c.x - 1, 0), c.y, c.z);
-    int3 last = int3(min(c.x + 1, top), c.y, c.z);
+    int3 first = int3(max(c.x - reach, 0), c.y, c.z);
+    int3 last = int3(min(c.x + reach, top), c.y, c.z);
     firstCell = 0u;
     lastCell = 0u;
     if (!GridCoordInside(first))
@@ -88,7 +109,7 @@ uint2 BoundaryRowRange(int3 home, uint row)
 // The list of owner `owner` (fluid particle i, or _ParticleCount + wall particle b).
 struct NeighbourList
 {
-    bool listed;  // false: walk the grid's 9 rows
+    bool listed;  // false: walk the grid's NEIGHBOUR_WALK_ROWS rows
     uint fluid;   // fluid neighbours (DFSPH's order: in entries [0, fluid))
     uint walls;   // wall neighbours (DFSPH's order: in entries [_NeighbourCapacity - walls, _NeighbourCapacity))
     uint owner;
@@ -114,10 +135,10 @@ NeighbourList ListOf(uint owner)
     return list;
 }
 
-// The grid's nine rows, or a list's: one range (DFSPH's order) or nine (the grid walk's).
+// The grid's rows, or a list's: one range (DFSPH's order) or the grid's (the grid walk's).
 uint NeighbourRows(NeighbourList list)
 {
-    return list.listed ? _NeighbourListRows : 9u;
+    return list.listed ? _NeighbourListRows : NEIGHBOUR_WALK_ROWS;
 }
 
 // Row `row`'s ends in a list of the grid walk's order, kept in the list: a pass that visits the rows in order, each

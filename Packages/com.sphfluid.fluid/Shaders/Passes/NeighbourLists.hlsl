@@ -6,7 +6,7 @@
 // SphNeighbourhood.hlsl's neighbour lists, after every sort of the fluid or the walls: one thread per owner, the fluid
 // particles first, then the wall particles (their fluid neighbours only: the walls around a wall particle move only with
 // it, WallNumberDensity). The distances are computed as the passes that read the lists compute them,
-// so a listed neighbour is exactly one the grid walk would have taken. In the grid walk's order (_NeighbourListRows 9)
+// so a listed neighbour is exactly one the grid walk would have taken. In the grid walk's order (_NeighbourListRows 25)
 // the entries follow the walk and each row's ends are written before them; in DFSPH's (1) fluid fills from the front
 // and walls from the back.
 [numthreads(PARTICLE_THREADS, 1, 1)]
@@ -25,7 +25,7 @@ void FindNeighbours(uint3 id : SV_DispatchThreadID)
     bool walkOrder = _NeighbourListRows != 1u;
     uint fluid = 0u, walls = 0u;
     uint next = walkOrder ? NEIGHBOUR_ROW_WORDS : 0u; // the walk order's next entry
-    for (uint row = 0u; row < 9u; row++)
+    for (uint row = 0u; row < NEIGHBOUR_WALK_ROWS; row++)
     {
         uint2 range = NeighbourRowRange(home, row);
         for (uint j = range.x; j < range.y; j++)

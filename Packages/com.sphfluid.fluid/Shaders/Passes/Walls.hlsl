@@ -28,7 +28,7 @@ void WallNumberDensity(uint3 id : SV_DispatchThreadID)
     BoundaryParticle wall = _BoundaryParticles[b];
     int3 home = GridCoordOf(wall.position);
     float sum = _BoundaryOwnNumberDensities[_BoundarySortedSource[b]];
-    for (uint row = 0u; row < 9u; row++)
+    for (uint row = 0u; row < NEIGHBOUR_WALK_ROWS; row++)
     {
         uint2 walls = BoundaryRowRange(home, row);
         for (uint c = walls.x; c < walls.y; c++)

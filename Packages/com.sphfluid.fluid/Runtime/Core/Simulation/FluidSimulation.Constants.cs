@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using SphFluid.Compute;
+using SphFluid.Sorting;
 
 namespace SphFluid.Simulation
 {
@@ -122,7 +123,7 @@ namespace SphFluid.Simulation
             var position = container.Position + container.Velocity * elapsed;
             _containerPosition = position;
             _containerRotation = rotation;
-            _gridBehind |= GridOffset(position, rotation, container.Size) > GridSlack * _grid.CellSize;
+            _gridBehind |= GridOffset(position, rotation, container.Size) > GridSlack * CellGrid.CellsPerSupport * _grid.CellSize;
             ref FluidConstants c = ref _constants[0];
             c.WorldToContainer = Matrix4x4.Transpose(
                 Matrix4x4.CreateTranslation(-position) * Matrix4x4.CreateFromQuaternion(Quaternion.Conjugate(rotation)));
@@ -138,8 +139,10 @@ namespace SphFluid.Simulation
             _boundaryMoved = true;
         }
 
-        /// <summary>How far the grid may lag its container, in cells, before the next sort places it again: well inside its
-        /// margin cell, and a container that moves slowly or only wobbles does not make every sub-step sort its walls again.</summary>
+        /// <summary>How far the grid may lag its container, in support radii h, before the next sort places it again: well inside
+        /// its margin (h), and a container that moves slowly or only wobbles does not make every sub-step sort its walls again.
+        /// In h, not in cells: the margin kept its h when the cells became h/2 (CellGrid.CellsPerSupport), so the lag it
+        /// absorbs did too, and a moving container's grid is placed again as often as before, not twice as often.</summary>
         const float GridSlack = 0.25f;
 
         /// <summary>An upper bound on how far any point of the container (<paramref name="size"/>) at this placement lies

@@ -777,7 +777,7 @@ namespace SphFluid.Simulation
         void RebuildGrid()
         {
             var c = _scene.Container;
-            _grid = new CellGrid(c.Position, c.Rotation, c.Size, _scene.Settings.SmoothingRadius);
+            _grid = CellGrid.ForSupport(c.Position, c.Rotation, c.Size, _scene.Settings.SmoothingRadius);
             _buffers.MakeSorter(_grid.CellCount);
             WriteGrid();
             _containerChanged = true;

@@ -6,14 +6,14 @@ using SphFluid.Compute;
 namespace SphFluid.Sorting
 {
     /// <summary>
-    /// The solver's uniform neighbour grid: cubic cells of the support radius h, laid out in the
-    /// container's LOCAL frame (so a rotating container never resizes it), with one margin cell on
-    /// every side so that particles pushed slightly through a wall still map to a sensible cell.
-    /// The C# twin of Shaders/Include/Grid.hlsl; <see cref="SetOn"/> uploads its globals.
+    /// The solver's uniform neighbour grid: cubic cells, <see cref="CellsPerSupport"/> to the support radius h
+    /// (<see cref="ForSupport"/>), laid out in the container's LOCAL frame (so a rotating container never resizes it),
+    /// with <see cref="MarginCells"/> margin cells on every side so that particles pushed slightly through a wall still
+    /// map to a sensible cell. The C# twin of Shaders/Include/Grid.hlsl; <see cref="SetOn"/> uploads its globals.
     /// </summary>
     /// <remarks>
     /// Grid coordinate of world point x: g = WorldToGrid * (x, 1) with
-    /// WorldToGrid = scale(1/h) * translate(S/2 + margin h) * R^T * translate(-c), cell = clamp(floor(g), 0, dims - 1),
+    /// WorldToGrid = scale(1/cell) * translate(S/2 + margin cell) * R^T * translate(-c), cell = clamp(floor(g), 0, dims - 1),
     /// linear index = x + dims.x (y + dims.y z).
     /// </remarks>
     public sealed class CellGrid
@@ -22,14 +22,45 @@ namespace SphFluid.Sorting
         /// largest storage buffer D3D11 and lavapipe guarantee to bind.</summary>
         public const int MaxCellCount = 1 << 25;
 
-        /// <summary>Cells added on each side of every axis beyond the container.</summary>
-        public const int MarginCells = 1;
+        /// <summary>Cells to the support radius h, and so the cells a neighbour walk reaches on each side of a particle's
+        /// own: (2 * CellsPerSupport + 1)^3 cells, as (2 * CellsPerSupport + 1)^2 rows (CELLS_PER_SUPPORT in
+        /// SphNeighbourhood.hlsl, which must match). Two, not one: the 125 cells of h/2 around a particle hold 58 % of the
+        /// volume of the 27 cells of h, so every walk tests that much fewer candidates for the same neighbours. On an
+        /// NVIDIA H200 at 1M particles (OilAndWater) that took WCSPH's sub-step from 6.27 to 4.65 ms (FindNeighbours 2.62 to
+        /// 1.63, Forces 1.30 to 1.09) and DFSPH's from 37.2 to 34.6 ms; on lavapipe FindNeighbours costs about a fifth less
+        /// at 4 160 particles and the whole sub-step about 5 % less, where the longer rows' bookkeeping takes back most of
+        /// the gain (Headless/experiments/half-support-cells.patch, Headless/docs/accuracy-for-time.md). The price is 8
+        /// times the cells for a container, against <see cref="MaxCellCount"/>.</summary>
+        public const int CellsPerSupport = 2;
 
+        /// <summary>Cells added on each side of every axis beyond the container: one support radius h, as many cells as the
+        /// walk reaches, so that a particle a little outside its wall still finds its neighbours inside.</summary>
+        public const int MarginCells = CellsPerSupport;
+
+        /// <summary>The solver's grid for the support radius <paramref name="smoothingRadius"/> (h): cells of
+        /// h / <see cref="CellsPerSupport"/>, which a neighbour walk of <see cref="CellsPerSupport"/> cells each side
+        /// covers. Every grid the simulation walks is made here, so the cell size is derived from h in this one place.</summary>
+        public static CellGrid ForSupport(Vector3 containerCentre, Quaternion containerRotation, Vector3 containerSize, float smoothingRadius)
+        {
+            if (!(smoothingRadius > 0f) || !float.IsFinite(smoothingRadius))
+                throw new ArgumentOutOfRangeException(nameof(smoothingRadius), smoothingRadius,
+                    Format("CellGrid: the smoothing radius h must be a finite number > 0 m (was {0})", smoothingRadius));
+            return new CellGrid(containerCentre, containerRotation, containerSize, smoothingRadius / CellsPerSupport, smoothingRadius);
+        }
+
+        /// <summary>A grid of cells of <paramref name="cellSize"/> m; the solver's grid is <see cref="ForSupport"/>.</summary>
         public CellGrid(Vector3 containerCentre, Quaternion containerRotation, Vector3 containerSize, float cellSize)
+            : this(containerCentre, containerRotation, containerSize, cellSize, float.NaN)
+        {
+        }
+
+        /// <param name="support">The smoothing radius the cells were made from (<see cref="ForSupport"/>), which a refusal
+        /// names, or NaN for a grid of a given cell size.</param>
+        private CellGrid(Vector3 containerCentre, Quaternion containerRotation, Vector3 containerSize, float cellSize, float support)
         {
             if (!(cellSize > 0f) || !float.IsFinite(cellSize))
                 throw new ArgumentOutOfRangeException(nameof(cellSize), cellSize,
-                    Format("CellGrid: cell size (the smoothing radius h) must be a finite number > 0 m (was {0})", cellSize));
+                    Format("CellGrid: cell size must be a finite number > 0 m (was {0})", cellSize));
             if (!(containerSize.X > 0f && containerSize.Y > 0f && containerSize.Z > 0f) || !IsFinite(containerSize))
                 throw new ArgumentOutOfRangeException(nameof(containerSize), containerSize,
                     Format("CellGrid: container size must be finite and > 0 m on every axis (was {0})", containerSize));
@@ -39,10 +70,18 @@ namespace SphFluid.Sorting
             double dz = CellsAlong(containerSize.Z, cellSize);
             double cells = dx * dy * dz;
             if (cells > MaxCellCount)
-                throw new ArgumentOutOfRangeException(nameof(cellSize), cellSize,
-                    Format("CellGrid: container size {0} m with smoothing radius h = {1} m needs {2} x {3} x {4} = {5:E2} cells " +
-                           "(one margin cell per side included), more than the {6} allowed; raise the smoothing radius or shrink the container",
-                        containerSize, cellSize, dx, dy, dz, cells, MaxCellCount));
+            {
+                string need = Format("needs {0} x {1} x {2} = {3:E2} cells ({4} margin cells per side included), more than the {5} allowed",
+                    dx, dy, dz, cells, MarginCells, MaxCellCount);
+                if (float.IsNaN(support))
+                    throw new ArgumentOutOfRangeException(nameof(cellSize), cellSize,
+                        Format("CellGrid: container size {0} m in cells of {1} m {2}; raise the cell size or shrink the container",
+                            containerSize, cellSize, need));
+                throw new ArgumentOutOfRangeException("smoothingRadius", support,
+                    Format("CellGrid: container size {0} m with smoothing radius h = {1} m (cells of h/{2}) {3}; " +
+                           "raise the smoothing radius to at least {4:G4} m or shrink the container",
+                        containerSize, support, CellsPerSupport, need, SmallestSupport(containerSize)));
+            }
 
             Size = containerSize;
             CellSize = cellSize;
@@ -86,7 +125,7 @@ namespace SphFluid.Sorting
 
         public Vector3 Size { get; }
 
-        /// <summary>Edge of a cell, m: the support radius h.</summary>
+        /// <summary>Edge of a cell, m: h / <see cref="CellsPerSupport"/> for the solver's grid (<see cref="ForSupport"/>).</summary>
         public float CellSize { get; }
 
         public int DimX { get; }
@@ -105,7 +144,7 @@ namespace SphFluid.Sorting
         // SetInts takes params int[]: one array for the grid's lifetime, not one per sub-step.
         private readonly int[] dims = new int[3];
 
-        /// <summary>Grid coordinates (units of h, before flooring) of a world point.</summary>
+        /// <summary>Grid coordinates (units of <see cref="CellSize"/>, before flooring) of a world point.</summary>
         public Vector3 GridPositionOf(Vector3 world)
         {
             return Vector3.Transform(world, worldToGridRows);
@@ -159,12 +198,28 @@ namespace SphFluid.Sorting
 
         public override string ToString()
         {
-            return Format("CellGrid {0} x {1} x {2} cells of h = {3} m", DimX, DimY, DimZ, CellSize);
+            return Format("CellGrid {0} x {1} x {2} cells of {3} m", DimX, DimY, DimZ, CellSize);
         }
 
-        private static double CellsAlong(float size, float cellSize)
+        /// <summary>The smallest smoothing radius whose grid for <paramref name="containerSize"/> stays within
+        /// <see cref="MaxCellCount"/>, rounded up to four significant digits (for a refusal to name the range).</summary>
+        private static double SmallestSupport(Vector3 containerSize)
         {
-            return Math.Ceiling((double)size / cellSize) + 2 * MarginCells;
+            double low = 0, high = Math.Max(containerSize.X, Math.Max(containerSize.Y, containerSize.Z));
+            for (int i = 0; i < 100; i++)
+            {
+                double h = 0.5 * (low + high), cell = h / CellsPerSupport;
+                bool fits = CellsAlong(containerSize.X, cell) * CellsAlong(containerSize.Y, cell) * CellsAlong(containerSize.Z, cell) <= MaxCellCount;
+                if (fits) high = h;
+                else low = h;
+            }
+            double digit = Math.Pow(10, Math.Floor(Math.Log10(high)) - 3);
+            return Math.Ceiling(high / digit) * digit;
+        }
+
+        private static double CellsAlong(float size, double cellSize)
+        {
+            return Math.Ceiling(size / cellSize) + 2 * MarginCells;
         }
 
         private static int ClampFloor(float g, int dim)

@@ -8,7 +8,7 @@ namespace SphFluid.Sorting
     /// Sorts particles by grid cell every step (Shaders/ParticleSort.compute): a stable counting sort with
     /// no per-cell capacity, so no particle is ever dropped however many share a cell. After
     /// <see cref="Sort"/>, the destination buffer holds the particles grouped by cell (memory-coherent
-    /// 27-cell neighbour loops), and cell c's particles are
+    /// neighbour loops over rows of cells, SphNeighbourhood.hlsl), and cell c's particles are
     /// <c>_SortedParticles[_CellStart[c] .. _CellStart[c] + _CellCount[c] - 1]</c>.
     /// </summary>
     /// <remarks>

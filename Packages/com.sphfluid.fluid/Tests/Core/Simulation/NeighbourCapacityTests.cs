@@ -42,7 +42,7 @@ namespace SphFluid.Tests.Core.Simulation
         public void WcsphHasTheSameListsAndReadsThemInOneLaneOnly()
         {
             Assert.That(NeighbourCapacity.For(Settings(PressureSolver.Wcsph, KernelFamily.CubicSpline, 2f), 10000, NeighbourCapacity.MaxListBytes), Is.EqualTo(51 + NeighbourCapacity.RowWords));
-            Assert.That(NeighbourCapacity.ListRows(PressureSolver.Wcsph), Is.EqualTo(9), "the grid walk's order");
+            Assert.That(NeighbourCapacity.ListRows(PressureSolver.Wcsph), Is.EqualTo(25), "the grid walk's order: 5 x 5 rows of cells of h/2");
             Assert.That(NeighbourCapacity.ListRows(PressureSolver.Dfsph), Is.EqualTo(1));
             Assert.That(NeighbourCapacity.InUse(PressureSolver.Wcsph, 1), Is.True);
             Assert.That(NeighbourCapacity.InUse(PressureSolver.Wcsph, 2), Is.False);

@@ -8,12 +8,23 @@ namespace SphFluid.Tests.Core.Sorting
     public sealed class CellGridTests
     {
         [Test]
-        public void DimsCoverTheContainerPlusOneMarginCellPerSide()
+        public void DimsCoverTheContainerPlusTwoMarginCellsPerSide()
         {
             var grid = new CellGrid(Vector3.Zero, Quaternion.Identity, new Vector3(1f, 0.5f, 0.26f), 0.1f);
 
-            Assert.That(new[] { grid.DimX, grid.DimY, grid.DimZ }, Is.EqualTo(new[] { 12, 7, 5 }));
-            Assert.That(grid.CellCount, Is.EqualTo(12 * 7 * 5));
+            Assert.That(new[] { grid.DimX, grid.DimY, grid.DimZ }, Is.EqualTo(new[] { 14, 9, 7 }));
+            Assert.That(grid.CellCount, Is.EqualTo(14 * 9 * 7));
+        }
+
+        /// <summary>The solver's grid: cells of h/2, which a walk of two cells each side covers, and a margin of one h.</summary>
+        [Test]
+        public void TheSupportsGridHasCellsOfHalfTheSupportAndAMarginOfOneSupport()
+        {
+            var grid = CellGrid.ForSupport(Vector3.Zero, Quaternion.Identity, new Vector3(1f, 0.5f, 0.26f), 0.2f);
+
+            Assert.That(grid.CellSize, Is.EqualTo(0.1f));
+            Assert.That(new[] { grid.DimX, grid.DimY, grid.DimZ }, Is.EqualTo(new[] { 14, 9, 7 }));
+            Assert.That(CellGrid.MarginCells * grid.CellSize, Is.EqualTo(0.2f), "the margin is one support radius");
         }
 
         [Test]
@@ -24,8 +35,8 @@ namespace SphFluid.Tests.Core.Sorting
             grid.CellCoordOf(new Vector3(2f - 0.45f, -1f - 0.45f, 0.5f - 0.45f), out int x0, out int y0, out int z0);
             grid.CellCoordOf(new Vector3(2f + 0.45f, -1f + 0.45f, 0.5f + 0.45f), out int x1, out int y1, out int z1);
 
-            Assert.That(new[] { x0, y0, z0 }, Is.EqualTo(new[] { 1, 1, 1 }));
-            Assert.That(new[] { x1, y1, z1 }, Is.EqualTo(new[] { 10, 10, 10 }));
+            Assert.That(new[] { x0, y0, z0 }, Is.EqualTo(new[] { 2, 2, 2 }));
+            Assert.That(new[] { x1, y1, z1 }, Is.EqualTo(new[] { 11, 11, 11 }));
         }
 
         [Test]
@@ -35,8 +46,8 @@ namespace SphFluid.Tests.Core.Sorting
             Quaternion rotation = Quaternion.CreateFromAxisAngle(Vector3.Normalize(new Vector3(1f, 2f, 0.5f)), 0.9f);
             var size = new Vector3(0.8f, 0.4f, 0.6f);
             var grid = new CellGrid(centre, rotation, size, 0.1f);
-            // Local point in the middle of local cell (2, 5, 3): q = (cell + 0.5 - margin) h - S/2.
-            var local = new Vector3(2.5f, 5.5f, 3.5f) * 0.1f - new Vector3(0.1f) - size * 0.5f;
+            // Local point in the middle of local cell (2, 5, 3): q = (cell + 0.5 - margin) cell size - S/2.
+            var local = new Vector3(2.5f, 5.5f, 3.5f) * 0.1f - new Vector3(CellGrid.MarginCells * 0.1f) - size * 0.5f;
             Vector3 world = centre + Vector3.Transform(local, rotation);
 
             grid.CellCoordOf(world, out int x, out int y, out int z);
@@ -52,7 +63,7 @@ namespace SphFluid.Tests.Core.Sorting
         {
             var size = new Vector3(0.8f, 0.4f, 0.6f);
             var grid = new CellGrid(Vector3.Zero, Quaternion.Identity, size, 0.1f);
-            var local = new Vector3(2.5f, 5.5f, 3.5f) * 0.1f - new Vector3(0.1f) - size * 0.5f;
+            var local = new Vector3(2.5f, 5.5f, 3.5f) * 0.1f - new Vector3(CellGrid.MarginCells * 0.1f) - size * 0.5f;
             int cells = grid.CellCount;
             var centre = new Vector3(0.7f, -0.2f, 1.3f);
             Quaternion rotation = Quaternion.CreateFromAxisAngle(Vector3.UnitZ, 1.2f);
@@ -79,7 +90,7 @@ namespace SphFluid.Tests.Core.Sorting
                 m.M21 * world.X + m.M22 * world.Y + m.M23 * world.Z + m.M24,
                 m.M31 * world.X + m.M32 * world.Y + m.M33 * world.Z + m.M34);
             Vector3 expected = (Vector3.Transform(world - grid.Centre, Quaternion.Conjugate(rotation))
-                                + new Vector3(0.5f, 1f, 1.5f) + new Vector3(0.25f)) / 0.25f;
+                                + new Vector3(0.5f, 1f, 1.5f) + new Vector3(CellGrid.MarginCells * 0.25f)) / 0.25f;
 
             Assert.That(Vector3.Distance(columnVector, expected), Is.LessThan(1e-4f));
             Assert.That(Vector3.Distance(grid.GridPositionOf(world), expected), Is.LessThan(1e-4f));
@@ -99,12 +110,21 @@ namespace SphFluid.Tests.Core.Sorting
         }
 
         [Test]
-        public void NonPositiveCellSizeIsRefusedNamingTheSmoothingRadius()
+        public void NonPositiveSupportIsRefusedNamingTheSmoothingRadius()
         {
-            Exception error = Catch(() => _ = new CellGrid(Vector3.Zero, Quaternion.Identity, Vector3.One, 0f));
+            Exception error = Catch(() => _ = CellGrid.ForSupport(Vector3.Zero, Quaternion.Identity, Vector3.One, 0f));
 
             Assert.That(error, Is.TypeOf<ArgumentOutOfRangeException>());
             Assert.That(error.Message, Does.Contain("smoothing radius").And.Contain("was 0"));
+        }
+
+        [Test]
+        public void NonPositiveCellSizeIsRefused()
+        {
+            Exception error = Catch(() => _ = new CellGrid(Vector3.Zero, Quaternion.Identity, Vector3.One, float.NaN));
+
+            Assert.That(error, Is.TypeOf<ArgumentOutOfRangeException>());
+            Assert.That(error.Message, Does.Contain("cell size").And.Contain("was NaN"));
         }
 
         [Test]
@@ -116,14 +136,22 @@ namespace SphFluid.Tests.Core.Sorting
             Assert.That(error.Message, Does.Contain("container size"));
         }
 
+        /// <summary>Cells of h/2: 4 x 2 x 2 m at h = 8 mm needs 1000 x 500 x 500 cells and two margin cells a side, and the
+        /// smallest h that fits the 2^25 cells is named.</summary>
         [Test]
-        public void TooManyCellsIsRefusedNamingSizeRadiusAndDims()
+        public void TooManyCellsIsRefusedNamingSizeRadiusDimsAndTheSmallestRadius()
         {
-            Exception error = Catch(() => _ = new CellGrid(Vector3.Zero, Quaternion.Identity, new Vector3(4f, 2f, 2f), 0.004f));
+            Exception error = Catch(() => _ = CellGrid.ForSupport(Vector3.Zero, Quaternion.Identity, new Vector3(4f, 2f, 2f), 0.008f));
 
             Assert.That(error, Is.TypeOf<ArgumentOutOfRangeException>());
-            Assert.That(error.Message, Does.Contain("<4, 2, 2>").And.Contain("0.004")
-                .And.Contain("1002 x 502 x 502").And.Contain(CellGrid.MaxCellCount.ToString()));
+            Assert.That(error.Message, Does.Contain("<4, 2, 2>").And.Contain("smoothing radius h = 0.008")
+                .And.Contain("1004 x 504 x 504").And.Contain(CellGrid.MaxCellCount.ToString()));
+            string smallest = System.Text.RegularExpressions.Regex.Match(error.Message, @"at least ([0-9.]+) m").Groups[1].Value;
+            float h = float.Parse(smallest, System.Globalization.CultureInfo.InvariantCulture);
+            Assert.That(() => _ = CellGrid.ForSupport(Vector3.Zero, Quaternion.Identity, new Vector3(4f, 2f, 2f), h), Throws.Nothing,
+                $"the named smallest radius {smallest} m fits");
+            Assert.That(Catch(() => _ = CellGrid.ForSupport(Vector3.Zero, Quaternion.Identity, new Vector3(4f, 2f, 2f), 0.999f * h)),
+                Is.TypeOf<ArgumentOutOfRangeException>(), "and a radius a thousandth smaller does not");
         }
 
         private static Exception Catch(Action action)
