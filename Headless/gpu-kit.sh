@@ -34,7 +34,7 @@ cp -L "$loader" "$top/lib/libvulkan.so.1"
 cp /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf "$top/"
 git -C "$root" describe --always --dirty >"$top/commit" 2>/dev/null || echo unknown >"$top/commit"
 
-for entry in ${EXPERIMENTS-half-support-cells:wcsph,dfsph cached-pair-gradients:dfsph longer-dfsph-step:study}; do
+for entry in ${EXPERIMENTS-cached-pair-gradients:dfsph longer-dfsph-step:study}; do
     name="${entry%%:*}" solvers="${entry#*:}"
     patch="$root/Headless/experiments/$name.patch"
     [ -f "$patch" ] || { echo "gpu-kit: EXPERIMENTS names $name, but $patch is missing" >&2; exit 2; }
