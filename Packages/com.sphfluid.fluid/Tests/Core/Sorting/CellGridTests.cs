@@ -105,7 +105,7 @@ namespace SphFluid.Tests.Core.Sorting
             grid.CellCoordOf(new Vector3(-50f, 0.05f, 1e30f), out int x, out int y, out int z);
             grid.CellCoordOf(new Vector3(float.NaN, float.NaN, float.NaN), out int nx, out int ny, out int nz);
 
-            Assert.That(new[] { x, y, z }, Is.EqualTo(new[] { 0, 6, 11 }));
+            Assert.That(new[] { x, y, z }, Is.EqualTo(new[] { 0, 7, 13 }));
             Assert.That(new[] { nx, ny, nz }, Is.EqualTo(new[] { 0, 0, 0 }));
         }
 
