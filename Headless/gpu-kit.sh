@@ -6,9 +6,10 @@
 # .compute kernels there, as here), the Vulkan loader and the charts' font. Headless/gpu-figures.sh unpacks it there
 # and prints the GPU figures; a device call carries it with `carry: [".gpu"]`.
 # Each experiment named in EXPERIMENTS (NAME:SOLVERS, a patch of Headless/experiments and the solvers to bench it
-# under, or "study" for a change to the step; default below: the ones measured on lavapipe and not yet on a GPU) goes
-# in as experiments/NAME: the files its patch changes, from a patched copy of the committed tree, and the assemblies
-# built from that copy that differ from the kit's own. Headless/gpu-figures.sh's experiments stage runs each beside
+# under, or "study" for a change to the step; default below: the patches that apply to HEAD and that the H200 timed
+# at d599ca0 and left out, so that a lent GPU can time them again beside the code of the day) goes in as
+# experiments/NAME: the files its patch changes, from a patched copy of the committed tree, and the assemblies built
+# from that copy that differ from the kit's own. Headless/gpu-figures.sh's experiments stage runs each beside
 # the kit's own build. EXPERIMENTS="" packs none.
 # It writes only .gpu/sphfluid-gpu.tar.xz (through a temporary name beside it) and a scratch folder it removes.
 set -euo pipefail
