@@ -31,8 +31,8 @@
 # The stages are named as arguments, run in the order given (default: realtime bench pareto). Each step has a time
 # limit, so a slow step costs only itself. The environment can change the sizes, the solvers the bench stage times and
 # each step's limit in seconds: REALTIME_SCALES, PARETO_SCALES, ITERATIONS ("jacobi chebyshev"), BENCH_PARTICLES,
-# BENCH_SOLVERS ("dfsph wcsph"), BENCH_ITERATIONS (ITERATIONS),
-# RUN_SECONDS, REALTIME_LIMIT (150 a size), BENCH_LIMIT (120 each), PARETO_LIMIT (300), SCENE_SCALES, SLOWER_GPUS,
+# BENCH_SOLVERS ("dfsph wcsph"), BENCH_ITERATIONS (ITERATIONS), RUN_SECONDS, REALTIME_LIMIT (150 a size up to 1M,
+# in proportion beyond), BENCH_LIMIT (120 each), PARETO_LIMIT (300), SCENE_SCALES, SLOWER_GPUS,
 # SCENES (the demo scenes the scenes stage benches), SCENES_LIMIT (90 each), LAYERING_SECONDS (6.5), LAYERING_LIMIT
 # (150 each, one per solve).
 #
@@ -60,6 +60,10 @@ for tolerance in ${DIVERGENCE_TOLERANCES:-}; do divergence_tolerances+=("$tolera
 [ ${#divergence_tolerances[@]} -eq 0 ] || divergence_tolerances=(--divergence-tolerances "${divergence_tolerances[@]}")
 bench_iterations="${BENCH_ITERATIONS:-$iterations}"
 realtime_limit="${REALTIME_LIMIT:-150}"
+# A size's limit: REALTIME_LIMIT up to the 1M size (scale 240), and in proportion to the particles beyond it, since a
+# study's rows cost about their particle count in wall time (2M ran out of 150 s after WCSPH's row, at b653f9f and at
+# d599ca0 alike).
+size_limit() { awk -v limit="$realtime_limit" -v scale="$1" 'BEGIN { f = scale / 240; if (f < 1) f = 1; printf "%d", limit * f + 0.5 }'; }
 bench_limit="${BENCH_LIMIT:-120}"
 pareto_limit="${PARETO_LIMIT:-300}"
 seconds="${RUN_SECONDS:-1}"
@@ -119,7 +123,7 @@ say "gpu-figures: sphfluid at $(cat "$home/commit"), stages ${stages[*]}, $(date
 budget=0
 for stage in "${stages[@]}"; do
     case "$stage" in
-    realtime) budget=$((budget + realtime_limit * $(echo "$realtime_scales" | wc -w))) ;;
+    realtime) for scale in $realtime_scales; do budget=$((budget + $(size_limit "$scale"))); done ;;
     bench)
         for solver in $bench_solvers; do
             if [ "$solver" = dfsph ]; then budget=$((budget + bench_limit * $(echo "$bench_iterations" | wc -w))); else budget=$((budget + bench_limit)); fi
@@ -174,7 +178,7 @@ for stage in "${stages[@]}"; do
         : >"$out/realtime.md"
         for scale in $realtime_scales; do
             # shellcheck disable=SC2086 # a word list
-            step "$realtime_limit" study "$scene" --particles-scales "$scale" --stiffness-factors 1 --density-tolerances 0.1 \
+            step "$(size_limit "$scale")" study "$scene" --particles-scales "$scale" --stiffness-factors 1 --density-tolerances 0.1 \
                 --solver-iterations $iterations ${divergence_tolerances[@]+"${divergence_tolerances[@]}"} --cfl "$cfl" --seconds "$seconds" \
                 --out "$scratch/realtime-$scale"
             csv="$scratch/realtime-$scale/study.csv"
