@@ -2,6 +2,7 @@ using System;
 using System.Linq;
 using System.Numerics;
 using NUnit.Framework;
+using SphFluid.Compute;
 using SphFluid.Headless.Cli;
 using SphFluid.Headless.Scenes;
 using SphFluid.Simulation;
@@ -92,6 +93,51 @@ namespace SphFluid.Tests.Physics
             Assert.That(firstFrame.step, Is.LessThanOrEqualTo(shortStep), "the edited scene runs the short step");
             Assert.That(firstFrame.energy - firstFrame.spawnEnergy, Is.LessThanOrEqualTo(0.0), "no work is done on a fluid let go at rest");
             Assert.That(firstFrame.fastest, Is.LessThanOrEqualTo(scene.Settings.Gravity.Length() * firstFrame.time), "no particle outruns free fall");
+        }
+
+        /// <summary>
+        /// Without gravity the settling's bound from gravity, g dt² / s, is zero, so whatever compression the solves left
+        /// ran all twenty of them at construction, each up to MaxSolverIterations rounds and a blocking read-back. A kick
+        /// within what the divergence-free solve tolerates at every step, a density change of its tolerance over the step,
+        /// moves a particle at most that tolerance times the spacing a second, which the solve would allow the fluid
+        /// anyway, so the settling stops there too. A weightless jittered block must settle in fewer solves than the cap
+        /// and start at rest: over the first frame no particle faster than the divergence-free tolerance times the spacing.
+        /// </summary>
+        [Test]
+        public void AWeightlessSpawnSettlesWithinTheDivergenceFreeTolerance()
+        {
+            var settings = SolverScenes.Coarse(0.04f);
+            settings.PressureSolver = PressureSolver.Dfsph;
+            settings.Gravity = Vector3.Zero;
+            var water = SolverScenes.Box("Water", SolverScenes.Water(), Vector3.Zero, new Vector3(0.4f), jitter: 0.25f);
+            var scene = SolverScenes.Scene(settings, new Vector3(0.8f), water);
+
+            var device = new DriftCountingDevice(GpuTestDevice.Unvalidated);
+            using var sim = new FluidSimulation(device, scene);
+            int settlingSolves = device.Drifts; // each settling solve ends in one drift; nothing else drifts before a step
+            sim.Step(Frame);
+            var report = sim.ReadDiagnostics();
+            float kick = 0.01f * settings.DivergenceTolerance * settings.ParticleSpacing;
+            TestContext.Progress.WriteLine($"weightless DFSPH block of {sim.ParticleCount} particles: settled in {settlingSolves} " +
+                $"solves; after {1000 * sim.SimulatedTime:F2} ms the fastest particle {1000 * report.MaxSpeed:F3} mm/s " +
+                $"(the tolerance's {1000 * kick:F3} mm/s), the most compressed {100 * report.Phases.Max(p => p.MaxDensityError):F4} %");
+
+            Assert.That(settlingSolves, Is.LessThan(20), "the settling stops before its cap");
+            Assert.That(report.MaxSpeed, Is.LessThanOrEqualTo(kick), "the spawn starts at rest, within the solve's tolerance");
+        }
+
+        /// <summary>Forwards to a real device and counts the solver program's Drift dispatches.</summary>
+        sealed class DriftCountingDevice : ForwardingDevice
+        {
+            public DriftCountingDevice(IComputeDevice inner) : base(inner) { }
+
+            public int Drifts { get; private set; }
+
+            public override void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ)
+            {
+                if (program.Name.Contains(FluidSimulation.SolverProgramName) && kernel == program.FindKernel("Drift")) Drifts++;
+                Inner.Dispatch(program, kernel, groupsX, groupsY, groupsZ);
+            }
         }
 
         /// <summary>Settling moves particles and nothing else: every particle is kept, with its phase and its box's velocity,
