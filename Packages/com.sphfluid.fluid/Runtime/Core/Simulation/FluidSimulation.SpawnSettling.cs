@@ -39,8 +39,9 @@ namespace SphFluid.Simulation
         /// step: compression e over a step dt moves a particle about e times the spacing s in it, so it stops once
         /// e s / dt is within g dt, dt the stable step at rest (MaxTimeStep, unless the gravity wave, the viscosity or
         /// the tension bounds it shorter), or e / dt within the divergence-free tolerance, a rate the solve allows at every
-        /// step (the only bound without gravity, which otherwise ran all the solves). At OilAndWater's 5 ms that allows 1.6 %, which two solves meet, so the
-        /// shipped scenes start as before; at 0.039 ms twenty leave 0.001 %, and the first 1.25 ms holds 0.03 mJ.
+        /// step (the only bound without gravity, which otherwise ran all the solves). At OilAndWater's 5 ms that allows
+        /// 1.6 %, which two solves meet, so the shipped scenes start as before; at 0.039 ms twenty leave 0.001 %, and the
+        /// first 1.25 ms holds 0.03 mJ.
         /// Once, at construction (blocking read-backs of the particles and of the diagnostics): <see cref="Reset"/>
         /// respawns the result.
         /// </summary>
