@@ -186,6 +186,14 @@ namespace SphFluid.Tests.Runner
             Assert.That(bench.SlowerGpuFits[0].Particles, Is.LessThanOrEqualTo(bench.DeviceFit!.Particles));
             Assert.That(stdout.ToString(), Does.Contain("60 Hz sizing (WCSPH)").And.Contain("- on a GPU 10 times slower per particle"));
             Assert.That(stdout.ToString(), Does.Contain($"| {bench.Rows[1].Particles} |"));
+            // Each saving says where its time went, and the plan's row timed again after the forced ones says how far the
+            // device drifted meanwhile: on an H200 the savings moved fivefold between sessions with neither printed.
+            var tension = bench.Savings.Single(s => s.Forced == new PlanOverrides { SurfaceTension = true }.ToString());
+            Assert.That(BenchRun.GrownPasses(bench.Rows[^1], tension.WithEffect), Does.StartWith(PassNames.Normals + " +").Or.Contain(", " + PassNames.Normals + " +"),
+                "forced tension runs the normals pass, which the plan leaves out");
+            Assert.That(bench.BaselineAgain, Is.Not.Null);
+            Assert.That(bench.BaselineAgain!.PassMs.Keys, Is.EquivalentTo(bench.Rows[^1].PassMs.Keys), "the plan again runs the plan's passes");
+            Assert.That(stdout.ToString(), Does.Contain("The plan again after the forced rows: ").And.Contain("| passes that grew (GPU ms) |"));
             ChartFiles.Check(outDir, "bench-scaling", "Bench scaling: PlayModeTest, WCSPH", "particles", "milliseconds per sub-step (ms)",
                 "wall clock per sub-step", "GPU per sub-step");
         }
