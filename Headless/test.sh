@@ -28,8 +28,8 @@ if [ $# -gt 0 ]; then
     run_tests "$gpu" results.trx "$@"
 else
     run_tests "$core" results-core.trx
-    # The GPU suite in two processes at once, each with its own Vulkan device and temp folder: DFSPH's longest runs (the
-    # category TestProcesses.LongDfsphRuns, chosen so that the two end together) and the rest. Each process gets one lavapipe
+    # The GPU suite in two processes at once, each with its own Vulkan device and temp folder: the longest runs (the
+    # category TestProcesses.LongRuns, chosen so that the two end together) and the rest. Each process gets one lavapipe
     # worker thread (LP_NUM_THREADS, unless the caller set it): with lavapipe's default of one per core, two processes kept
     # four workers and two submitting threads on the two cores, and the suite took 1272 s where it took 1165 s with one
     # worker each on the same day (README, the test command; Headless/tools/lavapipe-threads.sh). Each line of their
@@ -40,8 +40,8 @@ else
     scratch=$(mktemp -d)
     trap 'rm -rf "$scratch"' EXIT
     pids=()
-    for half in dfsph-runs rest; do
-        if [ "$half" = dfsph-runs ]; then filter="TestCategory=LongDfsphRuns"; else filter="TestCategory!=LongDfsphRuns"; fi
+    for half in long-runs rest; do
+        if [ "$half" = long-runs ]; then filter="TestCategory=LongRuns"; else filter="TestCategory!=LongRuns"; fi
         mkdir "$scratch/$half"
         ( export TMPDIR="$scratch/$half" SPHFLUID_VARIANTS_DIR="$scratch/variants-$half" LP_NUM_THREADS="${LP_NUM_THREADS:-1}"
           dotnet test "$gpu" -c Release --no-build --filter "$filter" --logger "trx;LogFileName=results-$half.trx" \

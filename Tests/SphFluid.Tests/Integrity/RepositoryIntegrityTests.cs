@@ -263,7 +263,7 @@ namespace SphFluid.Tests.Integrity
         {
             // Two processes at once: one filter and its complement, so every test runs exactly once.
             string script = File.ReadAllText(At("Headless/test.sh"));
-            string category = TestProcesses.LongDfsphRuns;
+            string category = TestProcesses.LongRuns;
             Assert.That(script, Does.Contain($"filter=\"TestCategory={category}\""));
             Assert.That(script, Does.Contain($"filter=\"TestCategory!={category}\""));
         }

@@ -61,7 +61,7 @@ namespace SphFluid.Tests.Physics
         /// face at an edge, with 122 centres within 0.35 spacings at 1 s (WallCreepProbe). With the walls' pressure held at
         /// least at the fluid's (WallStepAtLeast) 13 are, and the closest is 0.256 spacings from a face.</summary>
         [Test]
-        [Category(TestProcesses.LongDfsphRuns)]
+        [Category(TestProcesses.LongRuns)]
         public void OilAndWaterAtTheTopOfTheBand_KeepsItsCentresOffTheWalls()
         {
             string path = RunnerPaths.EditedScene("OilAndWater", "SmoothingRadius: 0.04275", "SmoothingRadius: 0.0435");
@@ -97,7 +97,7 @@ namespace SphFluid.Tests.Physics
         /// (BoundarySampling.OwnNumberDensities) they read up to 22 % above rest, and the constraint pushed the fluid off the
         /// still sphere: 8.2 m/s and 2.1 J of energy gained by 0.13 s, unhealthy at 0.37 s.</summary>
         [Test]
-        [Category(TestProcesses.LongDfsphRuns)]
+        [Category(TestProcesses.LongRuns)]
         public void SphereWake_StillSphereLeavesThePoolAtRest_AndTheDrivenOneRunsClean()
         {
             var loaded = SceneLoader.Load(RunnerPaths.Scene("SphereWake"), RunnerPaths.Project);
@@ -158,7 +158,7 @@ namespace SphFluid.Tests.Physics
         /// measure that meets every bar.
         /// The scene's own solve, Jacobi's.</summary>
         [Test]
-        [Category(TestProcesses.LongDfsphRuns)]
+        [Category(TestProcesses.LongRuns)]
         public void DefaultOilAndWater_LayersFlatWithin6Seconds_AndNoOilStaysOnTheFloor() => LayersFlatWithin6Seconds(SolverIteration.Jacobi);
 
         /// <summary>The same bars with the Chebyshev-accelerated solve (<see cref="SolverIteration"/>, as

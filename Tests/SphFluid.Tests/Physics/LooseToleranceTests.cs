@@ -32,7 +32,7 @@ namespace SphFluid.Tests.Physics
     /// constant-density solve at 25 900 particles the second-order part it misses was more than that tenth (0.950 % for
     /// the water, 1.012 % for the oil), with the Jacobi steps it is not (0.847 and 0.883 %).</para>
     /// </summary>
-    [Category(TestProcesses.LongDfsphRuns)]
+    [Category(TestProcesses.LongRuns)]
     public sealed class LooseToleranceTests
     {
         const float Loose = 1f, Tight = 0.1f;

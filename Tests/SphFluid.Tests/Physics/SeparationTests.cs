@@ -57,6 +57,7 @@ namespace SphFluid.Tests.Physics
         /// The scene's configuration (delta-SPH, Wendland C2 at 2.85 spacings) is what lets the interface rock and settle
         /// flat; with the cubic spline it froze 50 to 52 mm tilted.</summary>
         [Test]
+        [Category(TestProcesses.LongRuns)]
         public void DefaultOilAndWater_LayersFlatWithin6Seconds_AndNoOilStaysOnTheFloor()
         {
             var scene = SceneLoader.Load(RunnerPaths.Scene("OilAndWater"), RunnerPaths.Project).Description;
@@ -74,6 +75,7 @@ namespace SphFluid.Tests.Physics
         }
 
         [Test]
+        [Category(TestProcesses.LongRuns)]
         public void ThreeLiquidsSpawnedUpsideDown_LayerInDensityOrderWithin8Seconds()
         {
             var settings = new FluidSettings { ParticleSpacing = 0.015f, SmoothingRadius = 0.03f, Stiffness = 20000f, XsphEpsilon = 0f, MaxSubsteps = 64 };

@@ -19,7 +19,7 @@ namespace SphFluid.Tests.Physics
     /// Chebyshev 9.5 and 23.9, at 0.0198 % and 0.0190 % at 32, the column -0.12 % in both.
     /// The test runs 8 and 32 spacings, the pair that separates the two growths most.
     /// </summary>
-    [Category(TestProcesses.LongDfsphRuns)]
+    [Category(TestProcesses.LongRuns)]
     public sealed class SolverIterationScalingTests
     {
         const float Spacing = 0.025f;
