@@ -193,7 +193,8 @@ namespace SphFluid.Tests.Runner
                 "forced tension runs the normals pass, which the plan leaves out");
             Assert.That(bench.BaselineAgain, Is.Not.Null);
             Assert.That(bench.BaselineAgain!.PassMs.Keys, Is.EquivalentTo(bench.Rows[^1].PassMs.Keys), "the plan again runs the plan's passes");
-            Assert.That(stdout.ToString(), Does.Contain("The plan again after the forced rows: ").And.Contain("| passes that grew (GPU ms) |"));
+            Assert.That(stdout.ToString(), Does.Contain("The plan again after the forced rows: ").And.Contain("| wall ms saved in a frame | passes that grew (GPU ms) |"));
+            Assert.That(tension.FrameWallMsSaved, Is.EqualTo(tension.WithEffect.FrameWallMs - bench.Rows[^1].FrameWallMs).Within(1e-9));
             ChartFiles.Check(outDir, "bench-scaling", "Bench scaling: PlayModeTest, WCSPH", "particles", "milliseconds per sub-step (ms)",
                 "wall clock per sub-step", "GPU per sub-step");
         }
