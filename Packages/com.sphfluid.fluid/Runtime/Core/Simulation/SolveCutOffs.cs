@@ -56,13 +56,21 @@ namespace SphFluid.Simulation
         {
             if (settings == null) throw new ArgumentNullException(nameof(settings));
             if (settings.PressureSolver != PressureSolver.Dfsph || !(Math.Max(DensityShare, DivergenceShare) > WarningShare)) return null;
+            // The Jacobi solve's rounds grow with the square of the fluid's depth in spacings: from about 100k particles
+            // OilAndWater's run at its cap of 100 where the accelerated solve's took 17 to 20 at every size to 2M
+            // (Headless/docs/accuracy-for-time.md), so a larger budget is the dearer cure there.
+            string accelerate = settings.SolverIteration == SolverIteration.Jacobi
+                ? "Set SolverIteration to Chebyshev (the Jacobi solve's iterations grow with the square of the fluid's depth in " +
+                  "spacings, the accelerated solve's with the depth), raise"
+                : "Raise";
             return string.Format(CultureInfo.InvariantCulture,
                 "DFSPH's solves ran out of their {0} iterations (MaxSolverIterations) in {1:P0} of the simulated time's " +
                 "constant-density solves and {2:P0} of its divergence-free ones: the errors exceeded the tolerances of {3} % " +
-                "and {4} %/s there, and each such sub-step cost the whole budget. Raise MaxSolverIterations, loosen the " +
+                "and {4} %/s there, and each such sub-step cost the whole budget. {5} MaxSolverIterations, loosen the " +
                 "density or divergence tolerance, or leave the fluid free volume: a fluid that fills its closed container " +
                 "exactly cannot get below the tolerance.",
-                settings.MaxSolverIterations, DensityShare, DivergenceShare, settings.DensityTolerance, settings.DivergenceTolerance);
+                settings.MaxSolverIterations, DensityShare, DivergenceShare, settings.DensityTolerance, settings.DivergenceTolerance,
+                accelerate);
         }
     }
 }

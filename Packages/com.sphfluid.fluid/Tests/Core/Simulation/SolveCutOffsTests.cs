@@ -56,5 +56,18 @@ namespace SphFluid.Tests.Core.Simulation
                 "simulated time's constant-density solves and 0 % of its divergence-free ones: the errors exceeded the tolerances of 0.1 % and 10 %/s"));
             Assert.That(warning, Does.EndWith("a fluid that fills its closed container exactly cannot get below the tolerance."));
         }
+
+        [Test]
+        public void AJacobiRunIsToldOfTheAcceleratedSolveFirst()
+        {
+            var cutOffs = new SolveCutOffs();
+            cutOffs.Observe(0.0, 0.0, 0.0);
+            cutOffs.Observe(1.0, 0.5, 0.0);
+            Assert.That(cutOffs.Warning(Dfsph()), Does.Contain("cost the whole budget. Set SolverIteration to Chebyshev (the Jacobi solve's " +
+                "iterations grow with the square of the fluid's depth in spacings, the accelerated solve's with the depth), raise MaxSolverIterations"));
+            var accelerated = Dfsph();
+            accelerated.SolverIteration = SolverIteration.Chebyshev;
+            Assert.That(cutOffs.Warning(accelerated), Does.Contain("cost the whole budget. Raise MaxSolverIterations").And.Not.Contain("Set SolverIteration"));
+        }
     }
 }
