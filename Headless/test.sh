@@ -44,8 +44,11 @@ else
         if [ "$half" = long-runs ]; then filter="TestCategory=LongRuns"; else filter="TestCategory!=LongRuns"; fi
         mkdir "$scratch/$half"
         ( export TMPDIR="$scratch/$half" SPHFLUID_VARIANTS_DIR="$scratch/variants-$half" LP_NUM_THREADS="${LP_NUM_THREADS:-1}"
+          code=0
           dotnet test "$gpu" -c Release --no-build --filter "$filter" --logger "trx;LogFileName=results-$half.trx" \
-              --logger "console;verbosity=normal" --results-directory "$results" 2>&1 | sed -u "s/^/[$half] /" ) &
+              --logger "console;verbosity=normal" --results-directory "$results" 2>&1 | sed -u "s/^/[$half] /" || code=$?
+          echo "$SECONDS" > "$scratch/$half.ended"
+          exit $code ) &
         pids+=($!)
     done
     for pid in "${pids[@]}"; do
@@ -53,6 +56,9 @@ else
         wait "$pid" || code=$?
         if [ "$status" -eq 0 ]; then status=$code; fi
     done
+    # When each process ended, so that a split that no longer ends together shows in the log (LongRuns).
+    echo "test processes ended at $(cat "$scratch/long-runs.ended" 2>/dev/null || echo '?') s (long-runs) and" \
+         "$(cat "$scratch/rest.ended" 2>/dev/null || echo '?') s (rest) of the script's time"
     unvalidated=$(comm -23 <(cat "$scratch"/variants-*/unvalidated.txt 2>/dev/null | sort -u) \
                            <(cat "$scratch"/variants-*/validated.txt 2>/dev/null | sort -u))
     if [ -n "$unvalidated" ]; then
