@@ -56,9 +56,10 @@ namespace SphFluid.Simulation
         {
             if (settings == null) throw new ArgumentNullException(nameof(settings));
             if (settings.PressureSolver != PressureSolver.Dfsph || !(Math.Max(DensityShare, DivergenceShare) > WarningShare)) return null;
-            // The Jacobi solve's rounds grow with the square of the fluid's depth in spacings: from about 100k particles
-            // OilAndWater's run at its cap of 100 where the accelerated solve's took 17 to 20 at every size to 2M
-            // (Headless/docs/accuracy-for-time.md), so a larger budget is the dearer cure there.
+            // The Jacobi solve's rounds grow with the square of the fluid's depth in spacings: at 100k and 250k particles
+            // OilAndWater's took 58.8 and 64.2 a sub-step at 0.1 % on an H200 and ran at their cap of 100 at 0.01 %, where
+            // the accelerated solve's took 17 to 20 at every size to 2M (Headless/docs/accuracy-for-time.md), so a larger
+            // budget is the dearer cure there.
             string accelerate = settings.SolverIteration == SolverIteration.Jacobi
                 ? "Set SolverIteration to Chebyshev (the Jacobi solve's iterations grow with the square of the fluid's depth in " +
                   "spacings, the accelerated solve's with the depth), raise"
