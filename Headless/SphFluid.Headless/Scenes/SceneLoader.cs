@@ -161,36 +161,38 @@ public static class SceneLoader
         string Where(UnityGameObject go, string component, string field) =>
             $"GameObject '{go?.Name}', {component}.{field}";
 
-        float Float(UnityGameObject go, UnityDocument mb, string component, string field, float fallback)
+        // Each reader below quotes `allowed` when the text is not even of the field's type, so that the message says what
+        // to write: a declared setting's range (SettingRules.Allowed), else the bare type.
+        float Float(UnityGameObject go, UnityDocument mb, string component, string field, float fallback, string allowed = "a number")
         {
             var node = mb.Root.At(field);
             if (node == null) return fallback;
             if (node.IsScalar && UnityYamlNode.TryParseNumber(node.Value, out double v)) return (float)v;
-            throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be a number (was '{node}')");
+            throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be {allowed} (was '{node}')");
         }
 
-        int Int(UnityGameObject go, UnityDocument mb, string component, string field, int fallback)
+        int Int(UnityGameObject go, UnityDocument mb, string component, string field, int fallback, string allowed = "a whole number")
         {
             var node = mb.Root.At(field);
             if (node == null) return fallback;
             if (node.IsScalar && long.TryParse(node.Value, out long v) && v >= int.MinValue && v <= int.MaxValue) return (int)v;
-            throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be a whole number (was '{node}')");
+            throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be {allowed} (was '{node}')");
         }
 
-        Vector3 Vector(UnityGameObject go, UnityDocument mb, string component, string field, Vector3 fallback)
+        Vector3 Vector(UnityGameObject go, UnityDocument mb, string component, string field, Vector3 fallback, string allowed = "a vector {x, y, z}")
         {
             var node = mb.Root.At(field);
             if (node == null) return fallback;
             try { return mb.Root.GetVector3(field); }
-            catch (FormatException) { throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be a vector {{x, y, z}} (was '{node}')"); }
+            catch (FormatException) { throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be {allowed} (was '{node}')"); }
         }
 
-        Vector4 Color(UnityGameObject go, UnityDocument mb, string component, string field, Vector4 fallback)
+        Vector4 Color(UnityGameObject go, UnityDocument mb, string component, string field, Vector4 fallback, string allowed = "a colour {r, g, b, a}")
         {
             var node = mb.Root.At(field);
             if (node == null) return fallback;
             try { return mb.Root.GetColor(field); }
-            catch (FormatException) { throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be a colour {{r, g, b, a}} (was '{node}')"); }
+            catch (FormatException) { throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be {allowed} (was '{node}')"); }
         }
 
         static readonly (string Field, string[] Axes)[] TransformFields =
@@ -243,18 +245,19 @@ public static class SceneLoader
 
         void InRange(UnityGameObject go, UnityDocument mb, string component, string field, float fallback, float min, float max, string unit)
         {
-            float v = Float(go, mb, component, field, fallback);
+            string range = string.Format(CultureInfo.InvariantCulture, "[{0}, {1}] {2}", min, max, unit);
+            float v = Float(go, mb, component, field, fallback, "a number in " + range);
             if (!(v >= min && v <= max))
-                throw new SceneException(string.Format(CultureInfo.InvariantCulture, "{0}:{1}: {2} must be in [{3}, {4}] {5} (was {6})",
-                    path, mb.Root[field]?.Line ?? mb.Line, Where(go, component, field), min, max, unit, v));
+                throw new SceneException(string.Format(CultureInfo.InvariantCulture, "{0}:{1}: {2} must be in {3} (was {4})",
+                    path, mb.Root[field]?.Line ?? mb.Line, Where(go, component, field), range, v));
         }
 
-        string Text(UnityGameObject go, UnityDocument mb, string component, string field, string fallback)
+        string Text(UnityGameObject go, UnityDocument mb, string component, string field, string fallback, string allowed = "text")
         {
             var node = mb.Root.At(field);
             if (node == null) return fallback;
             if (node.IsScalar) return node.Value;
-            throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be text (was '{node}')");
+            throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be {allowed} (was '{node}')");
         }
 
         /// <summary>The compute shaders Unity would run: those the package's resources asset names, which must be the
@@ -293,12 +296,13 @@ public static class SceneLoader
                 var type = declared.Field.FieldType;
                 string key = prefix + "." + declared.Path;
                 object value = declared.GetValue(values);
-                if (type == typeof(float)) value = Float(go, mb, component, key, (float)value);
-                else if (type == typeof(int)) value = Int(go, mb, component, key, (int)value);
-                else if (type == typeof(string)) value = Text(go, mb, component, key, (string)value);
-                else if (type == typeof(SettingVector)) value = (SettingVector)Vector(go, mb, component, key, (SettingVector)value);
-                else if (type == typeof(SettingColor)) value = (SettingColor)Color(go, mb, component, key, (SettingColor)value);
-                else if (type.IsEnum) value = Enum.ToObject(type, Int(go, mb, component, key, Convert.ToInt32(value)));
+                string allowed = SettingRules.Allowed(type, declared.Declaration);
+                if (type == typeof(float)) value = Float(go, mb, component, key, (float)value, allowed);
+                else if (type == typeof(int)) value = Int(go, mb, component, key, (int)value, allowed);
+                else if (type == typeof(string)) value = Text(go, mb, component, key, (string)value, allowed);
+                else if (type == typeof(SettingVector)) value = (SettingVector)Vector(go, mb, component, key, (SettingVector)value, allowed);
+                else if (type == typeof(SettingColor)) value = (SettingColor)Color(go, mb, component, key, (SettingColor)value, allowed);
+                else if (type.IsEnum) value = Enum.ToObject(type, Int(go, mb, component, key, Convert.ToInt32(value), allowed));
                 else throw new NotSupportedException($"{typeof(T).Name}.{declared.Path}: no scene reading for {type.Name}");
                 declared.SetValue(values, value);
             }

@@ -1,4 +1,5 @@
 using System;
+using System.Globalization;
 using System.IO;
 using System.Linq;
 using NUnit.Framework;
@@ -111,14 +112,22 @@ namespace SphFluid.Tests.Runner
             Assert.That(error.Message, Does.Contain("Fluid.container"));
         }
 
-        [Test]
-        public void ANonNumberNamesTheFieldAndLine()
+        // A value that is not even of the field's type is told what to write: the declared range, or an enum's values.
+        [TestCase("    Stiffness: 50000", "    Stiffness: lots",
+            @"PlayModeTest\.unity:{line}: GameObject 'Fluid', Fluid\.settings\.Stiffness must be a number in \[1, 1E\+09\] Pa \(was 'lots'\)")]
+        [TestCase("    MaxSolverIterations: 100", "    MaxSolverIterations: 99999999999999999999",
+            @"PlayModeTest\.unity:{line}: GameObject 'Fluid', Fluid\.settings\.MaxSolverIterations must be a whole number in \[1, 1000\] \(was '99999999999999999999'\)")]
+        [TestCase("    PressureSolver: 0", "    PressureSolver: dfsph",
+            @"PlayModeTest\.unity:{line}: GameObject 'Fluid', Fluid\.settings\.PressureSolver must be one of 0 \(Wcsph\), 1 \(Dfsph\) \(was 'dfsph'\)")]
+        public void ANonNumberNamesTheFieldLineAndWhatItAccepts(string original, string edited, string expected)
         {
-            string path = RunnerPaths.EditedScene("PlayModeTest", "    Stiffness: 50000", "    Stiffness: lots");
+            string path = RunnerPaths.EditedScene("PlayModeTest", original, edited);
+            string text = System.IO.File.ReadAllText(path);
+            int number = text.Substring(0, text.IndexOf(edited, StringComparison.Ordinal)).Count(c => c == '\n') + 1;
 
             var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
 
-            Assert.That(error.Message, Does.Match(@"PlayModeTest\.unity:\d+: GameObject 'Fluid', Fluid\.settings\.Stiffness must be a number \(was 'lots'\)"));
+            Assert.That(error.Message, Does.Match(expected.Replace("{line}", number.ToString(CultureInfo.InvariantCulture))));
         }
 
         [Test]

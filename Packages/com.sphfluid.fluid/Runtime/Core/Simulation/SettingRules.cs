@@ -167,7 +167,7 @@ namespace SphFluid.Simulation
                     return ok;
                 case Enum e:
                     if (Enum.IsDefined(e.GetType(), e)) return true;
-                    errors.Add(new ValidationError(path + field, $"{owner}: {field} must be one of {string.Join(", ", Names(e.GetType()))} (was {Convert.ToInt64(e)})"));
+                    errors.Add(new ValidationError(path + field, $"{owner}: {field} must be {Allowed(e.GetType(), d)} (was {Convert.ToInt64(e)})"));
                     return false;
                 default:
                     throw new NotSupportedException($"{settings.GetType().Name}.{field}: settings of type {info.FieldType.Name} are not supported");
@@ -179,6 +179,19 @@ namespace SphFluid.Simulation
         {
             foreach (var declared in Declared(settings.GetType()))
                 Validate(settings, errors, owner, path, declared.Field.Name);
+        }
+
+        /// <summary>What a field of <paramref name="fieldType"/> declared by <paramref name="d"/> accepts, as the messages
+        /// write it: "a number in [1, 1e+09] Pa", "a whole number in [1, 1000]", "one of 0 (Wcsph), 1 (Dfsph)". A reader
+        /// that cannot parse a value quotes it, so that the user learns what to write instead.</summary>
+        public static string Allowed(Type fieldType, SettingAttribute d)
+        {
+            if (fieldType.IsEnum) return "one of " + string.Join(", ", Names(fieldType));
+            if (fieldType == typeof(int)) return "a whole number in " + d.RangeText;
+            if (fieldType == typeof(SettingVector)) return "a vector {x, y, z} with magnitude in " + d.RangeText;
+            if (fieldType == typeof(SettingColor)) return "a colour {r, g, b, a} with each channel in " + d.RangeText;
+            if (fieldType == typeof(string)) return "a text of length in " + d.RangeText;
+            return "a number in " + d.RangeText;
         }
 
         static bool Above(float value, SettingAttribute d) => d.MinExclusive ? value > (float)d.Min : value >= (float)d.Min;
