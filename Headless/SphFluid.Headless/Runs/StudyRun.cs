@@ -320,9 +320,12 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
             string density = string.Join("; ", r.PhaseNames.Select((p, k) => string.Format(C, "{0} {1:P2} / {2:P2}", p, r.DensityErrorAverage[k], r.DensityErrorMax[k])));
             string cutOff = r.Config.Solver == PressureSolver.Dfsph
                 ? r.DensitySolvesCutOff.ToString("P1", C) + " / " + r.DivergenceSolvesCutOff.ToString("P1", C) : "-";
-            b.AppendLine(string.Format(C, "| {0}{1} | {2:G3} | {3:G3} | {4} | {5} | {6:G3} | {7:P2} | {8:F2} | {9:F3} | {10:F3} | {11:G3} | {12:F1} | {13} | {14:F0} | {15:F0} | {16:F0} | {17:G3}x |",
+            // A scene of one liquid has no layering to measure (NaN in the CSV); the table says so with a dash, as for
+            // a WCSPH row's cut-offs, rather than print NaN beside the figures it does have.
+            string layering = double.IsFinite(r.Layering) ? r.Layering.ToString("F2", C) : "-";
+            b.AppendLine(string.Format(C, "| {0}{1} | {2:G3} | {3:G3} | {4} | {5} | {6:G3} | {7:P2} | {8} | {9:F3} | {10:F3} | {11:G3} | {12:F1} | {13} | {14:F0} | {15:F0} | {16:F0} | {17:G3}x |",
                 r.Config.Label, r == Finest ? " (ref)" : r.Failure != null ? " (FAILED)" : "", r.Config.ParticleScale, r.Config.Cfl, r.Particles, density,
-                r.DivergenceError, r.EnergyDrift, r.Layering, r.SurgeFront, r.Column, r.ObservableError, r.SolverIterations, cutOff, r.SubstepsPerSecond,
+                r.DivergenceError, r.EnergyDrift, layering, r.SurgeFront, r.Column, r.ObservableError, r.SolverIterations, cutOff, r.SubstepsPerSecond,
                 r.GpuMsPerSecond, r.WallMsPerSecond, r.RealTimeFactor));
         }
         string? note = CutOffNote(Rows);
