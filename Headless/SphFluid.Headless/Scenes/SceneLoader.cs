@@ -340,11 +340,17 @@ public static class SceneLoader
             }
             var w = containerGo.World;
             var container = new ContainerDescription(w.Position, w.Rotation, Abs(w.Scale));
-            var component = Active(containerGuid).Find(found => found.Go == containerGo).Behaviour;
+            var component = ContainerBehaviour(containerGo);
             if (component != null)
-                container.Friction = (WallFriction)Int(containerGo, component, RuntimeScripts.FluidContainer, "friction", (int)container.Friction);
+                container.Friction = (WallFriction)Int(containerGo, component, RuntimeScripts.FluidContainer, "friction", (int)container.Friction,
+                    "one of " + SettingRules.EnumValues(typeof(WallFriction)));
             return (container, containerGo);
         }
+
+        /// <summary>The active FluidContainer component on <paramref name="containerGo"/>; null when the Fluid's reference
+        /// names a container on an object that is inactive or whose component is disabled.</summary>
+        UnityDocument? ContainerBehaviour(UnityGameObject containerGo) =>
+            Active(ScriptGuid(RuntimeScripts.FluidContainer)).Find(found => found.Go == containerGo).Behaviour;
 
         /// <summary>The box's declared values (its phase among them) from its serialized block; the placement from its
         /// GameObject, as SpawnBox.Describe takes it.</summary>
@@ -413,9 +419,13 @@ public static class SceneLoader
                 return $"line {line}: {Where(_simulatorGo, RuntimeScripts.Fluid, key)}: {error.Message}";
             }
             if (head == "Container")
-                return TransformField(member) is { } containerPlacement
-                    ? Placed(containerGo, containerPlacement, error)
-                    : $"GameObject '{containerGo.Name}', {RuntimeScripts.FluidContainer}: {error.Message}";
+            {
+                if (TransformField(member) is { } containerPlacement)
+                    return Placed(containerGo, containerPlacement, error);
+                if (member == nameof(ContainerDescription.Friction) && ContainerBehaviour(containerGo) is { } component)
+                    return $"line {component.Root.At("friction")?.Line ?? component.Line}: {Where(containerGo, RuntimeScripts.FluidContainer, "friction")}: {error.Message}";
+                return $"GameObject '{containerGo.Name}', {RuntimeScripts.FluidContainer}: {error.Message}";
+            }
             if (TryIndex(head, "SpawnBoxes", out int b) && b < _boxes.Count)
             {
                 var (go, mb) = _boxes[b];

@@ -112,14 +112,19 @@ namespace SphFluid.Tests.Runner
             Assert.That(error.Message, Does.Contain("Fluid.container"));
         }
 
-        // A value that is not even of the field's type is told what to write: the declared range, or an enum's values.
+        // A value that is not even of the field's type is told what to write: the declared range, or an enum's values (an
+        // enum's value out of range too, by the validation, with the line).
         [TestCase("    Stiffness: 50000", "    Stiffness: lots",
             @"PlayModeTest\.unity:{line}: GameObject 'Fluid', Fluid\.settings\.Stiffness must be a number in \[1, 1E\+09\] Pa \(was 'lots'\)")]
         [TestCase("    MaxSolverIterations: 100", "    MaxSolverIterations: 99999999999999999999",
             @"PlayModeTest\.unity:{line}: GameObject 'Fluid', Fluid\.settings\.MaxSolverIterations must be a whole number in \[1, 1000\] \(was '99999999999999999999'\)")]
         [TestCase("    PressureSolver: 0", "    PressureSolver: dfsph",
             @"PlayModeTest\.unity:{line}: GameObject 'Fluid', Fluid\.settings\.PressureSolver must be one of 0 \(Wcsph\), 1 \(Dfsph\) \(was 'dfsph'\)")]
-        public void ANonNumberNamesTheFieldLineAndWhatItAccepts(string original, string edited, string expected)
+        [TestCase("  friction: 1", "  friction: rough",
+            @"PlayModeTest\.unity:{line}: GameObject 'Container', FluidContainer\.friction must be one of 0 \(Slip\), 1 \(NoSlip\) \(was 'rough'\)")]
+        [TestCase("  friction: 1", "  friction: 5",
+            @"line {line}: GameObject 'Container', FluidContainer\.friction: Container: Friction must be one of 0 \(Slip\), 1 \(NoSlip\) \(was 5\)")]
+        public void AValueItCannotUseNamesTheFieldLineAndWhatItAccepts(string original, string edited, string expected)
         {
             string path = RunnerPaths.EditedScene("PlayModeTest", original, edited);
             string text = System.IO.File.ReadAllText(path);

@@ -130,7 +130,7 @@ namespace SphFluid.Simulation
                         $"Container: Size {ValidationRules.Format(size)} m needs {walls} wall particles at spacing {ValidationRules.Format(Settings.ParticleSpacing)} m, more than the {MaxBoundaryParticles} allowed; shrink the container or raise ParticleSpacing"));
             }
             if (Container.Friction != WallFriction.Slip && Container.Friction != WallFriction.NoSlip)
-                errors.Add(new ValidationError("Container.Friction", $"Container: Friction must be Slip or NoSlip (was {(int)Container.Friction})"));
+                errors.Add(new ValidationError("Container.Friction", $"Container: Friction must be one of {SettingRules.EnumValues(typeof(WallFriction))} (was {(int)Container.Friction})"));
             ValidationRules.Finite(errors, owner, "Container.", nameof(ContainerDescription.Velocity), Container.Velocity, 1000f, "m/s");
             ValidationRules.Finite(errors, owner, "Container.", nameof(ContainerDescription.AngularVelocity), Container.AngularVelocity, 1000f, "rad/s");
         }

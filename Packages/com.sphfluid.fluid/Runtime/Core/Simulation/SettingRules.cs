@@ -186,7 +186,7 @@ namespace SphFluid.Simulation
         /// that cannot parse a value quotes it, so that the user learns what to write instead.</summary>
         public static string Allowed(Type fieldType, SettingAttribute d)
         {
-            if (fieldType.IsEnum) return "one of " + string.Join(", ", Names(fieldType));
+            if (fieldType.IsEnum) return "one of " + EnumValues(fieldType);
             if (fieldType == typeof(int)) return "a whole number in " + d.RangeText;
             if (fieldType == typeof(SettingVector)) return "a vector {x, y, z} with magnitude in " + d.RangeText;
             if (fieldType == typeof(SettingColor)) return "a colour {r, g, b, a} with each channel in " + d.RangeText;
@@ -196,7 +196,8 @@ namespace SphFluid.Simulation
 
         static bool Above(float value, SettingAttribute d) => d.MinExclusive ? value > (float)d.Min : value >= (float)d.Min;
 
-        static IEnumerable<string> Names(Type enumType) =>
-            Enum.GetValues(enumType).Cast<object>().Select(v => $"{Convert.ToInt64(v)} ({v})");
+        /// <summary>An enum's values as a scene file holds them, each with its name: "0 (Slip), 1 (NoSlip)".</summary>
+        public static string EnumValues(Type enumType) =>
+            string.Join(", ", Enum.GetValues(enumType).Cast<object>().Select(v => $"{Convert.ToInt64(v)} ({v})"));
     }
 }
