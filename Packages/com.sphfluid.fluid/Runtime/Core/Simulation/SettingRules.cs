@@ -182,7 +182,7 @@ namespace SphFluid.Simulation
         }
 
         /// <summary>What a field of <paramref name="fieldType"/> declared by <paramref name="d"/> accepts, as the messages
-        /// write it: "a number in [1, 1e+09] Pa", "a whole number in [1, 1000]", "one of 0 (Wcsph), 1 (Dfsph)". A reader
+        /// write it: "a number in [1, 1E+09] Pa", "a whole number in [1, 1000]", "one of 0 (Wcsph), 1 (Dfsph)". A reader
         /// that cannot parse a value quotes it, so that the user learns what to write instead.</summary>
         public static string Allowed(Type fieldType, SettingAttribute d)
         {
