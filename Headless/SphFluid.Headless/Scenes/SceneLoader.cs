@@ -416,15 +416,15 @@ public static class SceneLoader
             {
                 string key = RuntimeScripts.Settings + "." + member;
                 int line = _simulator.Root.At(key)?.Line ?? _simulator.Line;
-                return $"line {line}: {Where(_simulatorGo, RuntimeScripts.Fluid, key)}: {error.Message}";
+                return $"{path}:{line}: {Where(_simulatorGo, RuntimeScripts.Fluid, key)}: {error.Message}";
             }
             if (head == "Container")
             {
                 if (TransformField(member) is { } containerPlacement)
                     return Placed(containerGo, containerPlacement, error);
                 if (member == nameof(ContainerDescription.Friction) && ContainerBehaviour(containerGo) is { } component)
-                    return $"line {component.Root.At("friction")?.Line ?? component.Line}: {Where(containerGo, RuntimeScripts.FluidContainer, "friction")}: {error.Message}";
-                return $"GameObject '{containerGo.Name}', {RuntimeScripts.FluidContainer}: {error.Message}";
+                    return $"{path}:{component.Root.At("friction")?.Line ?? component.Line}: {Where(containerGo, RuntimeScripts.FluidContainer, "friction")}: {error.Message}";
+                return $"{path}:{containerGo.Document.Line}: GameObject '{containerGo.Name}', {RuntimeScripts.FluidContainer}: {error.Message}";
             }
             if (TryIndex(head, "SpawnBoxes", out int b) && b < _boxes.Count)
             {
@@ -434,24 +434,24 @@ public static class SceneLoader
                 // The core's path below the box is the serialized one: SpawnBoxes[0].Phase.RestDensity is spawn.Phase.RestDensity.
                 string key = RuntimeScripts.Spawn + "." + string.Join(".", parts.Skip(1));
                 int line = mb.Root.At(key)?.Line ?? mb.Line;
-                return $"line {line}: {Where(go, RuntimeScripts.SpawnBox, key)}: {error.Message}";
+                return $"{path}:{line}: {Where(go, RuntimeScripts.SpawnBox, key)}: {error.Message}";
             }
             if (TryIndex(head, "Obstacles", out int o) && o < _obstacles.Count)
                 return TransformField(member) is { } spherePlacement
                     ? Placed(_obstacles[o].Go, spherePlacement, error)
-                    : $"GameObject '{_obstacles[o].Go.Name}', SphereObstacle.{CamelCase(member)}: {error.Message}";
+                    : $"{path}:{_obstacles[o].Behaviour.Root.At(CamelCase(member))?.Line ?? _obstacles[o].Behaviour.Line}: GameObject '{_obstacles[o].Go.Name}', SphereObstacle.{CamelCase(member)}: {error.Message}";
             return error.Message;
         }
 
         /// <summary>A message about a world-space placement, at the line of the GameObject's own Transform field. The value
         /// the message quotes is the world one, so a GameObject under others names them: the field to change may be theirs.</summary>
-        static string Placed(UnityGameObject go, string transformField, ValidationError error)
+        string Placed(UnityGameObject go, string transformField, ValidationError error)
         {
             string key = transformField.Substring(transformField.IndexOf('.') + 1);
             int line = go.Transform?.Root[key]?.Line ?? go.Transform?.Line ?? go.Document.Line;
             var parents = go.SelfAndAncestors.Skip(1).Select(g => $"'{g.Name}'").ToList();
             string under = parents.Count == 0 ? "" : $" (in the world, under {string.Join(", ", parents)}, whose Transforms count too)";
-            return $"line {line}: GameObject '{go.Name}', {transformField}{under}: {error.Message}";
+            return $"{path}:{line}: GameObject '{go.Name}', {transformField}{under}: {error.Message}";
         }
 
         static string? TransformField(string member) => member switch

@@ -283,7 +283,7 @@ namespace SphFluid.Tests.Runner
             var run = Simulate(path);
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"line {line}: GameObject 'Water', Transform.m_LocalScale: SpawnBox 'Water': each Size component must be in"));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', Transform.m_LocalScale: SpawnBox 'Water': each Size component must be in"));
         }
 
         /// <summary>Under a scaled parent the box's own scale is fine and its world size is not: the message names the
@@ -302,7 +302,7 @@ namespace SphFluid.Tests.Runner
             var run = Simulate(path);
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"line {line}: GameObject 'Water', Transform.m_LocalScale (in the world, under 'Container', whose Transforms count too): SpawnBox 'Water'"));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', Transform.m_LocalScale (in the world, under 'Container', whose Transforms count too): SpawnBox 'Water'"));
         }
 
         static int LineOf(string path, string text) => Array.FindIndex(File.ReadAllLines(path), l => l.StartsWith(text, StringComparison.Ordinal));
@@ -359,7 +359,7 @@ namespace SphFluid.Tests.Runner
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
             Assert.That(run.Stderr, Does.Contain(path + ": the fluid scene is invalid"));
-            Assert.That(run.Stderr, Does.Contain($"line {line}: GameObject 'Oil', SpawnBox.spawn.Phase.Color.r: SpawnBox 'Oil': Color.r must be in [0, 1] (was 2)"));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Oil', SpawnBox.spawn.Phase.Color.r: SpawnBox 'Oil': Color.r must be in [0, 1] (was 2)"));
         }
 
         [Test]

@@ -80,7 +80,7 @@ namespace SphFluid.Tests.Runner
             var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
 
             Assert.That(error.Message, Does.StartWith(path + ": "));
-            Assert.That(error.Message, Does.Contain($"line {line}: GameObject 'Water', SpawnBox.spawn.Phase.RestDensity"));
+            Assert.That(error.Message, Does.Contain($"{path}:{line}: GameObject 'Water', SpawnBox.spawn.Phase.RestDensity"));
             Assert.That(error.Message, Does.Contain("RestDensity must be in [1, 100000] kg/m^3 (was -3)"));
         }
 
@@ -91,7 +91,7 @@ namespace SphFluid.Tests.Runner
 
             var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
 
-            Assert.That(error.Message, Does.Match(@"line \d+: GameObject 'Fluid', Fluid\.settings\.SmoothingRadius"));
+            Assert.That(error.Message, Does.Match(@"PlayModeTest\.unity:\d+: GameObject 'Fluid', Fluid\.settings\.SmoothingRadius"));
         }
 
         [Test]
@@ -123,7 +123,7 @@ namespace SphFluid.Tests.Runner
         [TestCase("  friction: 1", "  friction: rough",
             @"PlayModeTest\.unity:{line}: GameObject 'Container', FluidContainer\.friction must be one of 0 \(Slip\), 1 \(NoSlip\) \(was 'rough'\)")]
         [TestCase("  friction: 1", "  friction: 5",
-            @"line {line}: GameObject 'Container', FluidContainer\.friction: Container: Friction must be one of 0 \(Slip\), 1 \(NoSlip\) \(was 5\)")]
+            @"PlayModeTest\.unity:{line}: GameObject 'Container', FluidContainer\.friction: Container: Friction must be one of 0 \(Slip\), 1 \(NoSlip\) \(was 5\)")]
         public void AValueItCannotUseNamesTheFieldLineAndWhatItAccepts(string original, string edited, string expected)
         {
             string path = RunnerPaths.EditedScene("PlayModeTest", original, edited);
