@@ -350,6 +350,21 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain(message));
         }
 
+        /// <summary>A sphere that covers every spawn point once reached the GPU with no particle ("unexpected failure",
+        /// exit 1): it is a scene error at the sphere's radius.</summary>
+        [Test]
+        public void ASphereThatSwallowsTheFluidIsRefusedAtItsRadius()
+        {
+            string path = RunnerPaths.EditedScene("SphereWake", "\n  radius: 0.5\n", "\n  radius: 50\n");
+            int line = Array.IndexOf(File.ReadAllLines(path), "  radius: 50") + 1;
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Sphere', SphereObstacle.radius: Sphere 'Sphere': the sphere obstacles"));
+            Assert.That(run.Stderr, Does.Contain("so the scene would spawn no particle"));
+        }
+
         [Test]
         public void AColourChannelBeyondOneIsRefusedAtItsLineWithTheRange()
         {

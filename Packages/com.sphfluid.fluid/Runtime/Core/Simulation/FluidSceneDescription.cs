@@ -98,6 +98,10 @@ namespace SphFluid.Simulation
             ValidateObstacles(errors);
             if (errors.Count > 0) return errors;
             SpawnOverlapRule.Validate(this, errors);
+            // A sphere displaces the lattice points it covers (SpawnLayout); one that covers them all leaves nothing to simulate.
+            if (Obstacles != null && Obstacles.Count > 0 && !SpawnLayout.SpawnsAny(this))
+                errors.Add(new ValidationError(ObstaclePath(0) + nameof(RigidSphere.Radius),
+                    $"{ObstacleOwner(Obstacles[0])}: the sphere obstacles ({SphereList()}) cover every lattice point of the spawn boxes (each point within half a spacing of a sphere is left out), so the scene would spawn no particle; the total must be in [1, {Settings.MaxParticles}]: shrink or move the spheres or the boxes"));
             // The Tait speed of sound only bounds the weakly compressible solver; DFSPH keeps the density by its solves.
             if (Settings.PressureSolver == PressureSolver.Wcsph)
                 SpeedOfSoundRule.Validate(this, errors);
@@ -244,6 +248,14 @@ namespace SphFluid.Simulation
         }
 
         internal static string ObstacleOwner(RigidSphere o) => $"Sphere '{o.Name}'";
+
+        string SphereList()
+        {
+            var spheres = new List<string>();
+            foreach (var o in Obstacles)
+                spheres.Add($"'{o.Name}' of world radius {ValidationRules.Format(o.Radius)} m at {ValidationRules.Format(o.Center)}");
+            return string.Join("; ", spheres);
+        }
 
         internal static string ObstaclePath(int index) => $"Obstacles[{index}].";
 

@@ -107,6 +107,16 @@ namespace SphFluid.Simulation
             return count;
         }
 
+        /// <summary>Whether any box of <paramref name="scene"/> (valid but for this) spawns a particle: false only where sphere
+        /// obstacles cover every lattice point. Stops at the first point spawned.</summary>
+        public static bool SpawnsAny(FluidSceneDescription scene)
+        {
+            foreach (var box in scene.SpawnBoxes)
+                foreach (var _ in Positions(scene, box))
+                    return true;
+            return false;
+        }
+
         /// <summary>Particles the whole scene spawns.</summary>
         public static int TotalCount(FluidSceneDescription scene)
         {

@@ -152,6 +152,30 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(Messages(scene), Has.Member("Sphere 'Ball': Radius must be in (0, 1000] m (was 0)"));
         }
 
+        // A sphere leaves out the lattice points it covers; one that covers them all once left a scene of no particle,
+        // refused only by the GPU buffer's "count must be > 0".
+        [Test]
+        public void ObstacleCoveringEverySpawnPoint_IsRefused()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.Obstacles.Add(new RigidSphere(scene.Container.Position, 5f, Vector3.Zero) { Name = "Ball" });
+            var errors = scene.Validate();
+            Assert.That(errors.Select(e => e.Field).ToArray(), Is.EqualTo(new[] { "Obstacles[0].Radius" }));
+            Assert.That(errors[0].Message, Does.StartWith("Sphere 'Ball': the sphere obstacles ('Ball' of world radius 5 m at ")
+                .And.Contain("so the scene would spawn no particle"));
+            Assert.That(() => SpawnLayout.Generate(scene), Throws.ArgumentException.With.Message.Contains("would spawn no particle"));
+        }
+
+        [Test]
+        public void ObstacleCoveringSomeSpawnPoints_IsAllowed()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.Obstacles.Add(new RigidSphere(scene.SpawnBoxes[0].Center, 0.02f, Vector3.Zero) { Name = "Ball" });
+            Assert.That(scene.Validate(), Is.Empty);
+            Assert.That(SpawnLayout.TotalCount(scene), Is.LessThan(SpawnLayout.Count(scene.Settings, scene.SpawnBoxes[0])
+                + SpawnLayout.Count(scene.Settings, scene.SpawnBoxes[1])));
+        }
+
         [Test]
         public void EmptyScene_IsRefused()
         {
