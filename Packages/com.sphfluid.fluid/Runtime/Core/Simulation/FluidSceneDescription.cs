@@ -98,10 +98,16 @@ namespace SphFluid.Simulation
             ValidateObstacles(errors);
             if (errors.Count > 0) return errors;
             SpawnOverlapRule.Validate(this, errors);
-            // A sphere displaces the lattice points it covers (SpawnLayout); one that covers them all leaves nothing to simulate.
+            // A sphere displaces the lattice points it covers (SpawnLayout); spheres that cover them all leave nothing to
+            // simulate. The largest is named as the field to change (a radius typed as 50 instead of 0.5), every one in the text.
             if (Obstacles != null && Obstacles.Count > 0 && !SpawnLayout.SpawnsAny(this))
-                errors.Add(new ValidationError(ObstaclePath(0) + nameof(RigidSphere.Radius),
-                    $"{ObstacleOwner(Obstacles[0])}: the sphere obstacles ({SphereList()}) cover every lattice point of the spawn boxes (each point within half a spacing of a sphere is left out), so the scene would spawn no particle; the total must be in [1, {Settings.MaxParticles}]: shrink or move the spheres or the boxes"));
+            {
+                int largest = 0;
+                for (int i = 1; i < Obstacles.Count; i++)
+                    if (Obstacles[i].Radius > Obstacles[largest].Radius) largest = i;
+                errors.Add(new ValidationError(ObstaclePath(largest) + nameof(RigidSphere.Radius),
+                    $"{ObstacleOwner(Obstacles[largest])}: the sphere obstacles ({SphereList()}) cover every lattice point of the spawn boxes (each point within half a spacing of a sphere is left out), so the scene would spawn no particle; the total must be in [1, {Settings.MaxParticles}]: shrink or move the spheres or the boxes"));
+            }
             // The Tait speed of sound only bounds the weakly compressible solver; DFSPH keeps the density by its solves.
             if (Settings.PressureSolver == PressureSolver.Wcsph)
                 SpeedOfSoundRule.Validate(this, errors);

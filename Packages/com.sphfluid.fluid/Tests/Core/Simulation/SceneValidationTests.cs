@@ -167,6 +167,17 @@ namespace SphFluid.Tests.Core.Simulation
         }
 
         [Test]
+        public void ObstaclesCoveringEverySpawnPoint_NameTheLargestAsTheField()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.Obstacles.Add(new RigidSphere(new Vector3(0.2f, 0.2f, 0.2f), 0.01f, Vector3.Zero) { Name = "Pebble" });
+            scene.Obstacles.Add(new RigidSphere(scene.Container.Position, 5f, Vector3.Zero) { Name = "Ball" });
+            var errors = scene.Validate();
+            Assert.That(errors.Select(e => e.Field).ToArray(), Is.EqualTo(new[] { "Obstacles[1].Radius" }));
+            Assert.That(errors[0].Message, Does.StartWith("Sphere 'Ball': the sphere obstacles ('Pebble' of world radius 0.01 m at "));
+        }
+
+        [Test]
         public void ObstacleCoveringSomeSpawnPoints_IsAllowed()
         {
             var scene = SimulationTestScenes.OilOnWater();
