@@ -13,7 +13,8 @@ namespace SphFluid.Tests.Physics
     /// Under DFSPH OilAndWater's kinetic energy at 0.1 s follows the step (6.551 mJ at the scene's 4.17 ms sub-steps,
     /// 6.112 at 1.19 ms, 5.630 at 0.312 ms), but the lock exchange's flow does not: most of that energy belongs to the
     /// fluid at rest. The same tank with the oil at the water's rest density, where nothing should move, holds 1.519,
-    /// 1.104 and 0.713 mJ, the particle motion left by the spawned lattice settling under its weight; the difference, the
+    /// 1.104 and 0.713 mJ, the particle motion of its free surface settling (the summed density reads the fluid missing
+    /// above the top layers as expansion, so they sink until they reach rest density); the difference, the
     /// exchange's own energy, is 5.032, 5.008 and 4.917 mJ (Headless/docs/physics.md, "Whose energy follows the step";
     /// Headless/tools/step-energy-ladder.sh). So the scene's own step resolves the exchange: a quarter of it changes the
     /// exchange's energy by 0.5 %, where the scene's total changes by 7 %.
