@@ -51,6 +51,13 @@ public static class Program
             stderr.WriteLine($"sphfluid: no Vulkan device: {e.Message} (install Mesa's lavapipe: Headless/install-deps.sh, or set VK_LOADER_DRIVERS_SELECT)");
             return ExitCodes.Failure;
         }
+        catch (IOException e)
+        {
+            // A full disk or a folder taken away mid-run: the environment's failure, not the program's, and the message
+            // names the file.
+            stderr.WriteLine($"sphfluid: file error, the command stopped: {e.Message}");
+            return ExitCodes.Failure;
+        }
         catch (Exception e)
         {
             // A message for the reader, not a type name; the exit code says it was not their input's fault.

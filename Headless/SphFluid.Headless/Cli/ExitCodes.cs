@@ -5,7 +5,8 @@ public static class ExitCodes
 {
     public const int Ok = 0;
 
-    /// <summary>No usable Vulkan device, or an unexpected failure (the message says which).</summary>
+    /// <summary>No usable Vulkan device, a file that cannot be written (a full disk), or an unexpected failure (the
+    /// message says which).</summary>
     public const int Failure = 1;
 
     /// <summary>A command-line argument is unknown, missing or out of range.</summary>

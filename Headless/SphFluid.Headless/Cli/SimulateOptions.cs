@@ -59,6 +59,9 @@ public sealed class SimulateOptions(string scenePath)
 
     /// <summary>Frames the run takes.</summary>
     public int FrameCount => Frames > 0 ? Frames : Math.Max(1, (int)Math.Ceiling(Seconds / FrameSeconds - 1e-9));
+
+    /// <summary>Simulated seconds the run takes: --seconds, or --steps frames of --frame-seconds.</summary>
+    public double Duration => Frames > 0 ? Frames * FrameSeconds : Seconds;
 }
 
 /// <summary>The <c>simulate</c> command's syntax and generated help.</summary>

@@ -17,9 +17,10 @@ namespace SphFluid.Headless.Cli;
 public sealed class SphfluidCommandLine
 {
     public const string ExitCodesText =
-@"Exit codes: 0 ok, 1 no Vulkan device or unexpected failure, 2 bad arguments, 3 scene errors,
-4 the run became unhealthy: non-finite, particles lost, or faster, more compressed or more
-energetic than the scene allows (the message names the time, phase and figure).";
+@"Exit codes: 0 ok, 1 no Vulkan device, a file error (a full disk) or an unexpected failure,
+2 bad arguments, 3 scene errors, 4 the run became unhealthy: non-finite, particles lost, or
+faster, more compressed or more energetic than the scene allows (the message names the time,
+phase and figure).";
 
     public const string DeviceHelp = "Vulkan adapter whose name contains NAME (default: SPHFLUID_VULKAN_DEVICE, else the best)";
 

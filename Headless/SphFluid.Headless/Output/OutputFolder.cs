@@ -88,6 +88,50 @@ public sealed class OutputFolder
         return IoPath.Combine(Path, fileName);
     }
 
+    /// <summary>
+    /// Writes <paramref name="fileName"/> whole or not at all: where <paramref name="write"/> fails, what it had written
+    /// is removed, so that no truncated file is left to pass for an output; a failed write to the disk (a full one)
+    /// becomes an <see cref="IOException"/> that names the file.
+    /// </summary>
+    public void Write(string fileName, Action<Stream> write)
+    {
+        string path = PathOf(fileName);
+        try
+        {
+            using var file = File.Create(path);
+            write(file);
+        }
+        catch (Exception e)
+        {
+            string? kept = null;
+            try
+            {
+                File.Delete(path);
+            }
+            catch (Exception cleanup) when (cleanup is IOException or UnauthorizedAccessException)
+            {
+                kept = cleanup.Message;
+            }
+            if (e is not IOException) throw;
+            throw new IOException($"cannot write {path}: {e.Message}; the part written "
+                + (kept == null ? "was removed" : $"could not be removed ({kept})"), e);
+        }
+    }
+
+    /// <summary>Bytes free to this user on the disk that holds <paramref name="folder"/> (an existing folder), or null
+    /// where the system does not say.</summary>
+    public static long? FreeBytes(string folder)
+    {
+        try
+        {
+            return new DriveInfo(IoPath.GetFullPath(folder)).AvailableFreeSpace;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException)
+        {
+            return null;
+        }
+    }
+
     HashSet<string> ReadManifest()
     {
         var names = new HashSet<string>(StringComparer.Ordinal);

@@ -21,12 +21,22 @@ public sealed class ParticleExport
     /// <summary>Exports written so far.</summary>
     public int Count => _index.Entries.Count;
 
-    public void Write(double time, ReadOnlySpan<Particle> particles, ReadOnlySpan<Vector4> densities)
+    /// <summary>The bytes one export of <paramref name="particles"/> particles writes, less the files' headers and the
+    /// time index (a few kilobytes).</summary>
+    public static long BytesPerExport(long particles) => VtuParticles.DataBytes(particles) + PlyParticles.VertexBytes * particles;
+
+    /// <summary>How many exports a run of <paramref name="seconds"/> in <paramref name="frames"/> frames writes when it
+    /// exports every <paramref name="every"/> s: at 0, S, 2S ... as the frames' ends reach them, so at most one at the
+    /// start and one a frame.</summary>
+    public static long ExportsIn(double seconds, int frames, double every) =>
+        (long)Math.Min(frames + 1.0, Math.Floor(seconds / every + 1e-9) + 1.0);
+
+    public void Write(double time, Particle[] particles, Vector4[] densities)
     {
         string stem = string.Format(CultureInfo.InvariantCulture, "particles_{0:D4}", Count);
-        VtuParticles.Write(_output.PathOf(stem + ".vtu"), time, particles, densities);
-        PlyParticles.Write(_output.PathOf(stem + ".ply"), time, particles, densities);
+        _output.Write(stem + ".vtu", file => VtuParticles.Write(file, time, particles, densities));
+        _output.Write(stem + ".ply", file => PlyParticles.Write(file, time, particles, densities));
         _index.Add(time, stem + ".vtu");
-        _index.Write(_output.PathOf(IndexName));
+        _output.Write(IndexName, _index.Write);
     }
 }

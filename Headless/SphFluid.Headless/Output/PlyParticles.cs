@@ -20,8 +20,15 @@ public static class PlyParticles
     /// <param name="densities">Per particle, in the order of <paramref name="particles"/>: rho, p, delta, p/delta^2.</param>
     public static void Write(string path, double time, ReadOnlySpan<Particle> particles, ReadOnlySpan<Vector4> densities)
     {
-        if (densities.Length != particles.Length)
-            throw new ArgumentException($"PlyParticles: {densities.Length} densities for {particles.Length} particles");
+        RequireOnePerParticle(particles, densities);
+        using var file = File.Create(path);
+        Write(file, time, particles, densities);
+    }
+
+    /// <inheritdoc cref="Write(string, double, ReadOnlySpan{Particle}, ReadOnlySpan{Vector4})"/>
+    public static void Write(Stream stream, double time, ReadOnlySpan<Particle> particles, ReadOnlySpan<Vector4> densities)
+    {
+        RequireOnePerParticle(particles, densities);
         var header = new StringBuilder();
         header.Append("ply\n");
         header.Append("format binary_little_endian 1.0\n");
@@ -33,7 +40,7 @@ public static class PlyParticles
         header.Append("property float pressure\n");
         header.Append("end_header\n");
 
-        using var file = new BufferedStream(File.Create(path), 1 << 16);
+        using var file = new BufferedStream(stream, 1 << 16);
         file.Write(Encoding.ASCII.GetBytes(header.ToString()));
         Span<byte> vertex = stackalloc byte[VertexBytes];
         for (int i = 0; i < particles.Length; i++)
@@ -50,5 +57,11 @@ public static class PlyParticles
             BinaryPrimitives.WriteSingleLittleEndian(vertex[32..], densities[i].Y);
             file.Write(vertex);
         }
+    }
+
+    static void RequireOnePerParticle(ReadOnlySpan<Particle> particles, ReadOnlySpan<Vector4> densities)
+    {
+        if (densities.Length != particles.Length)
+            throw new ArgumentException($"PlyParticles: {densities.Length} densities for {particles.Length} particles");
     }
 }

@@ -38,7 +38,7 @@ public static class PngEncoder
         return png.ToArray();
     }
 
-    public static void Write(string path, RgbImage image) => File.WriteAllBytes(path, Encode(image));
+    public static void Write(Stream file, RgbImage image) => file.Write(Encode(image));
 
     static byte[] CompressScanlines(RgbImage image)
     {

@@ -19,10 +19,10 @@ public sealed class PvdTimeIndex
 
     public void Add(double time, string fileName) => _entries.Add((time, fileName));
 
-    public void Write(string path)
+    public void Write(Stream stream)
     {
         var c = CultureInfo.InvariantCulture;
-        using var xml = XmlWriter.Create(path, new XmlWriterSettings { Indent = true, Encoding = new UTF8Encoding(false), NewLineChars = "\n" });
+        using var xml = XmlWriter.Create(stream, new XmlWriterSettings { Indent = true, Encoding = new UTF8Encoding(false), NewLineChars = "\n" });
         xml.WriteStartDocument();
         xml.WriteStartElement("VTKFile");
         xml.WriteAttributeString("type", "Collection");

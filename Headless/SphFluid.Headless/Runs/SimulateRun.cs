@@ -29,6 +29,9 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
     /// <summary>Draw the progress bar (default: when stderr is a terminal).</summary>
     public bool InteractiveProgress { get; init; } = ProgressReporter.StderrIsTerminal;
 
+    /// <summary>Bytes free on the disk that holds a folder, or null where unknown (tests stand in for a full disk).</summary>
+    public Func<string, long?> FreeBytes { get; init; } = OutputFolder.FreeBytes;
+
     /// <summary>What --solver changed besides the solver (<see cref="SolverChoice.FitSupport"/>), printed with the plan.</summary>
     string? _solverNote;
 
@@ -54,6 +57,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             SceneFit.RequireScaled(description, "simulate", scaleOption, scale.ToString("G6", C));
             SceneFit.RequireDevice(description, device, "simulate", scene.Path, scale == 1.0 ? null : scaleOption, scale.ToString("G6", C));
             var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name), "--out", "simulate");
+            RequireExportSpace(output, SpawnLayout.TotalCount(description));
             using var simulation = new FluidSimulation(device, description);
             string scaled = sceneCount == simulation.ParticleCount ? ""
                 : string.Format(C, " (scene: {0}, scaled x{1:G4}{2})", sceneCount, scale, onCpu ? " on a CPU device: --cpu-particles-scale" : "");
@@ -65,6 +69,27 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         }
     }
 
+    /// <summary>
+    /// Refuses, before anything is simulated or exported, a run whose particle exports alone would not fit on the disk
+    /// of --out: one export of 1M particles is 112 MB, so --export-every over a long run can fill a disk, and a full
+    /// disk would stop the run part-way.
+    /// </summary>
+    void RequireExportSpace(OutputFolder output, long particles)
+    {
+        if (options.ExportEvery <= 0 || FreeBytes(output.Path) is not long free) return;
+        double duration = options.Duration;
+        long exports = ParticleExport.ExportsIn(duration, options.FrameCount, options.ExportEvery);
+        long each = ParticleExport.BytesPerExport(particles);
+        if (exports * each <= free) return;
+        long fit = free / each;
+        throw new UsageException(string.Format(C,
+            "simulate: --export-every {0:G4} s over {1:G4} s writes {2} exports of {3} particles, {4:F1} MB of .vtu and .ply, " +
+            "but the disk holding --out '{5}' has {6:F1} MB free ({7}); export less often, simulate less time, or choose a " +
+            "folder on a larger disk (no export was written)",
+            options.ExportEvery, duration, exports, particles, exports * each / 1e6, output.Path, free / 1e6,
+            fit == 0 ? "not one export fits" : fit == 1 ? "one export fits" : string.Format(C, "{0} exports fit, one every {1:G3} s", fit, duration / (fit - 1))));
+    }
+
     int Simulate(LoadedScene scene, FluidSimulation sim, IComputeDevice device, OutputFolder output, string scaled)
     {
         var description = scene.Description;
@@ -73,7 +98,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         var restContainer = description.Container.Clone();
         var restObstacles = description.Obstacles.Select(o => o.Clone()).ToList();
         int frames = options.FrameCount;
-        double duration = options.Frames > 0 ? frames * options.FrameSeconds : options.Seconds;
+        double duration = options.Duration;
 
         stdout.WriteLine($"scene: {scene.Path} ({scene.Name}): fluid '{scene.SimulatorObject}', container '{scene.ContainerObject}' "
             + string.Format(C, "{0:G4} x {1:G4} x {2:G4} m", restContainer.Size.X, restContainer.Size.Y, restContainer.Size.Z)
@@ -139,8 +164,10 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             if (snap)
             {
                 foreach (var (view, prefix) in views)
-                    PngEncoder.Write(output.PathOf(string.Format(C, "{0}_{1:D4}.png", prefix, snapshots)),
-                        SnapshotRenderer.Render(view, particles, phases, container, obstacles, settings.ParticleSpacing));
+                {
+                    var image = SnapshotRenderer.Render(view, particles, phases, container, obstacles, settings.ParticleSpacing);
+                    output.Write(string.Format(C, "{0}_{1:D4}.png", prefix, snapshots), file => PngEncoder.Write(file, image));
+                }
                 snapshots++;
                 while (nextSnapshot <= t + 1e-9) nextSnapshot += options.SnapshotEvery;
             }

@@ -109,6 +109,29 @@ namespace SphFluid.Tests.Output
             Assert.That(sets.Select(s => double.Parse(s.GetAttribute("timestep"), CultureInfo.InvariantCulture)).ToArray(), Is.EqualTo(new[] { 0.0, 0.25 }));
         }
 
+        [TestCase(1)]
+        [TestCase(1000)]
+        [TestCase(4160)]
+        public void AnExportsSizeIsKnownBeforeItIsWritten(int n)
+        {
+            string dir = RunnerPaths.ScratchFolder("export-size-" + n);
+            var export = new ParticleExport(OutputFolder.Claim(dir, "--out", "test"));
+            var (particles, densities) = Sample(n, 5);
+
+            export.Write(0.5, particles, densities);
+
+            long written = new FileInfo(Path.Combine(dir, "particles_0000.vtu")).Length + new FileInfo(Path.Combine(dir, "particles_0000.ply")).Length;
+            // The estimate leaves out the files' headers only: about a kilobyte of XML and 250 bytes of PLY.
+            Assert.That(written - ParticleExport.BytesPerExport(n), Is.InRange(0, 2048), $"{written} bytes written");
+        }
+
+        [TestCase(0.3, 18, 0.05, 7)]
+        [TestCase(0.05, 3, 0.025, 3)]
+        [TestCase(1.0, 60, 0.001, 61)] // at most one a frame and one at the start
+        [TestCase(0.5, 30, 10.0, 1)]
+        public void ExportsComeAtTheStartAndEveryIntervalAFrameReaches(double seconds, int frames, double every, long exports) =>
+            Assert.That(ParticleExport.ExportsIn(seconds, frames, every), Is.EqualTo(exports));
+
         [Test]
         public void ExportNamesBelongToTheRunner()
         {

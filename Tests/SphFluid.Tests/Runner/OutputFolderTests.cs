@@ -130,5 +130,25 @@ namespace SphFluid.Tests.Runner
             Assert.That(e.Message, Does.Contain("is a file, not a folder"));
             Assert.That(File.ReadAllText(file), Is.EqualTo("x"));
         }
+
+        [Test]
+        public void AWriteThatFailsLeavesNoPartOfItsFile()
+        {
+            string dir = RunnerPaths.ScratchFolder("failed-write");
+            var output = OutputFolder.Claim(dir, "--out", "test");
+            string path = Path.Combine(dir, "frame_0000.png");
+
+            // As a full disk fails a write part-way.
+            var failure = Assert.Throws<IOException>(() => output.Write("frame_0000.png", file =>
+            {
+                file.Write(new byte[4096]);
+                file.Flush();
+                throw new IOException("No space left on device");
+            })).OrFail("the failure");
+
+            Assert.That(failure.Message, Is.EqualTo($"cannot write {path}: No space left on device; the part written was removed"));
+            Assert.That(File.Exists(path), Is.False, "no truncated file is left to pass for an output");
+            Assert.That(File.ReadAllLines(Path.Combine(dir, OutputFolder.ManifestName)), Does.Contain("frame_0000.png"), "the name stays claimed");
+        }
     }
 }

@@ -126,6 +126,23 @@ namespace SphFluid.Tests.Runner
         }
 
         [Test]
+        public void ExportsThatWouldNotFitOnTheDiskAreRefusedBeforeTheRun()
+        {
+            string outDir = RunnerPaths.ScratchFolder("export-full-disk");
+            var options = SimulateOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--seconds", "0.05", "--export-every", "0.025", "--out", outDir, "--quiet" });
+            // Three exports of 192 particles take 3 x 21 536 bytes; the disk stands in with room for two.
+            var run = new SimulateRun(options, new StringWriter(), new StringWriter())
+                { Device = GpuTestDevice.Shared, InteractiveProgress = false, FreeBytes = _ => 50_000 };
+
+            var refusal = Assert.Throws<UsageException>(() => run.Execute()).OrFail("the refusal");
+
+            Assert.That(refusal.Message, Does.StartWith("simulate: --export-every 0.025 s over 0.05 s writes 3 exports of 192 particles, 0.1 MB of .vtu and .ply"));
+            Assert.That(refusal.Message, Does.Contain($"the disk holding --out '{outDir}' has 0.1 MB free (2 exports fit, one every 0.05 s)"));
+            Assert.That(Directory.EnumerateFiles(outDir, "particles*"), Is.Empty, "no export was written");
+            Assert.That(run.Summary, Is.Null, "nothing was simulated");
+        }
+
+        [Test]
         public void TheHelpNamesTheExportAndTheMeasures()
         {
             var stdout = new StringWriter();
