@@ -128,16 +128,17 @@ public sealed class ShaderCompiler
             var (valCode, valText) = Run(_spirvVal, new[] { "--target-env", "vulkan1.1", "--scalar-block-layout", output });
             if (valCode != 0)
                 throw new ComputeException($"{source.Path}: kernel '{kernel}'{DefinesText(defines)} compiled to invalid SPIR-V (spirv-val): {valText.Trim()}");
+            string staging = cached + "." + Guid.NewGuid().ToString("N") + ".tmp";
             try
             {
                 Directory.CreateDirectory(CacheDirectory);
-                string staging = cached + "." + Guid.NewGuid().ToString("N") + ".tmp";
                 File.WriteAllBytes(staging, bytes);
                 File.Move(staging, cached, overwrite: true);
             }
             catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
             {
-                // A read-only cache only costs time.
+                // A read-only or full cache only costs time; a full one must not keep the part it took.
+                try { File.Delete(staging); } catch (Exception cleanup) when (cleanup is IOException || cleanup is UnauthorizedAccessException) { }
             }
             return ToWords(bytes);
         }
