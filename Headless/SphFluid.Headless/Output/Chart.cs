@@ -39,13 +39,17 @@ public sealed class Chart
     }
 
     /// <summary>Writes <paramref name="stem"/>.png and <paramref name="stem"/>.svg through the output folder (so they are
-    /// recorded as the run's own files).</summary>
+    /// recorded as the run's own files, and written whole or not at all).</summary>
     public void Save(OutputFolder folder, string stem)
     {
         if (LegendBelow) Plot.ShowLegend(Edge.Bottom);
         else Plot.ShowLegend(LegendCorner);
-        Plot.SavePng(folder.PathOf(stem + ".png"), Width, Height);
-        Plot.SaveSvg(folder.PathOf(stem + ".svg"), Width, Height);
+        byte[] png;
+        using (var image = Plot.GetImage(Width, Height))
+            png = image.GetImageBytes(ImageFormat.Png, 100);
+        string svg = Plot.GetSvgXml(Width, Height);
+        folder.Write(stem + ".png", file => file.Write(png));
+        folder.WriteText(stem + ".svg", svg);
     }
 
     static void LoadFont()

@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.IO;
 using IoPath = System.IO.Path;
 using System.Linq;
+using System.Text;
 using System.Text.RegularExpressions;
 using SphFluid.Headless.Cli;
 
@@ -116,6 +117,13 @@ public sealed class OutputFolder
             throw new IOException($"cannot write {path}: {e.Message}; the part written "
                 + (kept == null ? "was removed" : $"could not be removed ({kept})"), e);
         }
+    }
+
+    /// <summary><see cref="Write"/> of <paramref name="text"/> in UTF-8 without a byte order mark.</summary>
+    public void WriteText(string fileName, string text)
+    {
+        byte[] bytes = new UTF8Encoding(false).GetBytes(text);
+        Write(fileName, file => file.Write(bytes));
     }
 
     /// <summary>Bytes free to this user on the disk that holds <paramref name="folder"/> (an existing folder), or null

@@ -218,7 +218,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             Settings = settings,
             CutOffs = cutOffs,
         };
-        File.WriteAllText(output.PathOf("summary.txt"), Summary.ToText());
+        output.WriteText("summary.txt", Summary.ToText());
         stdout.WriteLine(Summary.OneLine());
         if (Summary.CutOffWarning() is string warning) stderr.WriteLine($"simulate: warning: {warning}");
         if (failure != null)

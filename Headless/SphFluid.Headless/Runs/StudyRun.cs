@@ -106,9 +106,9 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
                     row.Failure != null ? " FAILED: " + row.Failure : ""));
             }
             CompareWithFinest(scene.Description.Container);
-            File.WriteAllText(output.PathOf("study.csv"), Csv());
+            output.WriteText("study.csv", Csv());
             string table = Markdown(scene.Name, DeviceFactory.Describe(device));
-            File.WriteAllText(output.PathOf("study.md"), table);
+            output.WriteText("study.md", table);
             stdout.Write(table);
             StudyParetoChart.Build(scene.Name, device.DeviceName, Rows).Save(output, StudyParetoChart.Stem);
             stdout.WriteLine();
