@@ -51,10 +51,10 @@ public static class Program
             stderr.WriteLine($"sphfluid: no Vulkan device: {e.Message} (install Mesa's lavapipe: Headless/install-deps.sh, or set VK_LOADER_DRIVERS_SELECT)");
             return ExitCodes.Failure;
         }
-        catch (IOException e)
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
-            // A full disk or a folder taken away mid-run: the environment's failure, not the program's, and the message
-            // names the file.
+            // A full disk, or a folder taken away or made read-only mid-run: the environment's failure, not the
+            // program's, and the message names the file.
             stderr.WriteLine($"sphfluid: file error, the command stopped: {e.Message}");
             return ExitCodes.Failure;
         }

@@ -37,8 +37,9 @@ public sealed class OutputFolder
     /// <summary>
     /// Creates the folder if needed and removes the files an earlier run recorded in its manifest. Refuses
     /// (<see cref="UsageException"/> naming <paramref name="option"/>) an empty path, a path that is a file,
-    /// a folder holding a runner-named file that no manifest claims, and a manifest that is not a plain file: the run
-    /// writes it, and a link there would have it write through to whatever file the link names.
+    /// a folder holding a runner-named file that no manifest claims or a folder under a runner's file name (the run
+    /// would fail at that file part-way), and a manifest that is not a plain file: the run writes it, and a link there
+    /// would have it write through to whatever file the link names.
     /// </summary>
     public static OutputFolder Claim(string path, string option, string command)
     {
@@ -53,6 +54,15 @@ public sealed class OutputFolder
             if (Directory.Exists(folder.ManifestPath) || new FileInfo(folder.ManifestPath).LinkTarget != null)
                 throw new UsageException($"{command}: {option} '{path}' holds a {ManifestName} that is a link or a folder, not the plain file " +
                     "sphfluid writes; choose an empty or new folder (nothing was changed)");
+            var blocking = Directory.EnumerateDirectories(path)
+                .Select(dir => IoPath.GetFileName(dir))
+                .Where(IsRunnerName)
+                .OrderBy(name => name, StringComparer.Ordinal)
+                .ToList();
+            if (blocking.Count > 0)
+                throw new UsageException($"{command}: {option} '{path}' holds a folder named {string.Join(", ", blocking.Take(3))}"
+                    + (blocking.Count > 3 ? $" and {blocking.Count - 3} more" : "")
+                    + ", where sphfluid writes a file; choose an empty or new folder (nothing was changed)");
             var claimed = folder.ReadManifest();
             var foreign = Directory.EnumerateFiles(path)
                 .Select(file => IoPath.GetFileName(file))
@@ -113,7 +123,7 @@ public sealed class OutputFolder
             {
                 kept = cleanup.Message;
             }
-            if (e is not IOException) throw;
+            if (e is not (IOException or UnauthorizedAccessException)) throw;
             throw new IOException($"cannot write {path}: {e.Message}; the part written "
                 + (kept == null ? "was removed" : $"could not be removed ({kept})"), e);
         }

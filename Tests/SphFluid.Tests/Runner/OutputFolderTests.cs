@@ -132,6 +132,21 @@ namespace SphFluid.Tests.Runner
         }
 
         [Test]
+        public void AFolderUnderARunnersFileNameIsRefusedBeforeTheRun()
+        {
+            string dir = RunnerPaths.ScratchFolder("folder-as-frame");
+            Directory.CreateDirectory(Path.Combine(dir, "frame_0000.png"));
+            File.WriteAllText(Path.Combine(dir, "notes.txt"), "mine");
+
+            int code = Simulate(dir, "0.05", out _, out string stderr);
+
+            Assert.That(code, Is.EqualTo(ExitCodes.BadArguments), stderr);
+            Assert.That(stderr, Does.Contain($"--out '{dir}' holds a folder named frame_0000.png, where sphfluid writes a file; choose an empty or new folder (nothing was changed)"));
+            Assert.That(Directory.EnumerateFileSystemEntries(dir).Select(Path.GetFileName).OrderBy(n => n), Is.EqualTo(new[] { "frame_0000.png", "notes.txt" }),
+                "no diagnostics, no manifest: the run never started");
+        }
+
+        [Test]
         public void AWriteThatFailsLeavesNoPartOfItsFile()
         {
             string dir = RunnerPaths.ScratchFolder("failed-write");
