@@ -62,6 +62,14 @@ public sealed class SimulateOptions(string scenePath)
 
     /// <summary>Simulated seconds the run takes: --seconds, or --steps frames of --frame-seconds.</summary>
     public double Duration => Frames > 0 ? Frames * FrameSeconds : Seconds;
+
+    /// <summary>How many times an output due every <paramref name="every"/> s comes over the run: at 0, S, 2S ... as the
+    /// frames' ends reach them, so at most one at the start and one a frame.</summary>
+    public long Looks(double every) => Looks(Duration, FrameCount, every);
+
+    /// <inheritdoc cref="Looks(double)"/>
+    public static long Looks(double seconds, int frames, double every) =>
+        (long)Math.Min(frames + 1.0, Math.Floor(seconds / every + 1e-9) + 1.0);
 }
 
 /// <summary>The <c>simulate</c> command's syntax and generated help.</summary>

@@ -25,12 +25,6 @@ public sealed class ParticleExport
     /// time index (a few kilobytes).</summary>
     public static long BytesPerExport(long particles) => VtuParticles.DataBytes(particles) + PlyParticles.VertexBytes * particles;
 
-    /// <summary>How many exports a run of <paramref name="seconds"/> in <paramref name="frames"/> frames writes when it
-    /// exports every <paramref name="every"/> s: at 0, S, 2S ... as the frames' ends reach them, so at most one at the
-    /// start and one a frame.</summary>
-    public static long ExportsIn(double seconds, int frames, double every) =>
-        (long)Math.Min(frames + 1.0, Math.Floor(seconds / every + 1e-9) + 1.0);
-
     public void Write(double time, Particle[] particles, Vector4[] densities)
     {
         string stem = string.Format(CultureInfo.InvariantCulture, "particles_{0:D4}", Count);

@@ -78,7 +78,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
     {
         if (options.ExportEvery <= 0 || FreeBytes(output.Path) is not long free) return;
         double duration = options.Duration;
-        long exports = ParticleExport.ExportsIn(duration, options.FrameCount, options.ExportEvery);
+        long exports = options.Looks(options.ExportEvery);
         long each = ParticleExport.BytesPerExport(particles);
         if (exports * each <= free) return;
         long fit = free / each;
@@ -179,6 +179,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         }
 
         Observe(force: true);
+        WarnIfTheOutputsOutgrowTheDisk(output, export);
         while (failure == null && (options.Frames > 0 ? frame < frames : sim.SimulatedTime < duration - 1e-6))
         {
             float frameSeconds = Math.Max(1e-6f,
@@ -227,6 +228,32 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             return ExitCodes.SimulationFailed;
         }
         return ExitCodes.Ok;
+    }
+
+    /// <summary>
+    /// Once the first snapshots are written, and so their size is known, warns where the snapshots and exports still to
+    /// come would not fit on the disk of --out: a long run at the default --frames-every writes four PNGs a simulated
+    /// second, and would otherwise stop with a file error only when the disk fills.
+    /// </summary>
+    void WarnIfTheOutputsOutgrowTheDisk(OutputFolder output, ParticleExport? export)
+    {
+        if (FreeBytes(output.Path) is not long free) return;
+        long SizeOf(string name)
+        {
+            var file = new FileInfo(Path.Combine(output.Path, name));
+            return file.Exists ? file.Length : 0;
+        }
+        long snapshotBytes = SizeOf("frame_0000.png") + SizeOf("top_0000.png");
+        long snapshotsToCome = options.Looks(options.SnapshotEvery); // less the first, plus a last look: one too many at most
+        long exportsToCome = export == null ? 0 : options.Looks(options.ExportEvery) - export.Count;
+        long exportBytes = SizeOf("particles_0000.vtu") + SizeOf("particles_0000.ply");
+        long needed = snapshotsToCome * snapshotBytes + exportsToCome * exportBytes;
+        if (needed <= free) return;
+        stderr.WriteLine(string.Format(C,
+            "simulate: warning: {0} more snapshot(s) ({1:F0} KB each) and {2} more export(s) need about {3:F1} MB, more than the " +
+            "{4:F1} MB free on the disk holding --out '{5}'; the run will stop with a file error when the disk fills (raise " +
+            "--frames-every or --export-every, or free some space)",
+            snapshotsToCome, snapshotBytes / 1e3, exportsToCome, needed / 1e6, free / 1e6, output.Path));
     }
 
     static int CountOf(FluidSceneDescription scene, int phase, FluidSimulation sim)

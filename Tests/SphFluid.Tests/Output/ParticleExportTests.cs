@@ -130,7 +130,7 @@ namespace SphFluid.Tests.Output
         [TestCase(1.0, 60, 0.001, 61)] // at most one a frame and one at the start
         [TestCase(0.5, 30, 10.0, 1)]
         public void ExportsComeAtTheStartAndEveryIntervalAFrameReaches(double seconds, int frames, double every, long exports) =>
-            Assert.That(ParticleExport.ExportsIn(seconds, frames, every), Is.EqualTo(exports));
+            Assert.That(SphFluid.Headless.Cli.SimulateOptions.Looks(seconds, frames, every), Is.EqualTo(exports));
 
         [Test]
         public void ExportNamesBelongToTheRunner()

@@ -143,6 +143,23 @@ namespace SphFluid.Tests.Runner
         }
 
         [Test]
+        public void SnapshotsThatWouldOutgrowTheDiskAreWarnedOfOnceTheFirstIsWritten()
+        {
+            string outDir = RunnerPaths.ScratchFolder("snapshots-full-disk");
+            var options = SimulateOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--seconds", "0.05", "--frames-every", "0.0166", "--out", outDir, "--quiet" });
+            var stderr = new StringWriter();
+            // A disk with room for the first snapshot but not the three to come (the run itself writes to the real one).
+            var run = new SimulateRun(options, new StringWriter(), stderr)
+                { Device = GpuTestDevice.Shared, InteractiveProgress = false, FreeBytes = _ => 1_000 };
+
+            int code = run.Execute();
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok), stderr.ToString());
+            Assert.That(stderr.ToString(), Does.Match(@"simulate: warning: 4 more snapshot\(s\) \(\d+ KB each\) and 0 more export\(s\) need about 0\.\d MB, " +
+                "more than the 0.0 MB free on the disk holding --out '.*'; the run will stop with a file error when the disk fills"));
+        }
+
+        [Test]
         public void TheHelpNamesTheExportAndTheMeasures()
         {
             var stdout = new StringWriter();
