@@ -54,25 +54,13 @@ public sealed class OutputFolder
             if (Directory.Exists(folder.ManifestPath) || new FileInfo(folder.ManifestPath).LinkTarget != null)
                 throw new UsageException($"{command}: {option} '{path}' holds a {ManifestName} that is a link or a folder, not the plain file " +
                     "sphfluid writes; choose an empty or new folder (nothing was changed)");
-            var blocking = Directory.EnumerateDirectories(path)
-                .Select(dir => IoPath.GetFileName(dir))
-                .Where(IsRunnerName)
-                .OrderBy(name => name, StringComparer.Ordinal)
-                .ToList();
-            if (blocking.Count > 0)
-                throw new UsageException($"{command}: {option} '{path}' holds a folder named {string.Join(", ", blocking.Take(3))}"
-                    + (blocking.Count > 3 ? $" and {blocking.Count - 3} more" : "")
-                    + ", where sphfluid writes a file; choose an empty or new folder (nothing was changed)");
+            if (FirstNames(Directory.EnumerateDirectories(path), IsRunnerName) is string folders)
+                throw new UsageException($"{command}: {option} '{path}' holds a folder named {folders}, where sphfluid writes a file; " +
+                    "choose an empty or new folder (nothing was changed)");
             var claimed = folder.ReadManifest();
-            var foreign = Directory.EnumerateFiles(path)
-                .Select(file => IoPath.GetFileName(file))
-                .Where(name => IsRunnerName(name) && !claimed.Contains(name))
-                .OrderBy(name => name, StringComparer.Ordinal)
-                .ToList();
-            if (foreign.Count > 0)
-                throw new UsageException($"{command}: {option} '{path}' already holds {string.Join(", ", foreign.Take(3))}"
-                    + (foreign.Count > 3 ? $" and {foreign.Count - 3} more" : "")
-                    + " that sphfluid did not write; choose an empty or new folder (nothing was deleted)");
+            if (FirstNames(Directory.EnumerateFiles(path), name => IsRunnerName(name) && !claimed.Contains(name)) is string foreign)
+                throw new UsageException($"{command}: {option} '{path}' already holds {foreign} that sphfluid did not write; " +
+                    "choose an empty or new folder (nothing was deleted)");
             foreach (string name in claimed)
             {
                 string file = IoPath.Combine(path, name);
@@ -85,6 +73,15 @@ public sealed class OutputFolder
         {
             throw new UsageException($"{command}: {option} '{path}' cannot be used as the output folder: {e.Message}");
         }
+    }
+
+    /// <summary>The first three names of <paramref name="entries"/> that <paramref name="match"/>, in order, and how many
+    /// more; null where none does.</summary>
+    static string? FirstNames(IEnumerable<string> entries, Func<string, bool> match)
+    {
+        var names = entries.Select(entry => IoPath.GetFileName(entry)).Where(match).OrderBy(name => name, StringComparer.Ordinal).ToList();
+        if (names.Count == 0) return null;
+        return string.Join(", ", names.Take(3)) + (names.Count > 3 ? $" and {names.Count - 3} more" : "");
     }
 
     string ManifestPath => IoPath.Combine(Path, ManifestName);
