@@ -113,7 +113,9 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         stdout.WriteLine(SolverChoice.Describe(settings, sim));
         if (_solverNote != null) stdout.WriteLine(_solverNote);
         stdout.WriteLine(string.Format(C, "device: {0}", DeviceFactory.Describe(device)));
-        stdout.WriteLine(string.Format(C, "run: {0:G4} s simulated in {1} frames of {2:G4} ms; output: {3}", duration, frames, options.FrameSeconds * 1000, Path.GetFullPath(output.Path)));
+        stdout.WriteLine(string.Format(C, "run: {0:G4} s simulated in {1} frames of {2:G4} ms; output: {3}", duration, frames, options.FrameSeconds * 1000, Path.GetFullPath(output.Path))
+            + (options.ExportEvery > 0 ? string.Format(C, "; exports every {0:G4} s: {1} of {2:F2} MB", options.ExportEvery,
+                options.Looks(options.ExportEvery), ParticleExport.BytesPerExport(sim.ParticleCount) / 1e6) : ""));
         stdout.Flush();
 
         var views = new List<(SnapshotView View, string Prefix)> { (new SnapshotView(ViewAxis.Side, restContainer, scene.Motion.MovesContainer, options.ImageWidth), "frame") };

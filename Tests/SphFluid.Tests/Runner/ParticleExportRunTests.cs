@@ -123,6 +123,7 @@ namespace SphFluid.Tests.Runner
             Assert.That(summaryText, Does.Contain("surge front: "));
             Assert.That(stdout.ToString(), Does.Contain(" PE="));
             Assert.That(stdout.ToString(), Does.Contain("3 particle export(s)"));
+            Assert.That(stdout.ToString(), Does.Contain("; exports every 0.025 s: 3 of 0.02 MB"), "the run line says what the exports take");
         }
 
         [Test]
