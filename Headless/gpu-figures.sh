@@ -150,9 +150,10 @@ step() { # seconds allowed, then sphfluid's arguments; SPHFLUID_APP names anothe
     local limit=$1; shift
     local app="${SPHFLUID_APP:-$home/app}"
     say "\$ ${app#"$unpacked"/}/sphfluid $*"
-    local code=0
+    local code=0 started=$SECONDS
     timeout --kill-after=10 "$limit" "$app/sphfluid" "$@" >>"$log" 2>&1 || code=$?
-    say "exit $code"
+    # the seconds each step took, so that the next call's stages and limits can be sized to the device time left
+    say "exit $code after $((SECONDS - started)) s of $limit"
 }
 
 # bench at BENCH_PARTICLES of the scene under $2 (wcsph or dfsph) in the tree rooted at $1, into $scratch/$3; or, for
