@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Estimates DFSPH's GPU time per simulated second at a sub-step and iteration counts measured elsewhere (a slice
-# probe on lavapipe, say), from the per-kernel table a GPU printed for `sphfluid bench --solver dfsph` (the first DFSPH
-# "Per kernel" table of FILE, a log of Headless/gpu-figures.sh). It reads no GPU itself, so it answers what a sub-step
-# at those iterations would cost on the GPU that printed FILE, with what every pass cost there.
+# probe on lavapipe, say), from the per-kernel table a GPU printed for `sphfluid bench --solver dfsph` (of FILE's DFSPH
+# "Per kernel" tables, the first at the most particles; FILE a log of Headless/gpu-figures.sh). It reads no GPU
+# itself, so it answers what a sub-step at those iterations would cost on the GPU that printed FILE, with what every
+# pass cost there.
 #
 # A sub-step records (FluidSimulation.Solve) each solve's warm start as one ApplyStiffness, then rounds of error pass,
 # BoundarySolveError and SolveFinal, each but the last followed by an ApplyStiffness: n corrections cost n + 1 error
@@ -33,14 +34,20 @@ done
 awk -v file="$file" -v step="$step" -v nd="$density" -v nv="$divergence" '
     /^solver: DFSPH/ { dfsph = 1 }
     /^solver: / && !/^solver: DFSPH/ { dfsph = 0 }
-    dfsph && !done && /^Per kernel at / { inTable = 1; particles = $4; next }
+    # The table of the most particles (the first of them): a log of gpu-figures.sh can hold the smaller DFSPH rows of
+    # its scenes stage before the 1M bench that the estimate is about.
+    dfsph && /^Per kernel at / {
+        inTable = ($4 + 0 > particles + 0)
+        if (inTable) { particles = $4; kernels = 0; split("", order); split("", calls); split("", ms) }
+        next
+    }
     inTable && $2 == "kernel" { ranColumn = ($6 == "ran"); next }
     inTable && /^\| [A-Za-z]/ {
         name = $2; order[++kernels] = name
         if (ranColumn) { calls[name] = $6; ms[name] = $8 } else { calls[name] = $4; ms[name] = $6 }
         next
     }
-    inTable && /^$/ && kernels > 0 { inTable = 0; done = 1 }
+    inTable && /^$/ && kernels > 0 { inTable = 0 }
     END {
         if (kernels == 0) { printf "realtime-estimate: %s holds no DFSPH per-kernel table (sphfluid bench --solver dfsph)\n", file > "/dev/stderr"; exit 2 }
         split("ApplyStiffness DensitySolveError DivergenceSolveError BoundarySolveError SolveFinal", needed, " ")

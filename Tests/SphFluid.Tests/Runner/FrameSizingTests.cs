@@ -22,11 +22,11 @@ namespace SphFluid.Tests.Runner
         [Test]
         public void EveryShippedSceneFitsItsBandwidthBound()
         {
-            var bounds = BandwidthBounds(Path.Combine(GpuTestDevice.RepoRoot, "Headless", "figures", "gpu-h200-scenes.txt"));
+            var bounds = BandwidthBounds(Path.Combine(GpuTestDevice.RepoRoot, "Headless", "figures", "gpu-h200-half-support-cells.txt"));
 
             foreach (string name in RunnerPaths.ShippedScenes.Where(n => n != "PlayModeTest"))
             {
-                Assert.That(bounds.ContainsKey(name), Is.True, $"{name} has a bandwidth bound in gpu-h200-scenes.txt");
+                Assert.That(bounds.ContainsKey(name), Is.True, $"{name} has a bandwidth bound in gpu-h200-half-support-cells.txt");
                 int count = SpawnLayout.TotalCount(SceneLoader.Load(RunnerPaths.Scene(name), RunnerPaths.Project).Description);
                 Assert.That(count, Is.LessThanOrEqualTo(bounds[name]), name);
             }
@@ -38,7 +38,7 @@ namespace SphFluid.Tests.Runner
             string? scene = null;
             foreach (string line in File.ReadLines(benchOutput))
             {
-                var command = Regex.Match(line, @"^\$ sphfluid bench Assets/FluidDemo/Scenes/(\w+)\.unity");
+                var command = Regex.Match(line, @"^\$ (?:sphfluid-gpu/app/)?sphfluid bench Assets/FluidDemo/Scenes/(\w+)\.unity");
                 if (command.Success) scene = line.Contains("--solver dfsph") ? null : command.Groups[1].Value;
                 var bound = Regex.Match(line, @"^- on a GPU 16\.7 times slower per particle: about ([\d,]+) particles");
                 if (bound.Success && scene != null)

@@ -79,6 +79,17 @@ namespace SphFluid.Tests.Runner
             Assert.That(output, Does.Contain($"warm starts: {2 * perRun:F3} ms (2 x ApplyStiffness {perRun:F3})"));
         }
 
+        /// <summary>A log of gpu-figures.sh whose scenes stage printed a DFSPH table at 271k particles before the 1M bench:
+        /// the estimate reads the 1M table, which is what it is about.</summary>
+        [Test]
+        public void ALogIsReadAtItsMostParticles()
+        {
+            var (exitCode, output, error) = Estimate("Headless/figures/gpu-h200-half-support-cells.txt", "5", "2", "2");
+            Assert.That(exitCode, Is.EqualTo(0), error);
+            Assert.That(output, Does.Contain("DFSPH at 1000482 particles"));
+            Assert.That(output, Does.Contain("sub-step of 5 ms at 2 + 2 corrections: 10.072 ms GPU = 3.215 fixed + 1.027 warm starts"));
+        }
+
         [TestCase(new[] { Profile, "5", "2" }, "usage: realtime-estimate.sh FILE SUBSTEP_MS DENSITY_ITERATIONS DIVERGENCE_ITERATIONS")]
         [TestCase(new[] { "Headless/figures/none.txt", "5", "2", "2" }, "FILE 'Headless/figures/none.txt' is not a file")]
         [TestCase(new[] { Profile, "0", "2", "2" }, "SUBSTEP_MS must be a number of milliseconds above 0 (was '0')")]
