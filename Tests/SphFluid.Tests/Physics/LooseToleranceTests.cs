@@ -26,7 +26,8 @@ namespace SphFluid.Tests.Physics
     /// particles at 0.037 s (62 and 69 m/s; Headless/figures/gpu-h200-study.txt); the top is now at least the relaxed
     /// Jacobi step's bound (ChebyshevBounds.JacobiLimit). These runs no longer take accelerated constant-density steps at
     /// 1 %, which a fluid does only past 60 spacings deep, beyond what CI runs; with that bound removed (a hand edit) this
-    /// case and 25 900 at 0.35 and 0.2 %, accelerated, stayed healthy for 0.1 s, so ChebyshevBoundsTests alone hold it.</para>
+    /// case and 25 900 at 0.35 and 0.2 %, accelerated, stayed healthy for 0.1 s, so ChebyshevBoundsTests alone hold it.
+    /// The H200's 100k and 250k rows at 1 % ran healthy for 1 s at 8e65ea2 (Headless/figures/gpu-h200-half-support-cells.txt).</para>
     /// <para>Each liquid's compression, averaged over the frames from 0.033 s, must be within the tolerance. The solve
     /// stops at 0.9 of it on a first-order prediction (FluidSimulation.DensityPredictionMargin); with the accelerated
     /// constant-density solve at 25 900 particles the second-order part it misses was more than that tenth (0.950 % for
