@@ -48,7 +48,13 @@ public sealed class OutputFolder
         try
         {
             if (File.Exists(path))
+            {
+                // A link that loops, or leads to a file or nowhere, reads as a file here: say it is a link.
+                if (new FileInfo(path).LinkTarget is string target)
+                    throw new UsageException($"{command}: {option} '{path}' is a symbolic link to '{target}' that does not lead to a folder; " +
+                        "give a folder or a new path (nothing was changed)");
                 throw new UsageException($"{command}: {option} '{path}' is a file, not a folder");
+            }
             Directory.CreateDirectory(path);
             var folder = new OutputFolder(path);
             if (Directory.Exists(folder.ManifestPath) || new FileInfo(folder.ManifestPath).LinkTarget != null)

@@ -131,6 +131,26 @@ namespace SphFluid.Tests.Runner
             Assert.That(File.ReadAllText(file), Is.EqualTo("x"));
         }
 
+        /// <summary>A link that loops (ln -s loop loop) was refused as "a file, not a folder"; it is a link.</summary>
+        [Test]
+        public void AnOutputPathThatIsALinkToNoFolderIsRefusedAsALink()
+        {
+            string dir = RunnerPaths.ScratchFolder("link-loop");
+            string loop = Path.Combine(dir, "loop");
+            File.CreateSymbolicLink(loop, "loop");
+            string file = Path.Combine(dir, "file");
+            File.WriteAllText(file, "x");
+            string toFile = Path.Combine(dir, "to-file");
+            File.CreateSymbolicLink(toFile, file);
+
+            var e = Assert.Throws<UsageException>(() => OutputFolder.Claim(loop, "--out", "simulate"));
+            Assert.That(e.Message, Is.EqualTo($"simulate: --out '{loop}' is a symbolic link to 'loop' that does not lead to a folder; give a folder or a new path (nothing was changed)"));
+            e = Assert.Throws<UsageException>(() => OutputFolder.Claim(toFile, "--out", "simulate"));
+            Assert.That(e.Message, Does.Contain($"'{toFile}' is a symbolic link to '{file}' that does not lead to a folder"));
+            Assert.That(File.ReadAllText(file), Is.EqualTo("x"));
+            Assert.That(Directory.EnumerateFileSystemEntries(dir).Count(), Is.EqualTo(3), "nothing was written beside them");
+        }
+
         [Test]
         public void AFolderUnderARunnersFileNameIsRefusedBeforeTheRun()
         {
