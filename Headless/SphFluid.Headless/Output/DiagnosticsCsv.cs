@@ -29,18 +29,31 @@ public sealed class DiagnosticsCsv : IDisposable
     static readonly string[] PhaseColumns =
         { "count", "compression_avg", "compression_max", "expansion_avg", "expansion_max", "mean_height_m", "bottom_m", "top_m", "floor_share", "wall_share" };
 
-    readonly StreamWriter _writer;
+    static readonly UTF8Encoding Utf8 = new(false);
+
+    readonly Stream _file;
+    readonly string _path;
     readonly int _phaseCount;
 
+    /// <summary>Creates the file at <paramref name="path"/>, unbuffered so that a line a full disk refuses fails at its
+    /// own write and can be cut back (<see cref="WriteLine"/>).</summary>
     public DiagnosticsCsv(string path, IReadOnlyList<PhaseDescription> phases)
+        : this(new FileStream(path, FileMode.Create, FileAccess.Write, FileShare.Read, bufferSize: 0), path, phases)
     {
+    }
+
+    /// <summary>Writes to <paramref name="file"/>, which it owns from here, and names <paramref name="path"/> in its errors
+    /// (a test passes a stream that fails as a full disk does).</summary>
+    public DiagnosticsCsv(Stream file, string path, IReadOnlyList<PhaseDescription> phases)
+    {
+        _file = file;
+        _path = path;
         _phaseCount = phases.Count;
-        _writer = new StreamWriter(path, false, new UTF8Encoding(false)) { NewLine = "\n" };
         var header = new StringBuilder("time_s,frame,substeps,dt_s,particles,total_mass_kg,kinetic_energy_J,max_speed_mps,nan_count,outside_count");
         foreach (string n in ColumnPrefixes(phases))
             foreach (string column in PhaseColumns) header.Append(',').Append(n).Append('_').Append(column);
         header.Append(",layering_index,interface_tilt_m,surge_front_m,back_wall_column_m,potential_energy_J,clamp_hits,density_iterations,divergence_iterations,divergence_error_pct_per_s,density_solves_cut_off,divergence_solves_cut_off");
-        _writer.WriteLine(header);
+        WriteLine(header.ToString());
     }
 
     public void Append(DiagnosticsRow row)
@@ -62,8 +75,37 @@ public sealed class DiagnosticsCsv : IDisposable
         line.Append(string.Format(c, ",{0:G6},{1:G6},{2:G6},{3:G6},{4:G6},{5},{6:G4},{7:G4},{8:G6},{9:G4},{10:G4}",
             m?.LayeringIndex ?? double.NaN, m?.InterfaceTilt ?? double.NaN, m?.SurgeFront ?? double.NaN, m?.BackWallColumn ?? double.NaN, m?.PotentialEnergy ?? double.NaN, r.ClampHits,
             r.DensitySolveIterations, r.DivergenceSolveIterations, r.DivergenceError, r.DensitySolvesCutOff, r.DivergenceSolvesCutOff));
-        _writer.WriteLine(line);
-        _writer.Flush();
+        WriteLine(line.ToString());
+    }
+
+    /// <summary>
+    /// Appends one line whole or not at all. The log is appended a row at a time through a run, so it cannot be written
+    /// aside and moved into place as the other outputs are (<see cref="OutputFolder.Write"/>); instead a write that a
+    /// full disk stops part-way is cut back to the end of the row before, and the log ends on a complete row when the
+    /// run stops with the file error.
+    /// </summary>
+    void WriteLine(string text)
+    {
+        byte[] bytes = Utf8.GetBytes(text + "\n");
+        long before = _file.Length;
+        try
+        {
+            _file.Write(bytes, 0, bytes.Length);
+            _file.Flush();
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            string cut = "the part of the row written was removed";
+            try
+            {
+                _file.SetLength(before);
+            }
+            catch (Exception again) when (again is IOException or UnauthorizedAccessException)
+            {
+                cut = $"the part of the row written could not be removed ({again.Message})";
+            }
+            throw new IOException($"cannot append to {_path}: {e.Message}; {cut}", e);
+        }
     }
 
     /// <summary>One distinct column prefix per phase, in phase order. Validation refuses names that differ only by
@@ -90,5 +132,5 @@ public sealed class DiagnosticsCsv : IDisposable
         return b.Length == 0 ? "phase" : b.ToString();
     }
 
-    public void Dispose() => _writer.Dispose();
+    public void Dispose() => _file.Dispose();
 }
