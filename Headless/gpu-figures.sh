@@ -28,6 +28,11 @@
 #             experiment whose solver is "study" (a change to the step, which a bench's sub-steps do not show) runs the
 #             study of the realtime stage instead, DFSPH only, at EXPERIMENT_SCALE (240) and each of
 #             EXPERIMENT_DIVERGENCE_TOLERANCES (10 36 %/s): wall time per simulated second and the real-time factor.
+# What the stages took on an H200 at 8e65ea2 (Headless/figures/gpu-h200-half-support-cells.txt), to size a call to
+# the device time left (a machine's start costs a minute or more besides): realtime at 24 60 240 with the Chebyshev
+# solve and two divergence-free tolerances 141 s (99 of them at 1M), the 2M size alone (two rows) 164 s, scenes 84 s,
+# bench 56 s (the DFSPH bench 11 s, WCSPH's with the savings 45 s), pareto with the Chebyshev solve 74 s, layering with
+# it 15 s, and the Jacobi solve's realtime at 24 60 54 s with its 1M bench 18 s.
 # The stages are named as arguments, run in the order given (default: realtime bench pareto). Each step has a time
 # limit, so a slow step costs only itself. The environment can change the sizes, the solvers the bench stage times and
 # each step's limit in seconds: REALTIME_SCALES, PARETO_SCALES, ITERATIONS ("jacobi chebyshev"), BENCH_PARTICLES,
