@@ -184,7 +184,7 @@ namespace SphFluid.Tests.Runner
             Assert.That(code, Is.EqualTo(ExitCodes.Ok));
             Assert.That(bench.Rows.Count, Is.EqualTo(2));
             Assert.That(bench.Rows[0].Particles, Is.EqualTo(150).Within(15));
-            Assert.That(stdout.ToString(), Does.Contain("| particles | lanes | dt (ms) | wall ms | GPU ms | wall ms in a frame (sub-steps) | GPU ms per 60 Hz frame |"));
+            Assert.That(stdout.ToString(), Does.Contain("| particles | lanes | dt (ms) | wall ms | GPU ms | wall ms in a frame (sub-steps) | GPU ms in a frame | GPU ms per 60 Hz frame |"));
             Assert.That(stdout.ToString(), Does.Contain("| kernel | dispatches | ran | ms | ms a dispatch that ran | share |"));
             Assert.That(bench.Rows[^1].Kernels.All(k => k.Ran == k.Dispatches), Is.True, "under WCSPH every dispatch runs groups");
             foreach (var row in bench.Rows)
@@ -192,6 +192,8 @@ namespace SphFluid.Tests.Runner
                 Assert.That(row.FrameSubsteps, Is.EqualTo((int)Math.Ceiling(1.0 / 60.0 / row.TimeStep)), "a 60 Hz frame's sub-steps");
                 Assert.That(row.FrameWallMs, Is.GreaterThan(0).And.LessThan(double.PositiveInfinity));
                 Assert.That(row.FrameGpuMs, Is.EqualTo(row.GpuMs * row.FrameSubsteps).Within(1e-9), "a 60 Hz frame's GPU ms");
+                Assert.That(stdout.ToString(), Does.Contain(string.Format(System.Globalization.CultureInfo.InvariantCulture,
+                    "| {0:F3} ({1}) | {2:F3} | {3:F3} |", row.FrameWallMs, row.FrameSubsteps, row.InFrameGpuMs, row.FrameGpuMs)), "the row's frame columns");
             }
             // A GPU ten times slower per particle fits no more particles in the same budget than this device.
             Assert.That(bench.DeviceFit, Is.Not.Null);
