@@ -38,6 +38,9 @@ namespace SphFluid.Tests.Primitives
         [TestCase(257)]
         [TestCase(2048)]
         [TestCase(2049)]
+        [TestCase(PrefixSum.SmallLength - 1)]
+        [TestCase(PrefixSum.SmallLength)]
+        [TestCase(PrefixSum.SmallLength + 1)]
         [TestCase(100000)]
         [TestCase(600000)]
         [TestCase(ThreeLevelLength)]
@@ -58,6 +61,36 @@ namespace SphFluid.Tests.Primitives
             Assert.That(PrefixSum.LevelsFor(2048), Is.EqualTo(1));
             Assert.That(PrefixSum.LevelsFor(2049), Is.EqualTo(2));
             Assert.That(PrefixSum.LevelsFor(ThreeLevelLength), Is.EqualTo(3));
+        }
+
+        sealed class DispatchCounter : ForwardingDevice
+        {
+            public DispatchCounter(IComputeDevice inner) : base(inner) { }
+
+            public int Dispatches { get; private set; }
+
+            public override void Dispatch(IComputeProgram program, int kernel, int groupsX, int groupsY, int groupsZ)
+            {
+                Dispatches++;
+                Inner.Dispatch(program, kernel, groupsX, groupsY, groupsZ);
+            }
+        }
+
+        /// <summary>A scene's cell grid of up to <see cref="PrefixSum.SmallLength"/> cells is scanned in one dispatch: on an
+        /// H200 the sort of the three demo scenes whose grids took three went from 0.037 to 0.053 ms a sub-step.</summary>
+        [TestCase(1, 1)]
+        [TestCase(7590, 1)] // OilAndWater's grid, cells of half the support
+        [TestCase(PrefixSum.SmallLength, 1)]
+        [TestCase(PrefixSum.SmallLength + 1, 3)]
+        [TestCase(600000, 3)]
+        [TestCase(ThreeLevelLength, 5)]
+        public void AScanTakesOneDispatchUpToTheSmallLength(int length, int dispatches)
+        {
+            var counter = new DispatchCounter(device);
+            using var counted = new PrefixSum(counter, ThreeLevelLength);
+            counted.Scan(input, output, length);
+            counter.Submit();
+            Assert.That(counter.Dispatches, Is.EqualTo(dispatches));
         }
 
         [Test]

@@ -9,7 +9,9 @@ namespace SphFluid.Sorting
     /// (Shaders/PrefixSum.compute): output[i] = input[0] + ... + input[i-1], and <see cref="Total"/> = the sum
     /// of all. Blocks of <see cref="ElementsPerGroup"/> are scanned in groupshared memory, their totals
     /// scanned by the same kernel one level up (as many levels as the length needs), and the scanned
-    /// totals added back: 1 dispatch up to 2048 elements, 3 up to 4M, 5 beyond.
+    /// totals added back: 3 dispatches up to 4M elements, 5 beyond. Up to <see cref="SmallLength"/> one group scans
+    /// them all in one dispatch (ScanSmall), since a small GPU spends a few microseconds a dispatch, more than the
+    /// work of a scene's cell grid.
     /// Owns its per-level scratch buffers; create it once for the largest length and keep it.
     /// </summary>
     public sealed class PrefixSum : IDisposable
@@ -20,6 +22,9 @@ namespace SphFluid.Sorting
         /// <summary>Elements one group scans (SCAN_BLOCK in Include/PrefixSumBlock.hlsl).</summary>
         public const int ElementsPerGroup = 2048;
 
+        /// <summary>Longest scan of one dispatch, one group (SCAN_SMALL_LENGTH in Include/PrefixSumBlock.hlsl).</summary>
+        public const int SmallLength = 16384;
+
         /// <summary>Longest scan: one dispatch may have at most 65535 groups along x.</summary>
         public const int MaxSupportedLength = 65535 * ElementsPerGroup;
 
@@ -29,6 +34,7 @@ namespace SphFluid.Sorting
         private readonly IComputeProgram program;
         private readonly int scanBlocksKernel;
         private readonly int addBlockOffsetsKernel;
+        private readonly int scanSmallKernel;
         private readonly int inputId, outputId, blockSumsId, blockOffsetsId, lengthId;
 
         // Level L >= 1 holds the block totals of level L-1 (blockSums[L-1]) and their scan (blockOffsets[L-1]).
@@ -50,8 +56,10 @@ namespace SphFluid.Sorting
             program = device.LoadProgram(ProgramName);
             scanBlocksKernel = program.FindKernel("ScanBlocks");
             addBlockOffsetsKernel = program.FindKernel("AddBlockOffsets");
+            scanSmallKernel = program.FindKernel("ScanSmall");
             CheckGroupSize(scanBlocksKernel, "ScanBlocks");
             CheckGroupSize(addBlockOffsetsKernel, "AddBlockOffsets");
+            CheckGroupSize(scanSmallKernel, "ScanSmall");
             inputId = device.PropertyId("_ScanInput");
             outputId = device.PropertyId("_ScanOutput");
             blockSumsId = device.PropertyId("_ScanBlockSums");
@@ -103,6 +111,15 @@ namespace SphFluid.Sorting
             CheckBuffer(input, length, nameof(input));
             CheckBuffer(output, length, nameof(output));
             if (length == 0) return;
+            if (length <= SmallLength)
+            {
+                device.SetBuffer(program, scanSmallKernel, inputId, input);
+                device.SetBuffer(program, scanSmallKernel, outputId, output);
+                device.SetBuffer(program, scanSmallKernel, blockSumsId, total);
+                device.SetInt(program, lengthId, length);
+                device.Dispatch(program, scanSmallKernel, 1, 1, 1);
+                return;
+            }
             ScanLevel(input, output, length, 0);
         }
 
