@@ -9,9 +9,9 @@ namespace SphFluid.Sorting
     /// (Shaders/PrefixSum.compute): output[i] = input[0] + ... + input[i-1], and <see cref="Total"/> = the sum
     /// of all. Blocks of <see cref="ElementsPerGroup"/> are scanned in groupshared memory, their totals
     /// scanned by the same kernel one level up (as many levels as the length needs), and the scanned
-    /// totals added back: 3 dispatches up to 4M elements, 5 beyond. Up to <see cref="SmallLength"/> one group scans
-    /// them all in one dispatch (ScanSmall), since a small GPU spends a few microseconds a dispatch, more than the
-    /// work of a scene's cell grid.
+    /// totals added back: 1 dispatch up to 2048 elements, 3 up to 4M, 5 beyond. From 2049 to <see cref="SmallLength"/>
+    /// one group scans them all in one dispatch instead (ScanSmall), since a GPU spends a few microseconds a dispatch,
+    /// more than the work of a scene's cell grid.
     /// Owns its per-level scratch buffers; create it once for the largest length and keep it.
     /// </summary>
     public sealed class PrefixSum : IDisposable
@@ -111,7 +111,8 @@ namespace SphFluid.Sorting
             CheckBuffer(input, length, nameof(input));
             CheckBuffer(output, length, nameof(output));
             if (length == 0) return;
-            if (length <= SmallLength)
+            // Up to one block, ScanBlocks' coalesced loads through groupshared memory do it in one dispatch already.
+            if (length > ElementsPerGroup && length <= SmallLength)
             {
                 device.SetBuffer(program, scanSmallKernel, inputId, input);
                 device.SetBuffer(program, scanSmallKernel, outputId, output);
