@@ -334,6 +334,7 @@ public sealed unsafe partial class VulkanComputeDevice
     /// it go untimed, and their EndSample is accepted.</summary>
     void SubmitPart()
     {
+        SplitSubmitCount++;
         _samplesCutBySubmit.UnionWith(_openSamples.Keys);
         _openSamples.Clear();
         SubmitRecording();

@@ -106,6 +106,10 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
     /// <summary>Number of Vulkan queue submissions (frames plus uploads/read-backs through staging).</summary>
     public long SubmitCount { get; private set; }
 
+    /// <summary>Submits made part-way through a recording that reached <see cref="DispatchesPerSubmit"/> dispatches: the
+    /// sample ranges open across one go untimed, and a name timed on both sides reads only the later part's sum.</summary>
+    public long SplitSubmitCount { get; private set; }
+
     public VulkanComputeDevice(VulkanComputeOptions? options = null)
     {
         _options = options ?? new VulkanComputeOptions();

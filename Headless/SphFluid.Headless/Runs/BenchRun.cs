@@ -39,8 +39,8 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
     /// <param name="Solves">DFSPH: the diagnostics of the timed sub-steps, whose solves' mean corrections and cut-off shares
     /// say which dispatches ran; null under WCSPH.</param>
     /// <param name="InFrameGpuMs">GPU ms per sub-step when a 60 Hz frame's sub-steps are recorded together: the pass
-    /// ranges of the frames' submits over their sub-steps. NaN where a frame took more than one submit (its ranges open
-    /// across a submit go untimed) or the device is not Vulkan. On an H200 a forced effect's row cost 2.3 times the wall
+    /// ranges of the frames' submits over their sub-steps. NaN where a frame's recording was split over submits (its
+    /// ranges open across a split go untimed) or the device is not Vulkan. On an H200 a forced effect's row cost 2.3 times the wall
     /// one sub-step a submit that it cost a frame at a time, and only the GPU's own figure for each can tell which
     /// measure holds the extra work.</param>
     /// <param name="InFramePassMs">Per pass, the GPU ms a sub-step of <paramref name="InFrameGpuMs"/>; empty where it is NaN.</param>
@@ -171,7 +171,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
             + "(plan as planned: {1:F3} ms wall, {2:F3} ms GPU; mean of {3}; a negative figure is within the timing noise)", baseline.Particles, baseline.WallMs, baseline.GpuMs, options.Steps));
         if (BaselineAgain is { } again)
             b.AppendLine(string.Format(C, "The plan again after the forced rows: {0:F3} ms wall, {1:F3} ms GPU ({2:+0.0;-0.0;0.0} % GPU: the drift while they ran). "
-                + "In a frame: the ms a sub-step saves when a 60 Hz frame's sub-steps are recorded together (GPU: the frame's pass ranges; - where a frame took several submits). "
+                + "In a frame: the ms a sub-step saves when a 60 Hz frame's sub-steps are recorded together (GPU: the frame's pass ranges; - where a frame's recording was split over submits). "
                 + "The last columns: the passes whose GPU ms grew most with the effect, one sub-step a submit and in a frame.", again.WallMs, again.GpuMs,
                 baseline.GpuMs > 0 ? 100 * (again.GpuMs / baseline.GpuMs - 1) : 0));
         b.AppendLine();
@@ -306,12 +306,13 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         double frameWallTotal = 0;
         for (int i = 0; i < frames; i++)
         {
-            long submits = vulkanDevice?.SubmitCount ?? 0;
+            long splits = vulkanDevice?.SplitSubmitCount ?? 0;
             var clock = Stopwatch.StartNew();
             StepAndWait(sim, device, dt, frameSubsteps);
             frameWallTotal += clock.Elapsed.TotalMilliseconds;
-            // A pass timed more than once in a submit reads as the sum (VulkanComputeDevice), so one submit gives the frame's.
-            frameTimed &= vulkanDevice != null && vulkanDevice.SubmitCount == submits + 1;
+            // A pass timed more than once in a submit reads as the sum (VulkanComputeDevice), so the frame's one submit gives
+            // the frame's; DFSPH's wait for the last frame's motion is a submit of its own before it, with no pass of these.
+            frameTimed &= vulkanDevice != null && vulkanDevice.SplitSubmitCount == splits;
             if (!frameTimed) continue;
             foreach (string p in Passes)
                 if (sim.Plan.Runs(p) && device.TryGetSampleMilliseconds(p, out double ms)) framePass[p] += ms;
@@ -349,7 +350,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         var passes = Passes.Where(p => Rows.Any(r => r.PassMs.ContainsKey(p))).ToList();
         b.AppendLine();
         b.AppendLine($"Scene {sceneName}, device {deviceName}, {SolverName}: milliseconds per sub-step (mean of {options.Steps}; GPU = sum of the pass ranges; "
-            + "in a frame: a 60 Hz frame's sub-steps recorded together, - where a frame took several submits; "
+            + "in a frame: a 60 Hz frame's sub-steps recorded together, - where a frame's recording was split over submits; "
             + "lanes = threads per particle in the neighbour loops, NeighbourLanes)");
         b.AppendLine();
         b.AppendLine("| particles | lanes | dt (ms) | wall ms | GPU ms | wall ms in a frame (sub-steps) | GPU ms in a frame | GPU ms per 60 Hz frame | " + string.Join(" | ", passes) + " |");

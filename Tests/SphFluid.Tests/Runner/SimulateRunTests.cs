@@ -154,6 +154,9 @@ namespace SphFluid.Tests.Runner
             var timed = PipelinePlanner.Plan(scene, false).SubstepPasses.Where(p => FluidSimulation.SampleNames.Contains(p)).ToList();
             Assert.That(timed, Does.Contain(pass));
             Assert.That(row.PassMs.Keys, Is.SupersetOf(timed));
+            // A frame at a time too, DFSPH's wait for the last frame's motion (a submit of its own) notwithstanding.
+            Assert.That(row.InFrameGpuMs, Is.GreaterThan(0).And.LessThan(double.PositiveInfinity), "the frame's GPU ms");
+            Assert.That(row.InFramePassMs.Keys, Is.EquivalentTo(row.PassMs.Keys));
         }
 
         [Test]
