@@ -40,9 +40,9 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
     /// say which dispatches ran; null under WCSPH.</param>
     /// <param name="InFrameGpuMs">GPU ms per sub-step when a 60 Hz frame's sub-steps are recorded together: the pass
     /// ranges of the frames' submits over their sub-steps. NaN where a frame's recording was split over submits (its
-    /// ranges open across a split go untimed) or the device is not Vulkan. On an H200 a forced effect's row cost 2.3 times the wall
-    /// one sub-step a submit that it cost a frame at a time, and only the GPU's own figure for each can tell which
-    /// measure holds the extra work.</param>
+    /// ranges open across a split go untimed) or the device is not Vulkan. On an H200 a forced effect's row cost 2.3
+    /// times the wall one sub-step a submit that it cost a frame at a time, and only the GPU's own figure for each can
+    /// tell which measure holds the extra work.</param>
     /// <param name="InFramePassMs">Per pass, the GPU ms a sub-step of <paramref name="InFrameGpuMs"/>; empty where it is NaN.</param>
     public sealed record Row(int Particles, string Plan, double WallMs, double GpuMs, IReadOnlyDictionary<string, double> PassMs,
         IReadOnlyList<(string Kernel, int Dispatches, double Ran, double Ms)> Kernels, float TimeStep, bool Finite, double FrameWallMs, int FrameSubsteps, int Lanes,
