@@ -10,6 +10,7 @@ using SphFluid.Headless.Cli;
 using SphFluid.Headless.Output;
 using SphFluid.Headless.Scenes;
 using SphFluid.Simulation;
+using SphFluid.Sorting;
 using SphFluid.Vulkan;
 
 namespace SphFluid.Headless.Runs;
@@ -109,6 +110,10 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             sim.ParticleCount, scaled,
             settings.ParticleSpacing, settings.SmoothingRadius,
             string.Join(", ", sim.Phases.Select((p, k) => string.Format(C, "{0} {1} rho0 {2:G4} kg/m^3 mu {3:G3} Pa s", p.Name, CountOf(description, k, sim), p.RestDensity, p.Viscosity)))));
+        // The cell count sets the sort's scan (PrefixSum: one dispatch up to its SmallLength), which the README's 60 Hz
+        // figures cite.
+        stdout.WriteLine(string.Format(C, "grid: {0} x {1} x {2} = {3} cells of {4:G4} m (h/{5}, {6} margin cells a side)",
+            sim.Grid.DimX, sim.Grid.DimY, sim.Grid.DimZ, sim.Grid.CellCount, sim.Grid.CellSize, CellGrid.CellsPerSupport, CellGrid.MarginCells));
         stdout.WriteLine(sim.Plan.ToString());
         stdout.WriteLine(SolverChoice.Describe(settings, sim));
         if (_solverNote != null) stdout.WriteLine(_solverNote);

@@ -7,6 +7,7 @@ using SphFluid.Headless.Cli;
 using SphFluid.Headless.Runs;
 using SphFluid.Headless.Scenes;
 using SphFluid.Simulation;
+using SphFluid.Sorting;
 
 namespace SphFluid.Tests.Runner
 {
@@ -106,6 +107,21 @@ namespace SphFluid.Tests.Runner
                 Assert.That(stdout.ToString(), Does.Contain("particles: 2112 (scene: 4160, scaled x0.5 on a CPU device: --cpu-particles-scale)"));
             else
                 Assert.That(stdout.ToString(), Does.Contain("particles: 4160 (spacing"));
+        }
+
+        /// <summary>The run prints its neighbour grid, whose cell count the README's 60 Hz figures cite: OilAndWater's 7 590
+        /// cells of h/2 are past the 2 048 one ScanBlocks dispatch covers and within what ScanSmall does in one.</summary>
+        [Test]
+        public void TheRunPrintsItsGrid()
+        {
+            var run = Simulate("OilAndWater", out var stdout, out var stderr, "--steps", "1", "--cpu-particles-scale", "1",
+                "--out", RunnerPaths.ScratchFolder("grid-line"));
+
+            Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
+            var grid = System.Text.RegularExpressions.Regex.Match(stdout.ToString(), @"^grid: 33 x 23 x 10 = (\d+) cells of 0\.02138 m \(h/2, 2 margin cells a side\)$",
+                System.Text.RegularExpressions.RegexOptions.Multiline);
+            Assert.That(grid.Success, Is.True, stdout.ToString());
+            Assert.That(int.Parse(grid.Groups[1].Value), Is.EqualTo(7590).And.GreaterThan(PrefixSum.ElementsPerGroup).And.LessThanOrEqualTo(PrefixSum.SmallLength));
         }
 
         /// <summary>RestingTank runs WCSPH at Wendland C2's 2.85 spacings with DFSPH's relaxation left at the papers' full step,
