@@ -11,9 +11,10 @@ public sealed class SimulateOptions(string scenePath)
     public const double DefaultFrameSeconds = 1.0 / 60.0;
 
     /// <summary>
-    /// Shortest frame and shortest output interval, s. The solver steps at least 1 microsecond per frame, and rows and
+    /// Shortest run, frame and output interval, s. The solver steps at least 1 microsecond per frame, and rows and
     /// snapshots come at frame ends: a shorter value would be misreported or would never advance the next output
-    /// time (1e-300 added to 0.25 is 0.25), so it is refused rather than run.
+    /// time (1e-300 added to 0.25 is 0.25), so it is refused rather than run. A run ends within a microsecond of its
+    /// --seconds, so a shorter run (once accepted down to anything above 0) ran no frame at all and still exited 0.
     /// </summary>
     public const double MinInterval = 1e-4;
 
@@ -96,7 +97,7 @@ the back wall, spray ignored.
 " + SphfluidCommandLine.ExitCodesText;
 
     readonly Argument<string> _scene = OptionKinds.Scene(Verb);
-    readonly Option<double> _seconds = OptionKinds.Number(Verb, "--seconds", 0, 3600, true, "s", "S", "simulated seconds to run, in (0, 3600]", SimulateOptions.DefaultSeconds);
+    readonly Option<double> _seconds = OptionKinds.Number(Verb, "--seconds", SimulateOptions.MinInterval, 3600, false, "s", "S", "simulated seconds to run, in [0.0001, 3600]", SimulateOptions.DefaultSeconds);
     readonly Option<int> _steps = OptionKinds.Whole(Verb, "--steps", 1, 1_000_000, "N", "run N frames of --frame-seconds instead, N in [1, 1000000]");
     readonly Option<double> _frameSeconds = OptionKinds.Number(Verb, "--frame-seconds", SimulateOptions.MinInterval, 0.1, false, "s", "S",
         "real time per frame, in [0.0001, 0.1] s (default 1/60, as a 60 Hz Unity frame)");

@@ -73,7 +73,7 @@ simulated second, log axes, one series per solver, DFSPH iteration scheme and di
     readonly Argument<string> _scene = OptionKinds.Scene(Verb);
     readonly Option<string> _out = OptionKinds.Text(Verb, "--out", "DIR",
         "output folder (default Output/<scene name>-study; the same rules as simulate --out: only files sphfluid wrote there are replaced)");
-    readonly Option<double> _seconds = OptionKinds.Number(Verb, "--seconds", 0, 60, true, "s", "S", "simulated seconds per configuration, in (0, 60] (default 1; --quick 0.1)");
+    readonly Option<double> _seconds = OptionKinds.Number(Verb, "--seconds", SimulateOptions.MinInterval, 60, false, "s", "S", "simulated seconds per configuration, in [0.0001, 60] (default 1; --quick 0.1)");
     readonly Option<List<double>> _stiffness = OptionKinds.List(Verb, "--stiffness-factors", "F",
         "WCSPH runs: multiples of the scene's Tait stiffness, each in [0.01, 100] (default 1 4; --quick 1)",
         text => Ranges.ParseDouble(Verb, "--stiffness-factors", text, 0.01, 100, false, ""));

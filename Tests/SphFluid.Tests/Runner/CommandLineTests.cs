@@ -24,7 +24,7 @@ namespace SphFluid.Tests.Runner
         {
             int code = Run(out _, out string err, "simulate", RunnerPaths.Scene("PlayModeTest"), "--seconds", "-1");
             Assert.That(code, Is.EqualTo(ExitCodes.BadArguments));
-            Assert.That(err, Does.Contain("--seconds must be in (0, 3600] s (was -1)"));
+            Assert.That(err, Does.Contain("--seconds must be in [0.0001, 3600] s (was -1)"));
         }
 
         [Test]
@@ -36,6 +36,7 @@ namespace SphFluid.Tests.Runner
         }
 
         [TestCase("--steps", "0", "--steps must be in [1, 1000000] (was 0)")]
+        [TestCase("--seconds", "1e-6", "--seconds must be in [0.0001, 3600] s (was 1E-06)")]
         [TestCase("--frames-every", "abc", "--frames-every must be a number in [0.0001, 3600] s (was 'abc')")]
         [TestCase("--particles-scale", "5000", "--particles-scale must be in [0.01, 4096] (was 5000)")]
         [TestCase("--cpu-particles-scale", "2", "--cpu-particles-scale must be in [0.01, 1] (was 2)")]
