@@ -311,7 +311,10 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         var b = new StringBuilder();
         b.AppendLine();
         b.AppendLine(string.Format(C, "Study of {0} on {1}: {2:G3} s simulated per configuration; density error |rho/rho0 - 1| avg / max per phase; "
-            + "observable error = largest of |layering - ref| / 2, |front - ref| / length, |column - ref| / height against the finest run (ref)", sceneName, deviceName, options.Seconds));
+            + "observable error = largest of |layering - ref| / 2, |front - ref| / length, |column - ref| / height against the finest run (ref); "
+            + "energy drift = kinetic + potential energy at the end against the spawn's (a DFSPH spawn at rest density gives up about its "
+            + "density tolerance's share of it settling into that compression in its first frames; a WCSPH spawn starts compressed)",
+            sceneName, deviceName, options.Seconds));
         b.AppendLine();
         b.AppendLine("| configuration | scale | CFL | particles | density error avg / max | div. error | energy drift | layering | front m | column m | obs. error | iter/step | cut off (density / div.) | sub-steps/s | GPU ms/s | wall ms/s | real time |");
         b.AppendLine("|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");

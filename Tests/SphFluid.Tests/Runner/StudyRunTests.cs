@@ -42,6 +42,7 @@ namespace SphFluid.Tests.Runner
             string markdown = File.ReadAllText(Path.Combine(outDir, "study.md"));
             Assert.That(markdown, Does.Contain("| DFSPH 0.01 % (ref) | 0.5 |"));
             Assert.That(markdown, Does.Contain("| iter/step | cut off (density / div.) | sub-steps/s |"));
+            Assert.That(markdown, Does.Contain("energy drift = kinetic + potential energy at the end against the spawn's"), "the header says what the drift counts");
             Assert.That(markdown, Does.Not.Contain("NaN"), "a figure the scene lacks (one liquid: no layering) is a dash");
             foreach (var row in run.Rows)
                 TestContext.Progress.WriteLine($"{row.Config.Label}, scale {row.Config.ParticleScale}: {row.SolverIterations:F1} iterations per sub-step, {row.DensitySolvesCutOff:P1} / {row.DivergenceSolvesCutOff:P1} of density / divergence solves cut off");
