@@ -185,5 +185,50 @@ namespace SphFluid.Tests.Runner
             Assert.That(File.Exists(path), Is.False, "no truncated file is left to pass for an output");
             Assert.That(File.ReadAllLines(Path.Combine(dir, OutputFolder.ManifestName)), Does.Contain("frame_0000.png"), "the name stays claimed");
         }
+
+        /// <summary>Standard output that removes the run's folder once the run has printed its line for 0.05 s, as a user
+        /// cleaning up, or a disk going away, would mid-run.</summary>
+        sealed class FolderTakenAway : StringWriter
+        {
+            readonly string _dir;
+            bool _taken;
+            public FolderTakenAway(string dir) => _dir = dir;
+            public override void Write(string? value)
+            {
+                base.Write(value);
+                if (!_taken && ToString().Contains("t= 0.050 s"))
+                {
+                    _taken = true;
+                    Directory.Delete(_dir, true);
+                }
+            }
+            public override void WriteLine(string? value)
+            {
+                Write(value);
+                Write(CoreNewLine);
+            }
+        }
+
+        /// <summary>
+        /// The command line's file-error exit, end to end: the folder goes mid-run, so the next snapshot cannot be
+        /// written. The command stops with exit 1 and says which file it could not write, instead of an unexpected
+        /// failure or a run that reports success without its outputs. (A full disk takes the same path; the writers'
+        /// own cut-back on a full disk is <see cref="AWriteThatFailsLeavesNoPartOfItsFile"/> and DiagnosticsCsvColumnTests.)
+        /// </summary>
+        [Test]
+        public void AFolderTakenAwayMidRunIsAFileErrorNamingTheFile()
+        {
+            string dir = Path.Combine(RunnerPaths.ScratchFolder("taken-away"), "out");
+            var stdout = new FolderTakenAway(dir);
+            var stderr = new StringWriter();
+
+            int code = Program.Run(new[] { "simulate", RunnerPaths.Scene("PlayModeTest"), "--seconds", "0.2", "--frames-every", "0.05",
+                "--diagnostics-every", "0.05", "--out", dir }, stdout, stderr);
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Failure), stdout.ToString() + stderr);
+            Assert.That(stderr.ToString(), Does.Contain("sphfluid: file error, the command stopped: Could not find a part of the path '" + dir + Path.DirectorySeparatorChar));
+            Assert.That(stdout.ToString(), Does.Not.Contain("t= 0.100 s"), "the run stopped at the first write it could not make");
+            Assert.That(stdout.ToString(), Does.Not.Contain("done ("), "no report of a finished run");
+        }
     }
 }
