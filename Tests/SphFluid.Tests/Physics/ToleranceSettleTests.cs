@@ -13,7 +13,7 @@ namespace SphFluid.Tests.Physics
 {
     /// <summary>
     /// Where the mechanical energy goes that DFSPH loses at a loose density tolerance. On an H200 the study's 1 % rows
-    /// lost 1.45 % of the energy in a second, three times the 0.45 % of the tighter rows (Headless/figures/
+    /// lost 1.45 % of the energy in a second, about three times the 0.45 to 0.54 % of the tighter rows (Headless/figures/
     /// OilAndWater-study-h200.md). The spawn explains it. DFSPH spawns on the lattice at rest density, so under gravity
     /// the fluid first settles until the constant-density solve's tolerance holds it. A column compressed by a
     /// fraction e throughout lowers its centre of mass by e, so it gives up e of its potential energy above the floor.
@@ -133,9 +133,9 @@ namespace SphFluid.Tests.Physics
         }
 
         /// <summary>Most of that share is the compression the tank is left with: the potential energy its measured
-        /// compression gave up (<see cref="CompressionEnergy"/>) is at least 0.6 of the energy lost (0.73 measured: 0.653 % of 0.891 %), and no more than it.
-        /// What is left is the top layers, whose summed density the missing fluid above reads low, settling
-        /// further.</summary>
+        /// compression gave up (<see cref="CompressionEnergy"/>) is at least 0.6 of the energy lost and no more than it
+        /// (0.73 measured: 0.653 % of 0.891 %). The rest is mostly the top layers settling further, which their summed
+        /// density cannot show.</summary>
         [Test]
         public void TheMeasuredCompressionAccountsForMostOfTheLoss()
         {
