@@ -47,7 +47,7 @@ namespace SphFluid.Simulation
 
         // 2 spacings by default: the cubic spline then recovers a linear pressure gradient to 2 % on the lattice at the
         // lowest cost (SmoothingKernels.LatticeGradientReproduction).
-        [Setting(Particles, 0.002, 4, "m", "Kernel support radius H (= grid cell size), 2 to 4 particle spacings (the cubic spline up to 2.25; DFSPH: the cubic spline at 2, Wendland C2 up to 2.9): wider is smoother and slower.")]
+        [Setting(Particles, 0.002, 4, "m", "Kernel support radius H (the neighbour grid's cells are H/2), 2 to 4 particle spacings (the cubic spline up to 2.25; DFSPH: the cubic spline at 2, Wendland C2 up to 2.9): wider is smoother and slower.")]
         public float SmoothingRadius = 0.04f;
 
         [Setting(Particles, 0, 1, "", "Kernel family of every SPH sum: 0 = CubicSpline (cheapest; support 2 to 2.25 spacings; a fluid at rest keeps creeping), 1 = WendlandC2 (no particle pairing; at 2.8 to 2.9 spacings its particle lattice is stable under pressure, so with DeltaSph a fluid at rest comes to rest, at about 3 times the neighbours).")]

@@ -240,7 +240,7 @@ namespace SphFluid.Simulation
             }
         }
 
-        /// <summary>The neighbour grid (container-local cells of size h).</summary>
+        /// <summary>The neighbour grid (container-local cells of h / <see cref="CellGrid.CellsPerSupport"/>).</summary>
         public CellGrid Grid => _grid;
 
         /// <summary>Effects run although the scene does not need them (the benchmark's measure of the planner's savings);

@@ -1,7 +1,7 @@
 namespace SphFluid.Simulation
 {
     /// <summary>The kernel family that every SPH sum of the solver uses (FluidSettings.SmoothingKernel; the equations are in
-    /// Shaders/Include/SphKernels.hlsl). Both have compact support H, the grid's cell size.</summary>
+    /// Shaders/Include/SphKernels.hlsl). Both have compact support H, twice the neighbour grid's cell.</summary>
     public enum KernelFamily
     {
         /// <summary>The cubic B-spline (Monaghan and Lattanzio, "A refined particle method for astrophysical problems"): the
