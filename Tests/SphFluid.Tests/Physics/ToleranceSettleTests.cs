@@ -33,6 +33,7 @@ namespace SphFluid.Tests.Physics
     /// --solver dfsph --solver-iteration chebyshev --density-tolerance 1 --diagnostics-every 0.05</c>, then the same at
     /// 0.01, on lavapipe; the energy drift is KE + PE against the first line's).</para>
     /// </summary>
+    [Category(TestProcesses.LongRuns)]
     public sealed class ToleranceSettleTests
     {
         const int Frames = 18;
