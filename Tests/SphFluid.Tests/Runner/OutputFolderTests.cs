@@ -210,8 +210,8 @@ namespace SphFluid.Tests.Runner
         }
 
         /// <summary>
-        /// The command line's file-error exit, end to end: the folder goes mid-run, so the next snapshot cannot be
-        /// written. The command stops with exit 1 and says which file it could not write, instead of an unexpected
+        /// The command line's file-error exit, end to end: the folder goes mid-run, so the next file the run writes (its
+        /// record of outputs, .sphfluid-outputs) cannot be. The command stops with exit 1 and says which file it could not write, instead of an unexpected
         /// failure or a run that reports success without its outputs. (A full disk takes the same path; the writers'
         /// own cut-back on a full disk is <see cref="AWriteThatFailsLeavesNoPartOfItsFile"/> and DiagnosticsCsvColumnTests.)
         /// </summary>

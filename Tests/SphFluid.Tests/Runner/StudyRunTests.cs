@@ -189,7 +189,7 @@ namespace SphFluid.Tests.Runner
             Assert.That(error.Message, Does.Contain("--solvers must be wcsph and/or dfsph (was 'sph')"));
             error = Assert.Throws<UsageException>(() => StudyOptions.Parse(new[] { "x.unity", "--solver-iterations", "gauss" }));
             Assert.That(error.Message, Does.Contain("--solver-iterations must be jacobi and/or chebyshev (was 'gauss')"));
-            // Shorter than a microsecond, a configuration once ran no frame and still made a row.
+            // A configuration of a microsecond or less once ran no frame and still made a row.
             error = Assert.Throws<UsageException>(() => StudyOptions.Parse(new[] { "x.unity", "--seconds", "1e-6" }));
             Assert.That(error.Message, Does.Contain("study: --seconds must be in [0.0001, 60] s (was 1E-06)"));
             Assert.That(StudyOptions.Parse(new[] { "x.unity", "--quick" }).ParticleScales, Is.EqualTo(new[] { 0.25, 0.5 }));
