@@ -7,9 +7,11 @@ namespace SphFluid.Tests.Physics
     /// The SurfaceTension setting is a surface tension in N/m: droplets fitted to Laplace's law
     /// (<see cref="LaplaceDroplets"/>) make the sigma asked for away from where <see cref="SurfaceLayerShare"/> was
     /// measured (5 mm spacings, rest density 1000 kg/m^3): at twice the density within 10 % (1.085 N/m asked 1 on
-    /// lavapipe). At twice the spacing they make 1.26 N/m (<c>LaplacePressureProbe</c>'s 10 mm fixture; known-limits.md),
-    /// and at the share's own 1000 kg/m^3 0.828 N/m (the probe, 2026-12-04): the shares do not hold sigma across
-    /// densities (known-limits.md).
+    /// lavapipe, by the droplets' RMS radii as the shares were measured; 1.121 by the radii of the balls they fill). At
+    /// twice the spacing they make 1.26 N/m (<c>LaplacePressureProbe</c>'s 10 mm fixture; known-limits.md), and at the
+    /// share's own 1000 kg/m^3 0.828 N/m (the probe, 2026-12-04): the shares do not hold sigma across densities, because
+    /// the surface force propels the droplets and they are sampled at a different stage of it (<see cref="DropletDriftProbe"/>,
+    /// known-limits.md).
     /// </summary>
     public sealed class LaplaceLawTests
     {
