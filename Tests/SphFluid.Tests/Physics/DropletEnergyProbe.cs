@@ -1,5 +1,7 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
+using System.Numerics;
 using NUnit.Framework;
 using SphFluid.Simulation;
 
@@ -10,7 +12,8 @@ namespace SphFluid.Tests.Physics
     /// spacings, water's viscosity, no gravity) rounding up releases at most sigma (A_cube - A_ball), a fifth of its
     /// surface energy, and a liquid this thin damps its oscillations over minutes, so its kinetic energy should rise to
     /// about that and stay. Prints the kinetic energy and the fastest particle every 0.1 s for 1.5 s, the release, and
-    /// the health check's bounds. A measurement (a minute of lavapipe for all four), run by name:
+    /// the health check's bounds, and at the end how much of the kinetic energy is the droplet moving as a whole. A
+    /// measurement (a minute of lavapipe for all four), run by name:
     /// <c>bash Headless/test.sh --filter FullyQualifiedName~DropletEnergyProbe</c>.
     /// </summary>
     [Explicit("a measurement, a minute of lavapipe")]
@@ -54,9 +57,19 @@ namespace SphFluid.Tests.Physics
                 fastest = Math.Max(fastest, report.MaxSpeed);
                 if (++frame % 6 == 0) series.Add($"{1000 * report.KineticEnergy:F2}/{report.MaxSpeed:F2}");
             }
+            // How much of the kinetic energy is the droplet moving as a whole (DropletDriftProbe).
+            var particles = new Particle[sim.ParticleCount];
+            sim.Particles.GetData(particles);
+            var ball = LaplaceDroplets.Ball(particles, Spacing);
+            var drift = ball.Members.Aggregate(Vector3.Zero, (a, i) => a + particles[i].Velocity) / ball.Members.Length;
+            double particleMass = scene.SpawnBoxes[0].Phase.RestDensity * Spacing * Spacing * Spacing;
+            double kinetic = particles.Sum(p => 0.5 * particleMass * p.Velocity.LengthSquared());
+            double carried = 0.5 * particleMass * ball.Members.Length * drift.LengthSquared();
             TestContext.Progress.WriteLine($"droplet at {_sigma} N/m under {_solver}: release {1000 * release:F2} mJ; kinetic energy at most " +
                 $"{1000 * most:F2} mJ ({most / release:F1} x), fastest {fastest:F2} m/s (health bounds {check.SpeedBound:F3} m/s, " +
-                $"{1000 * check.EnergyBound:F2} mJ); mJ / m/s every 0.1 s: {string.Join(" ", series)}");
+                $"{1000 * check.EnergyBound:F2} mJ); mJ / m/s every 0.1 s: {string.Join(" ", series)}; at 1.5 s the droplet moves at " +
+                $"{drift.Length():F3} m/s, {(kinetic > 0 ? carried / kinetic : 0):P0} of {1000 * kinetic:F2} mJ, with " +
+                $"{particles.Length - ball.Members.Length} particles shed");
         }
     }
 }
