@@ -16,7 +16,7 @@ namespace SphFluid.Tests.Physics
     /// fitted as the resting tank's is, away from the floor, the interface and the surface by the same fractions of the
     /// support, and averaged over the last half second's frames. Measured (lavapipe, e552511): WCSPH water +1.30 % and oil
     /// +1.54 % from their rho g, DFSPH +0.71 % and +1.78 % (with water in both layers: +1.35 and +1.53 %, -0.53 and +1.65
-    /// %). With the cubic spline at 2 spacings and layers 0.2 m deep the water layer's fit, four spacings just above the
+    /// %); at 29c0008 WCSPH the same and DFSPH +0.26 % and +1.01 %. With the cubic spline at 2 spacings and layers 0.2 m deep the water layer's fit, four spacings just above the
     /// floor, fell 16 % (WCSPH) and 14 % (DFSPH) short, and 13 and 8 % with water in both layers: that lattice gives way
     /// under the deeper pressure (README, "Measured against physics"). Run by name (about a minute on lavapipe):
     /// <c>bash Headless/test.sh --filter "FullyQualifiedName~LayeredHydrostaticsProbe"</c>.
