@@ -43,9 +43,7 @@ namespace SphFluid.Tests.Physics
                 sim.Particles.GetData(particles);
                 var ball = LaplaceDroplets.Ball(particles, Spacing);
                 if (sample == 0) start = ball.Centre;
-                var velocity = ball.Members.Aggregate(Vector3.Zero, (a, i) => a + particles[i].Velocity) / ball.Members.Length;
-                double kinetic = particles.Sum(p => 0.5 * mass * p.Velocity.LengthSquared());
-                double carried = 0.5 * mass * ball.Members.Length * velocity.LengthSquared();
+                var (velocity, kinetic, carried) = LaplaceDroplets.Motion(particles, ball.Members, mass);
                 double axis = 0, diagonal = 0;
                 foreach (int i in ball.Members)
                 {

@@ -1,7 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Linq;
-using System.Numerics;
 using NUnit.Framework;
 using SphFluid.Simulation;
 
@@ -64,10 +62,8 @@ namespace SphFluid.Tests.Physics
             var particles = new Particle[sim.ParticleCount];
             sim.Particles.GetData(particles);
             var ball = LaplaceDroplets.Ball(particles, Spacing);
-            var drift = ball.Members.Aggregate(Vector3.Zero, (a, i) => a + particles[i].Velocity) / ball.Members.Length;
             double particleMass = scene.SpawnBoxes[0].Phase.RestDensity * Spacing * Spacing * Spacing;
-            double kinetic = particles.Sum(p => 0.5 * particleMass * p.Velocity.LengthSquared());
-            double carried = 0.5 * particleMass * ball.Members.Length * drift.LengthSquared();
+            var (drift, kinetic, carried) = LaplaceDroplets.Motion(particles, ball.Members, particleMass);
             TestContext.Progress.WriteLine($"droplet at {_sigma} N/m under {_solver}: release {1000 * release:F2} mJ; kinetic energy at most " +
                 $"{1000 * most:F2} mJ ({(release > 0 ? $"{most / release:F1} x" : "no release")}), fastest {fastest:F2} m/s (health bounds {check.SpeedBound:F3} m/s, " +
                 $"{1000 * check.EnergyBound:F2} mJ); mJ / m/s every 0.1 s: {string.Join(" ", series)}; at 1.5 s the droplet moves at " +

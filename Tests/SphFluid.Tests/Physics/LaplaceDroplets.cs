@@ -109,7 +109,7 @@ namespace SphFluid.Tests.Physics
                 var ball = Ball(particles, spacing);
                 if (sample == 5) start = ball.Centre;
                 (centre, shed) = (ball.Centre, particles.Length - ball.Members.Length);
-                velocity = ball.Members.Aggregate(Vector3.Zero, (a, i) => a + particles[i].Velocity) / ball.Members.Length;
+                velocity = Motion(particles, ball.Members, 0.0).Velocity;
                 var core = ball.Members.Where(i => (particles[i].Position - ball.Centre).Length() < 0.5 * ball.Radius).ToArray();
                 ballPressures.Add(core.Average(i => (double)densities[i].Y));
                 ballRadii.Add(ball.Radius);
@@ -138,6 +138,16 @@ namespace SphFluid.Tests.Physics
             var centre = members.Aggregate(Vector3.Zero, (a, i) => a + particles[i].Position) / members.Length;
             double radius = Math.Cbrt(3 * members.Length / (4 * Math.PI)) * spacing;
             return (centre, radius, members);
+        }
+
+        /// <summary>How a droplet moves as a whole: its members' mean velocity, the kinetic energy of every particle, and
+        /// the part of it that mean velocity carries (the members' mass moving at it), for particles of
+        /// <paramref name="particleMass"/> kg.</summary>
+        public static (Vector3 Velocity, double Kinetic, double Carried) Motion(Particle[] particles, int[] members, double particleMass)
+        {
+            var velocity = members.Aggregate(Vector3.Zero, (a, i) => a + particles[i].Velocity) / members.Length;
+            double kinetic = particles.Sum(p => 0.5 * particleMass * p.Velocity.LengthSquared());
+            return (velocity, kinetic, 0.5 * particleMass * members.Length * velocity.LengthSquared());
         }
     }
 }
