@@ -13,12 +13,12 @@ namespace SphFluid.Tests.Physics
     /// side in a 0.6 m tank, released at once. Its two fronts, sampled every frame from the release to 1.4 s, and their
     /// speeds fitted where each lies 5 to 22 cm from the lock (after the start, before the end wall), against Benjamin's
     /// energy-conserving gravity current. As shipped the water's front along the floor runs at 0.63 of his speed and the
-    /// oil's along the free surface at 0.75 (Froude numbers 0.315 and 0.377 against his 1/2): at this resolution the
+    /// oil's along the free surface at 0.75 (Froude numbers 0.316 and 0.377 against his 1/2): at this resolution the
     /// current's head spans about two supports, and WCSPH's artificial viscosity and delta-SPH diffusion, both in
     /// proportion to the speed of sound, slow it further. In the limit his theory describes (DFSPH, a tenth of each
-    /// liquid's viscosity, slip walls) both currents run at about 0.8 of his speed by <see cref="LockExchange.Heads"/>,
+    /// liquid's viscosity, slip walls) both currents run at 0.74 to 0.84 of his speed by <see cref="LockExchange.Heads"/>,
     /// which does not change with the spacing, while the oil's front here counts a film running ahead along the surface
-    /// as the support shrinks, reading 1.06 of his speed at twice the resolution (<see cref="LockExchangeProbe"/>;
+    /// as the support shrinks, reading 1.02 to 1.08 of his speed at 1.26 to 2 times finer (<see cref="LockExchangeProbe"/>;
     /// Headless/docs/physics.md, "The lock exchange, against Benjamin's gravity current").
     /// </summary>
     public sealed class LockExchangeTests
