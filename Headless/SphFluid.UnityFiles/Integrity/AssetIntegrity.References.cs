@@ -28,7 +28,7 @@ public sealed partial class AssetIntegrity
 
     void CheckSerializedFile(string file, UnityYamlFile yaml)
     {
-        if (!yaml.HasUnityHeader) ReportAt(file, $"must start with '{UnityYamlFile.YamlHeader}' and '{UnityYamlFile.TagHeader}'");
+        if (!yaml.HasUnityHeader) ReportAt(file, $"must start with '{UnityYamlFile.YamlHeader}' and '{UnityYamlFile.TagHeader}'", 1);
         foreach (var id in yaml.DuplicateFileIds.Distinct())
         {
             var lines = yaml.Documents.Where(d => d.FileId == id).Select(d => d.Line).ToList();
@@ -36,7 +36,7 @@ public sealed partial class AssetIntegrity
         }
         foreach (var d in yaml.Documents)
             if (UnityKnownIds.TypeNames.TryGetValue(d.ClassId, out var type) && type != d.TypeName)
-                ReportAt(file, $"document &{d.FileId} (line {d.Line}) is class {d.ClassId} ({type}) but its root key is '{d.TypeName}'");
+                ReportAt(file, $"document &{d.FileId} is class {d.ClassId} ({type}) but its root key is '{d.TypeName}'", d.Line);
         if (_metaByAsset.TryGetValue(file, out var meta) && meta.MainObjectFileId is long main && yaml.Find(main) == null)
             ReportAt(file, $"its .meta says mainObjectFileID {main} but no document is '&{main}'");
         CheckReferences(file, yaml);
@@ -68,55 +68,56 @@ public sealed partial class AssetIntegrity
             foreach (var (path, r) in doc.Root.References())
             {
                 var where = $"&{doc.FileId} {doc.TypeName}.{path}";
+                int line = doc.Root.At(path)?.Line ?? doc.Line;
                 if (r.IsNull) continue;
                 if (r.IsLocal)
                 {
-                    if (yaml.Find(r.FileId) == null) ReportAt(file, $"{where} points at &{r.FileId}, which is not in this file", doc.Root.At(path)?.Line ?? doc.Line);
+                    if (yaml.Find(r.FileId) == null) ReportAt(file, $"{where} points at &{r.FileId}, which is not in this file", line);
                     continue;
                 }
                 if (!UnityMeta.IsValidGuid(r.Guid))
                 {
-                    ReportAt(file, $"{where} has malformed guid '{r.Guid}'");
+                    ReportAt(file, $"{where} has malformed guid '{r.Guid}'", line);
                     continue;
                 }
                 if (r.IsBuiltin) continue;
                 if (UnityKnownIds.PackageObjectGuids.TryGetValue(r.Guid, out var packaged))
                 {
                     if (_manifest != null && !_manifest.Has(packaged.Package) && !InSample(file))
-                        ReportAt(file, $"{where} uses {packaged.Name}, which needs {packaged.Package} in Packages/manifest.json");
+                        ReportAt(file, $"{where} uses {packaged.Name}, which needs {packaged.Package} in Packages/manifest.json", line);
                     continue;
                 }
                 if (Extension(file) == ".unity") _sceneReferencedGuids.Add(r.Guid);
                 if (Extension(file) == ".mat" && path == "m_Shader") _materialShaders[file] = r.Guid;
                 if (!_assetByGuid.TryGetValue(r.Guid, out var target))
                 {
-                    ReportAt(file, $"{where} references guid {r.Guid}, which no .meta in the project has", doc.Root.At(path)?.Line ?? doc.Line);
+                    ReportAt(file, $"{where} references guid {r.Guid}, which no .meta in the project has", line);
                     continue;
                 }
-                CheckMainObject(file, where, r, target);
+                CheckMainObject(file, where, line, r, target);
             }
         }
     }
 
-    void CheckMainObject(string file, string where, UnityReference r, string target)
+    void CheckMainObject(string file, string where, int line, UnityReference r, string target)
     {
         var ext = Extension(target);
         var rule = UnityKnownIds.MainObjects.FirstOrDefault(kv => kv.Key.Equals(ext, StringComparison.OrdinalIgnoreCase));
         if (rule.Key == null) return;
         var (fileId, type) = rule.Value;
         var name = Rel(target);
-        if (r.Type != type) ReportAt(file, $"{where} references '{name}' with type {r.Type}; a {ext} takes type {type}");
+        if (r.Type != type) ReportAt(file, $"{where} references '{name}' with type {r.Type}; a {ext} takes type {type}", line);
         if (fileId is long expected)
         {
-            if (r.FileId != expected) ReportAt(file, $"{where} references '{name}' with fileID {r.FileId}; a {ext} main object is {expected}");
+            if (r.FileId != expected) ReportAt(file, $"{where} references '{name}' with fileID {r.FileId}; a {ext} main object is {expected}", line);
         }
-        else if (r.FileId == 0) ReportAt(file, $"{where} references '{name}' with fileID 0");
+        else if (r.FileId == 0) ReportAt(file, $"{where} references '{name}' with fileID 0", line);
         else if (ext.Equals(".asset", StringComparison.OrdinalIgnoreCase) && StartsWithYamlHeader(target))
         {
             try
             {
                 if (UnityYamlFile.Load(target).Find(r.FileId) == null)
-                    ReportAt(file, $"{where} references &{r.FileId} in '{name}', which has no such object");
+                    ReportAt(file, $"{where} references &{r.FileId} in '{name}', which has no such object", line);
             }
             catch (FormatException) { } // the target's own parse error is reported on the target
         }

@@ -214,6 +214,20 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: &287989891 MonoBehaviour.m_Script references guid 0123456789abcdef0123456789abcdef, which no .meta in the project has"));
         }
 
+        /// <summary>A guid that is not 32 hex digits names its line, as an unresolved one does.</summary>
+        [Test]
+        public void ASpawnBoxWithAMalformedScriptGuidIsRefusedAtItsLine()
+        {
+            string guid = RunnerPaths.Project.ScriptGuid("SpawnBox");
+            string malformed = guid.Substring(0, 16) + "NaN" + guid.Substring(19);
+            string path = Write(EditDocument("--- !u!114 &287989891", "guid: " + guid, "guid: " + malformed, out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: &287989891 MonoBehaviour.m_Script has malformed guid '{malformed}'"));
+        }
+
         /// <summary>Whether a spawn box counts follows its m_Enabled; a value Unity never writes was read as "enabled".</summary>
         [Test]
         public void ASpawnBoxEnabledFlagThatIsNoBoolIsRefusedAtItsLine()
