@@ -65,6 +65,10 @@ public sealed partial class AssetIntegrity
     {
         foreach (var doc in yaml.Documents)
         {
+            // References() passes over these, so a typo would otherwise read as an unassigned field.
+            foreach (var node in doc.Root.DescendantsAndSelf())
+                if (node.IsReference && !UnityReference.TryFrom(node, out _))
+                    ReportAt(file, $"&{doc.FileId} {doc.TypeName} has a reference whose fileID '{node["fileID"]!.Value}' is not a 64-bit integer, as Unity's fileIDs are", node.Line);
             foreach (var (path, r) in doc.Root.References())
             {
                 var where = $"&{doc.FileId} {doc.TypeName}.{path}";

@@ -228,6 +228,23 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: &287989891 MonoBehaviour.m_Script has malformed guid '{malformed}'"));
         }
 
+        /// <summary>A fileID that is no integer was read as no reference at all, so the Fluid fell back to the scene's
+        /// container as if the field were unassigned.</summary>
+        [Test]
+        public void AContainerReferenceWhoseFileIdIsNoIntegerIsRefusedAtItsLine()
+        {
+            string text = File.ReadAllText(RunnerPaths.Scene(Default));
+            var match = System.Text.RegularExpressions.Regex.Match(text, @"\n  container: \{fileID: (\d+)\}");
+            Assert.That(match.Success, Is.True, "the scene assigns Fluid.container");
+            int line = text.Substring(0, match.Index + 1).Count(c => c == '\n') + 1;
+            string path = Write(text.Remove(match.Groups[1].Index, match.Groups[1].Length).Insert(match.Groups[1].Index, "abc"));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: &").And.Contain("MonoBehaviour has a reference whose fileID 'abc' is not a 64-bit integer"));
+        }
+
         /// <summary>Whether a spawn box counts follows its m_Enabled; a value Unity never writes was read as "enabled".</summary>
         [Test]
         public void ASpawnBoxEnabledFlagThatIsNoBoolIsRefusedAtItsLine()
