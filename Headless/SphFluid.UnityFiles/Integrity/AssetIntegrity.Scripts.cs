@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
 using System.IO;
 using System.Linq;
 using System.Text.RegularExpressions;
@@ -78,8 +79,32 @@ public sealed partial class AssetIntegrity
             if (current != null) sources.Add(Comments().Replace(ReadText(current.File), " "));
         }
         foreach (var key in doc.Root.Keys.Where(k => !BehaviourKeys.Contains(k)))
+        {
             if (!sources.Any(src => Regex.IsMatch(src, @"\b" + Regex.Escape(key) + @"\b")))
                 ReportAt(file, $"{where} sets '{key}', which '{Rel(csFile)}' does not declare (Unity drops it and the field keeps its default)", doc.Root[key]?.Line ?? doc.Line);
+            else if (doc.Root[key] is { IsScalar: true } value && UnwrittenScalar(sources, key, value.Value) is { } expected)
+                ReportAt(file, $"{where} {key} must be {expected} (was '{value.Value}'), as Unity writes the field '{Rel(csFile)}' declares", value.Line);
+        }
+    }
+
+    [GeneratedRegex(@"\b(?<type>bool|int|float)\s+(?<name>[A-Za-z_]\w*)\s*(?:=[^;]*)?;")]
+    private static partial Regex ScalarField();
+
+    /// <summary>
+    /// What Unity would write for a top-level bool, int or float field in place of <paramref name="text"/>, or null when
+    /// it could have written it. The scene reader reads only the fields it simulates, so a hand-edited `visible: abc` on
+    /// another component would otherwise pass and leave Unity to read it as it may.
+    /// </summary>
+    static string? UnwrittenScalar(IEnumerable<string> sources, string key, string? text)
+    {
+        var type = sources.SelectMany(src => ScalarField().Matches(src)).FirstOrDefault(m => m.Groups["name"].Value == key)?.Groups["type"].Value;
+        return type switch
+        {
+            "bool" => text is "0" or "1" ? null : "0 or 1 (a bool)",
+            "int" => int.TryParse(text, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out _) ? null : "a whole number in the range of an int",
+            "float" => UnityYamlNode.TryParseNumber(text, out _) ? null : "a number (a float)",
+            _ => null,
+        };
     }
 
     /// <summary>The legacy Input class throws at runtime when only the Input System is active (activeInputHandler 1).</summary>

@@ -381,6 +381,22 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain(message));
         }
 
+        /// <summary>Fields the runner does not read (Unity's alone) passed whatever they held; they must be what Unity
+        /// writes for the type their script declares.</summary>
+        [TestCase("--- !u!114 &1249553504", "requestDiagnostics: 1", "requestDiagnostics: abc", "requestDiagnostics must be 0 or 1 (a bool) (was 'abc')")]
+        [TestCase("--- !u!114 &482617472", "fontSize: 14", "fontSize: 1e30", "fontSize must be a whole number in the range of an int (was '1e30')")]
+        [TestCase("--- !u!114 &482617472", "visible: 1", "visible: 2", "visible must be 0 or 1 (a bool) (was '2')")]
+        public void UnityOnlyFieldsMustHoldWhatUnityWritesForTheirType(string header, string find, string replace, string message)
+        {
+            string path = Write(EditDocument(header, find, replace, out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: MonoBehaviour &"));
+            Assert.That(run.Stderr, Does.Contain(message));
+        }
+
         /// <summary>A sphere that covers every spawn point once reached the GPU with no particle ("unexpected failure",
         /// exit 1): it is a scene error at the sphere's radius.</summary>
         [Test]
