@@ -184,7 +184,7 @@ public static class SceneLoader
             var node = mb.Root.At(field);
             if (node == null) return fallback;
             try { return mb.Root.GetVector3(field); }
-            catch (FormatException) { throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be {allowed} (was '{node}')"); }
+            catch (FormatException) { throw new SceneException($"{path}:{UnreadableLine(node, "x", "y", "z")}: {Where(go, component, field)} must be {allowed} (was '{node}')"); }
         }
 
         Vector4 Color(UnityGameObject go, UnityDocument mb, string component, string field, Vector4 fallback, string allowed = "a colour {r, g, b, a}")
@@ -192,8 +192,12 @@ public static class SceneLoader
             var node = mb.Root.At(field);
             if (node == null) return fallback;
             try { return mb.Root.GetColor(field); }
-            catch (FormatException) { throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be {allowed} (was '{node}')"); }
+            catch (FormatException) { throw new SceneException($"{path}:{UnreadableLine(node, "r", "g", "b", "a")}: {Where(go, component, field)} must be {allowed} (was '{node}')"); }
         }
+
+        /// <summary>The line of the first component that holds no number, else the whole value's.</summary>
+        static int UnreadableLine(UnityYamlNode node, params string[] components) =>
+            components.Select(c => node[c]).FirstOrDefault(c => c != null && !(c.IsScalar && UnityYamlNode.TryParseNumber(c.Value, out _)))?.Line ?? node.Line;
 
         static readonly (string Field, string[] Axes)[] TransformFields =
         {

@@ -134,7 +134,8 @@ public sealed class UnityYamlNode
 
     public float GetFloat(string path) => (float)GetDouble(path);
 
-    public float GetFloat(string path, float fallback) => TryGetDouble(path, out var v) ? (float)v : fallback;
+    /// <summary>The fallback stands in for a missing key only: a key that holds no number is an error, as without one.</summary>
+    public float GetFloat(string path, float fallback) => At(path) == null ? fallback : GetFloat(path);
 
     public double GetDouble(string path) =>
         TryGetDouble(path, out var v) ? v : throw Missing(path, "a number");

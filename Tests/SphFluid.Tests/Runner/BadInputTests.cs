@@ -412,6 +412,18 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain("so the scene would spawn no particle"));
         }
 
+        /// <summary>An alpha that holds no number was read as the default for a missing one, 1.</summary>
+        [Test]
+        public void AColourAlphaThatIsNoNumberIsRefusedInsteadOfReadAsOpaque()
+        {
+            string path = Write(EditDocument("--- !u!114 &287989891", "a: 0.85", "a: abc", out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Oil', SpawnBox.spawn.Phase.Color must be a colour {{r, g, b, a}}"));
+        }
+
         [Test]
         public void AColourChannelBeyondOneIsRefusedAtItsLineWithTheRange()
         {
