@@ -11,21 +11,22 @@ namespace SphFluid.Simulation
     /// <list type="number">
     /// <item>a particle is NaN or infinite, one is outside the container, or the count changed;</item>
     /// <item>a particle is faster than the speed bound
-    ///   V = <see cref="SpeedMargin"/> (sqrt(2 |g| D) + v_spawn + 2 v_wall + 2 v_obstacle + v_capillary) + <see cref="AcousticFraction"/> c,
+    ///   V = <see cref="SpeedMargin"/> (sqrt(2 |g| D) + v_spawn + 2 v_wall + 2 v_obstacle + v_capillary + c e0) + <see cref="AcousticFraction"/> c,
     ///   where D is the container's diagonal (the longest fall in any orientation), v_spawn the fastest initial
     ///   velocity, v_wall the fastest wall point of the moving container (|V| + |w| D / 2) and v_obstacle the
     ///   fastest sphere, both the largest seen so far (a wall can at most double the speed of what it hits),
-    ///   v_capillary the fastest a surface can pull its liquid (<see cref="CapillarySpeed"/>), and c the highest
-    ///   speed of sound of the phases (the acoustic noise of a weakly compressible liquid with a 1 % density error;
-    ///   validation keeps c / 100 below the scene's own speeds);</item>
+    ///   v_capillary the fastest a surface can pull its liquid (<see cref="CapillarySpeed"/>), c the highest
+    ///   speed of sound of the phases and e0 the largest compression of the first state checked (c e0, the
+    ///   <see cref="ReleaseSpeed"/>, is what that compression sets moving when released), and the last term the
+    ///   acoustic noise of a weakly compressible liquid with a 1 % density error (validation keeps c / 100 below the
+    ///   scene's own speeds);</item>
     /// <item>a phase's mean compression max(0, rho / rho0 - 1) exceeds <see cref="MeanCompressionBound"/>, what a
     ///   Mach-1 impact leaves ((1 + gamma / 2)^(1 / gamma) - 1, 24 % at gamma = 7: validation keeps every scene
     ///   subsonic), or one particle's exceeds twice that, <see cref="MaxCompressionBound"/>;</item>
     /// <item>with no moving wall or obstacle seen, the mechanical energy (kinetic plus gravitational,
     ///   <see cref="FluidEnergy"/>) grew above its first value by more than M (<see cref="EnergyAllowance"/> |g| D
     ///   + (c e0)^2 / 2) + E_surface: nothing else can feed it but the elastic energy the first state stores, which
-    ///   the second term bounds from above (the linearised Tait energy c^2 e^2 / 2 per kilogram, with e0 the largest
-    ///   compression of the first state and c the highest speed of sound), and the surface energy of the spawn
+    ///   the second term bounds from above (the linearised Tait energy c^2 e^2 / 2 per kilogram), and the surface energy of the spawn
     ///   (<see cref="SurfaceEnergy"/>); the first term absorbs integration error. With a driver, the speed bound caps
     ///   the energy instead.</item>
     /// </list>
@@ -47,7 +48,7 @@ namespace SphFluid.Simulation
         readonly int _spawned;
         readonly double _totalMass;
         double _firstEnergy = double.NaN;
-        float _firstCompression;
+        bool _checkedFirst;
 
         /// <summary>Bounds for <paramref name="scene"/> (validated), whose particles the simulation spawned:
         /// <paramref name="spawnedCount"/> of them (FluidSimulation.ParticleCount: lattice points inside obstacles are not
@@ -122,8 +123,15 @@ namespace SphFluid.Simulation
         /// 26 % at the spacings measured), and in zero gravity nothing else lets a droplet's mechanical energy grow.</summary>
         public double SurfaceEnergy { get; }
 
+        /// <summary>c e0, m/s: the speed at which the first checked state's largest compression e0 sets its liquid moving
+        /// when released (a sound wave that relieves a compression e moves the liquid at c e), 0 before the first check.
+        /// Gravity holds a tank's hydrostatic compression in place, but in zero gravity nothing does: DamBreak's spawn,
+        /// compressed by up to 5.5 % beside its walls, moved at 0.34 m/s within two frames, past the 0.19 m/s that the
+        /// other terms allowed.</summary>
+        public float ReleaseSpeed { get; private set; }
+
         /// <summary>The speed no particle may exceed, m/s (grows when faster drivers are observed).</summary>
-        public float SpeedBound => SpeedMargin * (FreeFallSpeed + SpawnSpeed + 2f * WallSpeed + 2f * ObstacleSpeed + CapillarySpeed)
+        public float SpeedBound => SpeedMargin * (FreeFallSpeed + SpawnSpeed + 2f * WallSpeed + 2f * ObstacleSpeed + CapillarySpeed + ReleaseSpeed)
             + AcousticFraction * SpeedOfSound;
 
         /// <summary>A container wall or sphere has moved: energy may come in from outside.</summary>
@@ -137,7 +145,7 @@ namespace SphFluid.Simulation
         {
             get
             {
-                double elastic = SpeedOfSound * (double)_firstCompression;
+                double elastic = ReleaseSpeed;
                 return _totalMass * (EnergyAllowance * _gravity.Length() * ContainerDiagonal + 0.5 * elastic * elastic) + SurfaceEnergy;
             }
         }
@@ -180,6 +188,15 @@ namespace SphFluid.Simulation
             if (report.ParticleCount != _spawned)
                 return new HealthProblem(t, all, "particle count change", Math.Abs(report.ParticleCount - _spawned), 0, "", $"{report.ParticleCount} counted, {_spawned} spawned");
 
+            if (!_checkedFirst)
+            {
+                _checkedFirst = true;
+                float compression = 0f;
+                foreach (var phase in report.Phases)
+                    if (ValidationRules.IsFinite(phase.MaxDensityError)) compression = Math.Max(compression, phase.MaxDensityError);
+                ReleaseSpeed = SpeedOfSound * compression;
+            }
+
             var speed = SpeedProblem(report, particles);
             if (speed != null) return speed;
 
@@ -195,11 +212,7 @@ namespace SphFluid.Simulation
             if (particles != null && !Driven)
             {
                 double energy = FluidEnergy.Mechanical(particles, _phases, _gravity);
-                if (double.IsNaN(_firstEnergy))
-                {
-                    _firstEnergy = energy;
-                    foreach (var phase in report.Phases) _firstCompression = Math.Max(_firstCompression, phase.MaxDensityError);
-                }
+                if (double.IsNaN(_firstEnergy)) _firstEnergy = energy;
                 else EnergyGrowth = energy - _firstEnergy;
                 if (!(EnergyGrowth <= EnergyBound))
                     return new HealthProblem(t, all, "mechanical energy growth", energy - _firstEnergy, EnergyBound, "J",
@@ -235,7 +248,7 @@ namespace SphFluid.Simulation
 
         /// <summary>How the speed bound is made up; composed only for a problem, so that a healthy check makes no garbage.</summary>
         string SpeedReason() => string.Format(System.Globalization.CultureInfo.InvariantCulture,
-            "{0} x (free fall over the container {1:G3} + spawn {2:G3} + 2 x wall {3:G3} + 2 x obstacle {4:G3} + capillary {7:G3} m/s) + {5} x speed of sound {6:G3} m/s",
-            SpeedMargin, FreeFallSpeed, SpawnSpeed, WallSpeed, ObstacleSpeed, AcousticFraction, SpeedOfSound, CapillarySpeed);
+            "{0} x (free fall over the container {1:G3} + spawn {2:G3} + 2 x wall {3:G3} + 2 x obstacle {4:G3} + capillary {7:G3} + the first state's compression released {8:G3} m/s) + {5} x speed of sound {6:G3} m/s",
+            SpeedMargin, FreeFallSpeed, SpawnSpeed, WallSpeed, ObstacleSpeed, AcousticFraction, SpeedOfSound, CapillarySpeed, ReleaseSpeed);
     }
 }

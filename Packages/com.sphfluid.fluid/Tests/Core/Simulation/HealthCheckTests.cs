@@ -51,6 +51,23 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(check.SpeedBound, Is.EqualTo(2f * (4.1222f + 3f) + 0.18708f).Within(1e-3f));
         }
 
+        /// <summary>The first state's largest compression, 5 %, released as sound moves the liquid at c x 0.05 = 0.935 m/s:
+        /// it joins the speed bound under the margin, and a later, larger compression does not move it.</summary>
+        [Test]
+        public void TheFirstStatesCompression_AddsItsReleaseSpeedOnce()
+        {
+            var check = new HealthCheck(Droplet());
+            float still = check.SpeedBound;
+            Assert.That(check.ReleaseSpeed, Is.EqualTo(0f));
+
+            Assert.That(check.Check(Report(0.0, 0f, 0.01f, 0.05f)), Is.Null);
+            Assert.That(check.ReleaseSpeed, Is.EqualTo(0.05f * 18.708f).Within(1e-3f));
+            Assert.That(check.SpeedBound, Is.EqualTo(still + 2f * 0.05f * 18.708f).Within(1e-3f));
+
+            Assert.That(check.Check(Report(0.1, 1f, 0.02f, 0.2f)), Is.Null);
+            Assert.That(check.ReleaseSpeed, Is.EqualTo(0.05f * 18.708f).Within(1e-3f));
+        }
+
         /// <summary>Water's own tension on the droplet (0.04 m cube, s 0.02 m): the Taylor-Culick speed of a sheet one spacing
         /// thick, sqrt(2 x 0.072 / (1000 x 0.02)) = 0.0849 m/s, joins the speed bound, and the cube's surface energy,
         /// 0.072 x 6 x 0.04^2 = 6.91e-4 J, the energy bound.</summary>
