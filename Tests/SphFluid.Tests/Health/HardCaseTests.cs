@@ -289,8 +289,9 @@ namespace SphFluid.Tests.Health
             AssertHealthy(HealthRun.Of(scene, 0.1, maxFrames: 6));
         }
 
-        /// <summary>The shipped scenes that keep summation density spawn compressed beside their walls (DamBreak by up to
-        /// 5.5 %), which gravity holds in place. With gravity set to zero that compression is released as sound, and
+        /// <summary>The shipped scenes that keep summation density spawn their lattice jittered by a twentieth of a spacing,
+        /// which compresses single particles by up to 5.5 % (DamBreak); under gravity the free fall's term of the speed
+        /// bound dwarfs what that releases. With gravity set to zero that compression is released as sound, and
         /// DamBreak's water moved at 0.34 m/s within two frames, past the 0.19 m/s bound that its zero free fall left (1 %
         /// of its speed of sound): a valid scene stopped as unhealthy. The bound now counts the release, c e0
         /// (HealthCheck.ReleaseSpeed).</summary>

@@ -125,9 +125,9 @@ namespace SphFluid.Simulation
 
         /// <summary>c e0, m/s: the speed at which the first checked state's largest compression e0 sets its liquid moving
         /// when released (a sound wave that relieves a compression e moves the liquid at c e), 0 before the first check.
-        /// Gravity holds a tank's hydrostatic compression in place, but in zero gravity nothing does: DamBreak's spawn,
-        /// compressed by up to 5.5 % beside its walls, moved at 0.34 m/s within two frames, past the 0.19 m/s that the
-        /// other terms allowed.</summary>
+        /// Under gravity the free fall's term dwarfs it, but in zero gravity nothing else bounds it: DamBreak's spawn,
+        /// jittered by a twentieth of a spacing, which compresses single particles by up to 5.5 %, moved at 0.34 m/s
+        /// within two frames, past the 0.19 m/s that the other terms allowed.</summary>
         public float ReleaseSpeed { get; private set; }
 
         /// <summary>The speed no particle may exceed, m/s (grows when faster drivers are observed).</summary>
