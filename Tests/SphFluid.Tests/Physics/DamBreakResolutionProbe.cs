@@ -9,7 +9,7 @@ namespace SphFluid.Tests.Physics
     /// Monaghan's artificial viscosity and DFSPH (which has none): where each front converges against Martin and Moyce's.
     /// Measured (lavapipe, e6e1d57), the lead over the paper at T = 3.35: WCSPH without artificial viscosity 7.0, 8.0,
     /// 8.6 and 9.7 %, DFSPH 10.3, 11.9, 9.5 and 10.7 % (at d4df871's settled spawn; 12.7, 9.6, 10.5 and 11.1 % at
-    /// e6e1d57; at 29c0008 13.5, 9.8, 10.4 and 10.7 %, WCSPH as shipped 1.7, 2.4, 3.1 and 3.6 % and without it 8.5 at
+    /// e6e1d57; at 29c0008 and again at a75efbc 13.5, 9.8, 10.4 and 10.7 %, WCSPH as shipped 1.7, 2.4, 3.1 and 3.6 % and without it 8.5 at
     /// 16), so the two solvers of the same nearly inviscid fluid close on each other as the particles get finer
     /// (1.0 % of the paper's front apart at 24); WCSPH as shipped 1.8, 2.3, 3.0 and
     /// 3.6 %, its artificial viscosity shrinking with the spacing; with delta-SPH (19d0817) 3.3, 4.7, 5.4 and 5.5 %,
