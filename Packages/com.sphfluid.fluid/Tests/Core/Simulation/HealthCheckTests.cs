@@ -113,6 +113,21 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(check.MaxCompressionBound, Is.EqualTo(2f * check.MeanCompressionBound));
         }
 
+        /// <summary>A spawn that crowds one particle to 60 % (a jitter of half a spacing) is the scene's own state, not an
+        /// impact: the bound for one particle rises to it, and a later state past it is still caught.</summary>
+        [Test]
+        public void AFirstStateCrowdedPastTwiceTheMeanBound_RaisesTheOneParticleBoundToIt()
+        {
+            var check = new HealthCheck(Droplet());
+            Assert.That(check.Check(Report(0.0, 0f, 0.05f, 0.6f)), Is.Null);
+            Assert.That(check.FirstCompression, Is.EqualTo(0.6f));
+            Assert.That(check.MaxCompressionBound, Is.EqualTo(0.6f));
+            Assert.That(check.Check(Report(0.1, 0f, 0.05f, 0.55f)), Is.Null);
+            var problem = check.Check(Report(0.2, 0f, 0.05f, 0.65f));
+            Assert.That(problem, Is.Not.Null);
+            Assert.That(problem.Figure, Is.EqualTo("max compression"));
+        }
+
         [Test]
         public void AHealthyState_HasNoProblem()
         {
