@@ -202,30 +202,19 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: anchor &1485336898 is used by more than one document"));
         }
 
-        [Test]
-        public void ASpawnBoxWithAnUnknownScriptGuidIsRefusedInsteadOfDropped()
+        /// <summary>A script guid that no .meta has, or that is not 32 hex digits at all, is refused at its line rather
+        /// than the box being dropped as a missing script.</summary>
+        [TestCase("0123456789abcdef0123456789abcdef", "references guid 0123456789abcdef0123456789abcdef, which no .meta in the project has")]
+        [TestCase("0123456789abcdefNaN9abcdef012345", "has malformed guid '0123456789abcdefNaN9abcdef012345'")]
+        public void ASpawnBoxWithAnUnknownScriptGuidIsRefusedInsteadOfDropped(string unknown, string problem)
         {
             string guid = RunnerPaths.Project.ScriptGuid("SpawnBox");
-            string path = Write(EditDocument("--- !u!114 &287989891", "guid: " + guid, "guid: 0123456789abcdef0123456789abcdef", out int line));
+            string path = Write(EditDocument("--- !u!114 &287989891", "guid: " + guid, "guid: " + unknown, out int line));
 
             var run = Simulate(path);
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: &287989891 MonoBehaviour.m_Script references guid 0123456789abcdef0123456789abcdef, which no .meta in the project has"));
-        }
-
-        /// <summary>A guid that is not 32 hex digits names its line, as an unresolved one does.</summary>
-        [Test]
-        public void ASpawnBoxWithAMalformedScriptGuidIsRefusedAtItsLine()
-        {
-            string guid = RunnerPaths.Project.ScriptGuid("SpawnBox");
-            string malformed = guid.Substring(0, 16) + "NaN" + guid.Substring(19);
-            string path = Write(EditDocument("--- !u!114 &287989891", "guid: " + guid, "guid: " + malformed, out int line));
-
-            var run = Simulate(path);
-
-            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: &287989891 MonoBehaviour.m_Script has malformed guid '{malformed}'"));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: &287989891 MonoBehaviour.m_Script {problem}"));
         }
 
         /// <summary>A fileID that is no integer was read as no reference at all, so the Fluid fell back to the scene's
