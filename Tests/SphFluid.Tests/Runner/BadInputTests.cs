@@ -222,11 +222,7 @@ namespace SphFluid.Tests.Runner
         [Test]
         public void AContainerReferenceWhoseFileIdIsNoIntegerIsRefusedAtItsLine()
         {
-            string text = File.ReadAllText(RunnerPaths.Scene(Default));
-            var match = System.Text.RegularExpressions.Regex.Match(text, @"\n  container: \{fileID: (\d+)\}");
-            Assert.That(match.Success, Is.True, "the scene assigns Fluid.container");
-            int line = text.Substring(0, match.Index + 1).Count(c => c == '\n') + 1;
-            string path = Write(text.Remove(match.Groups[1].Index, match.Groups[1].Length).Insert(match.Groups[1].Index, "abc"));
+            string path = Write(EditDocument("--- !u!114 &1249553504", "container: {fileID: 327545201}", "container: {fileID: abc}", out int line));
 
             var run = Simulate(path);
 
