@@ -217,19 +217,6 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: &287989891 MonoBehaviour.m_Script {problem}"));
         }
 
-        /// <summary>A fileID that is no integer was read as no reference at all, so the Fluid fell back to the scene's
-        /// container as if the field were unassigned.</summary>
-        [Test]
-        public void AContainerReferenceWhoseFileIdIsNoIntegerIsRefusedAtItsLine()
-        {
-            string path = Write(EditDocument("--- !u!114 &1249553504", "container: {fileID: 327545201}", "container: {fileID: abc}", out int line));
-
-            var run = Simulate(path);
-
-            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: &").And.Contain("MonoBehaviour has a reference whose fileID 'abc' is not a 64-bit integer"));
-        }
-
         /// <summary>Whether a spawn box counts follows its m_Enabled; a value Unity never writes was read as "enabled".</summary>
         [Test]
         public void ASpawnBoxEnabledFlagThatIsNoBoolIsRefusedAtItsLine()
@@ -397,16 +384,20 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain("so the scene would spawn no particle"));
         }
 
-        /// <summary>An alpha that holds no number was read as the default for a missing one, 1.</summary>
-        [Test]
-        public void AColourAlphaThatIsNoNumberIsRefusedInsteadOfReadAsOpaque()
+        /// <summary>Values Unity never writes that were read as something else: a fileID that is no integer as no
+        /// reference at all (so the Fluid fell back to the scene's container, as if the field were unassigned), and a
+        /// colour's alpha that holds no number as the default for a missing one, opaque.</summary>
+        [TestCase("--- !u!114 &1249553504", "container: {fileID: 327545201}", "container: {fileID: abc}",
+            "&1249553504 MonoBehaviour has a reference whose fileID 'abc' is not a 64-bit integer")]
+        [TestCase("--- !u!114 &287989891", "a: 0.85", "a: abc", "GameObject 'Oil', SpawnBox.spawn.Phase.Color must be a colour {r, g, b, a}")]
+        public void AValueReadAsAnotherIsRefusedAtItsLine(string header, string find, string replace, string located)
         {
-            string path = Write(EditDocument("--- !u!114 &287989891", "a: 0.85", "a: abc", out int line));
+            string path = Write(EditDocument(header, find, replace, out int line));
 
             var run = Simulate(path);
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Oil', SpawnBox.spawn.Phase.Color must be a colour {{r, g, b, a}}"));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: {located}"));
         }
 
         [Test]
