@@ -342,30 +342,27 @@ namespace SphFluid.Tests.Runner
 
         [TestCase("--- !u!114 &1249553504", "particleRadiusScale: 1.2", "particleRadiusScale: 5", "Fluid.particleRadiusScale must be in [0.25, 3] half spacings (was 5)")]
         [TestCase("--- !u!114 &1249553504", "maxFrameTime: 0.0333333", "maxFrameTime: 0", "Fluid.maxFrameTime must be in [0.001, 0.1] s (was 0)")]
-        public void InspectorRangesTheRunnerUsedToSkipAreChecked(string header, string find, string replace, string message)
-        {
-            string path = Write(EditDocument(header, find, replace, out int line));
-
-            var run = Simulate(path);
-
-            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject '"));
-            Assert.That(run.Stderr, Does.Contain(message));
-        }
+        public void InspectorRangesTheRunnerUsedToSkipAreChecked(string header, string find, string replace, string message) =>
+            AssertRefusedAtTheEditedLine(header, find, replace, "GameObject '", message);
 
         /// <summary>Fields the runner does not read (Unity's alone) passed whatever they held; they must be what Unity
         /// writes for the type their script declares.</summary>
         [TestCase("--- !u!114 &1249553504", "requestDiagnostics: 1", "requestDiagnostics: abc", "requestDiagnostics must be 0 or 1 (a bool) (was 'abc')")]
         [TestCase("--- !u!114 &482617472", "fontSize: 14", "fontSize: 1e30", "fontSize must be a whole number in the range of an int (was '1e30')")]
         [TestCase("--- !u!114 &482617472", "visible: 1", "visible: 2", "visible must be 0 or 1 (a bool) (was '2')")]
-        public void UnityOnlyFieldsMustHoldWhatUnityWritesForTheirType(string header, string find, string replace, string message)
+        public void UnityOnlyFieldsMustHoldWhatUnityWritesForTheirType(string header, string find, string replace, string message) =>
+            AssertRefusedAtTheEditedLine(header, find, replace, "MonoBehaviour &", message);
+
+        /// <summary>Edits one line of the default scene's document <paramref name="header"/>: the run must be refused as a
+        /// scene error located at that line, its text starting with <paramref name="located"/> and holding <paramref name="message"/>.</summary>
+        static void AssertRefusedAtTheEditedLine(string header, string find, string replace, string located, string message)
         {
             string path = Write(EditDocument(header, find, replace, out int line));
 
             var run = Simulate(path);
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: MonoBehaviour &"));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: {located}"));
             Assert.That(run.Stderr, Does.Contain(message));
         }
 
@@ -390,15 +387,8 @@ namespace SphFluid.Tests.Runner
         [TestCase("--- !u!114 &1249553504", "container: {fileID: 327545201}", "container: {fileID: abc}",
             "&1249553504 MonoBehaviour has a reference whose fileID 'abc' is not a 64-bit integer")]
         [TestCase("--- !u!114 &287989891", "a: 0.85", "a: abc", "GameObject 'Oil', SpawnBox.spawn.Phase.Color must be a colour {r, g, b, a}")]
-        public void AValueReadAsAnotherIsRefusedAtItsLine(string header, string find, string replace, string located)
-        {
-            string path = Write(EditDocument(header, find, replace, out int line));
-
-            var run = Simulate(path);
-
-            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: {located}"));
-        }
+        public void AValueReadAsAnotherIsRefusedAtItsLine(string header, string find, string replace, string located) =>
+            AssertRefusedAtTheEditedLine(header, find, replace, located, located);
 
         [Test]
         public void AColourChannelBeyondOneIsRefusedAtItsLineWithTheRange()
