@@ -1,4 +1,3 @@
-using System;
 using System.Numerics;
 using SphFluid.Simulation;
 using SphFluid.Tests.Solver;
@@ -33,11 +32,17 @@ namespace SphFluid.Tests.Physics
                 SolverScenes.Box("Water", SolverScenes.Water(viscosity), Vector3.Zero, block, jitter: 0f));
         }
 
-        /// <summary>Sets every particle's velocity to the rigid rotation Omega about z through the block's centre.</summary>
-        public static void Spin(Particle[] particles)
+        /// <summary>The block's simulation with every particle set to the rigid rotation Omega about z through its centre;
+        /// <paramref name="particles"/> holds them as spawned, spinning.</summary>
+        public static FluidSimulation Spinning(PressureSolver solver, float spacing, float viscosity, out Particle[] particles)
         {
+            var sim = new FluidSimulation(GpuTestDevice.Unvalidated, Scene(solver, spacing, viscosity));
+            particles = new Particle[sim.ParticleCount];
+            sim.Particles.GetData(particles);
             for (int i = 0; i < particles.Length; i++)
                 particles[i].Velocity = Vector3.Cross(new Vector3(0f, 0f, Omega), particles[i].Position);
+            sim.SetParticles(particles);
+            return sim;
         }
 
         /// <summary>The angular momentum about the vertical through the centre of mass, m^2/s per unit particle mass.</summary>

@@ -22,11 +22,7 @@ namespace SphFluid.Tests.Physics
         [OneTimeSetUp]
         public void SpinAQuarterSecond()
         {
-            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, SpinningBlock.Scene(_solver, SpinningBlock.Side / 12, 0f));
-            var particles = new Particle[sim.ParticleCount];
-            sim.Particles.GetData(particles);
-            SpinningBlock.Spin(particles);
-            sim.SetParticles(particles);
+            using var sim = SpinningBlock.Spinning(_solver, SpinningBlock.Side / 12, 0f, out var particles);
             double start = SpinningBlock.AngularMomentum(particles);
             while (sim.SimulatedTime < 0.25 - 1e-6) sim.Step(1f / 60f);
             sim.Particles.GetData(particles);
