@@ -73,8 +73,9 @@ namespace SphFluid.Tests.Physics
         }
 
         /// <summary>Runs the tilted tank for <paramref name="seconds"/>, sampling the surface's rise every frame, and
-        /// prints the fit beside the theory for the container's length and the water's measured depth.</summary>
-        internal static Slosh Run(FluidSceneDescription scene, string name, double seconds)
+        /// prints the fit beside the theory for the container's length and the water's measured depth; the fit looks for
+        /// a decay up to <paramref name="highestDecay"/> per second.</summary>
+        internal static Slosh Run(FluidSceneDescription scene, string name, double seconds, double highestDecay = 2)
         {
             var s = scene.Settings;
             var container = scene.Container;
@@ -106,7 +107,7 @@ namespace SphFluid.Tests.Physics
             double omega = SurfaceSeiche.AngularFrequency(container.Size.X, depth, g);
             double decay = SurfaceSeiche.DecayRate(container.Size.X, container.Size.Z, depth, g, phase.RestDensity, phase.Viscosity,
                 container.Friction == WallFriction.NoSlip);
-            var fit = InternalSeiche.FitDampedOscillation(times, rises, highestOmega: 3 * omega);
+            var fit = InternalSeiche.FitDampedOscillation(times, rises, highestOmega: 3 * omega, highestGamma: highestDecay);
             var slosh = new Slosh(2 * Math.PI / omega, 2 * Math.PI / fit.Omega, decay, fit.Gamma, report);
 
             // Where the fluid's centres end beside the end walls: its own length is their span plus a spacing.

@@ -1,0 +1,54 @@
+using NUnit.Framework;
+using System.Linq;
+using SphFluid.Simulation;
+
+namespace SphFluid.Tests.Physics
+{
+    /// <summary>
+    /// What the viscous force does to a wave. The sloshing tank of <see cref="SurfaceSeicheTests"/> with free-slip walls
+    /// has no Stokes layer, so a Newtonian liquid's viscosity damps its standing wave only through the potential flow's
+    /// strain, at 2 nu k^2 at any depth (Lamb, "Hydrodynamics", art. 348; <c>SurfaceSeiche.DecayRate</c> without walls).
+    /// The tank runs twice, its water at water's viscosity and at <see cref="Viscous"/> Pa s, and the difference of the
+    /// two fitted decays, the viscosity's own share, is printed against that difference in theory. A viscous force that
+    /// is mu grad^2 v summed as mu |grad v|^2 dissipates half what the stress mu (grad v + grad v^T) does in a potential
+    /// flow, whose velocity gradient is symmetric, so it would show about half. A measurement (lavapipe, minutes), run by
+    /// name: <c>bash Headless/test.sh --filter FullyQualifiedName~ViscousSeicheProbe</c>.
+    /// </summary>
+    [Explicit("a measurement, not a check: run it by name")]
+    [TestFixture("dfsph, free-slip")]
+    [TestFixture("free-slip")]
+    [TestFixture("dfsph, free-slip, narrow")]
+    [TestFixture("dfsph, free-slip, narrow, half the spacing")]
+    [TestFixture("free-slip, narrow")]
+    [TestFixture("free-slip, narrow, half the spacing")]
+    public sealed class ViscousSeicheProbe
+    {
+        /// <summary>Pa s: nu = 0.02 m^2/s, 2 nu k^2 = 2.5/s against the wave's 8.7 rad/s, so it still swings.</summary>
+        const float Viscous = 20f;
+
+        readonly string _configuration;
+
+        public ViscousSeicheProbe(string configuration) => _configuration = configuration;
+
+        [Test]
+        public void TheViscosityDampsTheWaveAtTwiceNuKSquared()
+        {
+            var still = Slosh(null);
+            var viscous = Slosh(Viscous);
+            double measured = viscous.MeasuredDecay - still.MeasuredDecay, theory = viscous.Decay - still.Decay;
+            TestContext.Progress.WriteLine($"RestingTank ({_configuration}) at {Viscous} Pa s: the viscosity's share of the decay " +
+                $"{measured:F3}/s ({viscous.MeasuredDecay:F3} less {still.MeasuredDecay:F3}), 2 nu k^2 {theory:F3}/s: {measured / theory:F2} of it");
+            Assert.That(viscous.Report.NanCount, Is.EqualTo(0));
+        }
+
+        SurfaceSeicheTests.Slosh Slosh(float? viscosity)
+        {
+            var scene = SloshingTankConfiguration.Load(_configuration);
+            if (viscosity.HasValue) scene.SpawnBoxes.Single().Phase.Viscosity = viscosity.Value;
+            // Two of the finer lattice's spacings, the same swing.
+            SurfaceSeicheTests.TiltSurface(scene, _configuration.EndsWith("half the spacing") ? 2 : 1);
+            return SurfaceSeicheTests.Run(scene, $"RestingTank ({_configuration}), {(viscosity.HasValue ? $"{viscosity} Pa s" : "water")}", 1.5,
+                highestDecay: 10);
+        }
+    }
+}
