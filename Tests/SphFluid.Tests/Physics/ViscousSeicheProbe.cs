@@ -10,9 +10,10 @@ namespace SphFluid.Tests.Physics
     /// strain, at 2 nu k^2 at any depth (Lamb, "Hydrodynamics", art. 348; <c>SurfaceSeiche.DecayRate</c> without walls).
     /// The tank runs twice, its water at water's viscosity and at <see cref="Viscous"/> Pa s, and the difference of the
     /// two fitted decays, the viscosity's own share, is printed against that difference in theory. A viscous force that
-    /// is mu grad^2 v summed as mu |grad v|^2 dissipates half what the stress mu (grad v + grad v^T) does in a potential
-    /// flow, whose velocity gradient is symmetric, so it would show about half. A measurement (lavapipe, minutes), run by
-    /// name: <c>bash Headless/test.sh --filter FullyQualifiedName~ViscousSeicheProbe</c>.
+    /// sums mu |grad v|^2, as Morris's pair term does, dissipates at most half what the stress mu (grad v + grad v^T)
+    /// does in a potential flow, whose velocity gradient is symmetric: the shipped force shows 0.32 to 0.45 of it
+    /// (Headless/docs/physics.md, "A viscous liquid's wave, against Lamb's 2 nu k^2"). A measurement (12 minutes of
+    /// lavapipe), run by name: <c>bash Headless/test.sh --filter FullyQualifiedName~ViscousSeicheProbe</c>.
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]
     [TestFixture("dfsph, free-slip")]
