@@ -1,5 +1,5 @@
-using NUnit.Framework;
 using System.Linq;
+using NUnit.Framework;
 using SphFluid.Simulation;
 
 namespace SphFluid.Tests.Physics
@@ -32,7 +32,7 @@ namespace SphFluid.Tests.Physics
         public ViscousSeicheProbe(string configuration) => _configuration = configuration;
 
         [Test]
-        public void TheViscosityDampsTheWaveAtTwiceNuKSquared()
+        public void TheViscositysShareOfTheDecayAgainstTwiceNuKSquared()
         {
             var still = Slosh(null);
             var viscous = Slosh(Viscous);
