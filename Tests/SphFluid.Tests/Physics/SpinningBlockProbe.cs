@@ -7,9 +7,11 @@ namespace SphFluid.Tests.Physics
     /// <summary>
     /// The spinning block of <see cref="SpinningBlock"/> with water at 10 Pa s (nu = 0.01 m^2/s) at 8, 12 and 16
     /// particles a side, and at water's 10^-3 Pa s at 12, under each solver. A rigid rotation is stress-free, so its
-    /// angular momentum should stay; the probe prints what it keeps every 0.05 s, its decay rate fitted from 0.05 to 0.25 s, and the rate 2 nu / &lt;r^2&gt;
-    /// that a viscous stress of mu grad v alone, without its transpose, would give (the torque of such a stress on a
-    /// rigid rotation is -2 mu omega V). A measurement (about a minute of lavapipe), run by name:
+    /// angular momentum should stay; the probe prints what it keeps every 0.05 s, its decay rate fitted from 0.05 to
+    /// 0.25 s, and the rate 2 nu / &lt;r^2&gt; that a viscous stress of mu grad v alone, without its transpose, would give
+    /// (the torque of such a stress on a rigid rotation is -2 mu omega V). Morris's viscous force is such a stress at
+    /// a free surface; the experiment rotation-free-viscosity keeps the spin. A measurement (about a minute of
+    /// lavapipe), run by name:
     /// <c>bash Headless/test.sh --filter FullyQualifiedName~SpinningBlockProbe</c>.
     /// </summary>
     [Explicit("a measurement, a minute of lavapipe")]
