@@ -20,10 +20,12 @@ namespace SphFluid.Tests.Physics
 
         public const float Side = 0.12f;
 
-        public static FluidSceneDescription Scene(PressureSolver solver, float spacing, float viscosity)
+        public static FluidSceneDescription Scene(PressureSolver solver, float spacing, float viscosity,
+            ViscousStress stress = ViscousStress.Laplacian)
         {
             var settings = SolverScenes.Coarse(spacing);
             settings.PressureSolver = solver;
+            settings.ViscousStress = stress;
             settings.Gravity = Vector3.Zero;
             settings.XsphEpsilon = 0f; // XSPH's drift is not the particles' velocity; left out so the velocities carry all
             settings.MaxSubsteps = 1000;
@@ -34,9 +36,10 @@ namespace SphFluid.Tests.Physics
 
         /// <summary>The block's simulation with every particle set to the rigid rotation Omega about z through its centre;
         /// <paramref name="particles"/> holds them as spawned, spinning.</summary>
-        public static FluidSimulation Spinning(PressureSolver solver, float spacing, float viscosity, out Particle[] particles)
+        public static FluidSimulation Spinning(PressureSolver solver, float spacing, float viscosity, out Particle[] particles,
+            ViscousStress stress = ViscousStress.Laplacian)
         {
-            var sim = new FluidSimulation(GpuTestDevice.Unvalidated, Scene(solver, spacing, viscosity));
+            var sim = new FluidSimulation(GpuTestDevice.Unvalidated, Scene(solver, spacing, viscosity, stress));
             particles = new Particle[sim.ParticleCount];
             sim.Particles.GetData(particles);
             for (int i = 0; i < particles.Length; i++)

@@ -23,14 +23,17 @@ namespace SphFluid.Tests.Physics
 
         public SpinningBlockProbe(PressureSolver solver) => _solver = solver;
 
-        [TestCase(8, 10f)]
-        [TestCase(12, 10f)]
-        [TestCase(16, 10f)]
-        [TestCase(12, 0.001f)]
-        public void AngularMomentumOfAViscousSpin(int particlesASide, float viscosity)
+        [TestCase(8, 10f, ViscousStress.Laplacian)]
+        [TestCase(12, 10f, ViscousStress.Laplacian)]
+        [TestCase(16, 10f, ViscousStress.Laplacian)]
+        [TestCase(12, 0.001f, ViscousStress.Laplacian)]
+        [TestCase(8, 10f, ViscousStress.StrainRate)]
+        [TestCase(12, 10f, ViscousStress.StrainRate)]
+        [TestCase(16, 10f, ViscousStress.StrainRate)]
+        public void AngularMomentumOfAViscousSpin(int particlesASide, float viscosity, ViscousStress stress)
         {
             float spacing = SpinningBlock.Side / particlesASide;
-            using var sim = SpinningBlock.Spinning(_solver, spacing, viscosity, out var particles);
+            using var sim = SpinningBlock.Spinning(_solver, spacing, viscosity, out var particles, stress);
             double start = SpinningBlock.AngularMomentum(particles);
             double stressRate = 2.0 * viscosity / 1000.0 / SpinningBlock.MeanSquaredRadius(particles);
             var kept = new double[6];
@@ -42,7 +45,7 @@ namespace SphFluid.Tests.Physics
             }
             double rate = Math.Log(kept[1] / kept[5]) / 0.2;
             TestContext.Progress.WriteLine($"{SolverChoiceName} {particlesASide}^3 ({particles.Length} particles, {1000 * spacing:F1} mm), " +
-                $"{viscosity:G3} Pa s: angular momentum kept every 0.05 s {string.Join(", ", Array.ConvertAll(kept, k => k.ToString("F5")))}; " +
+                $"{viscosity:G3} Pa s, {stress} stress{(sim.Plan.ImplicitViscosity ? ", implicit" : "")}: angular momentum kept every 0.05 s {string.Join(", ", Array.ConvertAll(kept, k => k.ToString("F5")))}; " +
                 $"decay {rate:G3} /s, against 0 for a Newtonian stress and {stressRate:G3} /s for mu grad v alone");
         }
 

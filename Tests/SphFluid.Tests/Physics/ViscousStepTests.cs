@@ -19,9 +19,10 @@ namespace SphFluid.Tests.Physics
         const float Spacing = 0.02f;
         const float Viscosity = 1000f; // Pa s: nu = 1 m^2/s, so the viscous step is a tenth of the speed of sound's
 
-        static FluidSceneDescription Block(KernelFamily kernel, float supportRatio)
+        static FluidSceneDescription Block(KernelFamily kernel, float supportRatio, ViscousStress stress = ViscousStress.Laplacian)
         {
             var settings = SolverScenes.Coarse(Spacing);
+            settings.ViscousStress = stress;
             settings.SmoothingKernel = kernel;
             settings.SmoothingRadius = supportRatio * Spacing;
             settings.Gravity = Vector3.Zero;
@@ -86,9 +87,10 @@ namespace SphFluid.Tests.Physics
 
         /// <summary>The stiffest wave, u = 0.1 mm/s on every particle, after 40 sub-steps of f / (nu Lambda_max); the fastest
         /// particle's speed.</summary>
-        static float FastestAfter(KernelFamily kernel, float supportRatio, bool freeSurface, double f)
+        static float FastestAfter(KernelFamily kernel, float supportRatio, bool freeSurface, double f,
+            ViscousStress stress = ViscousStress.Laplacian)
         {
-            var scene = Block(kernel, supportRatio);
+            var scene = Block(kernel, supportRatio, stress);
             if (freeSurface)
             {
                 // Room above the block: its top is a free surface, whose particles, thin under summation density, carry
@@ -125,6 +127,28 @@ namespace SphFluid.Tests.Physics
                 $"{allowed:E2} m/s after 40 sub-steps at the step allowed, {oldRule:E2} at the old rule's (f = {old:F2})");
             Assert.That(allowed, Is.LessThan(1e-6f));
             Assert.That(oldRule, Is.GreaterThan(1e-2f));
+        }
+
+        /// <summary>The strain rate's viscous stress is Morris's pair term twice over, less the pairs' rotation: the controller
+        /// allows it half Morris's step (TimeStepController.OperatorViscosity), where the stiffest wave dies beside the walls
+        /// and under a free surface. At Morris's own step it grows under Wendland C2's free surface (from 1E-04 to 0.115 m/s);
+        /// the cubic spline's shrinks there too, but only to 1.7E-05 m/s in the 40 sub-steps.</summary>
+        [TestCase(KernelFamily.CubicSpline, 2f, false, false)]
+        [TestCase(KernelFamily.CubicSpline, 2f, true, false)]
+        [TestCase(KernelFamily.WendlandC2, 2.85f, false, false)]
+        [TestCase(KernelFamily.WendlandC2, 2.85f, true, true)]
+        public void TheStrainRatesStiffestWaveDiesAtHalfMorrissStep(KernelFamily kernel, float supportRatio, bool freeSurface, bool growsAtMorris)
+        {
+            var scene = Block(kernel, supportRatio, ViscousStress.StrainRate);
+            double morris = 1.0 / (Viscosity / 1000.0 * ViscousStepLimit.StiffestMode(kernel, Spacing, scene.Settings.SmoothingRadius));
+            double share = TimeStepController.ForScene(scene).ViscousTimeStep / morris;
+            float allowed = FastestAfter(kernel, supportRatio, freeSurface, share, ViscousStress.StrainRate);
+            float atMorris = FastestAfter(kernel, supportRatio, freeSurface, 1.0, ViscousStress.StrainRate);
+            TestContext.Progress.WriteLine($"{kernel} at {supportRatio} spacings{(freeSurface ? ", free surface" : "")}, strain-rate stress: " +
+                $"from 1E-04 m/s, {allowed:E2} m/s after 40 sub-steps at the step allowed ({share:F2} of Morris's), {atMorris:E2} at Morris's");
+            Assert.That(share, Is.EqualTo(0.5).Within(1e-6));
+            Assert.That(allowed, Is.LessThan(1e-6f));
+            if (growsAtMorris) Assert.That(atMorris, Is.GreaterThan(1e-2f));
         }
 
         /// <summary>Between the walls the wave's bound is the analysis's, dt nu Lambda_max = 2: it dies at 1.9 and grows at

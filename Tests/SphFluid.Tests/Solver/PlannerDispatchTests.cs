@@ -63,7 +63,7 @@ namespace SphFluid.Tests.Solver
             string NameOf(IComputeProgram program, int kernel)
             {
                 if (_names.Count == 0 || !_names.Keys.Any(k => k.Item1 == program))
-                    foreach (string name in new[] { "HalfStep", "PlaceBoundary", "DensityPressure", "WallPressure", "Normals", "Forces", "FullStep",
+                    foreach (string name in new[] { "HalfStep", "PlaceBoundary", "DensityPressure", "WallPressure", "Normals", "Rotations", "Forces", "FullStep",
                                                       "FindNeighbours", "DensityRate" })
                         _names[(program, program.FindKernel(name))] = name;
                 return _names.TryGetValue((program, kernel), out string? known) ? known : "kernel " + kernel;
@@ -71,20 +71,21 @@ namespace SphFluid.Tests.Solver
         }
 
         /// <summary>The small shipped tank with XSPH off: one phase, no tension, no XSPH, no obstacles, a container at rest.</summary>
-        static FluidSceneDescription PlainScene()
+        static FluidSceneDescription PlainScene(ViscousStress stress = ViscousStress.Laplacian)
         {
             var scene = SceneLoader.Load(RunnerPaths.Scene("PlayModeTest")).Description;
             var settings = scene.Settings.Clone();
             settings.XsphEpsilon = 0f;
+            settings.ViscousStress = stress;
             scene.Settings = settings;
             return scene;
         }
 
         /// <summary>The dispatches of frames after the first (the first places the container's walls once).</summary>
-        static List<Dispatch> LaterFrames(PlanOverrides? forced)
+        static List<Dispatch> LaterFrames(PlanOverrides? forced, ViscousStress stress = ViscousStress.Laplacian)
         {
             var device = new DispatchCountingDevice(GpuTestDevice.Shared);
-            using (var sim = new FluidSimulation(device, PlainScene()) { ForcedEffects = forced })
+            using (var sim = new FluidSimulation(device, PlainScene(stress)) { ForcedEffects = forced })
             {
                 sim.StepFixed(1, 1e-4f);
                 device.Dispatches.Clear();
@@ -106,6 +107,7 @@ namespace SphFluid.Tests.Solver
             foreach (string keyword in SolverKeywords.All)
                 Assert.That(dispatches.Count(d => d.Keywords.Contains(keyword)), Is.EqualTo(0), keyword + " variant dispatched");
             Assert.That(dispatches.Count(d => d.Kernel == "Normals"), Is.EqualTo(0), "normals pass without surface tension");
+            Assert.That(dispatches.Count(d => d.Kernel == "Rotations"), Is.EqualTo(0), "rotations pass under the Laplacian viscous stress");
             Assert.That(dispatches.Count(d => d.Kernel == "PlaceBoundary"), Is.EqualTo(0), "walls placed again for a container at rest");
             Assert.That(dispatches.Count(d => d.Kernel == "Forces"), Is.EqualTo(4), "one force pass per sub-step");
         }
@@ -137,6 +139,14 @@ namespace SphFluid.Tests.Solver
             Assert.That(dispatches.Count(d => d.Kernel == "Forces"), Is.EqualTo(4), "one force pass per sub-step");
             Assert.That(dispatches.Count(d => d.Kernel == "DensityRate"), Is.EqualTo(deltaSph ? 4 : 0));
             Assert.That(dispatches.Count(d => d.Kernel == "FindNeighbours"), Is.EqualTo(searches));
+        }
+
+        [Test]
+        public void TheStrainRatesStressDispatchesOneRotationsPassPerSubStep()
+        {
+            var dispatches = LaterFrames(null, ViscousStress.StrainRate);
+            Assert.That(dispatches.Count(d => d.Kernel == "Rotations"), Is.EqualTo(4));
+            Assert.That(dispatches.Count(d => d.Kernel == "Forces"), Is.EqualTo(4));
         }
 
         [TestCase("multiphase")]

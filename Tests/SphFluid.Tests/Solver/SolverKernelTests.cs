@@ -179,6 +179,56 @@ namespace SphFluid.Tests.Solver
             }
         }
 
+        /// <summary>The strain rate's viscous stress (ViscousStress.StrainRate) against ReferenceSph: the Rotations pass's
+        /// Omega, the accelerations after the force pass and the state after a sub-step, with every effect (two phases,
+        /// tension, XSPH, an obstacle) and with none (no keyword variant), walls with friction in a spinning container. Both phases at 20 Pa s, so that the viscous force, and in it the rotation
+        /// term the Laplacian form lacks, is well above the tolerance of the pressure's scale.</summary>
+        [TestCase(KernelFamily.CubicSpline, true, TestName = "Kernels_MatchReference_StrainRate")]
+        [TestCase(KernelFamily.WendlandC2, true, TestName = "Kernels_MatchReference_StrainRateWendlandC2")]
+        [TestCase(KernelFamily.CubicSpline, false, TestName = "Kernels_MatchReference_StrainRateSinglePhase")]
+        public void StrainRatePassesMatchReference(KernelFamily kernel, bool all)
+        {
+            var scene = RandomScene(all, all, all, all, kernel);
+            scene.Settings.ViscousStress = ViscousStress.StrainRate;
+            foreach (var box in scene.SpawnBoxes) box.Phase.Viscosity = 20f;
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene);
+            var input = RandomParticles(scene, sim.ParticleCount, 2468);
+            sim.SetParticles(input);
+            Assert.That(sim.Plan.StrainRateViscosity, Is.True);
+            Assert.That(sim.Plan.Runs(PassNames.Rotations), Is.True);
+            int n = input.Length;
+            var gpu = GpuState.Read(sim);
+            var rotations = new Vector4[n];
+            sim.Rotations.GetData(rotations);
+            var referenceSph = new ReferenceSph(scene);
+            var start = gpu.ByIdParticles(input);
+            var reference = referenceSph.Evaluate(start);
+            var byId = gpu.IndexById();
+
+            CompareVectors("rotation", n, i => reference.Rotation[i], i => rotations[byId[i]]);
+            var laplacianScene = new FluidSceneDescription
+            {
+                Settings = scene.Settings.Clone(), SpawnBoxes = scene.SpawnBoxes, Container = scene.Container, Obstacles = scene.Obstacles,
+            };
+            laplacianScene.Settings.ViscousStress = ViscousStress.Laplacian;
+            var laplacian = new ReferenceSph(laplacianScene).Evaluate(start);
+            double scale = Max(n, i => reference.Acceleration[i].Length());
+            double stressShare = Max(n, i => (reference.Acceleration[i] - laplacian.Acceleration[i]).Length()) / scale;
+            TestContext.Out.WriteLine($"the strain rate's stress moves the accelerations by up to {stressShare:E2} of their scale");
+            Assert.That(stressShare, Is.GreaterThan(100 * Tolerance), "the case must tell the two stresses apart");
+            CompareVectors("acceleration", n, i => reference.Acceleration[i], i => gpu.Accelerations[byId[i]]);
+
+            const float dt = 0.0005f;
+            Assert.That(TimeStepController.ForScene(scene).ViscousTimeStep, Is.GreaterThan(dt), "the sub-step is within the explicit limit");
+            var expected = referenceSph.Substep(start, reference, dt, sim.Plan.Xsph, out _);
+            sim.StepFixed(1, dt);
+            var after = GpuState.Read(sim);
+            byId = after.IndexById();
+            CompareVectors("position", n, i => new Double3(expected[i].Position) - new Double3(start[i].Position),
+                i => new Vector4(after.Particles[byId[i]].Position - start[i].Position, 0f));
+            CompareVectors("velocity", n, i => new Double3(expected[i].Velocity), i => new Vector4(after.Particles[byId[i]].Velocity, 0f));
+        }
+
         static ReferenceSph ReferenceWithoutShifting(FluidSceneDescription scene)
         {
             var settings = scene.Settings.Clone();

@@ -73,6 +73,7 @@ cbuffer FluidConstants
 
     float _ViscositySolveStep;              // SphViscositySolve: h = gamma s, the step each of its two stages solves for, s
     float _ViscositySolveSpan;              // SphViscositySolve: s, the step one solve covers (DFSPH's dt, a WCSPH half kick's dt/2)
+    uint _StrainRateViscosity;              // SphViscosity: 1 when the viscous stress is the strain rate's (ViscousStress.cs), 0 Morris's Laplacian
 };
 
 // Grid.hlsl reads its three values from here instead of declaring its own.

@@ -19,19 +19,43 @@ float MixedViscosity(float muI, float muJ)
     return sum > 0.0 ? 2.0 * muI * muJ / sum : 0.0;
 }
 
-// The pair's coupling c_ij = -2 mu_ij V_i V_j (r_ij . gradW_ij) / (r_ij^2 + 0.01 H^2) >= 0, kg/s: the force is
-// c_ij (v_j - v_i). volumeIJ = V_i V_j (for a boundary neighbour: V_i times its volume). The implicit viscosity solve
-// (SphViscositySolve.hlsl) sums it for its diagonal.
+// The strain-rate stress (FluidSettings.ViscousStress = StrainRate). Morris's pair term approximates mu times the
+// Laplacian of the velocity, which for an incompressible flow is the divergence of the Newtonian stress
+// mu (grad v + grad v^T); but pair by pair it resists any relative velocity, a rigid rotation's too, and at a free surface
+// or a cut support it brakes a spinning liquid at about 2 nu / <r^2> (known limits). The strain-rate form applies the
+// pair term to the velocity difference less the pair's mean rigid rotation, twice over:
+//   F_i^v = sum_j 2 c_ij (v_j - v_i + Omega_ij x (x_i - x_j)),   Omega_ij = (Omega_i + Omega_j) / 2,
+// Omega = curl v / 2 from the corrected velocity gradient (SphVelocityGradient.hlsl). Of a shear u(y) the pair's rotation
+// takes half (v_j - v_i + Omega_ij x (x_i - x_j) = D (x_j - x_i), D the strain rate), so the factor 2 gives mu u'' back;
+// in the bulk the sum is div(mu (grad v + grad v^T)) for a uniform mu, and a rigid rotation,
+// whose Omega is exact with the correction, gets no force at any truncation of the support: a spinning liquid keeps its
+// angular momentum. The pair term is still antisymmetric, so momentum is kept. Its stiffest wave decays twice as fast as
+// Morris's, which halves the explicit step limit (TimeStepController.OperatorViscosity).
+
+// The pair's coupling c_ij = -2 mu_ij V_i V_j (r_ij . gradW_ij) / (r_ij^2 + 0.01 H^2) >= 0, kg/s, twice that for the
+// strain rate's stress: the force is c_ij (v_j - v_i) plus the strain rate's rotation term. volumeIJ = V_i V_j (for a
+// boundary neighbour: V_i times its volume). The implicit viscosity solve (SphViscositySolve.hlsl) sums it for its
+// diagonal.
 float ViscosityCoupling(float mixedViscosity, float3 rij, float r2, float3 gradient, float volumeIJ)
 {
     float radial = dot(rij, gradient) / (r2 + 0.01 * _SmoothingRadius2);
-    return -2.0 * mixedViscosity * volumeIJ * radial;
+    float stress = _StrainRateViscosity != 0u ? 2.0 : 1.0;
+    return -2.0 * stress * mixedViscosity * volumeIJ * radial;
 }
 
+// pairRotation = Omega_ij for the strain rate's stress, zero for Morris's.
 float3 ViscosityForcePair(float mixedViscosity, float3 velocityI, float3 velocityJ, float3 rij, float r2,
-                          float3 gradient, float volumeIJ)
+                          float3 gradient, float volumeIJ, float3 pairRotation)
 {
-    return ViscosityCoupling(mixedViscosity, rij, r2, gradient, volumeIJ) * (velocityJ - velocityI);
+    return ViscosityCoupling(mixedViscosity, rij, r2, gradient, volumeIJ) * (velocityJ - velocityI + cross(pairRotation, rij));
+}
+
+// The rotation term alone, c_ij Omega_ij x (x_i - x_j): the part of the strain rate's pair term that the implicit
+// solve, which takes c_ij (v_j - v_i), leaves to the explicit forces, at the rotations of the sub-step's start. A rigid
+// rotation then still gets no force: the solve's term and this one cancel for the velocities the rotations came from.
+float3 ViscosityRotationForcePair(float mixedViscosity, float3 rij, float r2, float3 gradient, float volumeIJ, float3 pairRotation)
+{
+    return ViscosityCoupling(mixedViscosity, rij, r2, gradient, volumeIJ) * cross(pairRotation, rij);
 }
 
 // Artificial viscosity of Monaghan 1992 ("Smoothed particle hydrodynamics", ARA&A 30, eq. 4.1), the

@@ -1,8 +1,8 @@
 #ifndef SPHFLUID_PASSES_FORCES_INCLUDED
 #define SPHFLUID_PASSES_FORCES_INCLUDED
 
-// FluidSolver.compute's force passes: colour-field normals (SphSurfaceTension.hlsl) and every force on a fluid
-// particle from its fluid and wall neighbours (SphPressureForce.hlsl, SphViscosity.hlsl, SphXsph.hlsl, SphBoundary.hlsl's
+// FluidSolver.compute's force passes: colour-field normals (SphSurfaceTension.hlsl), the strain-rate viscosity's
+// rotations (SphVelocityGradient.hlsl) and every force on a fluid particle from its fluid and wall neighbours (SphPressureForce.hlsl, SphViscosity.hlsl, SphXsph.hlsl, SphBoundary.hlsl's
 // wall contact); NonPressureForces is the same sum without pressure, for the divergence-free solver.
 
 [numthreads(PARTICLE_THREADS, 1, 1)]
@@ -31,6 +31,56 @@ void Normals(uint3 id : SV_DispatchThreadID)
         }
     }
     _Normals[i] = float4(_SmoothingRadius * normal, 0.0);
+}
+
+// Omega_i = curl v / 2 for the strain rate's viscous stress (SphViscosity.hlsl), from the velocity gradient corrected for
+// the particle distribution (SphVelocityGradient.hlsl). Walls with friction count, at their own velocity: beside a wall
+// that turns with the fluid the pair term then leaves the common rotation alone; free-slip walls count for nothing.
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void Rotations(uint3 id : SV_DispatchThreadID)
+{
+    uint i = id.x;
+    if (i >= _ParticleCount)
+        return;
+    Particle pi = _Particles[i];
+    PhaseProperties phaseI = _Phases[PHASE_OF(pi)];
+    float4 di = _Densities[i];
+    int3 home = GridCoordOf(pi.position);
+    NeighbourList list = ListOf(i);
+    VelocityGradientSums sums = NoVelocityGradientSums();
+    for (uint row = 0u; row < NeighbourRows(list); row++)
+    {
+        uint2 range = FluidNeighbours(list, home, row);
+        for (uint k = range.x; k < range.y; k++)
+        {
+            uint j = Neighbour(list, k);
+            Particle pj = _Particles[j];
+            float3 rij = pi.position - pj.position;
+            float r2 = dot(rij, rij);
+            if (r2 >= _SmoothingRadius2 || j == i)
+                continue;
+            float3 gradient = PairGradient(rij, sqrt(r2), pi.id, pj.id) / _Densities[j].z;
+            sums = AddVelocityGradientPair(sums, pj.velocity - pi.velocity, rij, gradient);
+        }
+        uint2 walls = WallNeighbours(list, home, row);
+        for (uint kb = walls.x; kb < walls.y; kb++)
+        {
+            BoundaryParticle wall = _BoundaryParticles[Neighbour(list, kb)];
+            float3 rib = pi.position - wall.position;
+            float r2 = dot(rib, rib);
+            if (r2 >= _SmoothingRadius2)
+                continue;
+            float3 gradient = PairGradient(rib, sqrt(r2), 1u, 0u) * (_WallFriction * WallWeight(wall, phaseI) / di.z);
+            sums = AddVelocityGradientPair(sums, wall.velocity - pi.velocity, rib, gradient);
+        }
+    }
+    _Rotations[i] = float4(RotationOf(sums), 0.0);
+}
+
+// Omega_ij, the mean rotation of the pair i, j for the strain rate's viscous stress; zero for Morris's.
+float3 PairRotation(float3 rotationI, uint j)
+{
+    return _StrainRateViscosity != 0u ? 0.5 * (rotationI + _Rotations[j].xyz) : float3(0.0, 0.0, 0.0);
 }
 
 // mu_ij of a fluid pair whose first particle has viscosity muI (SphViscosity.hlsl's mixing rule); with one phase
@@ -64,8 +114,11 @@ ForceSums ForceSumsOf(uint i, bool withPressure, uint lane)
 #if SURFACE_TENSION
     float3 normalI = _Normals[i].xyz;
 #endif
-    // The viscosity may be the implicit solve's instead (ViscositySolve.hlsl).
+    // The viscosity may be the implicit solve's instead (ViscositySolve.hlsl); the strain rate's rotation term then stays
+    // here, at the rotations of the sub-step's start.
     bool explicitViscosity = !ViscosityIsImplicit();
+    bool rotationTerm = explicitViscosity || _StrainRateViscosity != 0u;
+    float3 rotationI = _StrainRateViscosity != 0u ? _Rotations[i].xyz : float3(0.0, 0.0, 0.0);
     float3 force = float3(0.0, 0.0, 0.0);
     float3 xsph = float3(0.0, 0.0, 0.0);
     float3 wallGradients = float3(0.0, 0.0, 0.0);
@@ -92,7 +145,9 @@ ForceSums ForceSumsOf(uint i, bool withPressure, uint lane)
             if (withPressure)
                 force += PressureForcePair(di.w, dj.w, gradient);
             if (explicitViscosity)
-                force += ViscosityForcePair(muIJ, pi.velocity, pj.velocity, rij, r2, gradient, 1.0 / (di.z * dj.z));
+                force += ViscosityForcePair(muIJ, pi.velocity, pj.velocity, rij, r2, gradient, 1.0 / (di.z * dj.z), PairRotation(rotationI, j));
+            else if (rotationTerm)
+                force += ViscosityRotationForcePair(muIJ, rij, r2, gradient, 1.0 / (di.z * dj.z), PairRotation(rotationI, j));
             if (withPressure)
                 force += ArtificialViscosityForcePair(pi.velocity, pj.velocity, rij, r2, gradient, 0.5 * (di.x + dj.x), 1.0 / (di.z * dj.z));
 #if SURFACE_TENSION
@@ -120,7 +175,9 @@ ForceSums ForceSumsOf(uint i, bool withPressure, uint lane)
                 force += BoundaryPressureForcePair(di.y, _BoundaryPressures[b], di.z, weight, gradient);
             if (explicitViscosity)
                 force += ViscosityForcePair(_WallFriction * phaseI.viscosity, pi.velocity, wall.velocity, rib, r2, gradient,
-                    weight / (di.z * di.z));
+                    weight / (di.z * di.z), rotationI);
+            else if (rotationTerm)
+                force += ViscosityRotationForcePair(_WallFriction * phaseI.viscosity, rib, r2, gradient, weight / (di.z * di.z), rotationI);
             if (withPressure)
             {
                 force += ArtificialViscosityForcePair(pi.velocity, wall.velocity, rib, r2, gradient, di.x, weight / (di.z * di.z));

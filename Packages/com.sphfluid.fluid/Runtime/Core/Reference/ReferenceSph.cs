@@ -9,7 +9,7 @@ namespace SphFluid.Reference
     /// The solver's SPH in double precision and brute force (every pair, O(N^2)): used ONLY to check the GPU
     /// kernels on small cases, never shipped. It mirrors the kernels equation by equation
     /// (Shaders/Include/Sph*.hlsl): the cubic spline, density with boundary particles, pressure with the
-    /// hydrostatic wall pressure, Morris viscosity, same-phase normals and tension, XSPH, and the clamp;
+    /// hydrostatic wall pressure, Morris viscosity or its strain-rate form, same-phase normals and tension, XSPH, and the clamp;
     /// it shares no code with them (the boundary samples come from the same BoundarySampling, the input both use).
     /// </summary>
     public sealed partial class ReferenceSph
@@ -174,6 +174,11 @@ namespace SphFluid.Reference
                 s.Normal[i] = tension ? normal * _h : Double3.Zero;
             }
 
+            double friction = Container.Friction == WallFriction.NoSlip ? 1.0 : 0.0;
+            bool strainRate = _settings.ViscousStress == ViscousStress.StrainRate;
+            double stress = strainRate ? 2.0 : 1.0;
+            if (strainRate) Rotations(particles, x, v, walls, xb, s.NumberDensity, friction).CopyTo(s.Rotation, 0);
+
             var gravity = new Double3(_settings.Gravity);
             // Each wall particle's pressure: the Shepard-weighted fluid pressure around it plus the hydrostatic term.
             var wallPressure = new double[walls.Length];
@@ -182,7 +187,6 @@ namespace SphFluid.Reference
             double speedOfSound = Math.Sqrt(_settings.Stiffness * _settings.Gamma / MinRestDensity());
             double artificial = _settings.ArtificialViscosity * speedOfSound * 0.5 * _h;
             double wallArtificial = FluidSimulation.WallContactDamping * speedOfSound * 0.5 * _h;
-            double friction = Container.Friction == WallFriction.NoSlip ? 1.0 : 0.0;
             for (int i = 0; i < n; i++)
             {
                 var phaseI = _phases[particles[i].Phase];
@@ -204,7 +208,8 @@ namespace SphFluid.Reference
                     var gradient = PairGradient(rij, r, particles[i].Id, particles[j].Id);
                     double termJ = s.Pressure[j] / (s.NumberDensity[j] * s.NumberDensity[j]);
                     force += gradient * (-(termI + termJ) * pressureOn);
-                    force += (v[i] - v[j]) * (2 * mu / (di * s.NumberDensity[j]) * Double3.Dot(rij, gradient) / (r2 + 0.01 * _h2));
+                    var pairRotation = (s.Rotation[i] + s.Rotation[j]) * 0.5;
+                    force += (v[i] - v[j] - Double3.Cross(pairRotation, rij)) * (2 * stress * mu / (di * s.NumberDensity[j]) * Double3.Dot(rij, gradient) / (r2 + 0.01 * _h2));
                     double approach = Math.Min(0.0, Double3.Dot(v[i] - v[j], rij)) / (r2 + 0.01 * _h2);
                     force += gradient * (pressureOn * artificial * 0.5 * (s.Density[i] + s.Density[j]) / (di * s.NumberDensity[j]) * approach);
                     if (tension && particles[j].Phase == particles[i].Phase && phaseI.SurfaceTension > 0)
@@ -230,7 +235,7 @@ namespace SphFluid.Reference
                     double weight = WallWeight(walls[b], particles[i]);
                     var wallVelocity = new Double3(walls[b].Velocity);
                     force += gradient * (-(weight * (s.Pressure[i] + wallPressure[b]) / (di * di)) * pressureOn);
-                    force += (v[i] - wallVelocity) * (2 * friction * phaseI.Viscosity * weight / (di * di) * Double3.Dot(rib, gradient) / (r2 + 0.01 * _h2));
+                    force += (v[i] - wallVelocity - Double3.Cross(s.Rotation[i], rib)) * (2 * stress * friction * phaseI.Viscosity * weight / (di * di) * Double3.Dot(rib, gradient) / (r2 + 0.01 * _h2));
                     double approach = Math.Min(0.0, Double3.Dot(v[i] - wallVelocity, rib)) / (r2 + 0.01 * _h2);
                     force += gradient * (pressureOn * artificial * s.Density[i] * weight / (di * di) * approach);
                     var normal = WallNormal(walls[b]);

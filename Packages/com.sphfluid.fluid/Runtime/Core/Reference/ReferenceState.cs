@@ -6,6 +6,10 @@ namespace SphFluid.Reference
         public readonly double[] NumberDensity, Density, Pressure;
         public readonly Double3[] Normal, Acceleration, Xsph;
 
+        /// <summary>Each particle's rigid rotation Omega = curl v / 2, rad/s, for the strain rate's viscous stress; zero for
+        /// Morris's.</summary>
+        public readonly Double3[] Rotation;
+
         /// <summary>The wall part of each particle's continuity equation (SphBoundary.hlsl's wall contact):
         /// G_w = sum_b omega_b gradW_ib and sum_b omega_b v_b . gradW_ib.</summary>
         public readonly Double3[] WallGradientSum;
@@ -26,6 +30,7 @@ namespace SphFluid.Reference
             Normal = new Double3[count];
             Acceleration = new Double3[count];
             Xsph = new Double3[count];
+            Rotation = new Double3[count];
             WallGradientSum = new Double3[count];
             WallVelocityRate = new double[count];
             WallNumberDensity = new double[count];

@@ -77,5 +77,6 @@ namespace SphFluid.Simulation
 
         public float ViscositySolveStep;
         public float ViscositySolveSpan;
+        public uint StrainRateViscosity;
     }
 }

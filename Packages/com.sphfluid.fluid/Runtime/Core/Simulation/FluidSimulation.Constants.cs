@@ -44,7 +44,7 @@ namespace SphFluid.Simulation
             var solver = _scene.Settings.PressureSolver;
             double span = ImplicitViscosity.Span(solver, dt);
             _viscosity = _implicitViscosityAllowed && ImplicitViscosity.Needed(dt, _timeStep.ViscousTimeStep)
-                ? ImplicitViscosity.For(_viscousRowSum, _timeStep.MaxKinematicViscosity, span)
+                ? ImplicitViscosity.For(_viscousRowSum, _timeStep.OperatorViscosity, span)
                 : default;
             _constants[0].ViscositySolveLow = _viscosity.Rounds > 0 ? _viscosity.Low : 0f;
             _constants[0].ViscositySolveHigh = _viscosity.Rounds > 0 ? ImplicitViscosity.High : 0f;
@@ -95,6 +95,7 @@ namespace SphFluid.Simulation
             c.ChebyshevHigh = (float)high;
             c.AcceleratedDensitySolve = high > 0.0 && ChebyshevBounds.AcceleratesDensitySolve(s.DensityTolerance, depth, s.ParticleSpacing) ? 1u : 0u;
             c.WallFriction = _scene.Container.Friction == WallFriction.NoSlip ? 1f : 0f;
+            c.StrainRateViscosity = s.ViscousStress == ViscousStress.StrainRate ? 1u : 0u;
             c.SurfaceForceScale = (float)(1.0 / (h * SurfaceLayerShare.For(s.SmoothingKernel, h / s.ParticleSpacing)));
             c.Stiffness = s.Stiffness;
             c.Gamma = s.Gamma;

@@ -174,6 +174,10 @@ namespace SphFluid.Simulation
         /// <summary>Per particle: colour-field normal (xyz) when surface tension is on.</summary>
         public IComputeBuffer Normals => _buffers.Normals;
 
+        /// <summary>Per particle: the local rigid rotation Omega = curl v / 2 (xyz), rad/s, when the viscous stress is the
+        /// strain rate's (<see cref="SimulationPlan.StrainRateViscosity"/>).</summary>
+        public IComputeBuffer Rotations => _buffers.Rotations;
+
         /// <summary>Per particle: the velocity change (xyz) the next full step adds, m/s: XSPH's when XSPH is on, plus the
         /// wall contact of a particle below rest density (SphBoundary.hlsl).</summary>
         public IComputeBuffer VelocityCorrections => _buffers.VelocityCorrections;
@@ -281,7 +285,7 @@ namespace SphFluid.Simulation
         /// <summary>Names of the GPU timing ranges a frame may record (device.TryGetSampleMilliseconds).</summary>
         public static IReadOnlyList<string> SampleNames { get; } = new[]
         {
-            PassNames.UploadContainer, PassNames.PlaceBoundary, PassNames.DensityRate, PassNames.HalfStep, PassNames.HalfKick, PassNames.HalfDrift, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals,
+            PassNames.UploadContainer, PassNames.PlaceBoundary, PassNames.DensityRate, PassNames.HalfStep, PassNames.HalfKick, PassNames.HalfDrift, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Normals, PassNames.Rotations,
             PassNames.Forces, PassNames.FullStep, PassNames.NonPressureForces, PassNames.PredictVelocity, PassNames.DensitySolve, PassNames.ViscositySolve, PassNames.Drift,
             PassNames.FindNeighbours, PassNames.DensityFactor, PassNames.DivergenceSolve, PassNames.ParticleShift, PassNames.ApplyShift, PassNames.MotionReduction, PassNames.Diagnostics,
         };
@@ -490,6 +494,7 @@ namespace SphFluid.Simulation
                 _device.DispatchThreads(_solver, _kernels.BoundaryDensityFactor, _boundaryCount * LanesPerParticle);
             }
             if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _kernels.Normals);
+            if (Plan.StrainRateViscosity) SolverPass(PassNames.Rotations, _kernels.Rotations);
             LanedPass(PassNames.NonPressureForces, _kernels.NonPressureForces, ParticleCount);
 
             SolverPass(PassNames.PredictVelocity, _kernels.PredictVelocity);
@@ -613,6 +618,7 @@ namespace SphFluid.Simulation
                 _device.DispatchThreads(_solver, _kernels.BoundaryDensityFactor, _boundaryCount * LanesPerParticle);
                 if (!withForces) return;
                 if (Plan.SurfaceTension) _device.DispatchThreads(_solver, _kernels.Normals, ParticleCount);
+                if (Plan.StrainRateViscosity) _device.DispatchThreads(_solver, _kernels.Rotations, ParticleCount);
                 _device.DispatchThreads(_solver, _kernels.NonPressureForces, ParticleCount * LanesPerParticle);
                 return;
             }
@@ -623,6 +629,7 @@ namespace SphFluid.Simulation
             LanedPass(PassNames.WallPressure, _kernels.WallPressure, _boundaryCount);
 
             if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _kernels.Normals);
+            if (Plan.StrainRateViscosity) SolverPass(PassNames.Rotations, _kernels.Rotations);
 
             LanedPass(PassNames.Forces, _kernels.Forces, ParticleCount);
         }

@@ -13,6 +13,7 @@ namespace SphFluid.Simulation
         public const string DensityPressure = "DensityPressure";
         public const string WallPressure = "WallPressure";
         public const string Normals = "Normals";
+        public const string Rotations = "Rotations";
         public const string Forces = "Forces";
         public const string FullStep = "FullStep";
         public const string NonPressureForces = "NonPressureForces";

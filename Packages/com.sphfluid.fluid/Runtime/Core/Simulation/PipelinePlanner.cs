@@ -20,14 +20,15 @@ namespace SphFluid.Simulation
             var timeStep = TimeStepController.ForScene(scene);
             bool implicitViscosity = ImplicitViscosity.PaysOff(settings.PressureSolver, settings.MaxTimeStep, timeStep.ViscousTimeStep,
                 ImplicitViscosity.LatticeRowSum(settings.SmoothingKernel, settings.ParticleSpacing, settings.SmoothingRadius),
-                timeStep.MaxKinematicViscosity);
+                timeStep.OperatorViscosity);
+            bool strainRate = settings.ViscousStress == ViscousStress.StrainRate && timeStep.MaxKinematicViscosity > 0f;
             if (forced == null)
                 return new SimulationPlan(phases.Count, obstacles, tension, settings.XsphEpsilon > 0f,
                     settings.VelocityDamping > 0f, containerMoved, settings.PressureSolver, shifting: shifting, deltaSph: deltaSph,
-                    neighbourLists: neighbourLists, implicitViscosity: implicitViscosity);
+                    neighbourLists: neighbourLists, implicitViscosity: implicitViscosity, strainRateViscosity: strainRate);
             return new SimulationPlan(phases.Count, obstacles, tension || forced.SurfaceTension, settings.XsphEpsilon > 0f || forced.Xsph,
                 settings.VelocityDamping > 0f, containerMoved || forced.ContainerMoving, settings.PressureSolver, forced.Multiphase, forced.Obstacles,
-                shifting, deltaSph, neighbourLists, implicitViscosity);
+                shifting, deltaSph, neighbourLists, implicitViscosity, strainRate);
         }
     }
 }

@@ -43,6 +43,11 @@ namespace SphFluid.Simulation
         /// (<see cref="Simulation.ImplicitViscosity"/>), DFSPH's after its constant-density solve, WCSPH's after each half kick.</summary>
         public bool ImplicitViscosity { get; }
 
+        /// <summary>The physical viscosity is the strain rate's stress (<see cref="ViscousStress.StrainRate"/>) and some phase
+        /// has one: a Rotations pass before the forces finds each particle's rigid rotation, which the viscous pair term leaves
+        /// out (SphViscosity.hlsl).</summary>
+        public bool StrainRateViscosity { get; }
+
         /// <summary>VelocityDamping &gt; 0.</summary>
         public bool Damping { get; }
 
@@ -64,10 +69,12 @@ namespace SphFluid.Simulation
         /// <param name="deltaSph">WCSPH carries the number density (WcsphDensity = DeltaSph).</param>
         /// <param name="neighbourLists">WCSPH's passes read neighbour lists (DFSPH's always do).</param>
         /// <param name="implicitViscosity">Sub-steps may pass the explicit viscous limit.</param>
+        /// <param name="strainRateViscosity">The physical viscosity is the strain rate's stress and some phase has one.</param>
         public SimulationPlan(int phaseCount, int obstacleCount, bool surfaceTension, bool xsph, bool damping, bool uploadContainerTransform,
             PressureSolver pressureSolver = PressureSolver.Wcsph, bool forceMultiphase = false, bool forceObstacles = false, bool shifting = false,
-            bool deltaSph = false, bool neighbourLists = false, bool implicitViscosity = false)
+            bool deltaSph = false, bool neighbourLists = false, bool implicitViscosity = false, bool strainRateViscosity = false)
         {
+            StrainRateViscosity = strainRateViscosity;
             ImplicitViscosity = implicitViscosity;
             NeighbourLists = neighbourLists || pressureSolver == PressureSolver.Dfsph;
             PressureSolver = pressureSolver;
@@ -94,6 +101,7 @@ namespace SphFluid.Simulation
             {
                 // Symplectic Euler around the two solves (FluidSolver.compute): forces at the sub-step's start.
                 if (SurfaceTension) passes.Add(PassNames.Normals);
+                if (StrainRateViscosity) passes.Add(PassNames.Rotations);
                 passes.Add(PassNames.NonPressureForces);
                 passes.Add(PassNames.PredictVelocity);
                 passes.Add(PassNames.DensitySolve);
@@ -125,6 +133,7 @@ namespace SphFluid.Simulation
                 passes.Add(PassNames.DensityPressure);
                 passes.Add(PassNames.WallPressure);
                 if (SurfaceTension) passes.Add(PassNames.Normals);
+                if (StrainRateViscosity) passes.Add(PassNames.Rotations);
                 passes.Add(PassNames.Forces);
                 passes.Add(PassNames.FullStep);
                 if (ImplicitViscosity) passes.Add(PassNames.ViscositySolve);
@@ -153,6 +162,7 @@ namespace SphFluid.Simulation
             b.Append("plan: ").Append(PhaseCount).Append(PhaseCount == 1 ? " phase, " : " phases, ")
              .Append(ObstacleCount).Append(ObstacleCount == 1 ? " obstacle" : " obstacles");
             b.Append(" | solver: ").Append(PressureSolver == PressureSolver.Dfsph ? "DFSPH" : "WCSPH");
+            if (StrainRateViscosity) b.Append(" | viscous stress: strain rate");
             if (ImplicitViscosity) b.Append(" | viscosity: implicit beyond its explicit step");
             b.Append(" | variants: ").Append(Keywords.Count == 0 ? "(none)" : string.Join(" ", Keywords));
             b.Append(" | sub-step: ").Append(string.Join(" > ", SubstepPasses));

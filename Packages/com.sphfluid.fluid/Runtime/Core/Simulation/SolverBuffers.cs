@@ -68,6 +68,7 @@ namespace SphFluid.Simulation
             new Binding("_Phases", b => b.Phases, Readers.Both, Group.Fixed),
             new Binding("_Densities", b => b.Densities, Readers.Both, Group.Fixed),
             new Binding("_Normals", b => b.Normals, Readers.Solver, Group.Fixed),
+            new Binding("_Rotations", b => b.Rotations, Readers.Solver, Group.Fixed),
             new Binding("_Accelerations", b => b.Accelerations, Readers.Both, Group.Fixed),
             new Binding("_VelocityCorrections", b => b.VelocityCorrections, Readers.Solver, Group.Fixed),
             new Binding("_Shifts", b => b.Shifts, Readers.Solver, Group.Fixed),
@@ -116,7 +117,7 @@ namespace SphFluid.Simulation
         readonly int _particleCount;
 
         public IComputeBuffer Particles, ParticlesOther;
-        public IComputeBuffer Phases, Densities, Normals, Accelerations, VelocityCorrections, Shifts, Obstacles, ClampHits;
+        public IComputeBuffer Phases, Densities, Normals, Rotations, Accelerations, VelocityCorrections, Shifts, Obstacles, ClampHits;
         public IComputeBuffer Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
         public IComputeBuffer NumberDensities, NumberDensitiesHalf, DensityRates; // delta-SPH (SphDensityDiffusion.hlsl)
         public IComputeBuffer ViscosityStart, ViscosityTargets, ViscositySteps; // the implicit viscosity (ViscositySolve.hlsl)
@@ -162,6 +163,7 @@ namespace SphFluid.Simulation
             Phases.SetData(phaseTable);
             Densities = Zeroed("FluidSimulation.Densities", n, 16);
             Normals = Zeroed("FluidSimulation.Normals", n, 16);
+            Rotations = Zeroed("FluidSimulation.Rotations", n, 16);
             Accelerations = Zeroed("FluidSimulation.Accelerations", n, 16);
             VelocityCorrections = Zeroed("FluidSimulation.VelocityCorrections", n, 16);
             Shifts = Zeroed("FluidSimulation.Shifts", n, 16);
@@ -292,12 +294,12 @@ namespace SphFluid.Simulation
 
         public void Dispose()
         {
-            foreach (var buffer in new[] { Particles, ParticlesOther, Phases, Densities, Normals, Accelerations, VelocityCorrections, Shifts,
+            foreach (var buffer in new[] { Particles, ParticlesOther, Phases, Densities, Normals, Rotations, Accelerations, VelocityCorrections, Shifts,
                          Obstacles, ClampHits, Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments,
                          DivergenceRates, NumberDensities, NumberDensitiesHalf, DensityRates, ViscosityStart, ViscosityTargets, ViscositySteps, MotionPartials,
                          MotionTotals, DiagnosticsPartials, DiagnosticsTotals, Constants })
                 buffer?.Dispose();
-            Particles = ParticlesOther = Phases = Densities = Normals = Accelerations = VelocityCorrections = Shifts = null;
+            Particles = ParticlesOther = Phases = Densities = Normals = Rotations = Accelerations = VelocityCorrections = Shifts = null;
             Obstacles = ClampHits = Factors = SolverStiffness = WarmStart = SolverPartials = SolverState = SolverArguments = null;
             NumberDensities = NumberDensitiesHalf = DensityRates = ViscosityStart = ViscosityTargets = ViscositySteps = null;
             DivergenceRates = MotionPartials = MotionTotals = DiagnosticsPartials = DiagnosticsTotals = Constants = null;

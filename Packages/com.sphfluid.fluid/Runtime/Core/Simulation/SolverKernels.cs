@@ -10,7 +10,7 @@ namespace SphFluid.Simulation
     {
         // WCSPH's Velocity Verlet sub-step (HalfStep, or HalfKick and HalfDrift around an implicit viscosity solve), the
         // walls and delta-SPH (SphDensityDiffusion.hlsl).
-        public readonly int HalfStep, HalfKick, HalfDrift, PlaceBoundary, DensityPressure, DensityRate, ContinuityDensity, WallPressure, Normals, Forces,
+        public readonly int HalfStep, HalfKick, HalfDrift, PlaceBoundary, DensityPressure, DensityRate, ContinuityDensity, WallPressure, Normals, Rotations, Forces,
             FullStep, ParticleShift, ApplyShift;
 
         // DFSPH's sub-step and its two solves (Passes/DivergenceFree*.hlsl).
@@ -34,6 +34,7 @@ namespace SphFluid.Simulation
             ContinuityDensity = solver.FindKernel(nameof(ContinuityDensity));
             WallPressure = solver.FindKernel(nameof(WallPressure));
             Normals = solver.FindKernel(nameof(Normals));
+            Rotations = solver.FindKernel(nameof(Rotations));
             Forces = solver.FindKernel(nameof(Forces));
             FullStep = solver.FindKernel(nameof(FullStep));
             ParticleShift = solver.FindKernel(nameof(ParticleShift));
@@ -60,7 +61,7 @@ namespace SphFluid.Simulation
             ViscosityStage = solver.FindKernel(nameof(ViscosityStage));
             All = new[]
             {
-                HalfStep, HalfKick, HalfDrift, PlaceBoundary, DensityPressure, DensityRate, ContinuityDensity, WallPressure, Normals, Forces, FullStep,
+                HalfStep, HalfKick, HalfDrift, PlaceBoundary, DensityPressure, DensityRate, ContinuityDensity, WallPressure, Normals, Rotations, Forces, FullStep,
                 ParticleShift, ApplyShift, DensityFactor, WallMovedDensityFactor, BoundaryDensityFactor, BoundaryBeginSolve,
                 BoundarySolveError, NonPressureForces, PredictVelocity, BeginDensitySolve, BeginDivergenceSolve, DensitySolveError,
                 DivergenceSolveError, SolveFinal, ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity,

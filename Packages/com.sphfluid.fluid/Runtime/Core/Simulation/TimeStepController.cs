@@ -44,7 +44,12 @@ namespace SphFluid.Simulation
         /// <summary>Largest kinematic viscosity nu = mu / rho0 over the phases, m^2/s.</summary>
         public float MaxKinematicViscosity { get; }
 
-        /// <summary>The viscous step limit, s (<see cref="ViscousStepLimit"/> at <see cref="MaxKinematicViscosity"/>; infinite
+        /// <summary>The kinematic viscosity the discrete viscous operator acts with, m^2/s: <see cref="MaxKinematicViscosity"/>,
+        /// twice it for the strain-rate stress, whose velocity part is Morris's pair term twice over (<see cref="ViscousStress"/>).
+        /// It sets the explicit step limit and the implicit solve's conditioning.</summary>
+        public double OperatorViscosity { get; }
+
+        /// <summary>The viscous step limit, s (<see cref="ViscousStepLimit"/> at <see cref="OperatorViscosity"/>; infinite
         /// without viscosity).</summary>
         public double ViscousTimeStep { get; }
 
@@ -70,8 +75,9 @@ namespace SphFluid.Simulation
             _settings = settings ?? throw new ArgumentNullException(nameof(settings));
             SpeedOfSound = SpeedOfSoundRule.SpeedOfSound(settings, minRestDensity);
             MaxKinematicViscosity = Math.Max(0f, maxKinematicViscosity);
+            OperatorViscosity = (settings.ViscousStress == ViscousStress.StrainRate ? 2.0 : 1.0) * MaxKinematicViscosity;
             ViscousTimeStep = MaxKinematicViscosity > 0f && settings.ParticleSpacing > 0f && settings.SmoothingRadius > 0f
-                ? ViscousStepLimit.For(settings.SmoothingKernel, settings.ParticleSpacing, settings.SmoothingRadius, MaxKinematicViscosity)
+                ? ViscousStepLimit.For(settings.SmoothingKernel, settings.ParticleSpacing, settings.SmoothingRadius, OperatorViscosity)
                 : double.PositiveInfinity;
             CapillaryTimeStep = capillaryTimeStep > 0f ? capillaryTimeStep : float.PositiveInfinity;
             _viscousRowSum = settings.ParticleSpacing > 0f && settings.SmoothingRadius > 0f
@@ -141,7 +147,7 @@ namespace SphFluid.Simulation
                 double acc = 0.25 * Math.Sqrt(h / MaxAcceleration);
                 if (acc < dt) { dt = acc; limit = "acceleration"; }
             }
-            if (ViscousTimeStep < dt && !ImplicitViscosity.PaysOff(_settings.PressureSolver, dt, ViscousTimeStep, _viscousRowSum, MaxKinematicViscosity))
+            if (ViscousTimeStep < dt && !ImplicitViscosity.PaysOff(_settings.PressureSolver, dt, ViscousTimeStep, _viscousRowSum, OperatorViscosity))
             {
                 dt = ViscousTimeStep;
                 limit = "viscous";

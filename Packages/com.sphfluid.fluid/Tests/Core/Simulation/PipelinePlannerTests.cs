@@ -1,3 +1,4 @@
+using System.Linq;
 using System.Numerics;
 using NUnit.Framework;
 using SphFluid.Simulation;
@@ -73,6 +74,33 @@ namespace SphFluid.Tests.Core.Simulation
                 PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Forces,
                 PassNames.FullStep, PassNames.ParticleShift, PassNames.ApplyShift,
             }));
+        }
+
+        /// <summary>The strain rate's viscous stress runs its Rotations pass before the forces, under either solver, and only
+        /// where some phase is viscous.</summary>
+        [Test]
+        public void LaplacianOrInviscid_NoRotationsPass()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            var plan = PipelinePlanner.Plan(scene, false);
+            Assert.That(plan.StrainRateViscosity, Is.False);
+            Assert.That(plan.SubstepPasses, Has.No.Member(PassNames.Rotations));
+            scene.Settings.ViscousStress = ViscousStress.StrainRate;
+            plan = PipelinePlanner.Plan(scene, false);
+            Assert.That(plan.StrainRateViscosity, Is.True);
+            Assert.That(plan.SubstepPasses, Is.EqualTo(new[]
+            {
+                PassNames.HalfStep, PassNames.Sort, PassNames.DensityPressure, PassNames.WallPressure, PassNames.Rotations,
+                PassNames.Forces, PassNames.FullStep,
+            }));
+            Assert.That(plan.ToString(), Does.Contain("viscous stress: strain rate"));
+            scene.Settings.PressureSolver = PressureSolver.Dfsph;
+            Assert.That(PipelinePlanner.Plan(scene, false).SubstepPasses.Take(2),
+                Is.EqualTo(new[] { PassNames.Rotations, PassNames.NonPressureForces }));
+            foreach (var box in scene.SpawnBoxes) box.Phase.Viscosity = 0f;
+            plan = PipelinePlanner.Plan(scene, false);
+            Assert.That(plan.StrainRateViscosity, Is.False, "no viscosity, no rotations");
+            Assert.That(plan.SubstepPasses, Has.No.Member(PassNames.Rotations));
         }
 
         [Test]
