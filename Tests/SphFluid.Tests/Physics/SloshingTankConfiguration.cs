@@ -18,14 +18,15 @@ namespace SphFluid.Tests.Physics
     /// "Wendland C2 relaxed" (OilAndWater's DFSPH kernel: Wendland C2 at 2.85 spacings, relaxation 0.3), "cubic spline"
     /// (at 2 spacings), "support S" (the scene's kernel reaching S spacings), "jittered" (a quarter spacing of spawn
     /// jitter), "free-slip" (walls that push only along their normals), "long tank" (the tank and its water twice as
-    /// long), "narrow" (tank and water 0.1 m across) and "half the spacing" (8 times the particles); "wcsph" is the
+    /// long), "narrow" (tank and water 0.1 m across), "strain rate" (the viscosity as the strain rate's stress,
+    /// <see cref="ViscousStress.StrainRate"/>) and "half the spacing" (8 times the particles); "wcsph" is the
     /// scene as shipped, and "half swing" is the dispersion probe's smaller kick, no change to the scene. A name with
     /// any other part is refused, so that a mistyped fixture cannot run the shipped scene unnoticed.
     /// </summary>
     public static class SloshingTankConfiguration
     {
         static readonly string[] Known =
-            { "wcsph", "dfsph", "Wendland C2 relaxed", "cubic spline", "jittered", "free-slip", "long tank", "narrow", "half the spacing", "half swing" };
+            { "wcsph", "dfsph", "Wendland C2 relaxed", "cubic spline", "jittered", "free-slip", "long tank", "narrow", "strain rate", "half the spacing", "half swing" };
         static readonly Regex Support = new Regex(@"^support (\d+(\.\d+)?)$");
 
         /// <summary>The RestingTank scene in the named configuration.</summary>
@@ -67,6 +68,7 @@ namespace SphFluid.Tests.Physics
                 scene.Container.Size = new Vector3(scene.Container.Size.X, scene.Container.Size.Y, 0.1f);
                 water.Size = new Vector3(water.Size.X, water.Size.Y, 0.1f);
             }
+            if (parts.Contains("strain rate")) s.ViscousStress = ViscousStress.StrainRate;
             if (parts.Contains("half the spacing")) ParticleScaling.ScaleBy(scene, 8);
             return scene;
         }

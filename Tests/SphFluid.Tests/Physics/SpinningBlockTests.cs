@@ -9,7 +9,7 @@ namespace SphFluid.Tests.Physics
     /// 1 cm spacings, no physical viscosity; WCSPH keeps its artificial viscosity, a central pair force) keeps the angular
     /// momentum it was spawned with, and stays at rest as a whole, for a quarter second under each solver. A viscous
     /// spin keeps it under the strain rate's viscous stress, and under Morris's Laplacian does not (known limits,
-    /// "Viscosity brakes a spinning liquid"; <see cref="SpinningBlockProbe"/>).
+    /// "Morris's viscosity, the default, brakes a spinning liquid"; <see cref="SpinningBlockProbe"/>).
     /// </summary>
     [TestFixture(PressureSolver.Wcsph)]
     [TestFixture(PressureSolver.Dfsph)]

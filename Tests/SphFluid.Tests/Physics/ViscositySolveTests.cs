@@ -266,11 +266,11 @@ namespace SphFluid.Tests.Physics
         /// <summary>
         /// How much of the cellular flow is a rigid rotation about its axis (y, through the box's centre): in a continuum
         /// 768 / pi^6 = 0.799 of its kinetic energy, the mode's projection on (z, 0, -x). A viscous stress does not act on a
-        /// rigid rotation, so a viscosity that keeps angular momentum (the experiments central-pair-viscosity and
-        /// rotation-free-viscosity) leaves that share to the pressure, which stops it only through the walls, since a
+        /// rigid rotation, so a viscosity that keeps angular momentum (ViscousStress.StrainRate; the experiment
+        /// central-pair-viscosity) leaves that share to the pressure, which stops it only through the walls, since a
         /// square's corners cannot turn inside it. DFSPH's solves do so every sub-step; WCSPH's pressure crosses the box at
-        /// its speed of sound, and its cellular flow above runs 5 ms (Headless/docs/known-limits.md, "Viscosity brakes a
-        /// spinning liquid"). The spawned particles' share must be the continuum's to 1 %.
+        /// its speed of sound, and its cellular flow above runs 5 ms (Headless/docs/known-limits.md, "Morris's viscosity,
+        /// the default, brakes a spinning liquid"). The spawned particles' share must be the continuum's to 1 %.
         /// </summary>
         [Test]
         public void TheCellularFlowIsMostlyARigidRotation()

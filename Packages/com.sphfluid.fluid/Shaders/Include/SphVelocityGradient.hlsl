@@ -10,8 +10,10 @@
 // under-reads Omega wherever the support is cut, and the viscosity would brake the rotation there.
 
 // The two sums, row by row: v* = sum_j V_j (v_j - v_i)_* gradW_ij and m* = sum_j V_j (x_j - x_i)_* gradW_ij, * = x, y, z.
-// Kept as vectors, not float3x3: a kernel summing into matrices read, on lavapipe through glslang, the uncorrected sum for
-// every particle in one keyword variant and a wrong one in another, while its arithmetic in C# (ReferenceSph) was exact.
+// Kept as vectors set to zero field by field, not float3x3 sums started from (float3x3)0: summed into matrices, the kernel
+// compiled through glslang read on lavapipe the uncorrected sum for every particle in one keyword variant, and a wrong
+// rotation in another, with results that came and went with edits that changed no arithmetic, while the same sums in C#
+// (ReferenceSph) were exact.
 struct VelocityGradientSums
 {
     float3 vx, vy, vz;
