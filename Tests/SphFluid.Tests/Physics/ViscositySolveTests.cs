@@ -301,12 +301,17 @@ namespace SphFluid.Tests.Physics
         /// it is symmetric. A block of jittered water with a free surface and no-slip walls, random velocities, one
         /// prediction at ten times the explicit limit. The GPU's velocities must be the CPU's to within each stage's
         /// tolerance of its change, the first stage's error carried into the second's target dt / h - 1 times.</summary>
-        [TestCase(false)]
-        [TestCase(true)]
-        public void ThePredictedVelocitiesAreTheTwoStageStepToItsTolerance(bool oilOnWater)
+        /// Under the strain rate's stress the stages solve with Morris's operator doubled (the Laplacian reference's
+        /// acceleration twice over), and the rotation term, ReferenceSph's strain-rate acceleration less that at the
+        /// velocities the sub-step starts with, joins gravity in v* - v_n.
+        [TestCase(false, ViscousStress.Laplacian)]
+        [TestCase(true, ViscousStress.Laplacian)]
+        [TestCase(true, ViscousStress.StrainRate)]
+        public void ThePredictedVelocitiesAreTheTwoStageStepToItsTolerance(bool oilOnWater, ViscousStress stress)
         {
             var settings = Weightless();
             settings.Gravity = new Vector3(0f, -9.81f, 0f);
+            settings.ViscousStress = stress;
             Assert.That(settings.VelocityDamping, Is.EqualTo(0f), "v* = v_n + g dt");
             var block = new Vector3(10 * Spacing, 8 * Spacing, 10 * Spacing);
             var container = new Vector3(10 * Spacing, 12 * Spacing, 10 * Spacing);
@@ -331,15 +336,31 @@ namespace SphFluid.Tests.Physics
             sim.Particles.GetData(solved);
             particles = solved; // the CPU's stages in the order the GPU's sort left
             var start = particles.Select(p => before[p.Id]).ToArray();
-            var predicted = start.Select(v => v + new Double3(settings.Gravity) * dt).ToArray();
+            var laplacianScene = new FluidSceneDescription
+            {
+                Settings = settings.Clone(), SpawnBoxes = scene.SpawnBoxes, Container = scene.Container, Obstacles = scene.Obstacles,
+            };
+            laplacianScene.Settings.ViscousStress = ViscousStress.Laplacian;
+            var reference = new ReferenceSph(laplacianScene);
+            double stressScale = stress == ViscousStress.StrainRate ? 2.0 : 1.0;
+            var rotationTerm = new Double3[start.Length];
+            if (stress == ViscousStress.StrainRate)
+            {
+                var atStart = (Particle[])particles.Clone();
+                for (int i = 0; i < atStart.Length; i++) atStart[i].Velocity = start[i].ToVector3();
+                var full = new ReferenceSph(scene).Evaluate(atStart, false).Acceleration;
+                var morris = reference.Evaluate(atStart, false).Acceleration;
+                var gravity = new Double3(settings.Gravity);
+                for (int i = 0; i < start.Length; i++) rotationTerm[i] = (full[i] - gravity) - (morris[i] - gravity) * stressScale;
+            }
+            var predicted = start.Select((v, i) => v + (new Double3(settings.Gravity) + rotationTerm[i]) * dt).ToArray();
 
-            var reference = new ReferenceSph(scene);
             var masses = particles.Select(p => (double)reference.PhaseTable[(int)p.Phase].ParticleMass).ToArray();
             double h = ImplicitViscosity.StageFraction * dt;
             var firstTarget = start.Select((v, i) => v + (predicted[i] - v) * (h / dt)).ToArray();
-            var first = StageOnTheCpu(reference, particles, masses, firstTarget, h, settings.Gravity);
+            var first = StageOnTheCpu(reference, particles, masses, firstTarget, h * stressScale, settings.Gravity);
             var secondTarget = predicted.Select((v, i) => v + (first[i] - firstTarget[i]) * (dt / h - 1.0)).ToArray();
-            var step = StageOnTheCpu(reference, particles, masses, secondTarget, h, settings.Gravity);
+            var step = StageOnTheCpu(reference, particles, masses, secondTarget, h * stressScale, settings.Gravity);
 
             double error = 0.0, change = 0.0, firstChange = 0.0, secondChange = 0.0;
             for (int i = 0; i < particles.Length; i++)
@@ -349,13 +370,15 @@ namespace SphFluid.Tests.Physics
                 firstChange += masses[i] * (first[i] - firstTarget[i]).LengthSquared();
                 secondChange += masses[i] * (step[i] - secondTarget[i]).LengthSquared();
             }
+            double rotationShare = Math.Sqrt(masses.Select((m, i) => m * (rotationTerm[i] * dt).LengthSquared()).Sum() / change);
             double relative = Math.Sqrt(error / change);
             double bound = ImplicitViscosity.Tolerance * ((dt / h - 1.0) * Math.Sqrt(firstChange) + Math.Sqrt(secondChange)) / Math.Sqrt(change);
-            TestContext.Progress.WriteLine($"{particles.Length} particles, {dt / sim.TimeStep.ViscousTimeStep:F1} explicit limits, " +
+            TestContext.Progress.WriteLine($"{stress}, {particles.Length} particles, {dt / sim.TimeStep.ViscousTimeStep:F1} explicit limits, " +
                 $"{sim.ViscositySolveRounds} rounds: the GPU's velocities are the CPU's two stages to {relative:E2} of the change " +
-                $"(mass-weighted RMS; bound {bound:E2})");
+                $"(mass-weighted RMS; bound {bound:E2}); the rotation term moved v* by {rotationShare:E2} of it");
             Assert.That(Math.Sqrt(change / masses.Sum()), Is.GreaterThan(0.005), "the viscosity changed the velocities");
             Assert.That(relative, Is.LessThan(bound));
+            if (stress == ViscousStress.StrainRate) Assert.That(rotationShare, Is.GreaterThan(10 * bound), "the case must test the rotation term");
         }
 
         /// <summary>x with (I - h a) x = target, a the CPU reference's viscous acceleration at the particles' places
