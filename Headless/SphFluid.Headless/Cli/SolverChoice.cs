@@ -25,6 +25,15 @@ public sealed class SolverChoice
     /// <summary>How WCSPH finds each particle's density instead of the scene's; null = the scene's.</summary>
     public WcsphDensity? Density { get; init; }
 
+    /// <summary>The physical viscosity's stress instead of the scene's; null = the scene's.</summary>
+    public ViscousStress? Stress { get; init; }
+
+    public static readonly IReadOnlyDictionary<string, ViscousStress> StressWords = new Dictionary<string, ViscousStress>
+    {
+        ["laplacian"] = ViscousStress.Laplacian,
+        ["strain-rate"] = ViscousStress.StrainRate,
+    };
+
     public static readonly IReadOnlyDictionary<string, SolverIteration> IterationWords = new Dictionary<string, SolverIteration>
     {
         ["jacobi"] = SolverIteration.Jacobi,
@@ -60,6 +69,7 @@ public sealed class SolverChoice
             settings.WcsphDensity = settings.PressureSolver == PressureSolver.Wcsph ? Density.Value
                 : throw new UsageException($"{command}: --wcsph-density applies to the WCSPH solver only; this run uses DFSPH "
                     + "(add --solver wcsph, or set Fluid.pressureSolver in the scene)");
+        if (Stress.HasValue) settings.ViscousStress = Stress.Value;
         scene.Settings = settings;
         return Solver.HasValue ? FitSupport(settings, command) : null;
     }
@@ -108,8 +118,8 @@ public sealed class SolverChoice
     public static string ShortName(PressureSolver solver) => solver == PressureSolver.Dfsph ? "DFSPH" : "WCSPH";
 }
 
-/// <summary>The <c>--solver</c>, <c>--density-tolerance</c>, <c>--divergence-tolerance</c>, <c>--solver-iteration</c> and
-/// <c>--wcsph-density</c> options, shared by the commands that run the solver.</summary>
+/// <summary>The <c>--solver</c>, <c>--density-tolerance</c>, <c>--divergence-tolerance</c>, <c>--solver-iteration</c>,
+/// <c>--wcsph-density</c> and <c>--viscous-stress</c> options, shared by the commands that run the solver.</summary>
 public sealed class SolverOptions
 {
     readonly Option<PressureSolver> _solver;
@@ -117,6 +127,7 @@ public sealed class SolverOptions
     readonly Option<double> _divergenceTolerance;
     readonly Option<SolverIteration> _iteration;
     readonly Option<WcsphDensity> _density;
+    readonly Option<ViscousStress> _stress;
 
     public SolverOptions(string command)
     {
@@ -134,6 +145,9 @@ public sealed class SolverOptions
             "WCSPH: how each particle's density is found, overriding the scene's WcsphDensity: summation (the kernel sum over "
             + "its neighbours, every sub-step) or delta-sph (carried, integrated with delta-SPH's diffusion, started hydrostatic; "
             + "default: the scene's; refused when the run uses DFSPH)");
+        _stress = OptionKinds.Choice(command, "--viscous-stress", SolverChoice.StressWords,
+            "the physical viscosity's stress, overriding the scene's ViscousStress: laplacian (Morris's pair term; brakes a "
+            + "rigid spin) or strain-rate (the Newtonian stress; keeps a spin, one more pass a sub-step; default: the scene's)");
     }
 
     public void AddTo(Command command)
@@ -143,6 +157,7 @@ public sealed class SolverOptions
         command.Add(_divergenceTolerance);
         command.Add(_iteration);
         command.Add(_density);
+        command.Add(_stress);
     }
 
     public SolverChoice Read(ParseResult r) => new()
@@ -152,5 +167,6 @@ public sealed class SolverOptions
         DivergenceTolerance = r.GetResult(_divergenceTolerance) != null ? r.GetValue(_divergenceTolerance) : null,
         Iteration = r.GetResult(_iteration) != null ? r.GetValue(_iteration) : null,
         Density = r.GetResult(_density) != null ? r.GetValue(_density) : null,
+        Stress = r.GetResult(_stress) != null ? r.GetValue(_stress) : null,
     };
 }

@@ -82,6 +82,28 @@ namespace SphFluid.Tests.Runner
             Assert.That(SimulateOptions.Parse(new[] { "x.unity" }).Solver.Density, Is.Null, "without --wcsph-density the scene's density runs");
         }
 
+        [TestCase("simulate")]
+        [TestCase("bench")]
+        public void AnUnknownViscousStressIsRefusedWithTheChoices(string command)
+        {
+            Assert.That(Run(out string err, command, RunnerPaths.Scene("PlayModeTest"), "--viscous-stress", "cauchy"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain($"{command}: --viscous-stress must be one of laplacian | strain-rate (was 'cauchy')"));
+        }
+
+        [Test]
+        public void TheViscousStressOverridesTheScenesUnderEitherSolver()
+        {
+            var scene = new FluidSceneDescription { Settings = new FluidSettings() };
+            Assert.That(scene.Settings.ViscousStress, Is.EqualTo(ViscousStress.Laplacian));
+
+            SimulateOptions.Parse(new[] { "x.unity", "--viscous-stress", "strain-rate" }).Solver.ApplyTo(scene, "simulate");
+            Assert.That(scene.Settings.ViscousStress, Is.EqualTo(ViscousStress.StrainRate));
+
+            SimulateOptions.Parse(new[] { "x.unity", "--solver", "dfsph", "--viscous-stress", "laplacian" }).Solver.ApplyTo(scene, "simulate");
+            Assert.That(scene.Settings.ViscousStress, Is.EqualTo(ViscousStress.Laplacian));
+            Assert.That(SimulateOptions.Parse(new[] { "x.unity" }).Solver.Stress, Is.Null, "without --viscous-stress the scene's stress runs");
+        }
+
         [Test]
         public void TheChoiceOverridesTheScenesSettings()
         {
