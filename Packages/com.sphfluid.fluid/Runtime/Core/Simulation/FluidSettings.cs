@@ -98,8 +98,8 @@ namespace SphFluid.Simulation
         public SettingVector Gravity = new Vector3(0f, -9.81f, 0f);
 
         // Laplacian by default: every shipped scene and GPU figure was measured with it, and its phases' viscosities are too
-        // low for the rotation it brakes to show. A spinning block at 10 Pa s keeps 0.17 of its angular momentum under it
-        // against all but 3.5e-4 under the strain rate (SpinningBlockProbe).
+        // low for the rotation it brakes to show. A spinning block at 10 Pa s keeps 0.17 of its angular momentum under it,
+        // and all of it to within 4.5e-4 under the strain rate (SpinningBlockProbe).
         [Setting(Forces, 0, 1, "", "The physical viscosity's stress: 0 = Laplacian (mu times the Laplacian of the velocity, Morris et al. 1997: cheapest, but it brakes a rigidly spinning liquid), 1 = StrainRate (the Newtonian stress 2 mu D: a rigid rotation keeps its spin; one more pass each sub-step and half the explicit viscous step).")]
         public ViscousStress ViscousStress = ViscousStress.Laplacian;
 
