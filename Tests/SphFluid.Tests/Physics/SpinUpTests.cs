@@ -28,7 +28,7 @@ namespace SphFluid.Tests.Physics
         public SpinUpTests(PressureSolver solver) => _solver = solver;
 
         /// <summary>The liquid's angular momentum about the box's axis over I Omega, at <see cref="Seconds"/> and half of it.</summary>
-        (double half, double end) SpinUp(ViscousStress stress)
+        (double half, double end) SpinUp(ViscousStress stress, bool validated = false, int frames = (int)(Seconds * 60))
         {
             var settings = SolverScenes.Coarse(Side / 8);
             settings.PressureSolver = _solver;
@@ -38,10 +38,9 @@ namespace SphFluid.Tests.Physics
             var box = new Vector3(Side);
             var scene = SolverScenes.Scene(settings, box, SolverScenes.Box("Liquid", SolverScenes.Water(Viscosity),
                 new Vector3(0f, -Side / 4, 0f), new Vector3(Side, Side / 2, Side), jitter: 0f));
-            using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
+            using var sim = new FluidSimulation(validated ? GpuTestDevice.Shared : GpuTestDevice.Unvalidated, scene);
             var particles = new Particle[sim.ParticleCount];
             double half = 0.0;
-            int frames = (int)Math.Round(Seconds * 60);
             for (int frame = 1; frame <= frames; frame++)
             {
                 sim.UpdateContainer(new ContainerDescription
@@ -65,6 +64,15 @@ namespace SphFluid.Tests.Physics
                 }
             }
             throw new InvalidOperationException("unreachable");
+        }
+
+        /// <summary>Two frames on the validated device: the turning walls' kernels (DFSPH's WallMovedDensityFactor) in this
+        /// scene's variant must also run under the validation layer (GpuTestDevice).</summary>
+        [Test]
+        public void TheTurningBoxRunsUnderTheValidationLayer()
+        {
+            var (_, end) = SpinUp(ViscousStress.StrainRate, validated: true, frames: 2);
+            Assert.That(end, Is.GreaterThan(0.0), "the walls drag the liquid round");
         }
 
         [Test]
