@@ -2,8 +2,9 @@
 #define SPHFLUID_PASSES_FORCES_INCLUDED
 
 // FluidSolver.compute's force passes: colour-field normals (SphSurfaceTension.hlsl), the strain-rate viscosity's
-// rotations (SphVelocityGradient.hlsl) and every force on a fluid particle from its fluid and wall neighbours (SphPressureForce.hlsl, SphViscosity.hlsl, SphXsph.hlsl, SphBoundary.hlsl's
-// wall contact); NonPressureForces is the same sum without pressure, for the divergence-free solver.
+// rotations (SphVelocityGradient.hlsl) and every force on a fluid particle from its fluid and wall neighbours
+// (SphPressureForce.hlsl, SphViscosity.hlsl, SphXsph.hlsl, SphBoundary.hlsl's wall contact); NonPressureForces is the
+// same sum without pressure, for the divergence-free solver.
 
 [numthreads(PARTICLE_THREADS, 1, 1)]
 void Normals(uint3 id : SV_DispatchThreadID)
@@ -117,8 +118,8 @@ ForceSums ForceSumsOf(uint i, bool withPressure, uint lane)
     // The viscosity may be the implicit solve's instead (ViscositySolve.hlsl); the strain rate's rotation term then stays
     // here, at the rotations of the sub-step's start.
     bool explicitViscosity = !ViscosityIsImplicit();
-    bool rotationTerm = explicitViscosity || _StrainRateViscosity != 0u;
-    float3 rotationI = _StrainRateViscosity != 0u ? _Rotations[i].xyz : float3(0.0, 0.0, 0.0);
+    bool strainRate = _StrainRateViscosity != 0u;
+    float3 rotationI = strainRate ? _Rotations[i].xyz : float3(0.0, 0.0, 0.0);
     float3 force = float3(0.0, 0.0, 0.0);
     float3 xsph = float3(0.0, 0.0, 0.0);
     float3 wallGradients = float3(0.0, 0.0, 0.0);
@@ -146,7 +147,7 @@ ForceSums ForceSumsOf(uint i, bool withPressure, uint lane)
                 force += PressureForcePair(di.w, dj.w, gradient);
             if (explicitViscosity)
                 force += ViscosityForcePair(muIJ, pi.velocity, pj.velocity, rij, r2, gradient, 1.0 / (di.z * dj.z), PairRotation(rotationI, j));
-            else if (rotationTerm)
+            else if (strainRate)
                 force += ViscosityRotationForcePair(muIJ, rij, r2, gradient, 1.0 / (di.z * dj.z), PairRotation(rotationI, j));
             if (withPressure)
                 force += ArtificialViscosityForcePair(pi.velocity, pj.velocity, rij, r2, gradient, 0.5 * (di.x + dj.x), 1.0 / (di.z * dj.z));
@@ -176,7 +177,7 @@ ForceSums ForceSumsOf(uint i, bool withPressure, uint lane)
             if (explicitViscosity)
                 force += ViscosityForcePair(_WallFriction * phaseI.viscosity, pi.velocity, wall.velocity, rib, r2, gradient,
                     weight / (di.z * di.z), rotationI);
-            else if (rotationTerm)
+            else if (strainRate)
                 force += ViscosityRotationForcePair(_WallFriction * phaseI.viscosity, rib, r2, gradient, weight / (di.z * di.z), rotationI);
             if (withPressure)
             {
