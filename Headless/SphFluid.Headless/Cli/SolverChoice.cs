@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using System.CommandLine;
 using System.Globalization;
@@ -51,6 +52,32 @@ public sealed class SolverChoice
         ["wcsph"] = PressureSolver.Wcsph,
         ["dfsph"] = PressureSolver.Dfsph,
     };
+
+    /// <summary>The choice as the change <see cref="Scenes.SceneLoader"/> makes before it validates the scene, so that
+    /// the scene is checked as this run will use it; null when the command line chose nothing. <paramref name="noted"/>
+    /// receives <see cref="ApplyTo"/>'s line.</summary>
+    public Scenes.SceneChange? AsChange(string command, Action<string?> noted) =>
+        Arguments() is { } arguments ? new Scenes.SceneChange(command + " " + arguments, scene => noted(ApplyTo(scene, command))) : null;
+
+    /// <summary>The options given, as they are written ("--solver dfsph --density-tolerance 0.1"); null when none was.</summary>
+    public string? Arguments()
+    {
+        var given = new List<string>();
+        if (Solver.HasValue) given.Add("--solver " + Word(Words, Solver.Value));
+        if (DensityTolerance.HasValue) given.Add("--density-tolerance " + DensityTolerance.Value.ToString("G6", C));
+        if (DivergenceTolerance.HasValue) given.Add("--divergence-tolerance " + DivergenceTolerance.Value.ToString("G6", C));
+        if (Iteration.HasValue) given.Add("--solver-iteration " + Word(IterationWords, Iteration.Value));
+        if (Density.HasValue) given.Add("--wcsph-density " + Word(DensityWords, Density.Value));
+        if (Stress.HasValue) given.Add("--viscous-stress " + Word(StressWords, Stress.Value));
+        return given.Count > 0 ? string.Join(" ", given) : null;
+    }
+
+    static string Word<T>(IReadOnlyDictionary<string, T> words, T value) where T : struct, Enum
+    {
+        foreach (var pair in words)
+            if (pair.Value.Equals(value)) return pair.Key;
+        return value.ToString();
+    }
 
     /// <summary>Applies the choice to the scene's settings (a copy, so the loaded scene is untouched). A DFSPH setting
     /// for a run that ends up on WCSPH, or a WCSPH one for a DFSPH run, would be silently ignored, so it is refused by

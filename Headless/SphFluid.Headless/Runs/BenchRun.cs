@@ -62,7 +62,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
 
     public int Execute()
     {
-        var scene = SceneLoader.Load(options.ScenePath);
+        var scene = Load();
         // Every requested count is turned into a scene before the device opens, so an impossible one is refused
         // (exit 2, naming --particles) without measuring the others first.
         var descriptions = options.Particles.Count > 0 ? options.Particles.Select(n => ScaledTo(n)).ToList()
@@ -196,7 +196,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
     /// <summary>The scene's description (a fresh load: each row owns its copy) rescaled to about <paramref name="target"/> particles.</summary>
     FluidSceneDescription ScaledTo(int target)
     {
-        var description = WithSolver();
+        var description = Load().Description;
         ParticleScaling.ScaleTo(description, target);
         SceneFit.RequireScaled(description, "bench", "--particles", target.ToString(C));
         return description;
@@ -205,18 +205,14 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
     /// <summary>The scene's description with its particle count multiplied by <paramref name="factor"/> (1: as it is).</summary>
     FluidSceneDescription ScaledBy(double factor)
     {
-        var description = WithSolver();
+        var description = Load().Description;
         ParticleScaling.ScaleBy(description, factor);
         SceneFit.RequireScaled(description, "bench", "--particles-scales", factor.ToString("G6", C));
         return description;
     }
 
-    FluidSceneDescription WithSolver()
-    {
-        var description = SceneLoader.Load(options.ScenePath).Description;
-        _solverNote = options.Solver.ApplyTo(description, "bench");
-        return description;
-    }
+    /// <summary>The scene as this bench runs it (--solver and its settings), validated so.</summary>
+    LoadedScene Load() => SceneLoader.Load(options.ScenePath, change: options.Solver.AsChange("bench", note => _solverNote = note));
 
     /// <summary>The largest particle count whose 60 Hz frame fits the GPU budget on this device (<see cref="FrameSizing"/>).</summary>
     public FrameSizing.Fit? DeviceFit { get; private set; }

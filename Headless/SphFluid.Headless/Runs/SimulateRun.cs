@@ -41,10 +41,9 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
 
     public int Execute()
     {
-        var scene = SceneLoader.Load(options.ScenePath);
+        var scene = SceneLoader.Load(options.ScenePath, change: options.Solver.AsChange("simulate", note => _solverNote = note));
         var description = scene.Description;
         int sceneCount = SpawnLayout.TotalCount(description);
-        _solverNote = options.Solver.ApplyTo(description, "simulate");
 
         // The device decides the scale (--cpu-particles-scale), so it opens before the scene is scaled and checked; the
         // output folder is claimed only once the scaled scene fits.

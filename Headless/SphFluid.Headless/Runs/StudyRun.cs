@@ -81,7 +81,11 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
 
     public int Execute()
     {
-        var scene = SceneLoader.Load(options.ScenePath);
+        // The matrix reads the scene's own CFL number and DFSPH settings; the scene is checked here as the first
+        // solver asked runs it, and each configuration again as it runs.
+        var first = options.Solvers[0];
+        var scene = SceneLoader.Load(options.ScenePath, change: new SceneChange("study with " + SolverChoice.ShortName(first),
+            d => { d.Settings.PressureSolver = first; SolverChoice.FitSupport(d.Settings, "study"); }));
         var configs = Matrix(scene.Description.Settings);
         // Every configuration is made into a scene before the device opens: an impossible one is refused by name first.
         var descriptions = configs.Select(c => Describe(c)).ToList();
@@ -143,10 +147,18 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         return configs;
     }
 
+    /// <summary>The scene as one configuration runs it, validated so (a fresh load: each row owns its copy).</summary>
     FluidSceneDescription Describe(Configuration config)
     {
-        var description = SceneLoader.Load(options.ScenePath).Description;
-        var settings = description.Settings.Clone();
+        string label = string.Format(C, "study configuration {0}, CFL {1:G3}", config.Label, config.Cfl);
+        var description = SceneLoader.Load(options.ScenePath, change: new SceneChange(label, d => Configure(d.Settings, config))).Description;
+        ParticleScaling.ScaleBy(description, config.ParticleScale);
+        SceneFit.RequireScaled(description, "study", "--particles-scales", config.ParticleScale.ToString("G6", C));
+        return description;
+    }
+
+    void Configure(FluidSettings settings, Configuration config)
+    {
         settings.PressureSolver = config.Solver;
         if (config.Solver == PressureSolver.Dfsph)
         {
@@ -158,13 +170,6 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         _supportNote ??= note;
         settings.Stiffness = (float)(settings.Stiffness * config.StiffnessFactor);
         settings.CflNumber = (float)config.Cfl;
-        description.Settings = settings;
-        ParticleScaling.ScaleBy(description, config.ParticleScale);
-        SceneFit.RequireScaled(description, "study", "--particles-scales", config.ParticleScale.ToString("G6", C));
-        var errors = description.Validate();
-        if (errors.Count > 0)
-            throw new UsageException($"study: configuration {config.Label}, CFL {config.Cfl.ToString("G3", C)} is invalid for this scene: {errors[0].Message}");
-        return description;
     }
 
     Row Run(LoadedScene scene, FluidSceneDescription description, Configuration config, IComputeDevice device)

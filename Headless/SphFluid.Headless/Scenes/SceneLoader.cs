@@ -21,8 +21,9 @@ namespace SphFluid.Headless.Scenes;
 public static class SceneLoader
 {
     /// <summary>Loads and validates <paramref name="scenePath"/>; <paramref name="project"/> defaults to the
-    /// Unity project at or above the file (else the one holding this program).</summary>
-    public static LoadedScene Load(string scenePath, UnityProject? project = null)
+    /// Unity project at or above the file (else the one holding this program). <paramref name="change"/>, what the
+    /// command changes (<see cref="SceneChange"/>), is applied before the validation.</summary>
+    public static LoadedScene Load(string scenePath, UnityProject? project = null, SceneChange? change = null)
     {
         if (Directory.Exists(scenePath))
             throw new SceneException($"{scenePath}: is a folder, not a scene file");
@@ -48,7 +49,7 @@ public static class SceneLoader
         if (problems.Count > 0)
             throw new SceneException($"{scenePath}: the integrity check refuses the scene ({problems.Count} problem(s)):\n  " +
                 string.Join("\n  ", problems.Select(p => $"{scenePath}{(p.Line > 0 ? ":" + p.Line.ToString(CultureInfo.InvariantCulture) : "")}: {p.Message}")));
-        return new Reader(scenePath, scene, project).Read();
+        return new Reader(scenePath, scene, project).Read(change);
     }
 
     static UnityProject FindProject(string scenePath)
@@ -89,7 +90,7 @@ public static class SceneLoader
             (_simulatorGo, _simulator) = simulators[0];
         }
 
-        public LoadedScene Read()
+        public LoadedScene Read(SceneChange? change)
         {
             CheckShaders();
             CheckTransforms();
@@ -113,15 +114,18 @@ public static class SceneLoader
                 description.Obstacles.Add(ReadObstacle(go, mb));
             }
 
+            change?.Apply(description);
+            string invalid = change == null ? "the fluid scene is invalid" : $"the fluid scene is invalid as {change.Label} runs it";
+
             // The grid's cell limit first: a container too large for its grid is also too large for its wall
             // particles, and the grid's message names both the container and the support radius.
             var errors = description.Validate();
             bool settingsOk = !errors.Any(e => e.Field.StartsWith("Settings", StringComparison.Ordinal));
             if (settingsOk && SceneFit.GridProblem(description) is { } grid)
-                throw new SceneException($"{path}:{containerGo.Transform?.Root["m_LocalScale"]?.Line ?? containerGo.Document.Line}: the fluid scene is invalid:\n  GameObject '{containerGo.Name}', Transform.m_LocalScale and " +
+                throw new SceneException($"{path}:{containerGo.Transform?.Root["m_LocalScale"]?.Line ?? containerGo.Document.Line}: {invalid}:\n  GameObject '{containerGo.Name}', Transform.m_LocalScale and " +
                     $"{Where(_simulatorGo, RuntimeScripts.Fluid, RuntimeScripts.Settings + "." + nameof(FluidSettings.SmoothingRadius))}: {grid}");
             if (errors.Count > 0)
-                throw new SceneException($"{path}: the fluid scene is invalid:\n  " + string.Join("\n  ", errors.Select(e => Locate(e, containerGo))));
+                throw new SceneException($"{path}: {invalid}:\n  " + string.Join("\n  ", errors.Select(e => Locate(e, containerGo))));
 
             return new LoadedScene
             {

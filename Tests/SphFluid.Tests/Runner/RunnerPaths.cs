@@ -24,12 +24,19 @@ namespace SphFluid.Tests.Runner
         }
 
         /// <summary>A copy of a shipped scene with one piece of text replaced, written to a scratch folder.</summary>
-        public static string EditedScene(string name, string find, string replace)
+        public static string EditedScene(string name, string find, string replace) => EditedScene(name, (find, replace));
+
+        /// <summary>A copy of a shipped scene with several pieces of text replaced, written to a scratch folder.</summary>
+        public static string EditedScene(string name, params (string Find, string Replace)[] edits)
         {
             string text = File.ReadAllText(Scene(name));
-            if (!text.Contains(find)) throw new InvalidOperationException($"{name}.unity has no '{find}' to replace");
+            foreach (var (find, replace) in edits)
+            {
+                if (!text.Contains(find)) throw new InvalidOperationException($"{name}.unity has no '{find}' to replace");
+                text = text.Replace(find, replace);
+            }
             string path = Path.Combine(ScratchFolder("scene"), name + ".unity");
-            File.WriteAllText(path, text.Replace(find, replace));
+            File.WriteAllText(path, text);
             return path;
         }
     }

@@ -1,4 +1,6 @@
+using System.Collections.Generic;
 using System.IO;
+using System.Linq;
 using NUnit.Framework;
 using SphFluid.Headless;
 using SphFluid.Headless.Cli;
@@ -130,6 +132,64 @@ namespace SphFluid.Tests.Runner
             Assert.That(stdout.ToString(), Does.Contain("solver: DFSPH (density tolerance 0.05 %, divergence tolerance 25 %/s"));
             Assert.That(stdout.ToString(), Does.Contain("done (DFSPH)"));
             Assert.That(File.ReadAllText(Path.Combine(outDir, "summary.txt")), Does.Contain("solver: DFSPH"));
+        }
+
+        // A stiffness the speed-of-sound rule refuses (its bound is 2.7e7 Pa in DamBreak's tank) binds WCSPH only, so the
+        // scene is checked as the run will use it: as written, then as --solver changes it, the refusal naming the line.
+        const string SceneStiffness = "    Stiffness: 50000", TooStiff = "    Stiffness: 1000000000";
+
+        [Test]
+        public void ADfsphRunIsNotRefusedForAWcsphStiffnessItDoesNotUse()
+        {
+            string path = RunnerPaths.EditedScene("PlayModeTest", SceneStiffness, TooStiff);
+            Assert.That(Run(out string asWritten, "simulate", path, "--steps", "1"), Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(asWritten, Does.Contain("Fluid.settings.Stiffness: FluidSettings: Stiffness must be in [1, "));
+
+            var stdout = new StringWriter();
+            var run = new SimulateRun(SimulateOptions.Parse(new[] { path, "--steps", "1", "--solver", "dfsph", "--out", RunnerPaths.ScratchFolder("stiff-dfsph"), "--quiet" }),
+                stdout, new StringWriter()) { Device = GpuTestDevice.Shared, InteractiveProgress = false };
+            Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok), stdout.ToString());
+        }
+
+        [TestCase("simulate", "--solver wcsph")]
+        [TestCase("bench", "--solver wcsph")]
+        [TestCase("simulate", "--solver wcsph --viscous-stress strain-rate")]
+        public void AWcsphRunOfADfsphSceneIsRefusedForItsStiffnessNamingTheLine(string command, string arguments)
+        {
+            string path = RunnerPaths.EditedScene("PlayModeTest", (SceneStiffness, TooStiff), ("    PressureSolver: 0", "    PressureSolver: 1"));
+            int line = File.ReadAllText(path).Split('\n').ToList().IndexOf(TooStiff) + 1;
+
+            var args = new List<string> { command, path };
+            args.AddRange(arguments.Split(' '));
+            Assert.That(Run(out string err, args.ToArray()), Is.EqualTo(ExitCodes.BadScene));
+
+            Assert.That(err, Does.Contain($"the fluid scene is invalid as {command} {arguments} runs it:"));
+            Assert.That(err, Does.Contain($"PlayModeTest.unity:{line}: GameObject 'Fluid', Fluid.settings.Stiffness: FluidSettings: Stiffness must be in [1, "));
+            Assert.That(err, Does.Contain("(was 1E+09)"));
+        }
+
+        [Test]
+        public void AStudyConfigurationTheSceneCannotRunIsRefusedByItsLabelAndTheLine()
+        {
+            string path = RunnerPaths.EditedScene("PlayModeTest", SceneStiffness, "    Stiffness: 10000000");
+            int line = File.ReadAllText(path).Split('\n').ToList().IndexOf("    Stiffness: 10000000") + 1;
+
+            Assert.That(Run(out string err, "study", path, "--quick", "--solvers", "wcsph", "--stiffness-factors", "1", "100"), Is.EqualTo(ExitCodes.BadScene));
+
+            Assert.That(err, Does.Contain("the fluid scene is invalid as study configuration WCSPH k x100, CFL "));
+            Assert.That(err, Does.Contain($"PlayModeTest.unity:{line}: GameObject 'Fluid', Fluid.settings.Stiffness: FluidSettings: Stiffness must be in [1, "));
+            Assert.That(err, Does.Contain("(was 1E+09)"));
+        }
+
+        [Test]
+        public void TheArgumentsAreNamedAsTheyAreWritten()
+        {
+            Assert.That(SimulateOptions.Parse(new[] { "x.unity" }).Solver.AsChange("simulate", _ => { }), Is.Null, "no change without options");
+            var options = SimulateOptions.Parse(new[] { "x.unity", "--solver", "DFSPH", "--density-tolerance", "0.05", "--divergence-tolerance", "30",
+                "--solver-iteration", "chebyshev", "--viscous-stress", "strain-rate" });
+            Assert.That(options.Solver.AsChange("simulate", _ => { })!.Label,
+                Is.EqualTo("simulate --solver dfsph --density-tolerance 0.05 --divergence-tolerance 30 --solver-iteration chebyshev --viscous-stress strain-rate"));
+            Assert.That(SimulateOptions.Parse(new[] { "x.unity", "--wcsph-density", "delta-sph" }).Solver.Arguments(), Is.EqualTo("--wcsph-density delta-sph"));
         }
     }
 }
