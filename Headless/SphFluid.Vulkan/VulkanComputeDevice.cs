@@ -280,7 +280,7 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
         IEnumerable<(PhysicalDevice dev, PhysicalDeviceProperties props, uint family, uint tsBits, string name)> pool = candidates;
         if (!string.IsNullOrWhiteSpace(wanted))
         {
-            pool = candidates.Where(c => c.name.Contains(wanted, StringComparison.OrdinalIgnoreCase)).ToList();
+            pool = candidates.Where(c => NameMatches(c.name, wanted)).ToList();
             if (!pool.Any())
                 throw new VulkanUnavailableException($"No Vulkan device name contains '{wanted}' (SPHFLUID_VULKAN_DEVICE); devices: {string.Join(", ", candidates.Select(c => c.name))}");
         }
@@ -290,6 +290,14 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
         chosenProps = chosen.props;
         timestampBits = chosen.tsBits;
     }
+
+    /// <summary>Whether the adapter <paramref name="adapter"/> is the one asked for: its name contains
+    /// <paramref name="wanted"/>, ignoring case. Mesa's CPU Vulkan driver, lavapipe, names its adapter after the
+    /// rasteriser it shares code with ("llvmpipe (LLVM 15.0.6, 256 bits)"), so "lavapipe", the name the docs use,
+    /// finds it too.</summary>
+    public static bool NameMatches(string adapter, string wanted) =>
+        adapter.Contains(wanted, StringComparison.OrdinalIgnoreCase)
+        || (wanted.Trim().Equals("lavapipe", StringComparison.OrdinalIgnoreCase) && adapter.Contains("llvmpipe", StringComparison.OrdinalIgnoreCase));
 
     void CreateDevice()
     {

@@ -22,7 +22,7 @@ public sealed class SphfluidCommandLine
 faster, more compressed or more energetic than the scene allows (the message names the time,
 phase and figure).";
 
-    public const string DeviceHelp = "Vulkan adapter whose name contains NAME (default: SPHFLUID_VULKAN_DEVICE, else the best)";
+    public const string DeviceHelp = "Vulkan adapter whose name contains NAME; lavapipe finds Mesa's CPU adapter, llvmpipe (default: SPHFLUID_VULKAN_DEVICE, else the best)";
 
     const string About =
 @"sphfluid: the SPH fluid of a Unity scene, run headless on Vulkan (lavapipe or a GPU)

@@ -4,6 +4,7 @@ using System.Text.RegularExpressions;
 using NUnit.Framework;
 using SphFluid.Headless;
 using SphFluid.Headless.Cli;
+using SphFluid.Vulkan;
 
 namespace SphFluid.Tests.Runner
 {
@@ -161,6 +162,20 @@ namespace SphFluid.Tests.Runner
             if (code == ExitCodes.Failure && err.Contains("no Vulkan device")) Assert.Ignore("No Vulkan driver here: " + err);
             Assert.That(code, Is.EqualTo(ExitCodes.BadArguments));
             Assert.That(err, Does.Contain("--device 'NoSuchAdapter' matches no Vulkan adapter"));
+        }
+
+        [Test]
+        public void LavapipeNamesMesasCpuAdapterWhoseNameIsLlvmpipe()
+        {
+            Assert.That(VulkanComputeDevice.NameMatches("llvmpipe (LLVM 15.0.6, 256 bits)", "lavapipe"), Is.True);
+            Assert.That(VulkanComputeDevice.NameMatches("llvmpipe (LLVM 15.0.6, 256 bits)", "LLVMpipe"), Is.True);
+            Assert.That(VulkanComputeDevice.NameMatches("NVIDIA H100 80GB HBM3", "lavapipe"), Is.False);
+            Assert.That(VulkanComputeDevice.NameMatches("NVIDIA H100 80GB HBM3", "h100"), Is.True);
+
+            int code = Run(out _, out string err, "simulate", RunnerPaths.Scene("PlayModeTest"), "--steps", "1", "--device", "lavapipe",
+                "--out", RunnerPaths.ScratchFolder("lavapipe"), "--quiet");
+            if (code == ExitCodes.BadArguments && err.Contains("matches no Vulkan adapter")) Assert.Ignore("No lavapipe here: " + err);
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok), err);
         }
     }
 }
