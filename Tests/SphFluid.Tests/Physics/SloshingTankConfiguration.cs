@@ -13,22 +13,29 @@ namespace SphFluid.Tests.Physics
 {
     /// <summary>
     /// The shipped RestingTank scene changed as a surface probe's fixture names it (<see cref="SurfaceSeicheProbe"/>,
-    /// <see cref="SurfaceDispersionProbe"/>), so that one name means one configuration in both. The name lists its
-    /// changes, comma-separated, from these: "dfsph" (the scene switched as <c>--solver dfsph</c> switches it),
-    /// "Wendland C2 relaxed" (OilAndWater's DFSPH kernel: Wendland C2 at 2.85 spacings, relaxation 0.3), "cubic spline"
-    /// (at 2 spacings), "support S" (the scene's kernel reaching S spacings), "jittered" (a quarter spacing of spawn
-    /// jitter), "free-slip" (walls that push only along their normals), "long tank" (the tank and its water twice as
-    /// long), "narrow" (tank and water 0.1 m across), "strain rate" (the viscosity as the strain rate's stress,
-    /// <see cref="ViscousStress.StrainRate"/>) and "half the spacing" (8 times the particles); "wcsph" is the
-    /// scene as shipped, "half swing" is the dispersion probe's smaller kick and "viscous step F" the viscous seiche
-    /// probe's largest sub-step (F times its viscous run's explicit limit), no changes to the scene. A name with
-    /// any other part is refused, so that a mistyped fixture cannot run the shipped scene unnoticed.
+    /// <see cref="SurfaceDispersionProbe"/>, <see cref="ViscousSeicheProbe"/>), so that one name means one
+    /// configuration in each. The name lists its changes, comma-separated, from these: "dfsph" (the scene switched as
+    /// <c>--solver dfsph</c> switches it), "Wendland C2 relaxed" (OilAndWater's DFSPH kernel: Wendland C2 at 2.85
+    /// spacings, relaxation 0.3), "cubic spline" (at 2 spacings), "support S" (the scene's kernel reaching S spacings),
+    /// "jittered" (a quarter spacing of spawn jitter), "free-slip" (walls that push only along their normals), "long
+    /// tank" (the tank and its water twice as long), "narrow" (tank and water 0.1 m across), "strain rate" (the
+    /// viscosity as the strain rate's stress, <see cref="ViscousStress.StrainRate"/>), "summation density" (WCSPH's
+    /// density summed each sub-step, not carried), "no artificial viscosity", "no XSPH", "tight solves" (DFSPH's
+    /// Chebyshev-accelerated solves to 0.01 % and 1 %/s, at most 1000 rounds each), "stiffness xF" (F times the Tait
+    /// stiffness) and "half the spacing" (8 times the particles); "wcsph" is the scene as shipped, "half swing" is the
+    /// dispersion probe's smaller kick and "viscous step F" the viscous seiche probe's largest sub-step (F times its
+    /// viscous run's explicit limit), no changes to the scene. A name with any other part is refused, so that a
+    /// mistyped fixture cannot run the shipped scene unnoticed.
     /// </summary>
     public static class SloshingTankConfiguration
     {
         static readonly string[] Known =
-            { "wcsph", "dfsph", "Wendland C2 relaxed", "cubic spline", "jittered", "free-slip", "long tank", "narrow", "strain rate", "half the spacing", "half swing" };
+        {
+            "wcsph", "dfsph", "Wendland C2 relaxed", "cubic spline", "jittered", "free-slip", "long tank", "narrow", "strain rate",
+            "summation density", "no artificial viscosity", "no XSPH", "tight solves", "half the spacing", "half swing",
+        };
         static readonly Regex Support = new Regex(@"^support (\d+(\.\d+)?)$");
+        static readonly Regex Stiffer = new Regex(@"^stiffness x(\d+(\.\d+)?)$");
 
         /// <summary>"viscous step F": read by <see cref="ViscousSeicheProbe"/>, not applied here.</summary>
         public static readonly Regex ViscousStep = new Regex(@"^viscous step (\d+(\.\d+)?)$");
@@ -37,7 +44,7 @@ namespace SphFluid.Tests.Physics
         public static FluidSceneDescription Load(string configuration)
         {
             var parts = configuration.Split(',').Select(p => p.Trim()).ToList();
-            var unknown = parts.Where(p => !Known.Contains(p) && !Support.IsMatch(p) && !ViscousStep.IsMatch(p)).ToList();
+            var unknown = parts.Where(p => !Known.Contains(p) && !Support.IsMatch(p) && !Stiffer.IsMatch(p) && !ViscousStep.IsMatch(p)).ToList();
             if (unknown.Count > 0)
                 throw new ArgumentException($"'{configuration}': no such change to the sloshing tank: {string.Join(", ", unknown)}", nameof(configuration));
             var scene = SceneLoader.Load(RunnerPaths.Scene("RestingTank"), RunnerPaths.Project).Description;
@@ -59,6 +66,8 @@ namespace SphFluid.Tests.Physics
             }
             foreach (var match in parts.Select(p => Support.Match(p)).Where(m => m.Success))
                 s.SmoothingRadius = float.Parse(match.Groups[1].Value, CultureInfo.InvariantCulture) * s.ParticleSpacing;
+            foreach (var match in parts.Select(p => Stiffer.Match(p)).Where(m => m.Success))
+                s.Stiffness *= float.Parse(match.Groups[1].Value, CultureInfo.InvariantCulture);
             if (parts.Contains("jittered")) water.Jitter = 0.25f;
             if (parts.Contains("free-slip")) scene.Container.Friction = WallFriction.Slip;
             if (parts.Contains("long tank"))
@@ -73,6 +82,16 @@ namespace SphFluid.Tests.Physics
                 water.Size = new Vector3(water.Size.X, water.Size.Y, 0.1f);
             }
             if (parts.Contains("strain rate")) s.ViscousStress = ViscousStress.StrainRate;
+            if (parts.Contains("summation density")) s.WcsphDensity = WcsphDensity.Summation;
+            if (parts.Contains("no artificial viscosity")) s.ArtificialViscosity = 0;
+            if (parts.Contains("no XSPH")) s.XsphEpsilon = 0;
+            if (parts.Contains("tight solves"))
+            {
+                s.SolverIteration = SolverIteration.Chebyshev;
+                s.DensityTolerance = 0.01f;
+                s.DivergenceTolerance = 1f;
+                s.MaxSolverIterations = 1000;
+            }
             if (parts.Contains("half the spacing")) ParticleScaling.ScaleBy(scene, 8);
             return scene;
         }

@@ -10,13 +10,15 @@ namespace SphFluid.Tests.Physics
     /// configuration <see cref="SloshingTankConfiguration"/> knows, and that it changes what the name says.</summary>
     public sealed class SloshingTankConfigurationTests
     {
-        static readonly Type[] Probes = { typeof(SurfaceSeicheProbe), typeof(SurfaceDispersionProbe) };
+        static readonly Type[] Probes = { typeof(SurfaceSeicheProbe), typeof(SurfaceDispersionProbe), typeof(ViscousSeicheProbe) };
+
+        const int ViscousFixtures = 30;
 
         [Test]
         public void EverySurfaceProbeFixtureNamesAKnownConfiguration()
         {
             var names = Probes.SelectMany(p => p.GetCustomAttributes<TestFixtureAttribute>()).Select(f => (string)f.Arguments.Single()!).ToList();
-            Assert.That(names, Has.Count.EqualTo(22));
+            Assert.That(names, Has.Count.EqualTo(22 + ViscousFixtures));
             foreach (var name in names)
                 Assert.That(() => SloshingTankConfiguration.Load(name), Throws.Nothing, name);
         }
@@ -37,6 +39,15 @@ namespace SphFluid.Tests.Physics
             Assert.That(changed.Container.Size.Z, Is.EqualTo(0.1f));
             Assert.That(changed.Settings.ParticleSpacing, Is.EqualTo(shipped.Settings.ParticleSpacing / 2).Within(1e-7));
             Assert.That(changed.Settings.SmoothingRadius / changed.Settings.ParticleSpacing, Is.EqualTo(3.5).Within(1e-5));
+
+            var wcsph = SloshingTankConfiguration.Load("summation density, no artificial viscosity, no XSPH, stiffness x4");
+            Assert.That(shipped.Settings.WcsphDensity, Is.EqualTo(WcsphDensity.DeltaSph));
+            Assert.That(wcsph.Settings.WcsphDensity, Is.EqualTo(WcsphDensity.Summation));
+            Assert.That(shipped.Settings.ArtificialViscosity, Is.GreaterThan(0f));
+            Assert.That(wcsph.Settings.ArtificialViscosity, Is.EqualTo(0f));
+            Assert.That(shipped.Settings.XsphEpsilon, Is.GreaterThan(0f));
+            Assert.That(wcsph.Settings.XsphEpsilon, Is.EqualTo(0f));
+            Assert.That(wcsph.Settings.Stiffness, Is.EqualTo(4 * shipped.Settings.Stiffness));
         }
     }
 }

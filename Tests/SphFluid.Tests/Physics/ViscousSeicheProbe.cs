@@ -15,9 +15,12 @@ namespace SphFluid.Tests.Physics
     /// sums mu |grad v|^2, as Morris's pair term does, dissipates at most half what the stress mu (grad v + grad v^T)
     /// does in a potential flow, whose velocity gradient is symmetric: Morris's Laplacian shows 0.32 to 0.45 of it, the
     /// strain rate's stress (the "strain rate" fixtures) more; the "viscous step F" fixtures run both tanks at the same
-    /// sub-steps, at most F times the viscous run's explicit limit (Headless/docs/physics.md, "A viscous liquid's wave,
-    /// against Lamb's 2 nu k^2"). A measurement (26 minutes of lavapipe), run by name:
-    /// <c>bash Headless/test.sh --filter FullyQualifiedName~ViscousSeicheProbe</c>.
+    /// sub-steps, at most F times the viscous run's explicit limit; the fixtures that name the difference first (WCSPH's
+    /// density, artificial viscosity, XSPH, kernel and stiffness; DFSPH's kernel, step and tolerances) ask why WCSPH's
+    /// share stays near half and whether DFSPH's own damping adds to the viscosity's (Headless/docs/physics.md, "A
+    /// viscous liquid's wave, against Lamb's 2 nu k^2"). A measurement (about 37 minutes of lavapipe), run by name:
+    /// <c>bash Headless/test.sh --filter FullyQualifiedName~ViscousSeicheProbe</c>; a fixture's own words join the
+    /// filter without their spaces, e.g. <c>"FullyQualifiedName~ViscousSeicheProbe&amp;FullyQualifiedName~tight"</c>.
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]
     [TestFixture("dfsph, free-slip")]
@@ -35,6 +38,21 @@ namespace SphFluid.Tests.Physics
     [TestFixture("viscous step 0.999, dfsph, free-slip, narrow")]
     [TestFixture("viscous step 1.6, dfsph, free-slip, narrow")]
     [TestFixture("viscous step 0.999, dfsph, free-slip, narrow, strain rate")]
+    [TestFixture("summation density, free-slip, narrow, strain rate")]
+    [TestFixture("summation density, free-slip, narrow")]
+    [TestFixture("no artificial viscosity, free-slip, narrow, strain rate")]
+    [TestFixture("no XSPH, free-slip, narrow, strain rate")]
+    [TestFixture("no artificial viscosity, no XSPH, free-slip, narrow, strain rate")]
+    [TestFixture("cubic spline, free-slip, narrow, strain rate")]
+    [TestFixture("stiffness x4, free-slip, narrow, strain rate")]
+    [TestFixture("stiffness x16, free-slip, narrow, strain rate")]
+    [TestFixture("stiffness x16, no artificial viscosity, no XSPH, free-slip, narrow, strain rate")]
+    [TestFixture("no artificial viscosity, no XSPH, free-slip, narrow")]
+    [TestFixture("cubic spline, free-slip, narrow")]
+    [TestFixture("Wendland C2 relaxed, viscous step 0.999, dfsph, free-slip, narrow, strain rate")]
+    [TestFixture("viscous step 0.45, dfsph, free-slip, narrow, strain rate")]
+    [TestFixture("tight solves, viscous step 0.999, dfsph, free-slip, narrow, strain rate")]
+    [TestFixture("tight solves, viscous step 0.999, dfsph, free-slip, narrow")]
     public sealed class ViscousSeicheProbe
     {
         /// <summary>Pa s: nu = 0.02 m^2/s, 2 nu k^2 = 2.5/s against the wave's 8.7 rad/s, so it still swings.</summary>
