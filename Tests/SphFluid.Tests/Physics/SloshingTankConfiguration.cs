@@ -40,6 +40,11 @@ namespace SphFluid.Tests.Physics
         /// <summary>"viscous step F": read by <see cref="ViscousSeicheProbe"/>, not applied here.</summary>
         public static readonly Regex ViscousStep = new Regex(@"^viscous step (\d+(\.\d+)?)$");
 
+        /// <summary>Whether the configuration names "half the spacing", wherever in the name: the probes then tilt the
+        /// surface by two of the finer lattice's spacings, the same swing.</summary>
+        public static bool HalvesTheSpacing(string configuration) =>
+            configuration.Split(',').Any(p => p.Trim() == "half the spacing");
+
         /// <summary>The RestingTank scene in the named configuration.</summary>
         public static FluidSceneDescription Load(string configuration)
         {
@@ -92,7 +97,7 @@ namespace SphFluid.Tests.Physics
                 s.DivergenceTolerance = 1f;
                 s.MaxSolverIterations = 1000;
             }
-            if (parts.Contains("half the spacing")) ParticleScaling.ScaleBy(scene, 8);
+            if (HalvesTheSpacing(configuration)) ParticleScaling.ScaleBy(scene, 8);
             return scene;
         }
     }

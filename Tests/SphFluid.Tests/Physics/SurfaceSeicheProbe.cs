@@ -30,7 +30,7 @@ namespace SphFluid.Tests.Physics
         {
             var scene = SloshingTankConfiguration.Load(_configuration);
             // Two of the finer lattice's spacings, the same swing.
-            int tilt = _configuration.EndsWith("half the spacing") ? 2 : 1;
+            int tilt = SloshingTankConfiguration.HalvesTheSpacing(_configuration) ? 2 : 1;
             SurfaceSeicheTests.TiltSurface(scene, tilt);
             var slosh = SurfaceSeicheTests.Run(scene, $"RestingTank ({_configuration}), tilted by {tilt} spacing(s)", 1.5);
             Assert.That(slosh.Report.NanCount, Is.EqualTo(0));

@@ -48,6 +48,9 @@ namespace SphFluid.Tests.Physics
     [TestFixture("stiffness x16, free-slip, narrow, strain rate")]
     [TestFixture("stiffness x16, no artificial viscosity, no XSPH, free-slip, narrow, strain rate")]
     [TestFixture("no artificial viscosity, no XSPH, free-slip, narrow")]
+    [TestFixture("viscous step 0.38, no artificial viscosity, no XSPH, free-slip, narrow")]
+    [TestFixture("half the spacing, viscous step 0.38, no artificial viscosity, no XSPH, free-slip, narrow")]
+    [TestFixture("half the spacing, no artificial viscosity, no XSPH, free-slip, narrow, strain rate")]
     [TestFixture("cubic spline, free-slip, narrow")]
     [TestFixture("Wendland C2 relaxed, viscous step 0.999, dfsph, free-slip, narrow, strain rate")]
     [TestFixture("viscous step 0.45, dfsph, free-slip, narrow, strain rate")]
@@ -91,7 +94,7 @@ namespace SphFluid.Tests.Physics
             if (viscosity.HasValue) scene.SpawnBoxes.Single().Phase.Viscosity = viscosity.Value;
             _largestStep = scene.Settings.MaxTimeStep;
             // Two of the finer lattice's spacings, the same swing.
-            SurfaceSeicheTests.TiltSurface(scene, _configuration.EndsWith("half the spacing") ? 2 : 1);
+            SurfaceSeicheTests.TiltSurface(scene, SloshingTankConfiguration.HalvesTheSpacing(_configuration) ? 2 : 1);
             return SurfaceSeicheTests.Run(scene, $"RestingTank ({_configuration}), {(viscosity.HasValue ? $"{viscosity} Pa s" : "water")}", 1.5,
                 highestDecay: 10);
         }
