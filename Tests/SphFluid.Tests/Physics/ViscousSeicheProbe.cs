@@ -18,7 +18,7 @@ namespace SphFluid.Tests.Physics
     /// sub-steps, at most F times the viscous run's explicit limit; the fixtures that name the difference first (WCSPH's
     /// density, artificial viscosity, XSPH, kernel and stiffness; DFSPH's kernel, step and tolerances) ask why WCSPH's
     /// share stays near half and whether DFSPH's own damping adds to the viscosity's (Headless/docs/physics.md, "A
-    /// viscous liquid's wave, against Lamb's 2 nu k^2"). A measurement (about 37 minutes of lavapipe), run by name:
+    /// viscous liquid's wave, against Lamb's 2 nu k^2"). A measurement (about 48 minutes of lavapipe), run by name:
     /// <c>bash Headless/test.sh --filter FullyQualifiedName~ViscousSeicheProbe</c>; a fixture's own words join the
     /// filter without their spaces, e.g. <c>"FullyQualifiedName~ViscousSeicheProbe&amp;FullyQualifiedName~tight"</c>.
     /// </summary>
