@@ -134,8 +134,8 @@ namespace SphFluid.Tests.Runner
             Assert.That(File.ReadAllText(Path.Combine(outDir, "summary.txt")), Does.Contain("solver: DFSPH"));
         }
 
-        // A stiffness the speed-of-sound rule refuses (its bound is 2.7e7 Pa in DamBreak's tank) binds WCSPH only, so the
-        // scene is checked as the run will use it: as written, then as --solver changes it, the refusal naming the line.
+        // A stiffness the speed-of-sound rule refuses (its bound is 1.2e7 Pa in PlayModeTest's tank) binds WCSPH only, so
+        // the scene is checked as the run will use it: as written, then as --solver changes it, the refusal naming the line.
         const string SceneStiffness = "    Stiffness: 50000", TooStiff = "    Stiffness: 1000000000";
 
         [Test]
