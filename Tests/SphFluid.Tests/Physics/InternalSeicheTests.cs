@@ -152,6 +152,53 @@ namespace SphFluid.Tests.Physics
             Assert.That(SurfaceSeiche.DecayRate(0.4, 0.2, 10, 9.81, 1000, 1e-3, noSlipWalls: true), Is.GreaterThan(2 * freeSlip));
         }
 
+        /// <summary>The exact mode's rate is the energy method's wherever nu k^2 / omega is small, at any depth: at water's
+        /// viscosity in RestingTank's 0.3 m, and with it the inviscid frequency.</summary>
+        [TestCase(0.3)]
+        [TestCase(10.0)]
+        public void TheExactViscousMode_DecaysAtTheEnergyMethodsRate_WhenTheViscosityIsSmall(double depth)
+        {
+            var (gamma, omega) = SurfaceSeiche.ViscousMode(0.4, depth, 9.81, 1e-6);
+            double energyMethod = SurfaceSeiche.DecayRate(0.4, 0.1, depth, 9.81, 1000, 1e-3, noSlipWalls: false);
+            Assert.That(gamma, Is.EqualTo(energyMethod).Within(0.005 * energyMethod));
+            double inviscid = SurfaceSeiche.AngularFrequency(0.4, depth, 9.81);
+            Assert.That(omega, Is.EqualTo(inviscid).Within(1e-6 * inviscid));
+        }
+
+        /// <summary>In deep water the mode is the root of Lamb's (s + 2 nu k^2)^2 + g k = 4 nu^2 k^3 m ("Hydrodynamics",
+        /// art. 349), m = sqrt(k^2 + s / nu), which the finite-depth relation must become; and the energy method's rate
+        /// falls short of it by 2 nu k^2 sqrt(epsilon / 2), epsilon = nu k^2 / omega, the surface's vortical layer.</summary>
+        [TestCase(1e-4)]
+        [TestCase(1e-3)]
+        [TestCase(2e-2)]
+        public void InDeepWater_TheExactModeIsLambsRoot(double nu)
+        {
+            double k = Math.PI / 0.4, g = 9.81;
+            var (gamma, omega) = SurfaceSeiche.ViscousMode(0.4, 50, g, nu);
+            var s = new System.Numerics.Complex(-gamma, omega);
+            var lamb = (s + 2 * nu * k * k) * (s + 2 * nu * k * k) + g * k - 4 * nu * nu * k * k * k * System.Numerics.Complex.Sqrt(k * k + s / nu);
+            Assert.That(lamb.Magnitude, Is.LessThan(1e-9 * g * k));
+            double epsilon = nu * k * k / Math.Sqrt(g * k), firstOrder = 2 * nu * k * k;
+            if (epsilon < 0.01)
+                Assert.That(1 - gamma / firstOrder, Is.EqualTo(Math.Sqrt(epsilon / 2)).Within(0.1 * Math.Sqrt(epsilon / 2)));
+        }
+
+        /// <summary>RestingTank's 297.5 mm of water at <see cref="ViscousSeicheProbe"/>'s 20 Pa s (nu = 0.02 m^2/s): the
+        /// layer sqrt(2 nu / omega) is 68 mm, as deep as the wave's strain (1 / 2k = 64 mm), and the exact wave decays at
+        /// 1.777/s, 0.720 of 2 nu k^2 = 2.467/s, and swings 7.34 % slower than the inviscid one.</summary>
+        [Test]
+        public void RestingTankAt20PascalSeconds_DecaysAtSevenTenthsOfTwiceNuKSquared()
+        {
+            double k = Math.PI / 0.4, nu = 0.02;
+            var (gamma, omega) = SurfaceSeiche.ViscousMode(0.4, 0.2975, 9.81, nu);
+            double inviscid = SurfaceSeiche.AngularFrequency(0.4, 0.2975, 9.81);
+            TestContext.Progress.WriteLine($"RestingTank at nu = {nu} m^2/s: exact decay {gamma:F4}/s, {gamma / (2 * nu * k * k):F3} of 2 nu k^2; " +
+                $"period {2 * Math.PI / omega:F4} s, {100 * (inviscid / omega - 1):F2} % past the inviscid {2 * Math.PI / inviscid:F4} s");
+            Assert.That(gamma, Is.EqualTo(1.777).Within(0.001));
+            Assert.That(gamma / (2 * nu * k * k), Is.EqualTo(0.720).Within(0.001));
+            Assert.That(inviscid / omega - 1, Is.EqualTo(0.0734).Within(0.0001));
+        }
+
         /// <summary>The fraction a pressure-stressed lattice adds to omega^2 is the wave's strain energy over its
         /// potential energy rho g a^2 / 4, here integrated over the depth by the midpoint rule: with moduli
         /// c p = c rho g (-z), the x-averaged energy density is c' (a k cosh(k (z + h)) / sinh(k h))^2 +

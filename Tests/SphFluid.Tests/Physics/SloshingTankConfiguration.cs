@@ -23,9 +23,9 @@ namespace SphFluid.Tests.Physics
     /// density summed each sub-step, not carried), "no artificial viscosity", "no XSPH", "tight solves" (DFSPH's
     /// Chebyshev-accelerated solves to 0.01 % and 1 %/s, at most 1000 rounds each), "stiffness xF" (F times the Tait
     /// stiffness) and "half the spacing" (8 times the particles); "wcsph" is the scene as shipped, "half swing" is the
-    /// dispersion probe's smaller kick and "viscous step F" the viscous seiche probe's largest sub-step (F times its
-    /// viscous run's explicit limit), no changes to the scene. A name with any other part is refused, so that a
-    /// mistyped fixture cannot run the shipped scene unnoticed.
+    /// dispersion probe's smaller kick, "viscous step F" the viscous seiche probe's largest sub-step (F times its
+    /// viscous run's explicit limit) and "V Pa s" that probe's viscous run, no changes to the scene. A name with any
+    /// other part is refused, so that a mistyped fixture cannot run the shipped scene unnoticed.
     /// </summary>
     public static class SloshingTankConfiguration
     {
@@ -40,6 +40,9 @@ namespace SphFluid.Tests.Physics
         /// <summary>"viscous step F": read by <see cref="ViscousSeicheProbe"/>, not applied here.</summary>
         public static readonly Regex ViscousStep = new Regex(@"^viscous step (\d+(\.\d+)?)$");
 
+        /// <summary>"V Pa s": the viscosity of <see cref="ViscousSeicheProbe"/>'s viscous run, not applied here.</summary>
+        public static readonly Regex ProbeViscosity = new Regex(@"^(\d+(\.\d+)?) Pa s$");
+
         /// <summary>Whether the configuration names "half the spacing", wherever in the name: the probes then tilt the
         /// surface by two of the finer lattice's spacings, the same swing.</summary>
         public static bool HalvesTheSpacing(string configuration) =>
@@ -49,7 +52,7 @@ namespace SphFluid.Tests.Physics
         public static FluidSceneDescription Load(string configuration)
         {
             var parts = configuration.Split(',').Select(p => p.Trim()).ToList();
-            var unknown = parts.Where(p => !Known.Contains(p) && !Support.IsMatch(p) && !Stiffer.IsMatch(p) && !ViscousStep.IsMatch(p)).ToList();
+            var unknown = parts.Where(p => !Known.Contains(p) && !Support.IsMatch(p) && !Stiffer.IsMatch(p) && !ViscousStep.IsMatch(p) && !ProbeViscosity.IsMatch(p)).ToList();
             if (unknown.Count > 0)
                 throw new ArgumentException($"'{configuration}': no such change to the sloshing tank: {string.Join(", ", unknown)}", nameof(configuration));
             var scene = SceneLoader.Load(RunnerPaths.Scene("RestingTank"), RunnerPaths.Project).Description;

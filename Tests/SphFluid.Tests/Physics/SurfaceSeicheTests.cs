@@ -48,7 +48,7 @@ namespace SphFluid.Tests.Physics
             Assert.That(_slosh.Report.NanCount, Is.EqualTo(0));
         }
 
-        internal sealed record Slosh(double Period, double MeasuredPeriod, double Decay, double MeasuredDecay, DiagnosticsReport Report);
+        internal sealed record Slosh(double Period, double MeasuredPeriod, double Decay, double MeasuredDecay, double Depth, DiagnosticsReport Report);
 
         /// <summary>The one box of water in columns one spacing wide, each <paramref name="spacings"/> round(cos(pi x /
         /// L)) spacings above or below its spawned depth, whole spacings so that every column's lattice is the box's.</summary>
@@ -108,7 +108,7 @@ namespace SphFluid.Tests.Physics
             double decay = SurfaceSeiche.DecayRate(container.Size.X, container.Size.Z, depth, g, phase.RestDensity, phase.Viscosity,
                 container.Friction == WallFriction.NoSlip);
             var fit = InternalSeiche.FitDampedOscillation(times, rises, highestOmega: 3 * omega, highestGamma: highestDecay);
-            var slosh = new Slosh(2 * Math.PI / omega, 2 * Math.PI / fit.Omega, decay, fit.Gamma, report);
+            var slosh = new Slosh(2 * Math.PI / omega, 2 * Math.PI / fit.Omega, decay, fit.Gamma, depth, report);
 
             // Where the fluid's centres end beside the end walls: its own length is their span plus a spacing.
             float left = container.Position.X - container.Size.X / 2, right = container.Position.X + container.Size.X / 2;
