@@ -118,6 +118,8 @@ namespace SphFluid.Tests.Physics
             TestContext.Progress.WriteLine(
                 $"surface seiche ({name}: {s.PressureSolver}, {s.SmoothingKernel} at {s.SmoothingRadius / s.ParticleSpacing:F2} spacings, " +
                 $"spacing {1000 * s.ParticleSpacing:F2} mm, {1000 * container.Size.Z:F0} mm wide), N={sim.ParticleCount}: depth {1000 * depth:F1} mm; " +
+                $"last sub-step {1000 * sim.LastStep.TimeStep:F3} ms, viscous explicit limit {1000 * sim.TimeStep.ViscousTimeStep:F3} ms" +
+                $"{(sim.Plan.ImplicitViscosity ? " (implicit beyond it)" : "")}; " +
                 $"theory: period {slosh.Period:F4} s, laminar decay {decay:F4}/s; fitted over {seconds} s: period {slosh.MeasuredPeriod:F4} s " +
                 $"({100 * (slosh.MeasuredPeriod / slosh.Period - 1):+0.00;-0.00} %), decay {fit.Gamma:F3}/s (RMS residual {1000 * fit.Residual:F2} mm); " +
                 $"rise at 0 s {1000 * rises[0]:F1} mm; crossings at {string.Join(", ", crossings.Select(t => t.ToString("F3")))} s; " +
