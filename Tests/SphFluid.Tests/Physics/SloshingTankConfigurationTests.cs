@@ -12,7 +12,7 @@ namespace SphFluid.Tests.Physics
     {
         static readonly Type[] Probes = { typeof(SurfaceSeicheProbe), typeof(SurfaceDispersionProbe), typeof(ViscousSeicheProbe) };
 
-        const int ViscousFixtures = 40;
+        const int ViscousFixtures = 41;
 
         [Test]
         public void EverySurfaceProbeFixtureNamesAKnownConfiguration()

@@ -18,7 +18,7 @@ namespace SphFluid.Tests.Physics
     /// swings. A viscous force that sums mu |grad v|^2, as Morris's pair term does, dissipates half what the stress
     /// mu (grad v + grad v^T) does in a potential flow, whose velocity gradient is symmetric; the strain rate's stress
     /// (the "strain rate" fixtures) more; the "viscous step F" fixtures run both tanks at the same sub-steps, at most F
-    /// times the viscous run's explicit limit; the fixtures that name the difference first (the viscosity; WCSPH's density, artificial viscosity, XSPH,
+    /// times the viscous run's explicit limit; the fixtures that name the difference first (the viscosity, the swing; WCSPH's density, artificial viscosity, XSPH,
     /// kernel and stiffness; DFSPH's kernel, step and tolerances) ask why WCSPH's share stays short and whether DFSPH's
     /// own damping adds to the viscosity's (Headless/docs/physics.md, "A viscous liquid's wave, against Lamb's exact
     /// wave"). A measurement (about an hour of lavapipe), run by name:
@@ -66,6 +66,7 @@ namespace SphFluid.Tests.Physics
     [TestFixture("10 Pa s, no artificial viscosity, no XSPH, free-slip, narrow")]
     [TestFixture("40 Pa s, no artificial viscosity, no XSPH, free-slip, narrow")]
     [TestFixture("half the spacing, 5 Pa s, no artificial viscosity, no XSPH, free-slip, narrow, strain rate")]
+    [TestFixture("half swing, half the spacing, no artificial viscosity, no XSPH, free-slip, narrow, strain rate")]
     public sealed class ViscousSeicheProbe
     {
         /// <summary>Pa s, unless the fixture names its own ("V Pa s"): nu = 0.02 m^2/s, 2 nu k^2 = 2.5/s against the
@@ -120,8 +121,12 @@ namespace SphFluid.Tests.Physics
             if (viscosity.HasValue) phase.Viscosity = viscosity.Value;
             double nu = phase.Viscosity / phase.RestDensity;
             _largestStep = scene.Settings.MaxTimeStep;
-            // Two of the finer lattice's spacings, the same swing.
-            SurfaceSeicheTests.TiltSurface(scene, SloshingTankConfiguration.HalvesTheSpacing(_configuration) ? 2 : 1);
+            // Two of the finer lattice's spacings, the same swing; "half swing" tilts the finer lattice by one, to show
+            // whether the linear theory holds at the probe's swing (k a = 0.2).
+            bool halfSwing = Parts(_configuration).Contains("half swing");
+            if (halfSwing && !SloshingTankConfiguration.HalvesTheSpacing(_configuration))
+                throw new ArgumentException($"'{_configuration}': a half swing is one spacing of the finer lattice, so it needs \"half the spacing\"");
+            SurfaceSeicheTests.TiltSurface(scene, (SloshingTankConfiguration.HalvesTheSpacing(_configuration) ? 2 : 1) / (halfSwing ? 2 : 1));
             var run = SurfaceSeicheTests.Run(scene, $"RestingTank ({_configuration}), {(viscosity.HasValue ? $"{viscosity} Pa s" : "water")}", 1.5,
                 highestDecay: 10);
             return (run, SurfaceSeiche.ViscousMode(scene.Container.Size.X, run.Depth, scene.Settings.Gravity.Length(), nu));
