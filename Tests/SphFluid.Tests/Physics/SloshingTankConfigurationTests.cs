@@ -12,7 +12,7 @@ namespace SphFluid.Tests.Physics
     {
         static readonly Type[] Probes = { typeof(SurfaceSeicheProbe), typeof(SurfaceDispersionProbe), typeof(ViscousSeicheProbe) };
 
-        const int ViscousFixtures = 41;
+        const int ViscousFixtures = 44;
 
         [Test]
         public void EverySurfaceProbeFixtureNamesAKnownConfiguration()

@@ -67,6 +67,9 @@ namespace SphFluid.Tests.Physics
     [TestFixture("40 Pa s, no artificial viscosity, no XSPH, free-slip, narrow")]
     [TestFixture("half the spacing, 5 Pa s, no artificial viscosity, no XSPH, free-slip, narrow, strain rate")]
     [TestFixture("half swing, half the spacing, no artificial viscosity, no XSPH, free-slip, narrow, strain rate")]
+    [TestFixture("support 4, no artificial viscosity, no XSPH, free-slip, narrow, strain rate")]
+    [TestFixture("support 4, no artificial viscosity, no XSPH, free-slip, narrow")]
+    [TestFixture("support 3.4, no artificial viscosity, no XSPH, free-slip, narrow, strain rate")]
     public sealed class ViscousSeicheProbe
     {
         /// <summary>Pa s, unless the fixture names its own ("V Pa s"): nu = 0.02 m^2/s, 2 nu k^2 = 2.5/s against the
