@@ -12,7 +12,7 @@ namespace SphFluid.Tests.Physics
     {
         static readonly Type[] Probes = { typeof(SurfaceSeicheProbe), typeof(SurfaceDispersionProbe), typeof(ViscousSeicheProbe) };
 
-        const int ViscousFixtures = 44;
+        const int ViscousFixtures = 45;
 
         [Test]
         public void EverySurfaceProbeFixtureNamesAKnownConfiguration()

@@ -21,7 +21,7 @@ namespace SphFluid.Tests.Physics
     /// times the viscous run's explicit limit; the fixtures that name the difference first (the viscosity, the swing; WCSPH's density, artificial viscosity, XSPH,
     /// kernel and stiffness; DFSPH's kernel, step and tolerances) ask why WCSPH's share stays short and whether DFSPH's
     /// own damping adds to the viscosity's (Headless/docs/physics.md, "A viscous liquid's wave, against Lamb's exact
-    /// wave"). A measurement (about an hour of lavapipe), run by name:
+    /// wave"). A measurement (about an hour and a quarter of lavapipe), run by name:
     /// <c>bash Headless/test.sh --filter FullyQualifiedName~ViscousSeicheProbe</c>; a fixture's own words join the
     /// filter without their spaces, e.g. <c>"FullyQualifiedName~ViscousSeicheProbe&amp;FullyQualifiedName~tight"</c>.
     /// </summary>
@@ -70,6 +70,7 @@ namespace SphFluid.Tests.Physics
     [TestFixture("support 4, no artificial viscosity, no XSPH, free-slip, narrow, strain rate")]
     [TestFixture("support 4, no artificial viscosity, no XSPH, free-slip, narrow")]
     [TestFixture("support 3.4, no artificial viscosity, no XSPH, free-slip, narrow, strain rate")]
+    [TestFixture("half the spacing, support 3.4, no artificial viscosity, no XSPH, free-slip, narrow, strain rate")]
     public sealed class ViscousSeicheProbe
     {
         /// <summary>Pa s, unless the fixture names its own ("V Pa s"): nu = 0.02 m^2/s, 2 nu k^2 = 2.5/s against the
