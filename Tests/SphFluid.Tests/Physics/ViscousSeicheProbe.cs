@@ -18,10 +18,11 @@ namespace SphFluid.Tests.Physics
     /// swings. A viscous force that sums mu |grad v|^2, as Morris's pair term does, dissipates half what the stress
     /// mu (grad v + grad v^T) does in a potential flow, whose velocity gradient is symmetric; the strain rate's stress
     /// (the "strain rate" fixtures) more; the "viscous step F" fixtures run both tanks at the same sub-steps, at most F
-    /// times the viscous run's explicit limit; the fixtures that name the difference first (the viscosity, the swing; WCSPH's density, artificial viscosity, XSPH,
-    /// kernel and stiffness; DFSPH's kernel, step and tolerances) ask why WCSPH's share stays short and whether DFSPH's
-    /// own damping adds to the viscosity's (Headless/docs/physics.md, "A viscous liquid's wave, against Lamb's exact
-    /// wave"). A measurement (about an hour and a quarter of lavapipe), run by name:
+    /// times the viscous run's explicit limit; the fixtures that name the difference first (the viscosity, the swing,
+    /// the kernel's reach; WCSPH's density, artificial viscosity, XSPH, kernel and stiffness; DFSPH's kernel, step and
+    /// tolerances) ask why WCSPH's share stays short and whether DFSPH's own damping adds to the viscosity's
+    /// (Headless/docs/physics.md, "A viscous liquid's wave, against Lamb's exact wave"). A measurement (about an hour
+    /// and a quarter of lavapipe), run by name:
     /// <c>bash Headless/test.sh --filter FullyQualifiedName~ViscousSeicheProbe</c>; a fixture's own words join the
     /// filter without their spaces, e.g. <c>"FullyQualifiedName~ViscousSeicheProbe&amp;FullyQualifiedName~tight"</c>.
     /// </summary>
