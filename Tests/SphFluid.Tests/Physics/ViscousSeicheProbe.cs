@@ -79,62 +79,68 @@ namespace SphFluid.Tests.Physics
         const float Viscous = 20f;
 
         readonly string _configuration;
-        readonly float _viscous;
-        float _largestStep;
 
-        public ViscousSeicheProbe(string configuration)
-        {
-            _configuration = configuration;
-            var named = Parts(configuration).Select(p => SloshingTankConfiguration.ProbeViscosity.Match(p)).FirstOrDefault(m => m.Success);
-            _viscous = named != null ? float.Parse(named.Groups[1].Value, CultureInfo.InvariantCulture) : Viscous;
-        }
+        public ViscousSeicheProbe(string configuration) => _configuration = configuration;
 
         [Test]
         public void TheViscositysShareOfTheDecayAgainstLambsViscousWave()
         {
-            var (still, stillMode) = Slosh(null);
-            var (viscous, viscousMode) = Slosh(_viscous);
-            double measured = viscous.MeasuredDecay - still.MeasuredDecay;
-            double firstOrder = viscous.Decay - still.Decay, exact = viscousMode.Gamma - stillMode.Gamma;
-            double slower = viscous.MeasuredPeriod / still.MeasuredPeriod - 1, slowerInTheory = stillMode.Omega / viscousMode.Omega - 1;
-            TestContext.Progress.WriteLine($"RestingTank ({_configuration}) at {_viscous} Pa s, largest sub-step {1000 * _largestStep:F3} ms ({1000 * (1.0 / 60) / Math.Ceiling(1.0 / 60 / _largestStep):F2} ms in 60 Hz frames): the viscosity's share of the decay " +
-                $"{measured:F3}/s ({viscous.MeasuredDecay:F3} less {still.MeasuredDecay:F3}), 2 nu k^2 {firstOrder:F3}/s: {measured / firstOrder:F2} of it; " +
-                $"Lamb's viscous wave {exact:F3}/s: {measured / exact:F2} of it; the viscous run's period {100 * slower:+0.00;-0.00} % past the still run's, " +
+            Assert.That(Measure(_configuration).ViscousRun.Report.NanCount, Is.EqualTo(0));
+        }
+
+        /// <summary>The viscosity's share of the decay, /s (the viscous run's fitted decay less the still run's), and the same
+        /// difference by the energy method (2 nu k^2) and by Lamb's exact wave.</summary>
+        internal sealed record Share(double Measured, double FirstOrder, double Exact, SurfaceSeicheTests.Slosh ViscousRun)
+        {
+            public double OfLambsWave => Measured / Exact;
+        }
+
+        /// <summary>Runs the named configuration's still and viscous tanks and prints the viscosity's share of the decay.</summary>
+        internal static Share Measure(string configuration)
+        {
+            var named = Parts(configuration).Select(p => SloshingTankConfiguration.ProbeViscosity.Match(p)).FirstOrDefault(m => m.Success);
+            float viscous = named != null ? float.Parse(named.Groups[1].Value, CultureInfo.InvariantCulture) : Viscous;
+            var (still, stillMode, _) = Slosh(configuration, viscous, null);
+            var (run, mode, largestStep) = Slosh(configuration, viscous, viscous);
+            var share = new Share(run.MeasuredDecay - still.MeasuredDecay, run.Decay - still.Decay, mode.Gamma - stillMode.Gamma, run);
+            double slower = run.MeasuredPeriod / still.MeasuredPeriod - 1, slowerInTheory = stillMode.Omega / mode.Omega - 1;
+            TestContext.Progress.WriteLine($"RestingTank ({configuration}) at {viscous} Pa s, largest sub-step {1000 * largestStep:F3} ms ({1000 * (1.0 / 60) / Math.Ceiling(1.0 / 60 / largestStep):F2} ms in 60 Hz frames): the viscosity's share of the decay " +
+                $"{share.Measured:F3}/s ({run.MeasuredDecay:F3} less {still.MeasuredDecay:F3}), 2 nu k^2 {share.FirstOrder:F3}/s: {share.Measured / share.FirstOrder:F2} of it; " +
+                $"Lamb's viscous wave {share.Exact:F3}/s: {share.OfLambsWave:F2} of it; the viscous run's period {100 * slower:+0.00;-0.00} % past the still run's, " +
                 $"Lamb's wave's {100 * slowerInTheory:+0.00;-0.00} %");
-            Assert.That(viscous.Report.NanCount, Is.EqualTo(0));
+            return share;
         }
 
         static string[] Parts(string configuration) => configuration.Split(',').Select(p => p.Trim()).ToArray();
 
-        /// <summary>The run, and the exact linear mode (<see cref="SurfaceSeiche.ViscousMode"/>) of its tank and measured
-        /// depth.</summary>
-        (SurfaceSeicheTests.Slosh Run, (double Gamma, double Omega) Mode) Slosh(float? viscosity)
+        /// <summary>The run at <paramref name="viscosity"/> Pa s (water's if null), the exact linear mode
+        /// (<see cref="SurfaceSeiche.ViscousMode"/>) of its tank and measured depth, and its largest sub-step.</summary>
+        static (SurfaceSeicheTests.Slosh Run, (double Gamma, double Omega) Mode, float LargestStep) Slosh(string configuration, float viscousRun, float? viscosity)
         {
-            var scene = SloshingTankConfiguration.Load(_configuration);
-            var step = Parts(_configuration).Select(p => SloshingTankConfiguration.ViscousStep.Match(p)).FirstOrDefault(m => m.Success);
+            var scene = SloshingTankConfiguration.Load(configuration);
+            var step = Parts(configuration).Select(p => SloshingTankConfiguration.ViscousStep.Match(p)).FirstOrDefault(m => m.Success);
             if (step != null)
             {
                 // Both runs at most F times the viscous run's explicit limit (the frame's sub-steps are equal and no
                 // longer), so that the method's own damping, which follows DFSPH's step, is the same in both: below 1 the
                 // viscosity is explicit, above it the implicit solve's.
-                var viscous = SloshingTankConfiguration.Load(_configuration);
-                viscous.SpawnBoxes.Single().Phase.Viscosity = _viscous;
+                var viscous = SloshingTankConfiguration.Load(configuration);
+                viscous.SpawnBoxes.Single().Phase.Viscosity = viscousRun;
                 double f = double.Parse(step.Groups[1].Value, CultureInfo.InvariantCulture);
                 scene.Settings.MaxTimeStep = (float)(f * TimeStepController.ForScene(viscous).ViscousTimeStep);
             }
             var phase = scene.SpawnBoxes.Single().Phase;
             if (viscosity.HasValue) phase.Viscosity = viscosity.Value;
             double nu = phase.Viscosity / phase.RestDensity;
-            _largestStep = scene.Settings.MaxTimeStep;
             // Two of the finer lattice's spacings, the same swing; "half swing" tilts the finer lattice by one, to show
             // whether the linear theory holds at the probe's swing (k a = 0.2).
-            bool halfSwing = Parts(_configuration).Contains("half swing");
-            if (halfSwing && !SloshingTankConfiguration.HalvesTheSpacing(_configuration))
-                throw new ArgumentException($"'{_configuration}': a half swing is one spacing of the finer lattice, so it needs \"half the spacing\"");
-            SurfaceSeicheTests.TiltSurface(scene, (SloshingTankConfiguration.HalvesTheSpacing(_configuration) ? 2 : 1) / (halfSwing ? 2 : 1));
-            var run = SurfaceSeicheTests.Run(scene, $"RestingTank ({_configuration}), {(viscosity.HasValue ? $"{viscosity} Pa s" : "water")}", 1.5,
+            bool halfSwing = Parts(configuration).Contains("half swing");
+            if (halfSwing && !SloshingTankConfiguration.HalvesTheSpacing(configuration))
+                throw new ArgumentException($"'{configuration}': a half swing is one spacing of the finer lattice, so it needs \"half the spacing\"");
+            SurfaceSeicheTests.TiltSurface(scene, (SloshingTankConfiguration.HalvesTheSpacing(configuration) ? 2 : 1) / (halfSwing ? 2 : 1));
+            var run = SurfaceSeicheTests.Run(scene, $"RestingTank ({configuration}), {(viscosity.HasValue ? $"{viscosity} Pa s" : "water")}", 1.5,
                 highestDecay: 10);
-            return (run, SurfaceSeiche.ViscousMode(scene.Container.Size.X, run.Depth, scene.Settings.Gravity.Length(), nu));
+            return (run, SurfaceSeiche.ViscousMode(scene.Container.Size.X, run.Depth, scene.Settings.Gravity.Length(), nu), scene.Settings.MaxTimeStep);
         }
     }
 }
