@@ -44,15 +44,17 @@ namespace SphFluid.Tests.Physics
         /// <summary>"V Pa s": the viscosity of <see cref="ViscousSeicheProbe"/>'s viscous run, not applied here.</summary>
         public static readonly Regex ProbeViscosity = new Regex(@"^(\d+(\.\d+)?) Pa s$");
 
+        /// <summary>The configuration's changes, as its name lists them.</summary>
+        public static string[] Parts(string configuration) => configuration.Split(',').Select(p => p.Trim()).ToArray();
+
         /// <summary>Whether the configuration names "half the spacing", wherever in the name: the probes then tilt the
         /// surface by two of the finer lattice's spacings, the same swing.</summary>
-        public static bool HalvesTheSpacing(string configuration) =>
-            configuration.Split(',').Any(p => p.Trim() == "half the spacing");
+        public static bool HalvesTheSpacing(string configuration) => Parts(configuration).Contains("half the spacing");
 
         /// <summary>The RestingTank scene in the named configuration.</summary>
         public static FluidSceneDescription Load(string configuration)
         {
-            var parts = configuration.Split(',').Select(p => p.Trim()).ToList();
+            var parts = Parts(configuration);
             var unknown = parts.Where(p => !Known.Contains(p) && !Support.IsMatch(p) && !Stiffer.IsMatch(p) && !ViscousStep.IsMatch(p) && !ProbeViscosity.IsMatch(p)).ToList();
             if (unknown.Count > 0)
                 throw new ArgumentException($"'{configuration}': no such change to the sloshing tank: {string.Join(", ", unknown)}", nameof(configuration));

@@ -98,7 +98,7 @@ namespace SphFluid.Tests.Physics
         /// <summary>Runs the named configuration's still and viscous tanks and prints the viscosity's share of the decay.</summary>
         internal static Share Measure(string configuration)
         {
-            var named = Parts(configuration).Select(p => SloshingTankConfiguration.ProbeViscosity.Match(p)).FirstOrDefault(m => m.Success);
+            var named = SloshingTankConfiguration.Parts(configuration).Select(p => SloshingTankConfiguration.ProbeViscosity.Match(p)).FirstOrDefault(m => m.Success);
             float viscous = named != null ? float.Parse(named.Groups[1].Value, CultureInfo.InvariantCulture) : Viscous;
             var (still, stillMode, _) = Slosh(configuration, viscous, null);
             var (run, mode, largestStep) = Slosh(configuration, viscous, viscous);
@@ -111,14 +111,12 @@ namespace SphFluid.Tests.Physics
             return share;
         }
 
-        static string[] Parts(string configuration) => configuration.Split(',').Select(p => p.Trim()).ToArray();
-
         /// <summary>The run at <paramref name="viscosity"/> Pa s (water's if null), the exact linear mode
         /// (<see cref="SurfaceSeiche.ViscousMode"/>) of its tank and measured depth, and its largest sub-step.</summary>
         static (SurfaceSeicheTests.Slosh Run, (double Gamma, double Omega) Mode, float LargestStep) Slosh(string configuration, float viscousRun, float? viscosity)
         {
             var scene = SloshingTankConfiguration.Load(configuration);
-            var step = Parts(configuration).Select(p => SloshingTankConfiguration.ViscousStep.Match(p)).FirstOrDefault(m => m.Success);
+            var step = SloshingTankConfiguration.Parts(configuration).Select(p => SloshingTankConfiguration.ViscousStep.Match(p)).FirstOrDefault(m => m.Success);
             if (step != null)
             {
                 // Both runs at most F times the viscous run's explicit limit (the frame's sub-steps are equal and no
@@ -134,7 +132,7 @@ namespace SphFluid.Tests.Physics
             double nu = phase.Viscosity / phase.RestDensity;
             // Two of the finer lattice's spacings, the same swing; "half swing" tilts the finer lattice by one, to show
             // whether the linear theory holds at the probe's swing (k a = 0.2).
-            bool halfSwing = Parts(configuration).Contains("half swing");
+            bool halfSwing = SloshingTankConfiguration.Parts(configuration).Contains("half swing");
             if (halfSwing && !SloshingTankConfiguration.HalvesTheSpacing(configuration))
                 throw new ArgumentException($"'{configuration}': a half swing is one spacing of the finer lattice, so it needs \"half the spacing\"");
             SurfaceSeicheTests.TiltSurface(scene, (SloshingTankConfiguration.HalvesTheSpacing(configuration) ? 2 : 1) / (halfSwing ? 2 : 1));
