@@ -21,8 +21,9 @@ namespace SphFluid.Tests.Physics
     /// tank" (the tank and its water twice as long), "narrow" (tank and water 0.1 m across), "strain rate" (the
     /// viscosity as the strain rate's stress, <see cref="ViscousStress.StrainRate"/>), "summation density" (WCSPH's
     /// density summed each sub-step, not carried), "no artificial viscosity", "no XSPH", "tight solves" (DFSPH's
-    /// Chebyshev-accelerated solves to 0.01 % and 1 %/s, at most 1000 rounds each), "stiffness xF" (F times the Tait
-    /// stiffness) and "half the spacing" (8 times the particles); "wcsph" is the scene as shipped, "half swing" is the
+    /// Chebyshev-accelerated solves to 0.01 % and 1 %/s, at most 1000 rounds each), "loose solves" (DFSPH's solves to 1 %
+    /// and 100 %/s), "chebyshev" (DFSPH's solves Chebyshev-accelerated at the scene's tolerances), "max step S ms" (the
+    /// largest sub-step S ms), "stiffness xF" (F times the Tait stiffness) and "half the spacing" (8 times the particles); "wcsph" is the scene as shipped, "half swing" is the
     /// dispersion probe's smaller kick and the viscous seiche probe's smaller tilt, "viscous step F" the viscous seiche
     /// probe's largest sub-step (F times its viscous run's explicit limit) and "V Pa s" that probe's viscous run, no
     /// changes to the scene. A name with any other part is refused, so that a mistyped fixture cannot run the shipped
@@ -33,10 +34,12 @@ namespace SphFluid.Tests.Physics
         static readonly string[] Known =
         {
             "wcsph", "dfsph", "Wendland C2 relaxed", "cubic spline", "jittered", "free-slip", "long tank", "narrow", "strain rate",
-            "summation density", "no artificial viscosity", "no XSPH", "tight solves", "half the spacing", "half swing",
+            "summation density", "no artificial viscosity", "no XSPH", "tight solves", "loose solves", "chebyshev", "half the spacing",
+            "half swing",
         };
         static readonly Regex Support = new Regex(@"^support (\d+(\.\d+)?)$");
         static readonly Regex Stiffer = new Regex(@"^stiffness x(\d+(\.\d+)?)$");
+        static readonly Regex LargestStep = new Regex(@"^max step (\d+(\.\d+)?) ms$");
 
         /// <summary>"viscous step F": read by <see cref="ViscousSeicheProbe"/>, not applied here.</summary>
         public static readonly Regex ViscousStep = new Regex(@"^viscous step (\d+(\.\d+)?)$");
@@ -55,7 +58,7 @@ namespace SphFluid.Tests.Physics
         public static FluidSceneDescription Load(string configuration)
         {
             var parts = Parts(configuration);
-            var unknown = parts.Where(p => !Known.Contains(p) && !Support.IsMatch(p) && !Stiffer.IsMatch(p) && !ViscousStep.IsMatch(p) && !ProbeViscosity.IsMatch(p)).ToList();
+            var unknown = parts.Where(p => !Known.Contains(p) && !Support.IsMatch(p) && !Stiffer.IsMatch(p) && !LargestStep.IsMatch(p) && !ViscousStep.IsMatch(p) && !ProbeViscosity.IsMatch(p)).ToList();
             if (unknown.Count > 0)
                 throw new ArgumentException($"'{configuration}': no such change to the sloshing tank: {string.Join(", ", unknown)}", nameof(configuration));
             var scene = SceneLoader.Load(RunnerPaths.Scene("RestingTank"), RunnerPaths.Project).Description;
@@ -103,6 +106,14 @@ namespace SphFluid.Tests.Physics
                 s.DivergenceTolerance = 1f;
                 s.MaxSolverIterations = 1000;
             }
+            if (parts.Contains("loose solves"))
+            {
+                s.DensityTolerance = 1f;
+                s.DivergenceTolerance = 100f;
+            }
+            if (parts.Contains("chebyshev")) s.SolverIteration = SolverIteration.Chebyshev;
+            foreach (var match in parts.Select(p => LargestStep.Match(p)).Where(m => m.Success))
+                s.MaxTimeStep = float.Parse(match.Groups[1].Value, CultureInfo.InvariantCulture) / 1000f;
             if (HalvesTheSpacing(configuration)) ParticleScaling.ScaleBy(scene, 8);
             return scene;
         }

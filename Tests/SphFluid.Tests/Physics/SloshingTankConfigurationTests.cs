@@ -12,13 +12,13 @@ namespace SphFluid.Tests.Physics
     {
         static readonly Type[] Probes = { typeof(SurfaceSeicheProbe), typeof(SurfaceDispersionProbe), typeof(ViscousSeicheProbe) };
 
-        const int ViscousFixtures = 45;
+        const int SeicheFixtures = 20, DispersionFixtures = 15, ViscousFixtures = 45;
 
         [Test]
         public void EverySurfaceProbeFixtureNamesAKnownConfigurationTheSettingsAccept()
         {
             var names = Probes.SelectMany(p => p.GetCustomAttributes<TestFixtureAttribute>()).Select(f => (string)f.Arguments.Single()!).ToList();
-            Assert.That(names, Has.Count.EqualTo(22 + ViscousFixtures));
+            Assert.That(names, Has.Count.EqualTo(SeicheFixtures + DispersionFixtures + ViscousFixtures));
             foreach (var name in names)
             {
                 FluidSceneDescription? scene = null;
@@ -53,6 +53,13 @@ namespace SphFluid.Tests.Physics
             Assert.That(shipped.Settings.XsphEpsilon, Is.GreaterThan(0f));
             Assert.That(wcsph.Settings.XsphEpsilon, Is.EqualTo(0f));
             Assert.That(wcsph.Settings.Stiffness, Is.EqualTo(4 * shipped.Settings.Stiffness));
+
+            var solves = SloshingTankConfiguration.Load("dfsph, loose solves, chebyshev, max step 0.5 ms");
+            Assert.That(solves.Settings.DensityTolerance, Is.EqualTo(1f));
+            Assert.That(solves.Settings.DivergenceTolerance, Is.EqualTo(100f));
+            Assert.That(solves.Settings.SolverIteration, Is.EqualTo(SolverIteration.Chebyshev));
+            Assert.That(solves.Settings.MaxTimeStep, Is.EqualTo(0.0005f).Within(1e-9));
+            Assert.That(shipped.Settings.MaxTimeStep, Is.EqualTo(0.005f).Within(1e-9));
         }
     }
 }

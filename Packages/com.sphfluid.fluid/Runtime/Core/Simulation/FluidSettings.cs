@@ -105,7 +105,7 @@ namespace SphFluid.Simulation
 
         // Applied every sub-step, it pulls each particle towards its neighbours' mean velocity by epsilon per
         // sub-step: kept small (0.02) or it damps buoyancy-driven flow (oil rising through water) with the noise.
-        [Setting(Forces, 0, 1, "", "XSPH velocity smoothing epsilon; 0 turns the pass off.")]
+        [Setting(Forces, 0, 1, "", "XSPH velocity smoothing epsilon: the share of each particle's velocity difference from its neighbours' taken every sub-step, so shorter sub-steps damp the liquid more; 0 turns the pass off.")]
         public float XsphEpsilon = 0.02f;
 
         [Setting(Forces, 0, 1, "", "Monaghan's artificial viscosity alpha: damps the acoustic noise of approaching particle pairs; 0 turns it off.")]
