@@ -19,6 +19,7 @@ namespace SphFluid.Tests.Physics
     /// Headless/tools/step-energy-ladder.sh). So the scene's own step resolves the exchange: a quarter of it changes the
     /// exchange's energy by 0.5 %, where the scene's total changes by 7 %.
     /// </summary>
+    [Category(TestProcesses.LongRuns)]
     public sealed class DivergenceFreeStepEnergyTests
     {
         const float Frame = 1f / 60f;

@@ -14,6 +14,7 @@ namespace SphFluid.Tests.Physics
     /// the old rule, 0.125 H^2 / nu, stood. (HardCaseTests runs a pool at the viscosity's bound, 1000 Pa s, which that
     /// rule blew up within 0.02 s.)
     /// </summary>
+    [Category(TestProcesses.LongRuns)]
     public sealed class ViscousStepTests
     {
         const float Spacing = 0.02f;
