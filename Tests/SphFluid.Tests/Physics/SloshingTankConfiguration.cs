@@ -23,11 +23,11 @@ namespace SphFluid.Tests.Physics
     /// density summed each sub-step, not carried), "no artificial viscosity", "no XSPH", "tight solves" (DFSPH's
     /// Chebyshev-accelerated solves to 0.01 % and 1 %/s, at most 1000 rounds each), "loose solves" (DFSPH's solves to 1 %
     /// and 100 %/s), "chebyshev" (DFSPH's solves Chebyshev-accelerated at the scene's tolerances), "max step S ms" (the
-    /// largest sub-step S ms), "stiffness xF" (F times the Tait stiffness) and "half the spacing" (8 times the particles); "wcsph" is the scene as shipped, "half swing" is the
-    /// dispersion probe's smaller kick and the viscous seiche probe's smaller tilt, "viscous step F" the viscous seiche
-    /// probe's largest sub-step (F times its viscous run's explicit limit) and "V Pa s" that probe's viscous run, no
-    /// changes to the scene. A name with any other part is refused, so that a mistyped fixture cannot run the shipped
-    /// scene unnoticed.
+    /// largest sub-step S ms), "stiffness xF" (F times the Tait stiffness) and "half the spacing" (8 times the
+    /// particles); "wcsph" is the scene as shipped, "half swing" is the dispersion probe's smaller kick and the viscous
+    /// seiche probe's smaller tilt, "viscous step F" the viscous seiche probe's largest sub-step (F times its viscous
+    /// run's explicit limit) and "V Pa s" that probe's viscous run, no changes to the scene. A name with any other part
+    /// is refused, so that a mistyped fixture cannot run the shipped scene unnoticed.
     /// </summary>
     public static class SloshingTankConfiguration
     {
