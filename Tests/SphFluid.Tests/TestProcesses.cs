@@ -5,9 +5,9 @@ namespace SphFluid.Tests
     /// <see cref="LongRuns"/> in one, every other test in the other. The category holds the suite's longest runs (OilAndWater's
     /// layering under DFSPH's Jacobi solve and under WCSPH, the three liquids' layering, OilAndWater at the top of DFSPH's
     /// band and SphereWake, the loose-tolerance runs, the column depths of the iteration scaling, the viscous wave's two
-    /// pairs of sloshing tanks, the DFSPH step's energy and the viscous step), chosen so that the two processes end together; a test joins it or leaves it to keep them
-    /// even. The layering under the Chebyshev solve (six minutes) runs by name only: with it the suite ran past its
-    /// 20-minute goal.
+    /// pairs of sloshing tanks, the DFSPH step's energy and the viscous step), chosen so that the two processes end
+    /// together; a test joins it or leaves it to keep them even. The layering under the Chebyshev solve (six minutes) runs
+    /// by name only: with it the suite ran past its 20-minute goal.
     /// <para>The balance moves as the runs get cheaper. At 17c930b this process ran 17.9 minutes and the rest 16.1, so DFSPH's
     /// two dam breaks went back to the rest. At b890371 it ran 7.5 minutes and the rest 15.2 (a clean clone's CI run, 947 s
     /// in all): DFSPH's layering had fallen from about ten minutes to four and a half. WCSPH's two layering runs (122 and

@@ -9,8 +9,9 @@ namespace SphFluid.Tests.Physics
     /// cubic spline at 2 spacings); DFSPH with Wendland C2 at 2.85 spacings relaxed to 0.3 (OilAndWater's DFSPH
     /// kernel); WCSPH with the cubic spline at 2 spacings; and the tank narrowed to 0.1 m across at the scene's spacing
     /// and at half of it (tilted by two of its spacings, the same swing), under each solver, for the convergence of the
-    /// period with resolution. The DFSPH fixtures in the narrow tank with one change each ("no XSPH", "free-slip", "max
-    /// step S ms", "loose solves", "tight solves", "chebyshev") take DFSPH's own damping of the wave apart.
+    /// period with resolution. The fixtures in the narrow tank with one or two changes each ("no XSPH", "free-slip", "max
+    /// step S ms", "loose solves", "tight solves", "chebyshev") take each solver's own damping of the wave apart
+    /// (Headless/docs/physics.md, "What damps the wave").
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]
     [TestFixture("dfsph")]

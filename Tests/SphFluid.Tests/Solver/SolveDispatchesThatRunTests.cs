@@ -37,38 +37,12 @@ namespace SphFluid.Tests.Solver
 
         /// <summary>
         /// The count against the dispatches that ran as lavapipe times them, one sub-step at a time: a dispatch of no groups
-        /// took at most 0.09 ms where one over the fluid took 1.2 ms or more, so a solve kernel's dispatches in the sub-step
-        /// split at the widest ratio between one timing and the next longer (<see cref="RunningDispatches"/>). OilAndWater
-        /// under the Jacobi solve, whose solves converge well within the rounds the budget records. Summed over eight
-        /// sub-steps and held to one dispatch a kernel, so that an empty dispatch the other CI process holds up for a few
-        /// milliseconds does not fail it; a count off by one a solve would be off by eight.
+        /// took at most about 0.1 ms where one over the fluid took several times that, so a solve kernel's dispatches in the
+        /// sub-step split into the two by their timings (<see cref="RunningDispatches"/>). OilAndWater under the Jacobi
+        /// solve, whose solves converge well within the rounds the budget records. Summed over eight sub-steps and held to
+        /// one dispatch a kernel, so that an empty dispatch the other CI process holds up for a few milliseconds does not
+        /// fail it; a count off by one a solve would be off by eight.
         /// </summary>
-        /// <summary>
-        /// How many of a kernel's timed dispatches ran groups, and the longest timing counted as empty: the logarithms of the
-        /// timings split into the two groups that lie furthest apart for their sizes (Otsu's threshold: the split that
-        /// maximises w0 w1 (m1 - m0)^2, w the groups' shares and m their mean logarithms), where the two groups' typical
-        /// timings differ at least fourfold; else all ran (a sub-step whose solves were all cut off) or, if the longest
-        /// took under 0.2 ms, none did. A split at a tenth of the longest failed in a clean clone's CI run of c029134: one
-        /// running dispatch that the other process held up for 14.7 ms put the others, at 1.2 to 1.35 ms, below it (143
-        /// dispatches by the timings against 161); one outlier is a group too small to win Otsu's split.
-        /// </summary>
-        static (int Running, double Split) RunningDispatches(IReadOnlyList<double> times)
-        {
-            var logs = times.Select(ms => Math.Log(Math.Max(ms, 1e-4))).OrderBy(l => l).ToList();
-            int n = logs.Count;
-            if (Math.Exp(logs[n - 1]) < 0.2) return (0, Math.Exp(logs[n - 1]));
-            int best = 0;
-            double bestScore = 0, bestGap = 0, below = 0, total = logs.Sum();
-            for (int k = 1; k < n; k++)
-            {
-                below += logs[k - 1];
-                double w0 = (double)k / n, m0 = below / k, m1 = (total - below) / (n - k);
-                double score = w0 * (1 - w0) * (m1 - m0) * (m1 - m0);
-                if (score > bestScore) (best, bestScore, bestGap) = (k, score, m1 - m0);
-            }
-            return bestGap >= Math.Log(4.0) ? (n - best, Math.Exp(logs[best - 1])) : (n, 0.0);
-        }
-
         [Test]
         public void TheCountIsTheDispatchesThatRanOnTheDevice()
         {
@@ -105,6 +79,32 @@ namespace SphFluid.Tests.Solver
                 Assert.That(timed[kernel], Is.EqualTo(counted[kernel]).Within(1.0), $"{kernel}: the dispatches that ran over eight sub-steps");
                 Assert.That(recorded[kernel], Is.GreaterThan(timed[kernel]), $"{kernel}: the budget recorded rounds beyond convergence");
             }
+        }
+
+        /// <summary>
+        /// How many of a kernel's timed dispatches ran groups, and the longest timing counted as empty: the logarithms of the
+        /// timings split into the two groups that lie furthest apart for their sizes (Otsu's threshold: the split that
+        /// maximises w0 w1 (m1 - m0)^2, w the groups' shares and m their mean logarithms), where the two groups' typical
+        /// timings differ at least fourfold; else all ran (a sub-step whose solves were all cut off) or, if the longest
+        /// took under 0.2 ms, none did. A split at a tenth of the longest failed in a clean clone's CI run of c029134: one
+        /// running dispatch that the other process held up for 14.7 ms put the others, at 1.2 to 1.35 ms, below it (143
+        /// dispatches by the timings against 161); one outlier is a group too small to win Otsu's split.
+        /// </summary>
+        static (int Running, double Split) RunningDispatches(IReadOnlyList<double> times)
+        {
+            var logs = times.Select(ms => Math.Log(Math.Max(ms, 1e-4))).OrderBy(l => l).ToList();
+            int n = logs.Count;
+            if (Math.Exp(logs[n - 1]) < 0.2) return (0, Math.Exp(logs[n - 1]));
+            int best = 0;
+            double bestScore = 0, bestGap = 0, below = 0, total = logs.Sum();
+            for (int k = 1; k < n; k++)
+            {
+                below += logs[k - 1];
+                double w0 = (double)k / n, m0 = below / k, m1 = (total - below) / (n - k);
+                double score = w0 * (1 - w0) * (m1 - m0) * (m1 - m0);
+                if (score > bestScore) (best, bestScore, bestGap) = (k, score, m1 - m0);
+            }
+            return bestGap >= Math.Log(4.0) ? (n - best, Math.Exp(logs[best - 1])) : (n, 0.0);
         }
     }
 }
