@@ -51,7 +51,7 @@ cbuffer FluidConstants
     uint _PhaseCount;                       // rows of the phase table
     uint _ReductionGroupCount;              // SphTimeStep: groups of the diagnostics' partial reductions
     float _DensitySolveTolerance;           // DivergenceFreeSolver: average density error that ends the solve
-    float _DivergenceSolveTolerance;        // DivergenceFreeSolver: average divergence error that ends the solve, 1/s
+    float _DivergenceSolveTolerance;        // DivergenceFreeSolver: average divergence error that ends the solve at this sub-step, 1/s (DivergenceSolveTolerance.cs)
     uint _DensitySolveRounds;               // DivergenceFreeSolver: rounds recorded for the constant-density solve
     uint _DivergenceSolveRounds;            // DivergenceFreeSolver: rounds recorded for the divergence-free solve
 

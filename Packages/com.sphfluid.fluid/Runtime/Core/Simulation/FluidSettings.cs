@@ -62,7 +62,7 @@ namespace SphFluid.Simulation
         [Setting(Pressure, 0.001, 10, "%", "DFSPH: largest average density error of any phase that the constant-density solve accepts.")]
         public float DensityTolerance = 0.1f;
 
-        [Setting(Pressure, 0.01, 1000, "%/s", "DFSPH: largest average rate of density change of any phase that the divergence-free solve accepts.")]
+        [Setting(Pressure, 0.01, 1000, "%/s", "DFSPH: largest average rate of density change of any phase that the divergence-free solve accepts at sub-steps of 1/240 s and longer; a shorter sub-step accepts the density change a sub-step that this rate allows over 1/240 s (DivergenceSolveTolerance).")]
         public float DivergenceTolerance = 10f;
 
         [Setting(Pressure, 1, 1000, "", "DFSPH: most iterations of each solve per sub-step.")]

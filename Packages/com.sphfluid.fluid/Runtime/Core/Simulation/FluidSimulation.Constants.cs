@@ -16,6 +16,7 @@ namespace SphFluid.Simulation
             if (_constants[0].TimeStep != dt)
             {
                 _constants[0].TimeStep = dt;
+                _constants[0].DivergenceSolveTolerance = DivergenceSolveTolerance.At(_scene.Settings, dt);
                 SetViscositySolve(dt);
                 _constantsChanged = true;
             }
@@ -106,7 +107,7 @@ namespace SphFluid.Simulation
             c.DensityDiffusion = (float)(DensityDiffusionXi * 0.5 * h * _timeStep.SpeedOfSound);
             c.HydrostaticCompliance = (float)(1.0 / ((double)s.Gamma * s.Stiffness));
             c.DensitySolveTolerance = DensityPredictionMargin * 0.01f * s.DensityTolerance;
-            c.DivergenceSolveTolerance = 0.01f * s.DivergenceTolerance;
+            c.DivergenceSolveTolerance = DivergenceSolveTolerance.At(s, c.TimeStep);
             _constantsChanged = true;
         }
 
