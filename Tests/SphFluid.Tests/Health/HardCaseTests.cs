@@ -246,7 +246,7 @@ namespace SphFluid.Tests.Health
         }
 
         /// <summary>The case above under DFSPH over more speeds, a measurement: healthy at 3, 4.9, 5, 5.1, 5.2, 6 and 8 wave
-        /// speeds, with 0 to 10 clamp hits (Headless/docs/known-limits.md). With the sphere a frame ahead it was
+        /// speeds, with 0 to 13 clamp hits (Headless/docs/known-limits.md). With the sphere a frame ahead it was
         /// healthy at 4.9 to 5.1 only.</summary>
         [Explicit, TestCase(3f), TestCase(4.9f), TestCase(5f), TestCase(5.1f), TestCase(5.2f), TestCase(6f), TestCase(8f)]
         public void ObstacleDrivenNearFiveTimesTheWaveSpeed_MarginDfsph(float waveSpeeds)

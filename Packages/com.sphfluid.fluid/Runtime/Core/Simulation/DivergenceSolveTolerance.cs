@@ -12,9 +12,8 @@ namespace SphFluid.Simulation
     /// (Headless/docs/accuracy-for-time.md, "What would close it"). Bender and Koschier's own implementation (SPlisHSPlasH,
     /// the code of "Divergence-Free SPH for Incompressible and Viscous Fluids") holds this solve to a density change a
     /// time step. The reference is a 60 Hz frame in four sub-steps, the step OilAndWater runs under DFSPH, so it runs
-    /// as before. It is not tied to the density tolerance, so a loose one (1 %) does not
-    /// loosen the drift a sub-step, and a user's tighter divergence tolerance stays that much tighter at every
-    /// step.</para>
+    /// as before. It is not tied to the density tolerance, so a loose one (1 %) does not loosen the drift a sub-step,
+    /// and a user's tighter divergence tolerance stays that much tighter at every step.</para>
     /// </summary>
     public static class DivergenceSolveTolerance
     {
