@@ -106,8 +106,8 @@ namespace SphFluid.Tests.Solver
                 double score = w0 * (1 - w0) * (m1 - m0) * (m1 - m0);
                 if (score > bestScore) (best, bestScore, bestGap) = (k, score, m1 - m0);
             }
-            double emptyTypical = Math.Exp(logs.Take(best).Average());
-            return bestGap >= Math.Log(4.0) && emptyTypical < 0.2 ? (n - best, Math.Exp(logs[best - 1])) : (n, 0.0);
+            bool split = best > 0 && bestGap >= Math.Log(4.0) && Math.Exp(logs.Take(best).Average()) < 0.2;
+            return split ? (n - best, Math.Exp(logs[best - 1])) : (n, 0.0);
         }
     }
 }
