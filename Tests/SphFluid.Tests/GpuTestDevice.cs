@@ -185,7 +185,7 @@ namespace SphFluid.Tests
 /// <summary>Assembly-wide: after the last test, the kernel variants each device ran are written where Headless/test.sh asks for
 /// them (GpuTestDevice.VariantsFolderVariable), the validation layer must have stayed silent, and the devices are released.</summary>
 [SetUpFixture]
-public sealed class GpuTestDeviceTeardown
+public sealed class SuiteTeardown
 {
     [OneTimeTearDown]
     public void ReleaseSharedDevice()

@@ -20,7 +20,7 @@ public static class RuntimeScripts
     /// declared phase value, by its field name.</summary>
     public const string Spawn = "spawn";
 
-    /// <summary>ContainerSpinner's serialized ContainerSpin law and SphereDriver's SphereDrive law.</summary>
+    /// <summary>ContainerSpinner's serialized SpinLaw and SphereDriver's DriveLaw.</summary>
     public const string Spin = "spin", Drive = "drive";
 
     /// <summary>The package's resources asset (Runtime/Resources), which names every Fluid's shaders and material.</summary>

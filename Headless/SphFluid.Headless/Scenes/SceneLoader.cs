@@ -383,7 +383,7 @@ public static class SceneLoader
 
         SceneMotion ReadMotion(UnityGameObject containerGo)
         {
-            ContainerSpin? spin = null;
+            SpinLaw? spin = null;
             Vector3 pivot = Vector3.Zero;
             foreach (var (go, mb) in Active(ScriptGuid(RuntimeScripts.ContainerSpinner)))
             {
@@ -392,7 +392,7 @@ public static class SceneLoader
                 if (spin != null)
                     throw new SceneException($"{path}: more than one {RuntimeScripts.ContainerSpinner} turns the container '{containerGo.Name}'");
                 const string c = RuntimeScripts.ContainerSpinner;
-                spin = ReadDeclared<ContainerSpin>(go, mb, c, RuntimeScripts.Spin);
+                spin = ReadDeclared<SpinLaw>(go, mb, c, RuntimeScripts.Spin);
                 RequireValid(spin.Validate(c), go, mb, c, RuntimeScripts.Spin);
                 pivot = go.World.Position;
             }
@@ -404,7 +404,7 @@ public static class SceneLoader
                 if (index < 0)
                     throw new SceneException($"{path}: GameObject '{go.Name}' has a {RuntimeScripts.SphereDriver} but no active {RuntimeScripts.SphereObstacle}; the runner drives obstacles only");
                 const string c = RuntimeScripts.SphereDriver;
-                var drive = ReadDeclared<SphereDrive>(go, mb, c, RuntimeScripts.Drive);
+                var drive = ReadDeclared<DriveLaw>(go, mb, c, RuntimeScripts.Drive);
                 RequireValid(drive.Validate(c), go, mb, c, RuntimeScripts.Drive);
                 drives.Add(new DrivenSphere(index, drive));
             }

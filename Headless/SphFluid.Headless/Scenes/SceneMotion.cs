@@ -7,16 +7,16 @@ using SphFluid.Simulation;
 namespace SphFluid.Headless.Scenes;
 
 /// <summary>A <c>SphereDriver</c> of the scene: the core's law and the obstacle it drives.</summary>
-public sealed record DrivenSphere(int ObstacleIndex, SphereDrive Drive);
+public sealed record DrivenSphere(int ObstacleIndex, DriveLaw Drive);
 
 /// <summary>
-/// Everything in the scene that moves on its own while the fluid runs, by the core's laws (<see cref="ContainerSpin"/>,
-/// <see cref="SphereDrive"/>) that the Unity components also apply.
+/// Everything in the scene that moves on its own while the fluid runs, by the core's laws (<see cref="SpinLaw"/>,
+/// <see cref="DriveLaw"/>) that the Unity components also apply.
 /// </summary>
 public sealed class SceneMotion
 {
     /// <summary>The container's spin, or null.</summary>
-    public ContainerSpin? ContainerSpin { get; init; }
+    public SpinLaw? ContainerSpin { get; init; }
 
     /// <summary>World position of the spinner's Transform, which the spin turns about.</summary>
     public Vector3 SpinPivot { get; init; }

@@ -6,7 +6,7 @@ namespace SphFluid.Editor
 {
     /// <summary>
     /// Draws a core settings object (<see cref="FluidSettings"/>, a SpawnBox's <see cref="FluidBlock"/> with its
-    /// <see cref="PhaseDescription"/> block, the <see cref="ContainerSpin"/> and <see cref="SphereDrive"/> laws) from its
+    /// <see cref="PhaseDescription"/> block, the motion laws <see cref="SpinLaw"/> and <see cref="DriveLaw"/>) from its
     /// declarations: a header per group, each field with its tooltip, unit and range, clamped to that range like Unity's
     /// own Range attribute. The core cannot carry Unity's attributes (it is engine-free), so this drawer is how the
     /// inspector reads the one declaration.
@@ -14,8 +14,8 @@ namespace SphFluid.Editor
     [CustomPropertyDrawer(typeof(FluidSettings))]
     [CustomPropertyDrawer(typeof(FluidBlock))]
     [CustomPropertyDrawer(typeof(PhaseDescription))]
-    [CustomPropertyDrawer(typeof(ContainerSpin))]
-    [CustomPropertyDrawer(typeof(SphereDrive))]
+    [CustomPropertyDrawer(typeof(SpinLaw))]
+    [CustomPropertyDrawer(typeof(DriveLaw))]
     public sealed class DeclaredSettingsDrawer : PropertyDrawer
     {
         static float Line => EditorGUIUtility.singleLineHeight;

@@ -3,13 +3,13 @@ using UnityEngine;
 
 namespace SphFluid.Runtime
 {
-    /// <summary>Spins its Transform (the rotating-container scene's box) by the core's <see cref="ContainerSpin"/> law,
+    /// <summary>Spins its Transform (the rotating-container scene's box) by the core's <see cref="SpinLaw"/>,
     /// the same law the headless runner applies, about a world axis through its own position, on the fluid's simulated
     /// time (<see cref="FluidClock"/>): a hitch, a pause or a single step turns it as far as the fluid.</summary>
     public sealed class ContainerSpinner : MonoBehaviour
     {
-        [SerializeField, Tooltip("The spin: axis, angular speed and start delay, each declared once in ContainerSpin.")]
-        ContainerSpin spin = new ContainerSpin();
+        [SerializeField, Tooltip("The spin: axis, angular speed and start delay, each declared once in SpinLaw.")]
+        SpinLaw spin = new SpinLaw();
 
         [SerializeField, Tooltip("The fluid whose simulated time the law keeps: paused, single-stepped or slowed with it. Empty = the scene's Fluid; with none, real time.")]
         Fluid fluid = null;
@@ -18,7 +18,7 @@ namespace SphFluid.Runtime
         FluidClock _clock;
 
         /// <summary>The law, for scripts; a change applies from the next frame.</summary>
-        public ContainerSpin Spin => spin;
+        public SpinLaw Spin => spin;
 
         void OnEnable()
         {

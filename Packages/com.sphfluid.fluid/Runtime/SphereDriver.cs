@@ -5,13 +5,13 @@ namespace SphFluid.Runtime
 {
     /// <summary>
     /// Drives its Transform (a <see cref="SphereObstacle"/>) back and forth along a straight path through the fluid by
-    /// the core's <see cref="SphereDrive"/> law, the same law the headless runner applies, on the fluid's simulated
+    /// the core's <see cref="DriveLaw"/>, the same law the headless runner applies, on the fluid's simulated
     /// time (<see cref="FluidClock"/>): a hitch, a pause or a single step moves the sphere as far as the fluid.
     /// </summary>
     public sealed class SphereDriver : MonoBehaviour
     {
-        [SerializeField, Tooltip("The drive: travel, period and start delay, each declared once in SphereDrive.")]
-        SphereDrive drive = new SphereDrive();
+        [SerializeField, Tooltip("The drive: travel, period and start delay, each declared once in DriveLaw.")]
+        DriveLaw drive = new DriveLaw();
 
         [SerializeField, Tooltip("The fluid whose simulated time the law keeps: paused, single-stepped or slowed with it. Empty = the scene's Fluid; with none, real time.")]
         Fluid fluid = null;
@@ -20,7 +20,7 @@ namespace SphFluid.Runtime
         FluidClock _clock;
 
         /// <summary>The law, for scripts; a change applies from the next frame.</summary>
-        public SphereDrive Drive => drive;
+        public DriveLaw Drive => drive;
 
         void OnEnable()
         {

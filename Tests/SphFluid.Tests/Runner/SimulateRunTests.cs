@@ -58,7 +58,7 @@ namespace SphFluid.Tests.Runner
             int code = run.Execute();
 
             Assert.That(code, Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
-            ChartFiles.Check(outDir, "layering", "Layering over time: OilAndWater", "simulated time (s)", "mean height above the floor (m)",
+            WrittenChart.Check(outDir, "layering", "Layering over time: OilAndWater", "simulated time (s)", "mean height above the floor (m)",
                 "layering index", "Water mean height", "Oil mean height");
             Assert.That(File.Exists(Path.Combine(outDir, "top_0000.png")), Is.True);
             Assert.That(File.ReadAllLines(Path.Combine(outDir, "diagnostics.csv"))[0], Does.EndWith("oil_mean_height_m,oil_bottom_m,oil_top_m,oil_floor_share,oil_wall_share,layering_index,interface_tilt_m,surge_front_m,back_wall_column_m,potential_energy_J,clamp_hits,density_iterations,divergence_iterations,divergence_error_pct_per_s,density_solves_cut_off,divergence_solves_cut_off"));
@@ -240,7 +240,7 @@ namespace SphFluid.Tests.Runner
             }
             Assert.That(tension.WithEffect.InFramePassMs[PassNames.Normals], Is.GreaterThan(0), "forced tension's normals pass, timed in a frame");
             Assert.That(tension.FrameGpuMsSaved, Is.EqualTo(tension.WithEffect.InFrameGpuMs - bench.Rows[^1].InFrameGpuMs).Within(1e-9));
-            ChartFiles.Check(outDir, "bench-scaling", "Bench scaling: PlayModeTest, WCSPH", "particles", "milliseconds per sub-step (ms)",
+            WrittenChart.Check(outDir, "bench-scaling", "Bench scaling: PlayModeTest, WCSPH", "particles", "milliseconds per sub-step (ms)",
                 "wall clock per sub-step", "GPU per sub-step");
         }
     }

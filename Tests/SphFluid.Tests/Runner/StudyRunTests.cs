@@ -48,7 +48,7 @@ namespace SphFluid.Tests.Runner
                 TestContext.Progress.WriteLine($"{row.Config.Label}, scale {row.Config.ParticleScale}: {row.SolverIterations:F1} iterations per sub-step, {row.DensitySolvesCutOff:P1} / {row.DivergenceSolvesCutOff:P1} of density / divergence solves cut off");
             Assert.That(run.Rows.Where(r => r.Config.Solver == PressureSolver.Wcsph).Select(r => r.DensitySolvesCutOff + r.DivergenceSolvesCutOff), Is.All.EqualTo(0.0));
             Assert.That(markdown.Contains("Cut off: these DFSPH rows"), Is.EqualTo(run.Rows.Any(r => r.DensitySolvesCutOff + r.DivergenceSolvesCutOff > 0)), "the note under the table");
-            ChartFiles.Check(outDir, "study-pareto", "Accuracy for time: PlayModeTest", "wall time per simulated second (ms, log)",
+            WrittenChart.Check(outDir, "study-pareto", "Accuracy for time: PlayModeTest", "wall time per simulated second (ms, log)",
                 "observable error vs finest run (relative, log)", "WCSPH", "DFSPH");
         }
 
@@ -143,7 +143,7 @@ namespace SphFluid.Tests.Runner
             var tolerances = File.ReadAllLines(Path.Combine(outDir, "study.csv")).Skip(1).Select(line => line.Split(',')).Select(f => f[0] + " " + f[2] + " " + f[3]);
             Assert.That(tolerances, Is.EqualTo(new[] { "DFSPH 1 10", "DFSPH 1 30", "DFSPH 0.1 10", "DFSPH 0.1 30" }));
             Assert.That(run.Finest!.Config.Label, Is.EqualTo("DFSPH 0.1 %, 10 %/s"), "the tightest of both tolerances is the reference");
-            ChartFiles.Check(outDir, "study-pareto", "Accuracy for time: OilAndWater", "wall time per simulated second (ms, log)",
+            WrittenChart.Check(outDir, "study-pareto", "Accuracy for time: OilAndWater", "wall time per simulated second (ms, log)",
                 "observable error vs finest run (relative, log)", "DFSPH (density tolerance 1, 0.1 %; divergence 10 %/s)",
                 "DFSPH (density tolerance 1, 0.1 %; divergence 30 %/s)");
 

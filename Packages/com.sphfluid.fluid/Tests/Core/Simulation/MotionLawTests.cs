@@ -19,7 +19,7 @@ namespace SphFluid.Tests.Core.Simulation
         [TestCase(3.0)]   // the far end, where it turns
         public void ADrivenSphereStartsTheFrameWhereTheLawPutIt(double end)
         {
-            var drive = new SphereDrive { Travel = new Vector3(0.3f, 0.1f, 0f), Period = 4f, StartDelay = 1f };
+            var drive = new DriveLaw { Travel = new Vector3(0.3f, 0.1f, 0f), Period = 4f, StartDelay = 1f };
             var rest = new RigidSphere(new Vector3(-0.2f, 0.05f, 0f), 0.04f, Vector3.Zero);
             RigidSphere moved = drive.Over(rest, end - Frame, end);
             Vector3 sweptBack = moved.Center - moved.Velocity * (float)Frame;
@@ -30,7 +30,7 @@ namespace SphFluid.Tests.Core.Simulation
         [Test]
         public void AFrameWithoutDurationTakesTheLawsVelocity()
         {
-            var drive = new SphereDrive();
+            var drive = new DriveLaw();
             RigidSphere moved = drive.Over(new RigidSphere(Vector3.Zero, 0.04f, Vector3.Zero), 2.0, 2.0);
             Assert.That(Vector3.Distance(moved.Velocity, drive.Velocity(2.0)), Is.LessThan(1e-6f));
         }
@@ -40,7 +40,7 @@ namespace SphFluid.Tests.Core.Simulation
         [TestCase(2.5)]
         public void ASpinningContainerStartsTheFrameWhereTheLawTurnedIt(double end)
         {
-            var spin = new ContainerSpin { Axis = new Vector3(0f, 0f, 2f), AngularSpeed = 45f, StartDelay = 1f };
+            var spin = new SpinLaw { Axis = new Vector3(0f, 0f, 2f), AngularSpeed = 45f, StartDelay = 1f };
             var rest = new ContainerDescription { Position = new Vector3(0.1f, 0.2f, 0f), Size = new Vector3(0.4f, 0.3f, 0.2f) };
             var pivot = new Vector3(-0.1f, 0f, 0f); // off the container's centre, so the centre moves too
             ContainerDescription moved = spin.Over(rest, pivot, end - Frame, end);
@@ -59,7 +59,7 @@ namespace SphFluid.Tests.Core.Simulation
         [Test]
         public void AFrameWhollyAfterTheDelayTurnsAtTheLawsSpeed()
         {
-            var spin = new ContainerSpin { Axis = new Vector3(0f, 0f, 1f), AngularSpeed = 45f, StartDelay = 1f };
+            var spin = new SpinLaw { Axis = new Vector3(0f, 0f, 1f), AngularSpeed = 45f, StartDelay = 1f };
             ContainerDescription moved = spin.Over(new ContainerDescription(), Vector3.Zero, 2.0 - Frame, 2.0);
             Assert.That(moved.AngularVelocity.Z, Is.EqualTo(45f * System.MathF.PI / 180f).Within(1e-5f));
         }

@@ -7,7 +7,7 @@ namespace SphFluid.Tests.Runner
 {
     /// <summary>Checks a chart the runner wrote: the PNG decodes (an independent decoder) to a picture with more than a
     /// few colours, and the SVG carries the title and axis labels as text.</summary>
-    public static class ChartFiles
+    public static class WrittenChart
     {
         public static void Check(string folder, string stem, params string[] texts)
         {

@@ -10,7 +10,7 @@ namespace SphFluid.Simulation
     /// Unity SphereDriver and the headless runner; each field declared once (<see cref="SettingAttribute"/>).
     /// </summary>
     [Serializable]
-    public sealed class SphereDrive
+    public sealed class DriveLaw
     {
         const string Group = "Drive";
 
@@ -52,12 +52,12 @@ namespace SphFluid.Simulation
             return result;
         }
 
-        public SphereDrive Clone() => (SphereDrive)MemberwiseClone();
+        public DriveLaw Clone() => (DriveLaw)MemberwiseClone();
 
         public IReadOnlyList<ValidationError> Validate(string owner)
         {
             var errors = new List<ValidationError>();
-            foreach (var declared in SettingRules.Declared(typeof(SphereDrive)))
+            foreach (var declared in SettingRules.Declared(typeof(DriveLaw)))
                 SettingRules.Validate(this, errors, owner, "", declared.Field.Name);
             return errors;
         }

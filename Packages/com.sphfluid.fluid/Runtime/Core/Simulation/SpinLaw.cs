@@ -10,7 +10,7 @@ namespace SphFluid.Simulation
     /// each field declared once (<see cref="SettingAttribute"/>), serialized by Unity inside the component.
     /// </summary>
     [Serializable]
-    public sealed class ContainerSpin
+    public sealed class SpinLaw
     {
         const string Group = "Spin";
 
@@ -67,12 +67,12 @@ namespace SphFluid.Simulation
             return result;
         }
 
-        public ContainerSpin Clone() => (ContainerSpin)MemberwiseClone();
+        public SpinLaw Clone() => (SpinLaw)MemberwiseClone();
 
         public IReadOnlyList<ValidationError> Validate(string owner)
         {
             var errors = new List<ValidationError>();
-            foreach (var declared in SettingRules.Declared(typeof(ContainerSpin)))
+            foreach (var declared in SettingRules.Declared(typeof(SpinLaw)))
                 SettingRules.Validate(this, errors, owner, "", declared.Field.Name);
             return errors;
         }
