@@ -13,7 +13,7 @@ namespace SphFluid.Tests.Solver
     /// itself (NeighbourLanes.For), so there every other GPU test checks the one-lane path against the reference; this one
     /// sets the lanes by hand. Under WCSPH one lane reads the neighbour lists and more lanes walk the grid
     /// (NeighbourCapacity.InUse), so the same comparison holds WCSPH's lists to the grid walk. The rule itself is tested in the package's Core tests (NeighbourLanesTests). Each laned kernel is covered: DensityPressure (summation), DensityRate and ContinuityDensity
-    /// (delta-SPH), WallPressure and Forces (both), NonPressureForces (DFSPH); DFSPH's factor, error and correction passes are
+    /// (delta-SPH), WallPressure and Forces (both), NonPressureForces (DFSPH), Normals and Rotations (tension and the strain rate's stress); DFSPH's factor, error and correction passes are
     /// held to the double-precision reference with 8 lanes in DivergenceFreeKernelTests, and their stop decision here.
     /// </summary>
     public sealed class LanedSumsTests
@@ -50,6 +50,26 @@ namespace SphFluid.Tests.Solver
                 ReferenceComparison.Compare("continuity term", Tolerance, n, k => oneRates[oneById[k]].X, k => manyRates[manyById[k]].X);
                 ReferenceComparison.Compare("diffusion term", Tolerance, n, k => oneRates[oneById[k]].Y, k => manyRates[manyById[k]].Y);
             }
+        }
+
+        /// <summary>The passes that only some scenes run, laned as the others: the colour-field normals of surface tension and
+        /// the rotations of the strain rate's viscous stress (both in Forces.hlsl), and the accelerations they feed, with 2
+        /// and 8 lanes against one, under either solver.</summary>
+        [TestCase(PressureSolver.Wcsph, 2, TestName = "LanedSums_NormalsAndRotations_TwoLanes")]
+        [TestCase(PressureSolver.Wcsph, 8, TestName = "LanedSums_NormalsAndRotations_EightLanes")]
+        [TestCase(PressureSolver.Dfsph, 8, TestName = "LanedSums_NormalsAndRotations_Dfsph_EightLanes")]
+        public void LanesGiveTheNormalsAndRotationsOfOneThread(PressureSolver solver, int lanes)
+        {
+            var one = TensionAndStrainRate(solver, 1, out var oneNormals, out var oneRotations);
+            var many = TensionAndStrainRate(solver, lanes, out var manyNormals, out var manyRotations);
+            int n = one.Particles.Length;
+            var oneById = one.IndexById();
+            var manyById = many.IndexById();
+            Assert.That(ReferenceComparison.Max(n, k => Of(oneNormals[oneById[k]]).Length()), Is.GreaterThan(0.1), "the case must have surfaces");
+            Assert.That(ReferenceComparison.Max(n, k => Of(oneRotations[oneById[k]]).Length()), Is.GreaterThan(0.1), "the case must turn");
+            ReferenceComparison.CompareVectors("normal", Tolerance, n, k => Of(oneNormals[oneById[k]]), k => Of(manyNormals[manyById[k]]));
+            ReferenceComparison.CompareVectors("rotation", Tolerance, n, k => Of(oneRotations[oneById[k]]), k => Of(manyRotations[manyById[k]]));
+            ReferenceComparison.CompareVectors("acceleration", Tolerance, n, k => Of(one.Accelerations[oneById[k]]), k => Of(many.Accelerations[manyById[k]]));
         }
 
         /// <summary>
@@ -92,6 +112,25 @@ namespace SphFluid.Tests.Solver
         }
 
         static Double3 Of(Vector4 v) => new Double3(v.X, v.Y, v.Z);
+
+        /// <summary>The noisy two-phase blob with tension, the strain rate's stress at 20 Pa s and a turning container, its
+        /// forces computed with <paramref name="lanes"/> threads per particle.</summary>
+        static GpuState TensionAndStrainRate(PressureSolver solver, int lanes, out Vector4[] normals, out Vector4[] rotations)
+        {
+            var scene = SolverKernelTests.RandomScene(true, true, true, false);
+            scene.Settings.PressureSolver = solver;
+            scene.Settings.ViscousStress = ViscousStress.StrainRate;
+            foreach (var box in scene.SpawnBoxes) box.Phase.Viscosity = 20f;
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene) { LanesPerParticle = lanes };
+            Assert.That(sim.Plan.SurfaceTension && sim.Plan.StrainRateViscosity, Is.True, "both passes run");
+            sim.SetParticles(SolverKernelTests.RandomParticles(scene, sim.ParticleCount, 4321));
+            sim.ComputeForces();
+            normals = new Vector4[sim.ParticleCount];
+            rotations = new Vector4[sim.ParticleCount];
+            sim.Normals.GetData(normals);
+            sim.Rotations.GetData(rotations);
+            return GpuState.Read(sim);
+        }
 
         /// <summary>The noisy two-phase blob of SolverKernelTests (XSPH on, a turning container), its forces computed with
         /// <paramref name="lanes"/> threads per particle.</summary>

@@ -6,12 +6,12 @@
 // (SphPressureForce.hlsl, SphViscosity.hlsl, SphXsph.hlsl, SphBoundary.hlsl's wall contact); NonPressureForces is the
 // same sum without pressure, for the divergence-free solver.
 
+// Laned (NeighbourLanes.hlsl).
 [numthreads(PARTICLE_THREADS, 1, 1)]
-void Normals(uint3 id : SV_DispatchThreadID)
+void Normals(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
 {
-    uint i = id.x;
-    if (i >= _ParticleCount)
-        return;
+    uint i = min(LaneOwner(id.x), _ParticleCount - 1u);
+    uint lane = FirstCandidate(id.x, _ParticleCount);
     Particle pi = _Particles[i];
     uint phaseI = PHASE_OF(pi);
     int3 home = GridCoordOf(pi.position);
@@ -20,7 +20,7 @@ void Normals(uint3 id : SV_DispatchThreadID)
     for (uint row = 0u; row < NeighbourRows(list); row++)
     {
         uint2 range = FluidNeighbours(list, home, row);
-        for (uint k = range.x; k < range.y; k++)
+        for (uint k = range.x + lane; k < range.y; k += _NeighbourLanes)
         {
             uint j = Neighbour(list, k);
             Particle pj = _Particles[j];
@@ -31,18 +31,40 @@ void Normals(uint3 id : SV_DispatchThreadID)
             normal += KernelGradient(rij, sqrt(r2)) / _Densities[j].z;
         }
     }
+    normal = SumOverLanes(float4(normal, 0.0), groupThread.x).xyz;
+    if (lane != 0u)
+        return;
     _Normals[i] = float4(_SmoothingRadius * normal, 0.0);
+}
+
+// The velocity gradient's sums over the lanes of this thread's particle (NeighbourLanes.hlsl), as five float4s; every
+// thread of the group must call it.
+VelocityGradientSums SumVelocityGradientOverLanes(VelocityGradientSums sums, uint groupThread)
+{
+    float4 a = SumOverLanes(float4(sums.vx, sums.vy.x), groupThread);
+    float4 b = SumOverLanes(float4(sums.vy.yz, sums.vz.xy), groupThread);
+    float4 c = SumOverLanes(float4(sums.vz.z, sums.mx), groupThread);
+    float4 d = SumOverLanes(float4(sums.my, sums.mz.x), groupThread);
+    float4 e = SumOverLanes(float4(sums.mz.yz, 0.0, 0.0), groupThread);
+    VelocityGradientSums total;
+    total.vx = a.xyz;
+    total.vy = float3(a.w, b.xy);
+    total.vz = float3(b.zw, c.x);
+    total.mx = c.yzw;
+    total.my = d.xyz;
+    total.mz = float3(d.w, e.xy);
+    return total;
 }
 
 // Omega_i = curl v / 2 for the strain rate's viscous stress (SphViscosity.hlsl), from the velocity gradient corrected for
 // the particle distribution (SphVelocityGradient.hlsl). Walls with friction count, at their own velocity: beside a wall
 // that turns with the fluid the pair term then leaves the common rotation alone; free-slip walls count for nothing.
+// Laned (NeighbourLanes.hlsl).
 [numthreads(PARTICLE_THREADS, 1, 1)]
-void Rotations(uint3 id : SV_DispatchThreadID)
+void Rotations(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
 {
-    uint i = id.x;
-    if (i >= _ParticleCount)
-        return;
+    uint i = min(LaneOwner(id.x), _ParticleCount - 1u);
+    uint lane = FirstCandidate(id.x, _ParticleCount);
     Particle pi = _Particles[i];
     PhaseProperties phaseI = _Phases[PHASE_OF(pi)];
     float4 di = _Densities[i];
@@ -52,7 +74,7 @@ void Rotations(uint3 id : SV_DispatchThreadID)
     for (uint row = 0u; row < NeighbourRows(list); row++)
     {
         uint2 range = FluidNeighbours(list, home, row);
-        for (uint k = range.x; k < range.y; k++)
+        for (uint k = range.x + lane; k < range.y; k += _NeighbourLanes)
         {
             uint j = Neighbour(list, k);
             Particle pj = _Particles[j];
@@ -64,7 +86,7 @@ void Rotations(uint3 id : SV_DispatchThreadID)
             sums = AddVelocityGradientPair(sums, pj.velocity - pi.velocity, rij, gradient);
         }
         uint2 walls = WallNeighbours(list, home, row);
-        for (uint kb = walls.x; kb < walls.y; kb++)
+        for (uint kb = walls.x + lane; kb < walls.y; kb += _NeighbourLanes)
         {
             BoundaryParticle wall = _BoundaryParticles[Neighbour(list, kb)];
             float3 rib = pi.position - wall.position;
@@ -75,6 +97,9 @@ void Rotations(uint3 id : SV_DispatchThreadID)
             sums = AddVelocityGradientPair(sums, wall.velocity - pi.velocity, rib, gradient);
         }
     }
+    sums = SumVelocityGradientOverLanes(sums, groupThread.x);
+    if (lane != 0u)
+        return;
     _Rotations[i] = float4(RotationOf(sums), 0.0);
 }
 

@@ -493,8 +493,8 @@ namespace SphFluid.Simulation
                 _device.DispatchThreads(_solver, _kernels.WallMovedDensityFactor, ParticleCount * LanesPerParticle);
                 _device.DispatchThreads(_solver, _kernels.BoundaryDensityFactor, _boundaryCount * LanesPerParticle);
             }
-            if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _kernels.Normals);
-            if (Plan.StrainRateViscosity) SolverPass(PassNames.Rotations, _kernels.Rotations);
+            if (Plan.SurfaceTension) LanedPass(PassNames.Normals, _kernels.Normals, ParticleCount);
+            if (Plan.StrainRateViscosity) LanedPass(PassNames.Rotations, _kernels.Rotations, ParticleCount);
             LanedPass(PassNames.NonPressureForces, _kernels.NonPressureForces, ParticleCount);
 
             SolverPass(PassNames.PredictVelocity, _kernels.PredictVelocity);
@@ -617,8 +617,8 @@ namespace SphFluid.Simulation
                 LanedPass(PassNames.DensityFactor, _kernels.DensityFactor, ParticleCount);
                 _device.DispatchThreads(_solver, _kernels.BoundaryDensityFactor, _boundaryCount * LanesPerParticle);
                 if (!withForces) return;
-                if (Plan.SurfaceTension) _device.DispatchThreads(_solver, _kernels.Normals, ParticleCount);
-                if (Plan.StrainRateViscosity) _device.DispatchThreads(_solver, _kernels.Rotations, ParticleCount);
+                if (Plan.SurfaceTension) _device.DispatchThreads(_solver, _kernels.Normals, ParticleCount * LanesPerParticle);
+                if (Plan.StrainRateViscosity) _device.DispatchThreads(_solver, _kernels.Rotations, ParticleCount * LanesPerParticle);
                 _device.DispatchThreads(_solver, _kernels.NonPressureForces, ParticleCount * LanesPerParticle);
                 return;
             }
@@ -628,8 +628,8 @@ namespace SphFluid.Simulation
 
             LanedPass(PassNames.WallPressure, _kernels.WallPressure, _boundaryCount);
 
-            if (Plan.SurfaceTension) SolverPass(PassNames.Normals, _kernels.Normals);
-            if (Plan.StrainRateViscosity) SolverPass(PassNames.Rotations, _kernels.Rotations);
+            if (Plan.SurfaceTension) LanedPass(PassNames.Normals, _kernels.Normals, ParticleCount);
+            if (Plan.StrainRateViscosity) LanedPass(PassNames.Rotations, _kernels.Rotations, ParticleCount);
 
             LanedPass(PassNames.Forces, _kernels.Forces, ParticleCount);
         }
