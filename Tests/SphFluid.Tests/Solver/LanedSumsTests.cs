@@ -13,7 +13,7 @@ namespace SphFluid.Tests.Solver
     /// itself (NeighbourLanes.For), so there every other GPU test checks the one-lane path against the reference; this one
     /// sets the lanes by hand. Under WCSPH one lane reads the neighbour lists and more lanes walk the grid
     /// (NeighbourCapacity.InUse), so the same comparison holds WCSPH's lists to the grid walk. The rule itself is tested in the package's Core tests (NeighbourLanesTests). Each laned kernel is covered: DensityPressure (summation), DensityRate and ContinuityDensity
-    /// (delta-SPH), WallPressure and Forces (both), NonPressureForces (DFSPH), Normals and Rotations (tension and the strain rate's stress); DFSPH's factor, error and correction passes are
+    /// (delta-SPH), WallPressure and Forces (both), NonPressureForces (DFSPH), Normals and Rotations (tension and the strain rate's stress), ParticleShift (shifting); DFSPH's factor, error and correction passes are
     /// held to the double-precision reference with 8 lanes in DivergenceFreeKernelTests, and their stop decision here.
     /// </summary>
     public sealed class LanedSumsTests
@@ -72,6 +72,21 @@ namespace SphFluid.Tests.Solver
             ReferenceComparison.CompareVectors("acceleration", Tolerance, n, k => Of(one.Accelerations[oneById[k]]), k => Of(many.Accelerations[manyById[k]]));
         }
 
+        /// <summary>Particle shifting's pass (Shifting.hlsl), laned as the others: the two-phase blob with shifting at A = 0.5
+        /// (DamBreak's effect) stepped once with 2 and 8 lanes, its shifts against one lane's.</summary>
+        [TestCase(2, TestName = "LanedSums_Shifts_TwoLanes")]
+        [TestCase(8, TestName = "LanedSums_Shifts_EightLanes")]
+        public void LanesGiveTheShiftsOfOneThread(int lanes)
+        {
+            var one = Shifts(1, out var oneShifts);
+            var many = Shifts(lanes, out var manyShifts);
+            int n = one.Particles.Length;
+            var oneById = one.IndexById();
+            var manyById = many.IndexById();
+            Assert.That(ReferenceComparison.Max(n, k => Of(oneShifts[oneById[k]]).Length()), Is.GreaterThan(1e-6), "the case must shift");
+            ReferenceComparison.CompareVectors("shift", Tolerance, n, k => Of(oneShifts[oneById[k]]), k => Of(manyShifts[manyById[k]]));
+        }
+
         /// <summary>
         /// The solves' stop decision with lanes. SolveFinal folds one error sum per thread group of the laned error pass,
         /// lanes times as many groups as particles fill, and only each particle's first lane adds its error: a wrong group
@@ -112,6 +127,19 @@ namespace SphFluid.Tests.Solver
         }
 
         static Double3 Of(Vector4 v) => new Double3(v.X, v.Y, v.Z);
+
+        static GpuState Shifts(int lanes, out Vector4[] shifts)
+        {
+            var scene = SolverKernelTests.RandomScene(true, false, false, false);
+            scene.Settings.ParticleShifting = 0.5f;
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene) { LanesPerParticle = lanes };
+            Assert.That(sim.Plan.Shifting, Is.True);
+            sim.SetParticles(SolverKernelTests.RandomParticles(scene, sim.ParticleCount, 4242));
+            sim.StepFixed(1, 0.0005f);
+            shifts = new Vector4[sim.ParticleCount];
+            sim.Shifts.GetData(shifts);
+            return GpuState.Read(sim);
+        }
 
         /// <summary>The noisy two-phase blob with tension, the strain rate's stress at 20 Pa s and a turning container, its
         /// forces computed with <paramref name="lanes"/> threads per particle.</summary>

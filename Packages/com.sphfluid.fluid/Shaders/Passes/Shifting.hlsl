@@ -4,12 +4,12 @@
 // FluidSolver.compute's particle shifting (ParticleShifting.hlsl): ParticleShift computes each particle's shift,
 // ApplyShift moves it, so every particle reads its neighbours' unshifted places.
 
+// Laned (NeighbourLanes.hlsl).
 [numthreads(PARTICLE_THREADS, 1, 1)]
-void ParticleShift(uint3 id : SV_DispatchThreadID)
+void ParticleShift(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
 {
-    uint i = id.x;
-    if (i >= _ParticleCount)
-        return;
+    uint i = min(LaneOwner(id.x), _ParticleCount - 1u);
+    uint lane = FirstCandidate(id.x, _ParticleCount);
     Particle pi = _Particles[i];
     uint phaseI = PHASE_OF(pi);
     float volumeI = 1.0 / _Densities[i].z;
@@ -22,7 +22,7 @@ void ParticleShift(uint3 id : SV_DispatchThreadID)
     for (uint row = 0u; row < NeighbourRows(list); row++)
     {
         uint2 range = FluidNeighbours(list, home, row);
-        for (uint k = range.x; k < range.y; k++)
+        for (uint k = range.x + lane; k < range.y; k += _NeighbourLanes)
         {
             uint j = Neighbour(list, k);
             Particle pj = _Particles[j];
@@ -39,7 +39,7 @@ void ParticleShift(uint3 id : SV_DispatchThreadID)
                 otherPhases += pair.xyz;
         }
         uint2 walls = WallNeighbours(list, home, row);
-        for (uint kb = walls.x; kb < walls.y; kb++)
+        for (uint kb = walls.x + lane; kb < walls.y; kb += _NeighbourLanes)
         {
             BoundaryParticle wall = _BoundaryParticles[Neighbour(list, kb)];
             float3 rib = pi.position - wall.position;
@@ -52,6 +52,12 @@ void ParticleShift(uint3 id : SV_DispatchThreadID)
             divergence += PositionDivergencePair(wallVolume, rib, gradient);
         }
     }
+    concentration = SumOverLanes(concentration, groupThread.x);
+    float4 others = SumOverLanes(float4(otherPhases, divergence), groupThread.x);
+    otherPhases = others.xyz;
+    divergence = others.w;
+    if (lane != 0u)
+        return;
     _Shifts[i] = float4(ShiftOf(concentration, otherPhases, divergence, length(pi.velocity), _TimeStep, _ParticleSpacing), 0.0);
 }
 

@@ -477,7 +477,7 @@ namespace SphFluid.Simulation
         /// applied in a second pass so that no particle moves while its neighbours still read it.</summary>
         void Shift()
         {
-            SolverPass(PassNames.ParticleShift, _kernels.ParticleShift);
+            LanedPass(PassNames.ParticleShift, _kernels.ParticleShift, ParticleCount);
             SolverPass(PassNames.ApplyShift, _kernels.ApplyShift);
             _neighboursFound = false;
         }
