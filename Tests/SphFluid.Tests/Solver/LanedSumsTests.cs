@@ -12,8 +12,10 @@ namespace SphFluid.Tests.Solver
     /// quantity's scale, only the order of the sums differing. On lavapipe, a CPU device, the simulation takes one lane by
     /// itself (NeighbourLanes.For), so there every other GPU test checks the one-lane path against the reference; this one
     /// sets the lanes by hand. Under WCSPH one lane reads the neighbour lists and more lanes walk the grid
-    /// (NeighbourCapacity.InUse), so the same comparison holds WCSPH's lists to the grid walk. The rule itself is tested in the package's Core tests (NeighbourLanesTests). Each laned kernel is covered: DensityPressure (summation), DensityRate and ContinuityDensity
-    /// (delta-SPH), WallPressure and Forces (both), NonPressureForces (DFSPH), Normals and Rotations (tension and the strain rate's stress), ParticleShift (shifting); DFSPH's factor, error and correction passes are
+    /// (NeighbourCapacity.InUse), so the same comparison holds WCSPH's lists to the grid walk. The rule itself is tested in
+    /// the package's Core tests (NeighbourLanesTests). Each laned kernel is covered: DensityPressure (summation), DensityRate
+    /// and ContinuityDensity (delta-SPH), WallPressure and Forces (both), NonPressureForces (DFSPH), Normals and Rotations
+    /// (tension and the strain rate's stress), ParticleShift (shifting); DFSPH's factor, error and correction passes are
     /// held to the double-precision reference with 8 lanes in DivergenceFreeKernelTests, and their stop decision here.
     /// </summary>
     public sealed class LanedSumsTests
@@ -128,6 +130,8 @@ namespace SphFluid.Tests.Solver
 
         static Double3 Of(Vector4 v) => new Double3(v.X, v.Y, v.Z);
 
+        /// <summary>The noisy two-phase blob with shifting at A = 0.5 (every shift below the cap), one WCSPH sub-step of
+        /// 0.5 ms with <paramref name="lanes"/> threads per particle.</summary>
         static GpuState Shifts(int lanes, out Vector4[] shifts)
         {
             var scene = SolverKernelTests.RandomScene(true, false, false, false);
