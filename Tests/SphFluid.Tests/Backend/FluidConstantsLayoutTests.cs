@@ -35,7 +35,7 @@ namespace SphFluid.Tests.Backend
         static object[] Programs() => new object[]
         {
             new object[] { "FluidSolver", "Forces", new[] { "MULTIPHASE", "SURFACE_TENSION", "XSPH", "OBSTACLES" } },
-            new object[] { "FluidSolver", "SolveFinal", new string[0] },
+            new object[] { "FluidSolver", "BoundarySolveError", new string[0] },
             new object[] { "FluidDiagnostics", "DiagnosticsPartial", new string[0] },
         };
 

@@ -82,7 +82,7 @@ namespace SphFluid.Tests.Runner
                 Assert.That(stdout.ToString(), Does.Not.Contain("DFSPH refuses"));
         }
 
-        /// <summary>With at most two iterations every DFSPH solve makes exactly two corrections and is cut off (SolveFinal
+        /// <summary>With at most two iterations every DFSPH solve makes exactly two corrections and is cut off (the fold
         /// declares convergence only after two), so the row must read 4 iterations per sub-step (2 of each solve) and every
         /// solve cut off: the solver's figures average the samples that follow sub-steps, not the spawn's.</summary>
         [Test]

@@ -90,7 +90,7 @@ namespace SphFluid.Tests.Solver
         }
 
         /// <summary>
-        /// The solves' stop decision with lanes. SolveFinal folds one error sum per thread group of the laned error pass,
+        /// The solves' stop decision with lanes. The fold (FoldSolveErrors) sums one error sum per thread group of the laned error pass,
         /// lanes times as many groups as particles fill, and only each particle's first lane adds its error: a wrong group
         /// count or a lane counted twice moves the average it compares with the tolerance, and so the iterations. A column
         /// of water collapsing across a box (DFSPH at 0.01 % and 1 %/s, 4 cm spacing) runs 20 frames with 1 and with 8 lanes: the mean

@@ -44,8 +44,9 @@ namespace SphFluid.Tests.Solver
             return report;
         }
 
-        /// <summary>SolveFinal declares convergence only once a solve has made two corrections, and with two rounds the
-        /// second is the last: every solve of both kinds is cut off, whatever the error.</summary>
+        /// <summary>The fold that ends each round (FoldSolveErrors) declares convergence only once a solve has made two
+        /// corrections, and with two rounds the second is the last: every solve of both kinds is cut off, whatever the
+        /// error.</summary>
         [Test]
         public void AtTwoIterationsEverySolveIsCutOff()
         {

@@ -13,7 +13,7 @@ struct PhaseProperties
     float fresnelF0;      // Schlick reflectance at normal incidence
     float absorption;     // Beer-Lambert coefficient, 1/m
     float wallWeightScale; // (rho0 / m) / the lattice's delta0: the walls' omega at this phase's rest (SphBoundary's WallWeight)
-    float inverseParticleCount; // 1 / the phase's particle count: its average in the DFSPH solves' stop rule (SolveFinal)
+    float inverseParticleCount; // 1 / the phase's particle count: its average in the DFSPH solves' stop rule (FoldSolveErrors)
 };
 
 #endif

@@ -67,7 +67,7 @@ void SumGroupErrors(uint t)
 }
 
 // Sums the group's errors per phase into _SolverPartials[phase * groups + group], over the laned error pass's groups,
-// for SolveFinal's per-phase averages; every thread of the group must call it. Two barriers for up to
+// for the fold's per-phase averages (FoldSolveErrors); every thread of the group must call it. Two barriers for up to
 // PHASES_PER_FOLD phases: a thread sums one run of ERROR_RUN slots for one phase, then a thread a phase sums its runs.
 // A tree per phase took nine barriers a phase, and barriers are what a CPU device pays for (NeighbourLanes.hlsl): on
 // lavapipe with one worker (OilAndWater under DFSPH, `bench --solver dfsph`) DensitySolveError cost 1.22 times an
@@ -104,14 +104,14 @@ void StoreGroupErrors(uint t, uint group, float error, uint phase)
 // phase's average is within the open solve's tolerance it is converged, and the indirect arguments become zero groups.
 // Per phase, not over all particles: the tolerance is each liquid's, and a thin phase under a deep one, the most
 // compressed, sat 63 % above it while the solve stopped on the average over all particles (PhaseToleranceTests).
-[numthreads(PARTICLE_THREADS, 1, 1)]
-void SolveFinal(uint3 threadId : SV_GroupThreadID)
+// Every thread of one group calls it: the last group of BoundarySolveError to finish (LastGroupToFinish), which runs
+// after the fluid's error pass, so the partials it reads were written by an earlier dispatch.
+void FoldSolveErrors(uint t)
 {
-    uint t = threadId.x;
     uint solve = OpenSolve();
     uint slot = solve * 8u;
     if (_SolverState[slot + 1u] != 0u)
-        return; // converged earlier: the error pass did not run, its sums are stale
+        return; // converged earlier (uniform over the group): the error pass did not run, its sums are stale
     uint groups = LanedGroups(_ParticleCount);
     float worst = 0.0;
     for (uint k = 0u; k < _PhaseCount; k++)
@@ -149,6 +149,28 @@ void SolveFinal(uint3 threadId : SV_GroupThreadID)
         _SolverState[slot + 6u] += 1u;
         _SolverState[slot + 7u] += 1u; // its own count: the motion reduction resets word 6 for the budget, not at reports
     }
+}
+
+groupshared uint s_LastGroup;
+
+// Whether this group is the last of the `groups` of its dispatch to get here, the one that may then fold what the
+// dispatch's other groups have done with (every thread of the group calls it). The device barrier orders each group's
+// reads and writes before its count, so the last group's writes to words the others read (the Chebyshev weight) come
+// after every read. The last group sets the count back to zero for the next dispatch; it is alone by then. (A
+// single-pass reduction's "last block": one dispatch fewer, and one barrier between dispatches fewer, every round.)
+bool LastGroupToFinish(uint t, uint groups)
+{
+    DeviceMemoryBarrierWithGroupSync();
+    if (t == 0u)
+    {
+        uint finished;
+        InterlockedAdd(_SolverState[FOLD_COUNT_WORD], 1u, finished);
+        s_LastGroup = finished + 1u == groups ? 1u : 0u;
+        if (s_LastGroup != 0u)
+            _SolverState[FOLD_COUNT_WORD] = 0u;
+    }
+    GroupMemoryBarrierWithGroupSync();
+    return s_LastGroup != 0u;
 }
 
 #endif

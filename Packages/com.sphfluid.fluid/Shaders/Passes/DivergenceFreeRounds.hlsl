@@ -61,7 +61,9 @@ float RoundStep(float compressionStep, float applied, float previousStep, float 
 // (divergence solve), D delta_b / Dt = sum_f (v_f - v_b) . gradW_fb; in the density solve raised to the fluid's q around
 // it (WallStepAtLeast: the q each fluid neighbour has applied in this solve with this round's step, Shepard-weighted).
 // The q_b the last correction applied is summed into the warm start first. Runs after the fluid's error pass, whose steps
-// it reads. Laned; a wall particle without a factor (no fluid) walks nothing and gets q_b = 0.
+// it reads. Laned; a wall particle without a factor (no fluid) walks nothing and gets q_b = 0. Its last group to finish
+// then folds the round's errors and decides whether the solve goes on (FoldSolveErrors): the fold needs the fluid's
+// error pass done and comes before the correction, as this pass does, so the round takes three dispatches, not four.
 [numthreads(PARTICLE_THREADS, 1, 1)]
 void BoundarySolveError(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
 {
@@ -95,24 +97,27 @@ void BoundarySolveError(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_G
     }
     float3 sums = SumOverLanes(float4(rate, weightedStiffness, weights, 0.0), groupThread.x).xyz;
     rate = sums.x;
-    if (LaneOwner(id.x) >= _BoundaryCount || LaneOf(id.x) != 0u)
-        return;
-    uint boundaryId = _BoundarySortedSource[b];
-    float2 summed = _BoundaryWarmStart[boundaryId] + (open == DENSITY_SOLVE ? float2(solve.z, 0.0) : float2(0.0, solve.z));
-    _BoundaryWarmStart[boundaryId] = summed;
-    float2 stiffness = open == DENSITY_SOLVE
-        ? DensityStiffness(solve.x, rate, solve.w, solve.y, _TimeStep)
-        : DivergenceStiffness(rate, solve.w, solve.y, _TimeStep);
-    float signedStiffness = open == DENSITY_SOLVE
-        ? SignedDensityStiffness(solve.x, rate, solve.w, solve.y, _TimeStep)
-        : SignedDivergenceStiffness(rate, solve.y, _TimeStep);
-    float wallRelaxation = CHEBYSHEV_WALL_SHARE * _SolverRelaxation;
-    float applied = open == DENSITY_SOLVE ? summed.x : summed.y;
-    float step = RoundStep(WALL_RELAXATION * stiffness.x, applied, solve.z, wallRelaxation * signedStiffness);
-    if (open == DENSITY_SOLVE)
-        step = WallStepAtLeast(step, applied, sums.z > 0.0 ? sums.y / sums.z : 0.0);
-    solve.z = pushes ? step : 0.0;
-    _BoundarySolve[b] = solve;
+    if (LaneOwner(id.x) < _BoundaryCount && LaneOf(id.x) == 0u)
+    {
+        uint boundaryId = _BoundarySortedSource[b];
+        float2 summed = _BoundaryWarmStart[boundaryId] + (open == DENSITY_SOLVE ? float2(solve.z, 0.0) : float2(0.0, solve.z));
+        _BoundaryWarmStart[boundaryId] = summed;
+        float2 stiffness = open == DENSITY_SOLVE
+            ? DensityStiffness(solve.x, rate, solve.w, solve.y, _TimeStep)
+            : DivergenceStiffness(rate, solve.w, solve.y, _TimeStep);
+        float signedStiffness = open == DENSITY_SOLVE
+            ? SignedDensityStiffness(solve.x, rate, solve.w, solve.y, _TimeStep)
+            : SignedDivergenceStiffness(rate, solve.y, _TimeStep);
+        float wallRelaxation = CHEBYSHEV_WALL_SHARE * _SolverRelaxation;
+        float applied = open == DENSITY_SOLVE ? summed.x : summed.y;
+        float step = RoundStep(WALL_RELAXATION * stiffness.x, applied, solve.z, wallRelaxation * signedStiffness);
+        if (open == DENSITY_SOLVE)
+            step = WallStepAtLeast(step, applied, sums.z > 0.0 ? sums.y / sums.z : 0.0);
+        solve.z = pushes ? step : 0.0;
+        _BoundarySolve[b] = solve;
+    }
+    if (LastGroupToFinish(groupThread.x, LanedGroups(_BoundaryCount)))
+        FoldSolveErrors(groupThread.x);
 }
 
 // D delta_i / Dt and the neighbours that gave it, for the fluid particle of thread `thread`, summed over its lanes

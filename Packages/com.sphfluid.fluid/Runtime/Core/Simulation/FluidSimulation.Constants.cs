@@ -53,7 +53,7 @@ namespace SphFluid.Simulation
             _constants[0].ViscositySolveSpan = (float)span;
         }
 
-        /// <summary>The rounds each DFSPH solve records (<see cref="SolveRounds"/>), which SolveFinal counts against.</summary>
+        /// <summary>The rounds each DFSPH solve records (<see cref="SolveRounds"/>), which the fold counts against (FoldSolveErrors).</summary>
         void WriteSolveRounds()
         {
             ref FluidConstants c = ref _constants[0];

@@ -198,8 +198,8 @@ namespace SphFluid.Simulation
         public IComputeBuffer Shifts => _buffers.Shifts;
 
         /// <summary>DFSPH: the last error pass's sums of its particles' errors, one per phase and thread group, phase-major
-        /// (<c>[phase * SolverPartialGroups + group]</c>), which SolveFinal folds into each phase's average error to stop the
-        /// solve (DivergenceFreeConvergence.hlsl's StoreGroupErrors).</summary>
+        /// (<c>[phase * SolverPartialGroups + group]</c>), which the walls' error pass folds into each phase's average error
+        /// to stop the solve (DivergenceFreeConvergence.hlsl's StoreGroupErrors and FoldSolveErrors).</summary>
         public IComputeBuffer SolverPartials => _buffers.SolverPartials;
 
         /// <summary>Thread groups of a DFSPH error pass, each of which writes one sum per phase to <see cref="SolverPartials"/>:
@@ -542,7 +542,7 @@ namespace SphFluid.Simulation
 
         const int DensitySolveSlot = 0, DivergenceSolveSlot = 1;
 
-        /// <summary>Rounds (error pass, SolveFinal, correction) recorded for each DFSPH solve of the next sub-steps:
+        /// <summary>Rounds (error passes with the fold, correction) recorded for each DFSPH solve of the next sub-steps:
         /// [0] constant density, [1] divergence-free. At most MaxSolverIterations; see <see cref="SolveBudget.Next"/>.</summary>
         public IReadOnlyList<int> SolveRounds => _solveRounds;
 
@@ -558,10 +558,11 @@ namespace SphFluid.Simulation
 
         /// <summary>
         /// Records one DFSPH solve without reading anything back: the warm start's correction, then
-        /// <see cref="SolveRounds"/> rounds of error pass, SolveFinal and correction. The error pass and the correction are
-        /// indirect dispatches whose group count SolveFinal sets to zero once the solve has converged (FluidSolver.compute),
-        /// so the rounds recorded beyond convergence cost the GPU an empty dispatch each; the budget keeps their number
-        /// (and their recording) near what the solves have been using (<see cref="SolveBudget"/>).
+        /// <see cref="SolveRounds"/> rounds of the fluid's error pass, the walls' (whose last group folds the round's errors
+        /// and decides whether the solve goes on) and the correction: indirect dispatches whose group count the fold sets to
+        /// zero once the solve has converged (FluidSolver.compute), so the rounds recorded beyond convergence cost the GPU
+        /// three empty dispatches each; the budget keeps their number (and their recording) near what the solves have been
+        /// using (<see cref="SolveBudget"/>).
         /// </summary>
         void Solve(int slot, int beginKernel, int errorKernel)
         {
@@ -573,7 +574,6 @@ namespace SphFluid.Simulation
             {
                 _device.DispatchIndirect(_solver, errorKernel, _buffers.SolverArguments, 0);
                 _device.DispatchIndirect(_solver, _kernels.BoundarySolveError, _buffers.SolverArguments, 12);
-                _device.Dispatch(_solver, _kernels.SolveFinal, 1, 1, 1);
                 _device.DispatchIndirect(_solver, _kernels.ApplyStiffness, _buffers.SolverArguments, 0);
             }
         }

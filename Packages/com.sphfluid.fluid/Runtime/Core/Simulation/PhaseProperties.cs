@@ -39,7 +39,7 @@ namespace SphFluid.Simulation
         public float WallWeightScale;
 
         /// <summary>1 / the phase's particle count (0 for none), set by the simulation once it has spawned: the DFSPH
-        /// solves hold each phase's average error to the tolerance (SolveFinal), not the average over all particles.</summary>
+        /// solves hold each phase's average error to the tolerance (FoldSolveErrors), not the average over all particles.</summary>
         public float InverseParticleCount;
     }
 }

@@ -4,15 +4,16 @@ using System.Collections.Generic;
 namespace SphFluid.Simulation
 {
     /// <summary>
-    /// The rounds (error pass, SolveFinal, correction) a DFSPH sub-step records for each of its solves without reading
-    /// anything back (FluidSimulation's Solve), and which of the recorded dispatches then run groups: the error pass and
-    /// the correction are indirect dispatches whose group count SolveFinal sets to zero once the solve has converged.
+    /// The rounds (the fluid's and the walls' error passes, correction) a DFSPH sub-step records for each of its solves
+    /// without reading anything back (FluidSimulation's Solve), and which of the recorded dispatches then run groups: each
+    /// is an indirect dispatch whose group count the fold at the end of the walls' error pass sets to zero once the solve
+    /// has converged.
     /// </summary>
     public static class SolveBudget
     {
         /// <summary>
         /// The rounds a solve needs to converge after <paramref name="mostIterations"/> corrections (the most any solve of
-        /// its kind made since the last motion read-back) are that many plus one, the round whose SolveFinal sees the
+        /// its kind made since the last motion read-back) are that many plus one, the round whose fold sees the
         /// error within tolerance. Twice that plus a margin is recorded, so that a flow that turns harder from one frame
         /// to the next still converges within the rounds of the frame planned before it was known; a solve that ran out
         /// of rounds anyway (<paramref name="cutOff"/> &gt; 0) at least doubles the budget. Never more than
@@ -33,8 +34,8 @@ namespace SphFluid.Simulation
         /// kernel's milliseconds over its dispatches understate what a running one costs wherever the solve converges
         /// well within its rounds. A solve of k corrections runs its error passes k + 1 times (the last finds it converged)
         /// or k times when its rounds run out first, and its correction k + 1 times, the warm start's first. Takes each
-        /// solve's mean corrections and share cut off (<see cref="DiagnosticsReport"/>); SolveFinal and the solves' set-up
-        /// kernels are plain dispatches that always run.
+        /// solve's mean corrections and share cut off (<see cref="DiagnosticsReport"/>); the solves' set-up kernels are plain
+        /// dispatches that always run.
         /// </summary>
         public static IReadOnlyList<(string Kernel, double Dispatches)> DispatchesThatRun(float densityIterations, float densityCutOff,
             float divergenceIterations, float divergenceCutOff)

@@ -22,8 +22,9 @@ namespace SphFluid.Simulation
     /// </remarks>
     sealed class SolverBuffers : IDisposable
     {
-        /// <summary>Words of the solver state: two solve slots of 8 words and the open solve's slot (FluidSolver.compute).</summary>
-        public const int SolverStateWords = 19;
+        /// <summary>Words of the solver state: two solve slots of 8 words, the open solve's slot, the Chebyshev and viscosity
+        /// weights and the fold's count of finished groups (FluidSolver.compute).</summary>
+        public const int SolverStateWords = 20;
 
         /// <summary>When a binding must be made again.</summary>
         public enum Group

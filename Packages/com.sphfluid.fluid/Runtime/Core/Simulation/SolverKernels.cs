@@ -16,7 +16,7 @@ namespace SphFluid.Simulation
         // DFSPH's sub-step and its two solves (Passes/DivergenceFree*.hlsl).
         public readonly int DensityFactor, WallMovedDensityFactor, BoundaryDensityFactor, BoundaryBeginSolve, BoundarySolveError,
             NonPressureForces, PredictVelocity, BeginDensitySolve, BeginDivergenceSolve, DensitySolveError, DivergenceSolveError,
-            SolveFinal, ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity;
+            ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity;
 
         // The implicit viscosity solve (ViscositySolve.hlsl).
         public readonly int ViscosityStep, ViscosityApply, ViscosityStage;
@@ -50,7 +50,6 @@ namespace SphFluid.Simulation
             BeginDivergenceSolve = solver.FindKernel(nameof(BeginDivergenceSolve));
             DensitySolveError = solver.FindKernel(nameof(DensitySolveError));
             DivergenceSolveError = solver.FindKernel(nameof(DivergenceSolveError));
-            SolveFinal = solver.FindKernel(nameof(SolveFinal));
             ApplyStiffness = solver.FindKernel(nameof(ApplyStiffness));
             Drift = solver.FindKernel(nameof(Drift));
             DivergenceRate = solver.FindKernel(nameof(DivergenceRate));
@@ -64,7 +63,7 @@ namespace SphFluid.Simulation
                 HalfStep, HalfKick, HalfDrift, PlaceBoundary, DensityPressure, DensityRate, ContinuityDensity, WallPressure, Normals, Rotations, Forces, FullStep,
                 ParticleShift, ApplyShift, DensityFactor, WallMovedDensityFactor, BoundaryDensityFactor, BoundaryBeginSolve,
                 BoundarySolveError, NonPressureForces, PredictVelocity, BeginDensitySolve, BeginDivergenceSolve, DensitySolveError,
-                DivergenceSolveError, SolveFinal, ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity,
+                DivergenceSolveError, ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity,
                 ViscosityStep, ViscosityApply, ViscosityStage,
             };
         }
