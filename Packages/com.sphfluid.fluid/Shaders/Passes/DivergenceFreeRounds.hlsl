@@ -64,6 +64,7 @@ float RoundStep(float compressionStep, float applied, float previousStep, float 
 // it reads. Laned; a wall particle without a factor (no fluid) walks nothing and gets q_b = 0. Its last group to finish
 // then folds the round's errors and decides whether the solve goes on (FoldSolveErrors): the fold needs the fluid's
 // error pass done and comes before the correction, as this pass does, so the round takes three dispatches, not four.
+// The pass always has a group to fold in: every container has at least one layer of wall particles (BoundarySampling).
 [numthreads(PARTICLE_THREADS, 1, 1)]
 void BoundarySolveError(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
 {
