@@ -24,7 +24,7 @@ namespace SphFluid.Tests.Solver
     {
         const double Tolerance = 1e-4;
 
-        static FluidSceneDescription Block(bool multiphase, bool chebyshev = false, bool sphere = false, float densityTolerance = 0.001f)
+        internal static FluidSceneDescription Block(bool multiphase, bool chebyshev = false, bool sphere = false, float densityTolerance = 0.001f)
         {
             var settings = SolverScenes.Coarse(0.02f);
             settings.PressureSolver = PressureSolver.Dfsph;
@@ -53,7 +53,7 @@ namespace SphFluid.Tests.Solver
 
         /// <summary>Compressed to <paramref name="squeeze"/> of the spacing towards the floor's centre line and scattered, with
         /// random velocities: every solve has work, and the drift stays clear of the clamp (a discontinuity tested on its own).</summary>
-        static Particle[] Compressed(FluidSceneDescription scene, int count, float squeeze, float drop = 0f, float sink = 0f)
+        internal static Particle[] Compressed(FluidSceneDescription scene, int count, float squeeze, float drop = 0f, float sink = 0f)
         {
             var rng = new SolverScenes.Rng(4242);
             var spawn = SpawnLayout.Generate(scene);

@@ -1,4 +1,6 @@
 using System;
+using System.Collections.Generic;
+using System.Linq;
 using System.Numerics;
 using NUnit.Framework;
 using SphFluid.Reference;
@@ -15,8 +17,9 @@ namespace SphFluid.Tests.Solver
     /// (NeighbourCapacity.InUse), so the same comparison holds WCSPH's lists to the grid walk. The rule itself is tested in
     /// the package's Core tests (NeighbourLanesTests). Each laned kernel is covered: DensityPressure (summation), DensityRate
     /// and ContinuityDensity (delta-SPH), WallPressure and Forces (both), NonPressureForces (DFSPH), Normals and Rotations
-    /// (tension and the strain rate's stress), ParticleShift (shifting); DFSPH's factor, error and correction passes are
-    /// held to the double-precision reference with 8 lanes in DivergenceFreeKernelTests, and their stop decision here.
+    /// (tension and the strain rate's stress), ParticleShift (shifting), FindNeighbours (DFSPH's lists); DFSPH's factor,
+    /// error and correction passes are held to the double-precision reference with 8 lanes in DivergenceFreeKernelTests,
+    /// and their stop decision here.
     /// </summary>
     public sealed class LanedSumsTests
     {
@@ -107,6 +110,65 @@ namespace SphFluid.Tests.Solver
             Assert.That(eight.DensitySolveIterations, Is.EqualTo(one.DensitySolveIterations).Within(15).Percent);
             Assert.That(eight.DivergenceSolveIterations, Is.EqualTo(one.DivergenceSolveIterations).Within(15).Percent);
             Assert.That(eight.DensitySolvesCutOff, Is.EqualTo(one.DensitySolvesCutOff).Within(0.05f));
+        }
+
+        /// <summary>
+        /// DFSPH's neighbour search with lanes (NeighbourLists.hlsl's ListOwnerInLanes): 2 and 8 lanes list, for every fluid
+        /// and wall owner, the neighbours one lane lists, lane by lane instead of in the walk's order, and mark the same
+        /// owners as too crowded for a list. The block of DivergenceFreeKernelTests squeezed to 0.75 of its spacing, so that
+        /// some of its particles have more neighbours than a list's entries and the others fewer.
+        /// </summary>
+        [TestCase(2, TestName = "LanedSearch_TwoLanes")]
+        [TestCase(8, TestName = "LanedSearch_EightLanes")]
+        public void LanesListTheNeighboursOfOneThread(int lanes)
+        {
+            var one = ListedNeighbours(1);
+            var many = ListedNeighbours(lanes);
+            Assert.That(many.Length, Is.EqualTo(one.Length));
+            int crowded = 0, listed = 0, reordered = 0;
+            for (int owner = 0; owner < one.Length; owner++)
+            {
+                if (one[owner] == null)
+                {
+                    crowded++;
+                    Assert.That(many[owner], Is.Null, $"owner {owner} has more neighbours than a list holds");
+                    continue;
+                }
+                listed++;
+                Assert.That(many[owner], Is.EquivalentTo(one[owner]), $"owner {owner}'s neighbours");
+                if (!many[owner]!.SequenceEqual(one[owner]!)) reordered++;
+            }
+            TestContext.Progress.WriteLine($"{lanes} lanes: {listed} owners listed ({reordered} in another order), {crowded} too crowded");
+            Assert.That(crowded, Is.GreaterThan(0), "some owners walk the grid");
+            Assert.That(listed, Is.GreaterThan(crowded), "most owners read a list");
+            Assert.That(reordered, Is.GreaterThan(0), "the lanes wrote the lists, not one thread (which keeps the walk's order)");
+        }
+
+        /// <summary>Each owner's listed neighbours as its entries stand ("f" and a fluid neighbour's id, "w" and a wall
+        /// particle's sorted index), or null where the owner walks the grid.</summary>
+        static string[]?[] ListedNeighbours(int lanes)
+        {
+            var scene = DivergenceFreeKernelTests.Block(false);
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene) { LanesPerParticle = lanes };
+            sim.SetParticles(DivergenceFreeKernelTests.Compressed(scene, sim.ParticleCount, 0.75f));
+            Assert.That(sim.ReadsNeighbourLists, Is.True);
+            int owners = sim.ParticleCount + sim.BoundaryCount, capacity = sim.NeighbourListCapacity;
+            var counts = new uint[owners];
+            var entries = new uint[owners * capacity];
+            sim.NeighbourCounts.GetData(counts);
+            sim.NeighbourLists.GetData(entries);
+            var ids = GpuState.Read(sim).Particles;
+            var listed = new string[]?[owners];
+            for (int o = 0; o < owners; o++)
+            {
+                if (counts[o] == uint.MaxValue) continue;
+                int fluid = (int)(counts[o] & 0xFFFF), walls = (int)(counts[o] >> 16);
+                var found = new List<string>();
+                for (int k = 0; k < fluid; k++) found.Add("f" + ids[(int)entries[k * owners + o]].Id);
+                for (int k = capacity - walls; k < capacity; k++) found.Add("w" + entries[k * owners + o]);
+                listed[o] = found.ToArray();
+            }
+            return listed;
         }
 
         static DiagnosticsReport CollapsingColumn(int lanes)

@@ -29,7 +29,8 @@
 // makes the difference: at 2.85 spacings the walk's cells hold about 3.7 candidates per neighbour. WCSPH's four
 // neighbour passes of a sub-step (density, wall pressure, forces, and delta-SPH's rate before the next drift) read the
 // same lists when each particle's loops run in one lane; with more lanes (NeighbourLanes.hlsl) the walk is already
-// split, and FindNeighbours, one thread per owner, would add a whole walk to the sub-step (NeighbourCapacity.cs). Each
+// split, and FindNeighbours, which keeps the walk's order only in one lane per owner (DFSPH's lists it finds in lanes,
+// lane by lane), would add a whole walk to the sub-step (NeighbourCapacity.cs). Each
 // list owner (fluid particle i, or wall particle b as owner _ParticleCount + b) has _NeighbourCapacity entries; entry k
 // of owner o is at k * (_ParticleCount + _BoundaryCount) + o, so that the threads of a group read neighbouring words.
 // The entries come in one of two orders (_NeighbourListRows, NeighbourCapacity.cs):

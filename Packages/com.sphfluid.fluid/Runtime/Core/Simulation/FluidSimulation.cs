@@ -217,6 +217,11 @@ namespace SphFluid.Simulation
         /// <see cref="NeighbourListCapacity"/> that walks the grid instead (SphNeighbourhood.hlsl).</summary>
         public IComputeBuffer NeighbourCounts => _buffers.NeighbourCounts;
 
+        /// <summary>The neighbour lists' entries, sorted indices: entry k of owner o (fluid particle i, or
+        /// <see cref="ParticleCount"/> + boundary particle b) at k * (ParticleCount + BoundaryCount) + o
+        /// (SphNeighbourhood.hlsl).</summary>
+        public IComputeBuffer NeighbourLists => _buffers.NeighbourLists;
+
         /// <summary>Entries of each neighbour list; 0 without lists (WCSPH; see <see cref="Simulation.NeighbourCapacity"/>).</summary>
         public int NeighbourListCapacity => (int)_constants[0].NeighbourCapacity;
 
@@ -636,15 +641,12 @@ namespace SphFluid.Simulation
 
         /// <summary>The neighbour lists (SphNeighbourhood.hlsl) of every fluid and boundary particle where they stand, unless
         /// they were found since the particles or walls last moved or were sorted; while no lists are in use
-        /// (<see cref="ReadsNeighbourLists"/>) the kernels walk the grid and nothing is dispatched.</summary>
+        /// (<see cref="ReadsNeighbourLists"/>) the kernels walk the grid and nothing is dispatched. Laned, as the passes that
+        /// read them (DFSPH's order only: WCSPH reads lists in one lane, NeighbourCapacity.InUse).</summary>
         void FindNeighbours()
         {
             if (!_neighboursFound && ReadsNeighbourLists)
-            {
-                _device.BeginSample(PassNames.FindNeighbours);
-                _device.DispatchThreads(_solver, _kernels.FindNeighbours, ParticleCount + _boundaryCount);
-                _device.EndSample(PassNames.FindNeighbours);
-            }
+                LanedPass(PassNames.FindNeighbours, _kernels.FindNeighbours, ParticleCount + _boundaryCount);
             _neighboursFound = true;
             _wallsResorted = false;
         }

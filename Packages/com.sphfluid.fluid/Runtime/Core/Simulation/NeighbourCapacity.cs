@@ -9,8 +9,8 @@ namespace SphFluid.Simulation
     /// (<see cref="CellGrid.CellsPerSupport"/>), about 3.7 candidates per neighbour, so a pass that reads a list instead
     /// skips most of its work. DFSPH reads them in every iteration of its solves. WCSPH reads them in its four neighbour
     /// passes of a sub-step when each particle's loops run in one lane (a CPU device, or a GPU the particles fill); with
-    /// more lanes the walks are already split over threads, and the search itself, one thread per particle, would add a
-    /// whole walk to the sub-step (<see cref="InUse"/>).
+    /// more lanes the walks are already split over threads, and the search, which keeps the walk's order only in one lane
+    /// (DFSPH's lists it finds in lanes, in another order), would add a whole walk to the sub-step (<see cref="InUse"/>).
     /// A particle inside the fluid at rest, or beside a wall whose particles fill its support at the fluid's number
     /// density, has about (4/3) pi (H / s)^3 neighbours: 33.5 for the cubic spline at 2 spacings, 97 for Wendland C2 at
     /// 2.85. Each list holds <see cref="Headroom"/> times that; a particle with more (a splash crushed against a wall)

@@ -2,7 +2,7 @@ namespace SphFluid.Simulation
 {
     /// <summary>
     /// Threads per particle in the neighbour loops of density, wall pressure, forces (with the tension's normals and the strain
-    /// rate's rotations), particle shifting and DFSPH's solve (NeighbourLanes.hlsl). A pass
+    /// rate's rotations), particle shifting, and DFSPH's neighbour search and solve (NeighbourLanes.hlsl). A pass
     /// over few particles leaves a GPU idle but for the longest thread's walk through its neighbourhood, so splitting
     /// each walk over several threads shortens the pass; once the particles alone fill the GPU, more threads only add
     /// the sum across them. The count of threads that fills a GPU is taken as <see cref="FillingThreads"/>: an H100's and
