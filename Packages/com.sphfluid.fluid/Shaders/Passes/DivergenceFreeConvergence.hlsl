@@ -154,10 +154,11 @@ void FoldSolveErrors(uint t)
 groupshared uint s_LastGroup;
 
 // Whether this group is the last of the `groups` of its dispatch to get here, the one that may then fold what the
-// dispatch's other groups have done with (every thread of the group calls it). The device barrier orders each group's
-// reads and writes before its count, so the last group's writes to words the others read (the Chebyshev weight) come
-// after every read. The last group sets the count back to zero for the next dispatch; it is alone by then. (A
-// single-pass reduction's "last block": one dispatch fewer, and one barrier between dispatches fewer, every round.)
+// dispatch's other groups have done with (every thread of the group calls it). The device barrier before the count
+// releases each group's reads and writes, and the one after it has the last group acquire them, so the last group's
+// writes to words the others read (the Chebyshev weight) come after every read. The last group sets the count back to
+// zero for the next dispatch; it is alone by then. (A single-pass reduction's "last block": one dispatch fewer, and one
+// barrier between dispatches fewer, every round.)
 bool LastGroupToFinish(uint t, uint groups)
 {
     DeviceMemoryBarrierWithGroupSync();
@@ -169,7 +170,7 @@ bool LastGroupToFinish(uint t, uint groups)
         if (s_LastGroup != 0u)
             _SolverState[FOLD_COUNT_WORD] = 0u;
     }
-    GroupMemoryBarrierWithGroupSync();
+    AllMemoryBarrierWithGroupSync(); // device memory, and the groupshared flag
     return s_LastGroup != 0u;
 }
 
