@@ -3,6 +3,21 @@
 
 // FluidSolver.compute's FindNeighbours: the neighbour lists of SphNeighbourhood.hlsl, built once after every sort.
 
+// Where list owner `owner` stands: fluid particle i, or wall particle b as owner _ParticleCount + b.
+float3 OwnerPosition(uint owner)
+{
+    if (owner < _ParticleCount) // a branch, not ?:, which would read both buffers, one of them out of bounds
+        return _Particles[owner].position;
+    return _BoundaryParticles[owner - _ParticleCount].position;
+}
+
+// Whether a candidate at y is a neighbour of x, as the passes that read the lists decide it.
+bool InSupport(float3 x, float3 y)
+{
+    float3 r = x - y;
+    return dot(r, r) < _SmoothingRadius2;
+}
+
 // SphNeighbourhood.hlsl's neighbour lists, after every sort of the fluid or the walls, for one thread an owner: the fluid
 // particles first, then the wall particles (their fluid neighbours only: the walls around a wall particle move only with
 // it, WallNumberDensity). The distances are computed as the passes that read the lists compute them,
@@ -14,11 +29,7 @@ void ListOneOwner(uint owner)
     if (owner >= _ParticleCount + _BoundaryCount)
         return;
     bool fluidOwner = owner < _ParticleCount;
-    float3 x;
-    if (fluidOwner) // a branch, not ?:, which would read both buffers, one of them out of bounds
-        x = _Particles[owner].position;
-    else
-        x = _BoundaryParticles[owner - _ParticleCount].position;
+    float3 x = OwnerPosition(owner);
     int3 home = GridCoordOf(x);
     bool walkOrder = _NeighbourListRows != 1u;
     uint fluid = 0u, walls = 0u;
@@ -28,8 +39,7 @@ void ListOneOwner(uint owner)
         uint2 range = NeighbourRowRange(home, row);
         for (uint j = range.x; j < range.y; j++)
         {
-            float3 r = x - _Particles[j].position;
-            if (dot(r, r) >= _SmoothingRadius2)
+            if (!InSupport(x, _Particles[j].position))
                 continue;
             if (walkOrder)
             {
@@ -47,8 +57,7 @@ void ListOneOwner(uint owner)
             uint2 wallRange = BoundaryRowRange(home, row);
             for (uint b = wallRange.x; b < wallRange.y; b++)
             {
-                float3 r = x - _BoundaryParticles[b].position;
-                if (dot(r, r) >= _SmoothingRadius2)
+                if (!InSupport(x, _BoundaryParticles[b].position))
                     continue;
                 if (walkOrder)
                 {
@@ -80,8 +89,7 @@ uint2 WalkOneLane(uint owner, float3 x, bool fluidOwner, uint lane, bool store, 
         uint2 range = NeighbourRowRange(home, row);
         for (uint j = range.x + lane; j < range.y; j += _NeighbourLanes)
         {
-            float3 r = x - _Particles[j].position;
-            if (dot(r, r) >= _SmoothingRadius2)
+            if (!InSupport(x, _Particles[j].position))
                 continue;
             if (store)
                 StoreNeighbour(owner, firsts.x + fluid, j);
@@ -92,8 +100,7 @@ uint2 WalkOneLane(uint owner, float3 x, bool fluidOwner, uint lane, bool store, 
         uint2 wallRange = BoundaryRowRange(home, row);
         for (uint b = wallRange.x + lane; b < wallRange.y; b += _NeighbourLanes)
         {
-            float3 r = x - _BoundaryParticles[b].position;
-            if (dot(r, r) >= _SmoothingRadius2)
+            if (!InSupport(x, _BoundaryParticles[b].position))
                 continue;
             if (store)
                 StoreNeighbour(owner, _NeighbourCapacity - 1u - (firsts.y + walls), b);
@@ -116,11 +123,7 @@ void ListOwnerInLanes(uint thread, uint groupThread)
     uint owner = min(LaneOwner(thread), owners - 1u);
     uint lane = FirstCandidate(thread, owners);
     bool fluidOwner = owner < _ParticleCount;
-    float3 x;
-    if (fluidOwner)
-        x = _Particles[owner].position;
-    else
-        x = _BoundaryParticles[owner - _ParticleCount].position;
+    float3 x = OwnerPosition(owner);
     s_LaneFinds[groupThread] = WalkOneLane(owner, x, fluidOwner, lane, false, uint2(0u, 0u));
     GroupMemoryBarrierWithGroupSync();
     uint firstLane = groupThread & ~(_NeighbourLanes - 1u);
