@@ -8,8 +8,9 @@
 # A sub-step records (FluidSimulation.Solve) each solve's warm start as one ApplyStiffness, then rounds of error pass
 # and BoundarySolveError, whose last group folds the round's errors (a SolveFinal dispatch of its own in tables printed
 # before that, counted in the round when the table has it), each but the last followed by an ApplyStiffness: n
-# corrections cost n + 1 error rounds and n corrections. Every other kernel of the table runs a fixed number of times a sub-step whatever the
-# iterations (the sort, FindNeighbours, DensityFactor, NonPressureForces, the drift): the fixed part. A solve makes
+# corrections cost n + 1 error rounds and n corrections. Every other kernel of the table runs a fixed number of times
+# a sub-step whatever the iterations (the sort, FindNeighbours, DensityFactor, NonPressureForces, the drift): the fixed
+# part. A solve makes
 # two corrections at the least (the fold), so 2 and 2 at the longest sub-step is the cheapest a sub-step gets. Each
 # kernel's cost a dispatch is its milliseconds over the dispatches that ran groups (the table's "ran" column): the
 # rounds a solve records beyond its convergence dispatch no groups, and counting them would cheapen a round. A table

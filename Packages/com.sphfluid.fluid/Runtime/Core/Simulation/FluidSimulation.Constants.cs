@@ -53,7 +53,8 @@ namespace SphFluid.Simulation
             _constants[0].ViscositySolveSpan = (float)span;
         }
 
-        /// <summary>The rounds each DFSPH solve records (<see cref="SolveRounds"/>), which the fold counts against (FoldSolveErrors).</summary>
+        /// <summary>The rounds each DFSPH solve records (<see cref="SolveRounds"/>), which the fold counts against
+        /// (FoldSolveErrors).</summary>
         void WriteSolveRounds()
         {
             ref FluidConstants c = ref _constants[0];
