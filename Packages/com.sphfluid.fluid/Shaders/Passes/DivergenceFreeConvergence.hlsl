@@ -35,12 +35,8 @@ void BeginSolve(uint solve)
     _SolverArguments[5] = 1u;
 }
 
-[numthreads(1, 1, 1)]
-void BeginDensitySolve(uint3 id : SV_DispatchThreadID)
-{
-    BeginSolve(DENSITY_SOLVE);
-}
-
+// The divergence-free solve's walls took their warm start in BoundaryDensityFactor, so one thread opens it
+// (BeginDensitySolve, which also starts the walls, is in DivergenceFreeRounds.hlsl).
 [numthreads(1, 1, 1)]
 void BeginDivergenceSolve(uint3 id : SV_DispatchThreadID)
 {

@@ -21,19 +21,27 @@ void PredictVelocity(uint3 id : SV_DispatchThreadID)
     _WarmStart[p.id] = float2(0.0, _WarmStart[p.id].y); // ApplyStiffness counts the warm start as it applies it
 }
 
-// Before a solve's first correction: the walls' warm start (the fluid's is set by PredictVelocity and DensityFactor).
-[numthreads(PARTICLE_THREADS, 1, 1)]
-void BoundaryBeginSolve(uint3 id : SV_DispatchThreadID)
+// The walls' warm start of the constant-density solve, before its first correction (the fluid's is set by
+// PredictVelocity; the divergence-free solve's, fluid and walls, by DensityFactor and BoundaryDensityFactor).
+void BeginWallDensitySolve(uint b)
 {
-    uint b = id.x;
-    if (b >= _BoundaryCount || OpenSolve() != DENSITY_SOLVE)
-        return;
     float4 solve = _BoundarySolve[b];
     uint boundaryId = _BoundarySortedSource[b];
     float2 warm = _BoundaryWarmStart[boundaryId];
     solve.z = DENSITY_WARM_START * warm.x;
     _BoundarySolve[b] = solve;
     _BoundaryWarmStart[boundaryId] = float2(0.0, warm.y);
+}
+
+// Opens the constant-density solve, one thread a wall particle: the first thread the solve's state (BeginSolve),
+// every thread its wall particle's warm start. One dispatch, not two: the state and the walls touch no common word.
+[numthreads(PARTICLE_THREADS, 1, 1)]
+void BeginDensitySolve(uint3 id : SV_DispatchThreadID)
+{
+    if (id.x == 0u)
+        BeginSolve(DENSITY_SOLVE);
+    if (id.x < _BoundaryCount)
+        BeginWallDensitySolve(id.x);
 }
 
 // The q a fluid particle has applied so far in the open solve, warm start included; read only by the accelerated solve

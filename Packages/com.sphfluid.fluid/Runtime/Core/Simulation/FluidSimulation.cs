@@ -562,7 +562,7 @@ namespace SphFluid.Simulation
         }
 
         /// <summary>
-        /// Records one DFSPH solve without reading anything back: the warm start's correction, then
+        /// Records one DFSPH solve without reading anything back: its opening, the warm start's correction, then
         /// <see cref="SolveRounds"/> rounds of the fluid's error pass, the walls' (whose last group folds the round's errors
         /// and decides whether the solve goes on) and the correction: indirect dispatches whose group count the fold sets to
         /// zero once the solve has converged (FluidSolver.compute), so the rounds recorded beyond convergence cost the GPU
@@ -572,8 +572,9 @@ namespace SphFluid.Simulation
         void Solve(int slot, int beginKernel, int errorKernel)
         {
             int rounds = _solveRounds[slot];
-            _device.Dispatch(_solver, beginKernel, 1, 1, 1);
-            _device.DispatchThreads(_solver, _kernels.BoundaryBeginSolve, _boundaryCount);
+            // The constant-density solve's opening gives the walls their warm start too, a thread each (at least one: its
+            // first thread opens the solve); the divergence-free solve's walls took theirs in BoundaryDensityFactor.
+            _device.DispatchThreads(_solver, beginKernel, slot == DensitySolveSlot ? Math.Max(1, _boundaryCount) : 1);
             _device.DispatchThreads(_solver, _kernels.ApplyStiffness, ParticleCount * LanesPerParticle);
             for (int l = 0; l < rounds; l++)
             {

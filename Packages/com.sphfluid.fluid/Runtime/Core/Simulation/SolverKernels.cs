@@ -14,7 +14,7 @@ namespace SphFluid.Simulation
             FullStep, ParticleShift, ApplyShift;
 
         // DFSPH's sub-step and its two solves (Passes/DivergenceFree*.hlsl).
-        public readonly int DensityFactor, WallMovedDensityFactor, BoundaryDensityFactor, BoundaryBeginSolve, BoundarySolveError,
+        public readonly int DensityFactor, WallMovedDensityFactor, BoundaryDensityFactor, BoundarySolveError,
             NonPressureForces, PredictVelocity, BeginDensitySolve, BeginDivergenceSolve, DensitySolveError, DivergenceSolveError,
             ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity;
 
@@ -42,7 +42,6 @@ namespace SphFluid.Simulation
             DensityFactor = solver.FindKernel(nameof(DensityFactor));
             WallMovedDensityFactor = solver.FindKernel(nameof(WallMovedDensityFactor));
             BoundaryDensityFactor = solver.FindKernel(nameof(BoundaryDensityFactor));
-            BoundaryBeginSolve = solver.FindKernel(nameof(BoundaryBeginSolve));
             BoundarySolveError = solver.FindKernel(nameof(BoundarySolveError));
             NonPressureForces = solver.FindKernel(nameof(NonPressureForces));
             PredictVelocity = solver.FindKernel(nameof(PredictVelocity));
@@ -61,7 +60,7 @@ namespace SphFluid.Simulation
             All = new[]
             {
                 HalfStep, HalfKick, HalfDrift, PlaceBoundary, DensityPressure, DensityRate, ContinuityDensity, WallPressure, Normals, Rotations, Forces, FullStep,
-                ParticleShift, ApplyShift, DensityFactor, WallMovedDensityFactor, BoundaryDensityFactor, BoundaryBeginSolve,
+                ParticleShift, ApplyShift, DensityFactor, WallMovedDensityFactor, BoundaryDensityFactor,
                 BoundarySolveError, NonPressureForces, PredictVelocity, BeginDensitySolve, BeginDivergenceSolve, DensitySolveError,
                 DivergenceSolveError, ApplyStiffness, Drift, DivergenceRate, FindNeighbours, WallNumberDensity,
                 ViscosityStep, ViscosityApply, ViscosityStage,
