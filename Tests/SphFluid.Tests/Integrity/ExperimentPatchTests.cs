@@ -69,6 +69,40 @@ namespace SphFluid.Tests.Integrity
             }
         }
 
+        /// <summary>The experiments Headless/gpu-kit.sh packs when EXPERIMENTS is not set: it applies each to HEAD, so one
+        /// that no longer applies stops the kit on the day a GPU is lent (cached-pair-gradients did, once the neighbour
+        /// search took lanes).</summary>
+        static IEnumerable<string> KitDefaults()
+        {
+            string kit = File.ReadAllText(Path.Combine(RepoRoot, "Headless", "gpu-kit.sh"));
+            var defaults = Regex.Match(kit, @"\$\{EXPERIMENTS-([^}]*)\}");
+            Assert.That(defaults.Success, Is.True, "gpu-kit.sh's ${EXPERIMENTS-...} default");
+            return defaults.Groups[1].Value.Split(' ', StringSplitOptions.RemoveEmptyEntries).Select(entry => entry.Split(':')[0]);
+        }
+
+        [Test]
+        public void The_gpu_kits_default_experiments_apply_to_head()
+        {
+            var names = KitDefaults().ToList();
+            Assert.That(names, Is.Not.Empty);
+            string index = Path.Combine(Path.GetTempPath(), "sphfluid-experiment-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                var read = Git(index, "read-tree", "HEAD");
+                Assert.That(read.Code, Is.EqualTo(0), read.Output);
+                foreach (string name in names)
+                {
+                    Assert.That(File.Exists(PatchPath(name)), Is.True, $"gpu-kit.sh's default names {name}, but {name}.patch is missing");
+                    var check = Git(index, "apply", "--cached", "--check", PatchPath(name));
+                    Assert.That(check.Code, Is.EqualTo(0), $"gpu-kit.sh's default experiment {name}.patch does not apply to HEAD: {check.Output}");
+                }
+            }
+            finally
+            {
+                File.Delete(index);
+            }
+        }
+
         static (int Code, string Output) Git(string? indexFile, params string[] arguments)
         {
             var start = new ProcessStartInfo("git") { WorkingDirectory = RepoRoot, RedirectStandardOutput = true, RedirectStandardError = true };
