@@ -17,7 +17,8 @@ namespace SphFluid.Tests.Solver
     /// (NeighbourCapacity.InUse), so the same comparison holds WCSPH's lists to the grid walk. The rule itself is tested in
     /// the package's Core tests (NeighbourLanesTests). Each laned kernel is covered: DensityPressure (summation), DensityRate
     /// and ContinuityDensity (delta-SPH), WallPressure and Forces (both), NonPressureForces (DFSPH), Normals and Rotations
-    /// (tension and the strain rate's stress), ParticleShift (shifting), FindNeighbours (DFSPH's lists); DFSPH's factor,
+    /// (tension and the strain rate's stress), ParticleShift (shifting), FindNeighbours (DFSPH's lists), Drift (DFSPH's wall
+    /// contact); DFSPH's factor,
     /// error and correction passes are held to the double-precision reference with 8 lanes in DivergenceFreeKernelTests,
     /// and their stop decision here.
     /// </summary>
@@ -90,6 +91,24 @@ namespace SphFluid.Tests.Solver
             var manyById = many.IndexById();
             Assert.That(ReferenceComparison.Max(n, k => Of(oneShifts[oneById[k]]).Length()), Is.GreaterThan(1e-6), "the case must shift");
             ReferenceComparison.CompareVectors("shift", Tolerance, n, k => Of(oneShifts[oneById[k]]), k => Of(manyShifts[manyById[k]]));
+        }
+
+        /// <summary>DFSPH's drift (DivergenceFreeDrift.hlsl), laned for its wall contact: the noisy blob, whose particles are
+        /// under-dense or crowd the walls, drifted once over 2 ms with 2 and 8 lanes, its velocities and positions against
+        /// one lane's; the contact must have changed velocities for the case to count.</summary>
+        [TestCase(2, TestName = "LanedSums_Drift_TwoLanes")]
+        [TestCase(8, TestName = "LanedSums_Drift_EightLanes")]
+        public void LanesGiveTheDriftOfOneThread(int lanes)
+        {
+            var one = Drifted(1, out var before);
+            var many = Drifted(lanes, out _);
+            int n = one.Particles.Length;
+            var oneById = one.IndexById();
+            var manyById = many.IndexById();
+            double changed = ReferenceComparison.Max(n, k => (one.Particles[oneById[k]].Velocity - before[k].Velocity).Length());
+            Assert.That(changed, Is.GreaterThan(0.05), "the wall contact must change velocities (m/s)");
+            ReferenceComparison.CompareVectors("velocity", Tolerance, n, k => Of(one.Particles[oneById[k]].Velocity), k => Of(many.Particles[manyById[k]].Velocity));
+            ReferenceComparison.CompareVectors("position", Tolerance, n, k => Of(one.Particles[oneById[k]].Position), k => Of(many.Particles[manyById[k]].Position));
         }
 
         /// <summary>
@@ -199,6 +218,22 @@ namespace SphFluid.Tests.Solver
         }
 
         static Double3 Of(Vector4 v) => new Double3(v.X, v.Y, v.Z);
+        static Double3 Of(Vector3 v) => new Double3(v.X, v.Y, v.Z);
+
+        /// <summary>The noisy two-phase blob under DFSPH in its turning container, drifted once over 2 ms with
+        /// <paramref name="lanes"/> threads per particle; <paramref name="before"/> by particle id.</summary>
+        static GpuState Drifted(int lanes, out Particle[] before)
+        {
+            var scene = SolverKernelTests.RandomScene(true, false, false, false);
+            scene.Settings.PressureSolver = PressureSolver.Dfsph;
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene) { LanesPerParticle = lanes };
+            var input = SolverKernelTests.RandomParticles(scene, sim.ParticleCount, 2468);
+            before = new Particle[input.Length];
+            foreach (var p in input) before[p.Id] = p;
+            sim.SetParticles(input);
+            sim.Drift(0.002f);
+            return GpuState.Read(sim);
+        }
 
         /// <summary>The noisy two-phase blob with shifting at A = 0.5 (every shift below the cap), one WCSPH sub-step of
         /// 0.5 ms with <paramref name="lanes"/> threads per particle.</summary>

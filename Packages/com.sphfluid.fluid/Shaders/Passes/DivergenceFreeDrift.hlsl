@@ -4,13 +4,18 @@
 // The divergence-free sub-step's drift with its wall contact (DivergenceFreeSolver.hlsl), and the per-particle
 // divergence the diagnostics read.
 
-// DivergenceFreeSolver.hlsl's wall contact for particle i: under-dense at the sub-step's start, or bound to end its drift
-// within DIVERGENCE_CONTACT_GAP spacings of a wall's face.
-float3 ContactLimitedVelocity(uint i, Particle p)
+// Whether DivergenceFreeSolver.hlsl's wall contact acts on particle i: under-dense at the sub-step's start, or bound
+// to end its drift within DIVERGENCE_CONTACT_GAP spacings of a wall's face.
+bool InWallContact(uint i, Particle p)
 {
-    if (_Densities[i].z >= RestNumberDensityOf(p)
-        && WallGap(DriftedPosition(p.position, p.velocity)) >= DIVERGENCE_CONTACT_GAP * _ParticleSpacing)
-        return p.velocity;
+    return _Densities[i].z < RestNumberDensityOf(p)
+        || WallGap(DriftedPosition(p.position, p.velocity)) < DIVERGENCE_CONTACT_GAP * _ParticleSpacing;
+}
+
+// This lane's share of the wall contact's sums for particle i (WallContactVelocity): the walls' weighted kernel
+// gradients (xyz) and the rate they approach at (w).
+float4 WallContactSums(uint i, Particle p, uint lane)
+{
     PhaseProperties phase = _Phases[PHASE_OF(p)];
     int3 home = GridCoordOf(p.position);
     NeighbourList list = ListOf(i);
@@ -19,7 +24,7 @@ float3 ContactLimitedVelocity(uint i, Particle p)
     for (uint row = 0u; row < NeighbourRows(list); row++)
     {
         uint2 walls = WallNeighbours(list, home, row);
-        for (uint kb = walls.x; kb < walls.y; kb++)
+        for (uint kb = walls.x + lane; kb < walls.y; kb += _NeighbourLanes)
         {
             BoundaryParticle wall = _BoundaryParticles[Neighbour(list, kb)];
             float3 rib = p.position - wall.position;
@@ -31,17 +36,26 @@ float3 ContactLimitedVelocity(uint i, Particle p)
             wallRate += dot(wall.velocity, gradient);
         }
     }
-    return WallContactVelocity(p.velocity, wallGradients, wallRate);
+    return float4(wallGradients, wallRate);
 }
 
+// Laned (NeighbourLanes.hlsl) for the particles in wall contact, whose walk of their wall neighbours one thread made
+// alone while the rest of a small scene's GPU stood idle; the others only pass the lanes' barriers.
 [numthreads(PARTICLE_THREADS, 1, 1)]
-void Drift(uint3 id : SV_DispatchThreadID)
+void Drift(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupThreadID)
 {
-    uint i = id.x;
-    if (i >= _ParticleCount)
-        return;
+    uint i = min(LaneOwner(id.x), _ParticleCount - 1u);
+    uint lane = FirstCandidate(id.x, _ParticleCount);
     Particle p = _Particles[i];
-    p.velocity = ContactLimitedVelocity(i, p);
+    bool contact = InWallContact(i, p);
+    float4 sums = float4(0.0, 0.0, 0.0, 0.0);
+    if (contact) // not a ?: , which HLSL may evaluate on both sides
+        sums = WallContactSums(i, p, lane);
+    float4 walls = SumOverLanes(sums, groupThread.x);
+    if (lane != 0u)
+        return;
+    if (contact)
+        p.velocity = WallContactVelocity(p.velocity, walls.xyz, walls.w);
     p.position = DriftedPosition(p.position, p.velocity);
     LastResortClamp(p);
     _Particles[i] = p;

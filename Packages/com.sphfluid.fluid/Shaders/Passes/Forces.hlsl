@@ -252,7 +252,7 @@ void AccelerationOf(uint thread, uint groupThread, bool withPressure)
     correction = _XsphEpsilon * xsph;
 #endif
     // SphBoundary.hlsl's wall contact, on the velocity the particle drifts with next (DFSPH applies it in its drift
-    // instead: ContactLimitedVelocity).
+    // instead: Drift, InWallContact).
     if (withPressure && (_WallContactAtAnyDensity != 0u || di.x < phaseI.restDensity) && wallNumberDensity > _WallContactNumberDensity * phaseI.wallWeightScale)
     {
         float3 predicted = pi.velocity + a * _TimeStep + correction;

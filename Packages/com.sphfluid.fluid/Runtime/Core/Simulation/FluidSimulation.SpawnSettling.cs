@@ -79,7 +79,7 @@ namespace SphFluid.Simulation
                     _constantsChanged = true;
                 }
                 Solve(DensitySolveSlot, _kernels.BeginDensitySolve, _kernels.DensitySolveError);
-                SolverPass(PassNames.Drift, _kernels.Drift);
+                LanedPass(PassNames.Drift, _kernels.Drift, ParticleCount);
                 _buffers.Particles.GetData(held);
             }
             _constants[0].DensitySolveTolerance = sceneTolerance;

@@ -512,7 +512,7 @@ namespace SphFluid.Simulation
             if (_viscosity.Rounds > 0)
                 SolveViscosity();
 
-            SolverPass(PassNames.Drift, _kernels.Drift);
+            LanedPass(PassNames.Drift, _kernels.Drift, ParticleCount);
 
             AdvanceWalls(_constants[0].TimeStep);
             SortAndComputeForces(false);
@@ -727,6 +727,20 @@ namespace SphFluid.Simulation
             SolverPass(PassNames.PredictVelocity, _kernels.PredictVelocity);
             if (_viscosity.Rounds > 0)
                 SolveViscosity();
+            _device.Submit();
+        }
+
+        /// <summary>DFSPH: the drift alone, wall contact included, over <paramref name="timeStep"/> s on the current particles
+        /// re-sorted, with their density and factor but no solve (tests compare the contact's laned sums with one lane's).
+        /// </summary>
+        public void Drift(float timeStep)
+        {
+            ThrowIfDisposed();
+            if (!_divergenceFree) throw new InvalidOperationException("FluidSimulation: Drift is DFSPH's drift");
+            BeginFrame(0f);
+            SetTimeStep(timeStep);
+            SortAndComputeForces(false);
+            LanedPass(PassNames.Drift, _kernels.Drift, ParticleCount);
             _device.Submit();
         }
 
