@@ -349,8 +349,7 @@ namespace SphFluid.Simulation
         {
             ThrowIfDisposed();
             if (substeps < 0) throw new ArgumentOutOfRangeException(nameof(substeps), substeps, "FluidSimulation: substeps must be >= 0");
-            if (!(timeStep > 0f) || float.IsInfinity(timeStep))
-                throw new ArgumentOutOfRangeException(nameof(timeStep), timeStep, "FluidSimulation: timeStep must be a finite number > 0 s");
+            CheckTimeStep(timeStep);
             if (_divergenceFree && ReproducibleStepPlanning)
                 ReadMotionIntoTimeStep(); // the solves' iterations for their budget (SolveRounds), as Step reads them
             BeginFrame(substeps * timeStep);
@@ -360,6 +359,12 @@ namespace SphFluid.Simulation
             SimulatedTime += (double)substeps * timeStep;
             LastStep = new StepReport(substeps, timeStep, substeps * timeStep, false, _timeStep.StableTimeStep(out string limit), limit,
                 _scene.Settings.PressureSolver);
+        }
+
+        static void CheckTimeStep(float timeStep)
+        {
+            if (!(timeStep > 0f) || float.IsInfinity(timeStep))
+                throw new ArgumentOutOfRangeException(nameof(timeStep), timeStep, "FluidSimulation: timeStep must be a finite number > 0 s");
         }
 
         /// <summary>The plan and keywords for this frame, and the walls where it starts: <paramref name="sweepSeconds"/>
@@ -721,6 +726,7 @@ namespace SphFluid.Simulation
         {
             ThrowIfDisposed();
             if (!_divergenceFree) throw new InvalidOperationException("FluidSimulation: PredictVelocities is DFSPH's sub-step start");
+            CheckTimeStep(timeStep);
             BeginFrame(0f);
             SetTimeStep(timeStep);
             SortAndComputeForces();
@@ -737,6 +743,7 @@ namespace SphFluid.Simulation
         {
             ThrowIfDisposed();
             if (!_divergenceFree) throw new InvalidOperationException("FluidSimulation: Drift is DFSPH's drift");
+            CheckTimeStep(timeStep);
             BeginFrame(0f);
             SetTimeStep(timeStep);
             SortAndComputeForces(false);
