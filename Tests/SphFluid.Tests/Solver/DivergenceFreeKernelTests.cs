@@ -94,6 +94,14 @@ namespace SphFluid.Tests.Solver
             MatchesReference(scene, false, 1f, lanes, 1, drop: 0.3f * spacing, sink: 0.5f);
         }
 
+        /// <summary>Two particles at one place: a pair without a direction takes one from the particles' ids
+        /// (SphPressureForce.hlsl's PairDirection), which the correction reads for such a pair only, since it takes its
+        /// neighbours' positions from the solve's own buffer (_SolverParticles) rather than from the particles.</summary>
+        [TestCase(1, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_TwoParticlesAtOnePlace")]
+        [TestCase(8, TestName = "Dfsph_OneIterationOfEachSolveMatchesReference_TwoParticlesAtOnePlaceEightLanes")]
+        public void TwoParticlesAtOnePlaceMatchReference(int lanes) =>
+            MatchesReference(Block(false), false, 0.97f, lanes, 1, atOnePlace: true);
+
         /// <summary>Three rounds: the first takes d_0 = z_0 / theta, the next two carry the last step (beta_k d_{k-1}), and
         /// the projection keeps each particle's summed q at or above zero (DivergenceFreeSolver.hlsl's Chebyshev acceleration).</summary>
         const int ChebyshevRounds = 3;
@@ -116,11 +124,13 @@ namespace SphFluid.Tests.Solver
         }
 
         static void MatchesReference(FluidSceneDescription scene, bool multiphase, float squeeze, int lanes, int iterations,
-            float drop = 0f, float sink = 0f)
+            float drop = 0f, float sink = 0f, bool atOnePlace = false)
         {
             using var sim = new FluidSimulation(GpuTestDevice.Shared, scene) { LanesPerParticle = lanes };
             Assert.That(sim.PhaseRows[0].WallWeightScale, multiphase ? Is.EqualTo(0.08 / 0.078).Within(1e-4) : Is.EqualTo(1.0).Within(1e-6));
             var input = Compressed(scene, sim.ParticleCount, squeeze, drop, sink);
+            if (atOnePlace)
+                input[6].Position = input[5].Position; // ids above 0, so that a direction signed by a lost id (0) differs
             sim.SetParticles(input);
             var counts = new uint[sim.ParticleCount + sim.BoundaryCount];
             sim.NeighbourCounts.GetData(counts);

@@ -73,8 +73,9 @@ void DensityFactor(uint3 id : SV_DispatchThreadID, uint3 groupThread : SV_GroupT
     if (!StoreDensityFactor(id.x, groupThread.x))
         return;
     uint i = LaneOwner(id.x);
-    uint particleId = _Particles[i].id;
-    _SolverStiffness[i] = DIVERGENCE_WARM_START * _WarmStart[particleId].y;
+    Particle p = _Particles[i];
+    uint particleId = p.id;
+    _SolverParticles[i] = float4(p.position, DIVERGENCE_WARM_START * _WarmStart[particleId].y);
     _WarmStart[particleId] = float2(_WarmStart[particleId].x, 0.0); // ApplyStiffness counts the warm start as it applies it
 }
 

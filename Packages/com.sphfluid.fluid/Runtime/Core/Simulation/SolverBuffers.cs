@@ -76,7 +76,7 @@ namespace SphFluid.Simulation
             new Binding("_Obstacles", b => b.Obstacles, Readers.Both, Group.Fixed),
             new Binding("_ClampHits", b => b.ClampHits, Readers.Both, Group.Fixed),
             new Binding("_DivergenceFreeFactors", b => b.Factors, Readers.Solver, Group.Fixed),
-            new Binding("_SolverStiffness", b => b.SolverStiffness, Readers.Solver, Group.Fixed),
+            new Binding("_SolverParticles", b => b.SolverParticles, Readers.Solver, Group.Fixed),
             new Binding("_WarmStart", b => b.WarmStart, Readers.Solver, Group.Fixed),
             new Binding("_SolverPartials", b => b.SolverPartials, Readers.Solver, Group.Fixed),
             new Binding("_SolverState", b => b.SolverState, Readers.Both, Group.Fixed),
@@ -119,7 +119,7 @@ namespace SphFluid.Simulation
 
         public IComputeBuffer Particles, ParticlesOther;
         public IComputeBuffer Phases, Densities, Normals, Rotations, Accelerations, VelocityCorrections, Shifts, Obstacles, ClampHits;
-        public IComputeBuffer Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
+        public IComputeBuffer Factors, SolverParticles, WarmStart, SolverPartials, SolverState, SolverArguments, DivergenceRates;
         public IComputeBuffer NumberDensities, NumberDensitiesHalf, DensityRates; // delta-SPH (SphDensityDiffusion.hlsl)
         public IComputeBuffer ViscosityStart, ViscosityTargets, ViscositySteps; // the implicit viscosity (ViscositySolve.hlsl)
         public IComputeBuffer MotionPartials, MotionTotals, DiagnosticsPartials, DiagnosticsTotals;
@@ -171,7 +171,7 @@ namespace SphFluid.Simulation
             Obstacles = device.CreateBuffer("FluidSimulation.Obstacles", FluidSceneDescription.MaxObstacles, Obstacle.Stride);
             ClampHits = Zeroed("FluidSimulation.ClampHits", 1, 4);
             Factors = Zeroed("FluidSimulation.DivergenceFreeFactors", n, 4);
-            SolverStiffness = Zeroed("FluidSimulation.SolverStiffness", n, 4);
+            SolverParticles = Zeroed("FluidSimulation.SolverParticles", n, 16);
             WarmStart = Zeroed("FluidSimulation.WarmStart", n, 8);
             // One error sum per phase and group of the laned error pass, at the most lanes a particle can be given.
             SolverPartials = Zeroed("FluidSimulation.SolverPartials", phaseTable.Length * ComputeDispatch.GroupsFor(n * NeighbourLanes.Max, FluidSimulation.ParticleThreads), 4);
@@ -296,12 +296,12 @@ namespace SphFluid.Simulation
         public void Dispose()
         {
             foreach (var buffer in new[] { Particles, ParticlesOther, Phases, Densities, Normals, Rotations, Accelerations, VelocityCorrections, Shifts,
-                         Obstacles, ClampHits, Factors, SolverStiffness, WarmStart, SolverPartials, SolverState, SolverArguments,
+                         Obstacles, ClampHits, Factors, SolverParticles, WarmStart, SolverPartials, SolverState, SolverArguments,
                          DivergenceRates, NumberDensities, NumberDensitiesHalf, DensityRates, ViscosityStart, ViscosityTargets, ViscositySteps, MotionPartials,
                          MotionTotals, DiagnosticsPartials, DiagnosticsTotals, Constants })
                 buffer?.Dispose();
             Particles = ParticlesOther = Phases = Densities = Normals = Rotations = Accelerations = VelocityCorrections = Shifts = null;
-            Obstacles = ClampHits = Factors = SolverStiffness = WarmStart = SolverPartials = SolverState = SolverArguments = null;
+            Obstacles = ClampHits = Factors = SolverParticles = WarmStart = SolverPartials = SolverState = SolverArguments = null;
             NumberDensities = NumberDensitiesHalf = DensityRates = ViscosityStart = ViscosityTargets = ViscositySteps = null;
             DivergenceRates = MotionPartials = MotionTotals = DiagnosticsPartials = DiagnosticsTotals = Constants = null;
             ReleaseBoundary();
