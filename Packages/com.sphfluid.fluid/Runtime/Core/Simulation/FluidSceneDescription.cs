@@ -93,7 +93,7 @@ namespace SphFluid.Simulation
             Settings.Validate(errors, "Settings.");
             bool settingsOk = errors.Count == 0;
 
-            ValidateContainer(errors);
+            ValidateContainer(errors, settingsOk);
             ValidateBoxes(errors, settingsOk);
             ValidateObstacles(errors);
             if (errors.Count > 0) return errors;
@@ -114,7 +114,9 @@ namespace SphFluid.Simulation
             return errors;
         }
 
-        internal void ValidateContainer(List<ValidationError> errors)
+        /// <summary>The container's own rules; its least size and wall count follow from the spacing, so they are checked only
+        /// with <paramref name="settingsOk"/> (a refused spacing would name a range such as [2E+30, 1000] m here too).</summary>
+        internal void ValidateContainer(List<ValidationError> errors, bool settingsOk = true)
         {
             const string owner = "Container";
             if (Container == null)
@@ -124,7 +126,7 @@ namespace SphFluid.Simulation
             }
             ValidationRules.Finite(errors, owner, "Container.", nameof(ContainerDescription.Position), Container.Position, 1e6f, "m");
             ValidationRules.Rotation(errors, owner, "Container.", nameof(ContainerDescription.Rotation), Container.Rotation);
-            float minSize = Settings.ParticleSpacing > 0 ? 2f * Settings.ParticleSpacing : 0f;
+            float minSize = settingsOk ? 2f * Settings.ParticleSpacing : 0f;
             var size = Container.Size;
             if (!(ValidationRules.IsFinite(size.X) && ValidationRules.IsFinite(size.Y) && ValidationRules.IsFinite(size.Z))
                 || size.X < minSize || size.Y < minSize || size.Z < minSize || size.X > 1000f || size.Y > 1000f || size.Z > 1000f)
@@ -132,7 +134,7 @@ namespace SphFluid.Simulation
                 errors.Add(new ValidationError("Container.Size",
                     $"Container: each Size component must be in [{ValidationRules.Format(minSize)}, 1000] m (two particle spacings or more) (was {ValidationRules.Format(size)})"));
             }
-            else if (Settings.ParticleSpacing > 0 && Settings.SmoothingRadius > 0)
+            else if (settingsOk)
             {
                 long walls = BoundarySampling.ContainerCount(size, Settings.ParticleSpacing, Settings.SmoothingRadius);
                 if (walls > MaxBoundaryParticles)

@@ -27,6 +27,20 @@ namespace SphFluid.Tests.Core.Simulation
         }
 
         [Test]
+        public void ARefusedSpacing_IsNotCarriedIntoTheContainersLeastSize()
+        {
+            // The container's least size is two spacings: a spacing typed as 1e30 named the range [2E+30, 1000] m there.
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.Settings.ParticleSpacing = 1e30f;
+            var errors = scene.Validate();
+            Assert.That(errors.Select(e => e.Field).ToArray(), Has.Member("Settings.ParticleSpacing"));
+            Assert.That(errors.Select(e => e.Field).ToArray(), Has.No.Member("Container.Size"));
+            scene.Settings.ParticleSpacing = 0.02f;
+            scene.Container.Size = new Vector3(0.03f, 0.5f, 0.5f);
+            Assert.That(Messages(scene), Has.Member("Container: each Size component must be in [0.04, 1000] m (two particle spacings or more) (was (0.03, 0.5, 0.5))"));
+        }
+
+        [Test]
         public void SmoothingRadiusOutsideRatio_IsRefused()
         {
             var scene = SimulationTestScenes.OilOnWater();
