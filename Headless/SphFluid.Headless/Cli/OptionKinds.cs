@@ -78,7 +78,8 @@ public static class OptionKinds
     }
 
     /// <summary>A list of values (<c>--particles 4000 16000</c> or <c>4000,16000</c>); an empty entry is refused by
-    /// name instead of silently running with fewer values.</summary>
+    /// name instead of silently running with fewer values, and a value given twice (<c>1 1.0</c>, or the option repeated)
+    /// instead of running its configuration twice.</summary>
     public static Option<List<T>> List<T>(string command, string name, string valueName, string description, Func<string, T> parse)
     {
         var option = new Option<List<T>>(name)
@@ -94,7 +95,15 @@ public static class OptionKinds
             }
             try
             {
-                return r.Tokens.SelectMany(t => t.Value.Split(',', StringSplitOptions.TrimEntries)).Select(parse).ToList();
+                var values = new List<T>();
+                foreach (string text in r.Tokens.SelectMany(t => t.Value.Split(',', StringSplitOptions.TrimEntries)))
+                {
+                    T value = parse(text);
+                    if (values.Contains(value))
+                        throw new UsageException($"{command}: {name} lists {text} twice; give each value once");
+                    values.Add(value);
+                }
+                return values;
             }
             catch (UsageException e)
             {

@@ -107,6 +107,26 @@ namespace SphFluid.Tests.Runner
             Assert.That(err, Does.Contain("--particles-scales must be in [0.01, 4096]"));
         }
 
+        [TestCase("bench", "--particles-scales", "1", "1.0", "--particles-scales lists 1.0 twice")]
+        [TestCase("bench", "--particles", "4000,4000", "", "--particles lists 4000 twice")]
+        [TestCase("study", "--cfl", "0.3", "0.2,0.3", "--cfl lists 0.3 twice")]
+        [TestCase("study", "--solver-iterations", "jacobi", "Jacobi", "--solver-iterations lists Jacobi twice")]
+        public void AListOptionRefusesAValueGivenTwice(string command, string option, string first, string second, string message)
+        {
+            // Each value is a configuration run: given twice, it ran twice and the study's table held the row twice.
+            var args = new List<string> { command, "x.unity", option, first };
+            if (second.Length > 0) args.Add(second);
+            Assert.That(Run(out _, out string err, args.ToArray()), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.Contain($"{command}: {message}; give each value once"));
+        }
+
+        [Test]
+        public void ARepeatedListOptionAddsItsValues()
+        {
+            var options = StudyOptions.Parse(new[] { "x.unity", "--cfl", "0.3", "--cfl", "0.2" });
+            Assert.That(options.CflNumbers, Is.EqualTo(new[] { 0.3, 0.2 }));
+        }
+
         [Test]
         public void AnUnknownCommandAndNoArgumentsAreBadArguments()
         {
