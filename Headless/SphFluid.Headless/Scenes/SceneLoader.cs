@@ -187,6 +187,7 @@ public static class SceneLoader
         {
             var node = mb.Root.At(field);
             if (node == null) return fallback;
+            RequireComponents(go, component, field, node, "x", "y", "z");
             try { return mb.Root.GetVector3(field); }
             catch (FormatException) { throw new SceneException($"{path}:{UnreadableLine(node, "x", "y", "z")}: {Where(go, component, field)} must be {allowed} (was '{node}')"); }
         }
@@ -195,8 +196,23 @@ public static class SceneLoader
         {
             var node = mb.Root.At(field);
             if (node == null) return fallback;
+            RequireComponents(go, component, field, node, "r", "g", "b", "a");
             try { return mb.Root.GetColor(field); }
             catch (FormatException) { throw new SceneException($"{path}:{UnreadableLine(node, "r", "g", "b", "a")}: {Where(go, component, field)} must be {allowed} (was '{node}')"); }
+        }
+
+        /// <summary>A vector or colour as Unity writes it, every component and no other: a misspelt component (<c>alpha:</c>)
+        /// was dropped and the colour's alpha read as 1. The values themselves are the reader's to parse.</summary>
+        void RequireComponents(UnityGameObject go, string component, string field, UnityYamlNode node, params string[] components)
+        {
+            if (!node.IsMapping) return;
+            string written = string.Join(", ", components);
+            foreach (var (key, value) in node.Entries)
+                if (Array.IndexOf(components, key) < 0)
+                    throw new SceneException($"{path}:{value.Line}: {Where(go, component, field)} has no component '{key}' (Unity writes {written})");
+            foreach (string c in components)
+                if (node[c] == null)
+                    throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} lacks its '{c}' (Unity writes {written})");
         }
 
         /// <summary>The line of the first component that holds no number, else the whole value's.</summary>
@@ -295,10 +311,12 @@ public static class SceneLoader
 
         /// <summary>A component's serialized settings object, field by declared field, through the declared blocks it
         /// holds (<see cref="SettingRules.DeclaredPaths"/>): the names, types and defaults are the core class's own, so
-        /// a new setting needs no line here. A missing field keeps its default, as in Unity.</summary>
+        /// a new setting needs no line here. A missing field keeps its default, as in Unity; a key no field declares is
+        /// refused (<see cref="RefuseUndeclaredKeys"/>).</summary>
         T ReadDeclared<T>(UnityGameObject go, UnityDocument mb, string component, string prefix) where T : new()
         {
             var values = new T();
+            RefuseUndeclaredKeys(go, mb, component, prefix, SettingRules.DeclaredPaths(typeof(T)), typeof(T).Name);
             foreach (var declared in SettingRules.DeclaredPaths(typeof(T)))
             {
                 var type = declared.Field.FieldType;
@@ -315,6 +333,38 @@ public static class SceneLoader
                 declared.SetValue(values, value);
             }
             return values;
+        }
+
+        /// <summary>
+        /// Unity drops a key that no field declares and the field keeps its default, so in a hand-edited scene a misspelt
+        /// setting (<c>ParticleSpaceing: 0.015</c>) ran silently at the default spacing. Unity writes only declared fields,
+        /// so such a key is refused where it stands, with the fields its block declares. A vector's or colour's own
+        /// components are their readers' to check (<see cref="RequireComponents"/>).
+        /// </summary>
+        void RefuseUndeclaredKeys(UnityGameObject go, UnityDocument mb, string component, string prefix,
+            IReadOnlyList<SettingPath> declared, string typeName)
+        {
+            var block = mb.Root.At(prefix);
+            if (block == null || !block.IsMapping) return;
+            Refuse(block, "");
+
+            void Refuse(UnityYamlNode node, string within)
+            {
+                foreach (var (key, child) in node.Entries)
+                {
+                    string keyPath = within + key;
+                    if (declared.Any(d => d.Path == keyPath)) continue;
+                    if (child.IsMapping && declared.Any(d => d.Path.StartsWith(keyPath + ".", StringComparison.Ordinal)))
+                    {
+                        Refuse(child, keyPath + ".");
+                        continue;
+                    }
+                    var fields = declared.Where(d => d.Path.StartsWith(within, StringComparison.Ordinal))
+                        .Select(d => d.Path.Substring(within.Length).Split('.')[0]).Distinct();
+                    throw new SceneException($"{path}:{child.Line}: {Where(go, component, prefix + "." + keyPath)}: no field of {typeName}{(within.Length > 0 ? "." + within.TrimEnd('.') : "")} " +
+                        $"is named '{key}', so Unity would drop it and keep the field's default (its fields: {string.Join(", ", fields)})");
+                }
+            }
         }
 
         /// <summary>Refuses a motion law's first out-of-range field, naming the file, line, GameObject and field.</summary>

@@ -390,6 +390,17 @@ namespace SphFluid.Tests.Runner
         public void AValueReadAsAnotherIsRefusedAtItsLine(string header, string find, string replace, string located) =>
             AssertRefusedAtTheEditedLine(header, find, replace, located, located);
 
+        /// <summary>Unity drops a key no field declares and keeps the field's default: a misspelt setting ran the scene at
+        /// the default spacing (1 800 particles instead of 4 160), a misspelt alpha drew the oil opaque.</summary>
+        [TestCase("--- !u!114 &1249553504", "ParticleSpacing: 0.015", "ParticleSpaceing: 0.015",
+            "GameObject 'Fluid', Fluid.settings.ParticleSpaceing: no field of FluidSettings is named 'ParticleSpaceing', so Unity would drop it and keep the field's default (its fields: ParticleSpacing, SmoothingRadius,")]
+        [TestCase("--- !u!114 &287989891", "RestDensity: 900", "RestDensty: 900",
+            "GameObject 'Oil', SpawnBox.spawn.Phase.RestDensty: no field of FluidBlock.Phase is named 'RestDensty', so Unity would drop it and keep the field's default (its fields: Name, RestDensity, Viscosity,")]
+        [TestCase("--- !u!114 &287989891", "a: 0.85", "alpha: 0.85", "GameObject 'Oil', SpawnBox.spawn.Phase.Color has no component 'alpha' (Unity writes r, g, b, a)")]
+        [TestCase("--- !u!114 &1249553504", "y: -9.81", "w: -9.81", "GameObject 'Fluid', Fluid.settings.Gravity has no component 'w' (Unity writes x, y, z)")]
+        public void AKeyUnityWouldDropIsRefusedAtItsLine(string header, string find, string replace, string located) =>
+            AssertRefusedAtTheEditedLine(header, find, replace, located, located);
+
         [Test]
         public void AColourChannelBeyondOneIsRefusedAtItsLineWithTheRange()
         {
