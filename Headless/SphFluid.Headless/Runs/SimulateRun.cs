@@ -116,6 +116,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         stdout.WriteLine(sim.Plan.ToString());
         stdout.WriteLine(SolverChoice.Describe(settings, sim));
         if (_solverNote != null) stdout.WriteLine(_solverNote);
+        if (FreeVolume.Warning(description) is string crowded) stderr.WriteLine($"simulate: warning: {crowded}");
         stdout.WriteLine(string.Format(C, "device: {0}", DeviceFactory.Describe(device)));
         stdout.WriteLine(string.Format(C, "run: {0:G4} s simulated in {1} frames of {2:G4} ms; output: {3}", duration, frames, options.FrameSeconds * 1000, Path.GetFullPath(output.Path))
             + (options.ExportEvery > 0 ? string.Format(C, "; exports every {0:G4} s: {1} of {2:F2} MB", options.ExportEvery,

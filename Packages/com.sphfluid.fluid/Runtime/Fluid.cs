@@ -249,6 +249,7 @@ namespace SphFluid.Runtime
                 return;
             }
 
+            if (FreeVolume.Warning(scene) is string crowded) Debug.LogWarning($"Fluid '{name}': {crowded}", this);
             _health = new HealthCheck(scene, _simulation.ParticleCount);
             _cutOffs = new SolveCutOffs();
             _cutOffsWarned = false;
