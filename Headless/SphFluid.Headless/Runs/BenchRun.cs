@@ -76,6 +76,8 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
                 scene.Path, DeviceFactory.Describe(device), options.Warmup, options.WarmupSeconds, options.Steps));
             stdout.WriteLine(SolverChoice.Describe(descriptions[0].Settings));
             if (_solverNote != null) stdout.WriteLine(_solverNote);
+            if (descriptions.Select(FreeVolume.Warning).FirstOrDefault(w => w != null) is string crowded)
+                stderr.WriteLine($"bench: warning: {crowded}");
             SolverName = SolverChoice.ShortName(descriptions[0].Settings.PressureSolver);
             for (int i = 0; i < descriptions.Count; i++)
             {

@@ -96,6 +96,9 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
             stdout.WriteLine(string.Format(C, "study: {0} on {1}; {2} configuration(s) of {3:G3} s simulated each{4}", scene.Path, DeviceFactory.Describe(device), configs.Count,
                 options.Seconds, options.Quick ? " (--quick)" : ""));
             if (_supportNote != null) stdout.WriteLine(_supportNote + " (the DFSPH rows)");
+            var crowded = descriptions.Select(FreeVolume.Warning).Where(w => w != null).ToList();
+            if (crowded.Count > 0)
+                stderr.WriteLine($"study: warning: {crowded.Count} of the configurations (their cut-off column shows the cost): {crowded[0]}");
             for (int i = 0; i < configs.Count; i++)
             {
                 double scale = configs[i].ParticleScale;
