@@ -414,7 +414,7 @@ namespace SphFluid.Tests.Runner
             var run = Simulate(path, "--solver", "dfsph");
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.Ok));
-            Assert.That(run.Stderr, Does.Contain("simulate: warning: under DFSPH the fluid (0.0144 m^3) leave 0 m^3 of the closed 0.0144 m^3 container free, " +
+            Assert.That(run.Stderr, Does.Contain("simulate: warning: under DFSPH the fluid (0.0144 m^3) leaves 0 m^3 of the closed 0.0144 m^3 container free, " +
                 "less than the 1.44E-05 m^3 (DensityTolerance 0.1 % of the fluid's volume)"));
             Assert.That(Simulate(path).Stderr, Does.Not.Contain("warning"), "WCSPH");
             Assert.That(Simulate(RunnerPaths.Scene(Default), "--solver", "dfsph").Stderr, Does.Not.Contain("warning"), "the scene as shipped");
@@ -422,11 +422,11 @@ namespace SphFluid.Tests.Runner
             var bench = Run(60, "bench", path, "--solver", "dfsph", "--particles-scales", "0.1", "--warmup", "0", "--warmup-seconds", "0",
                 "--steps", "1", "--skip-savings", "--out", RunnerPaths.ScratchFolder("bad-input-bench"));
             Assert.That(bench.Code, Is.EqualTo(ExitCodes.Ok));
-            Assert.That(bench.Stderr, Does.Contain("bench: warning: under DFSPH the fluid (0.0144 m^3) leave 0 m^3"));
+            Assert.That(bench.Stderr, Does.Contain("bench: warning: under DFSPH the fluid (0.0144 m^3) leaves 0 m^3"));
             var study = Run(60, "study", path, "--solvers", "wcsph,dfsph", "--density-tolerances", "0.1", "--particles-scales", "0.1",
                 "--cfl", "0.3", "--seconds", "0.01", "--out", RunnerPaths.ScratchFolder("bad-input-study"));
             Assert.That(study.Code, Is.EqualTo(ExitCodes.Ok));
-            Assert.That(study.Stderr, Does.Contain("study: warning: 1 of the configurations (their cut-off column shows the cost): under DFSPH the fluid (0.0144 m^3) leave 0 m^3"));
+            Assert.That(study.Stderr, Does.Contain("study: warning: 1 of the configurations (their cut-off column shows the cost): under DFSPH the fluid (0.0144 m^3) leaves 0 m^3"));
         }
 
         [Test]

@@ -31,8 +31,8 @@ namespace SphFluid.Simulation
             double free = container - fluid - obstacles;
             double needed = settings.DensityTolerance / 100.0 * fluid;
             if (free >= needed) return null;
-            return $"under DFSPH the fluid ({ValidationRules.Format(fluid)} m^3){(obstacles > 0 ? $" and the sphere obstacles ({ValidationRules.Format(obstacles)} m^3)" : "")} " +
-                $"leave {ValidationRules.Format(Math.Max(0.0, free))} m^3 of the closed {ValidationRules.Format(container)} m^3 container free, less than the " +
+            return $"under DFSPH the fluid ({ValidationRules.Format(fluid)} m^3){(obstacles > 0 ? $" and the sphere obstacles ({ValidationRules.Format(obstacles)} m^3) leave" : " leaves")} " +
+                $"{ValidationRules.Format(Math.Max(0.0, free))} m^3 of the closed {ValidationRules.Format(container)} m^3 container free, less than the " +
                 $"{ValidationRules.Format(needed)} m^3 (DensityTolerance {ValidationRules.Format(settings.DensityTolerance)} % of the fluid's volume) its " +
                 "constant-density solve needs to take a compression away: its solves may run out of iterations while the pressure climbs. " +
                 $"Give the container {ValidationRules.Format(needed - free)} m^3 more room (its height {ValidationRules.Format((needed - free) / ((double)size.X * size.Z))} m more), spawn less fluid, or run WCSPH";

@@ -23,7 +23,7 @@ namespace SphFluid.Tests.Core.Simulation
         public void AFluidThatFillsItsContainerIsWarnedOfUnderDfsphOnly()
         {
             string warning = FreeVolume.Warning(Lidded(0f));
-            Assert.That(warning, Does.StartWith("under DFSPH the fluid (0.06 m^3) leave "));
+            Assert.That(warning, Does.StartWith("under DFSPH the fluid (0.06 m^3) leaves "));
             Assert.That(warning, Does.Contain("of the closed 0.06 m^3 container free, less than the 6E-05 m^3 (DensityTolerance 0.1 % of the fluid's volume)"));
             Assert.That(warning, Does.Contain("(its height 0.00024"));
             Assert.That(FreeVolume.Warning(Lidded(0f, PressureSolver.Wcsph)), Is.Null, "WCSPH compresses instead");
