@@ -27,19 +27,31 @@ namespace SphFluid.Tests.Physics
     /// </summary>
     internal static class InternalSeiche
     {
-        /// <summary>Two layers at rest: upper (light) over lower (heavy), depths in m, densities in kg/m^3, dynamic
+        /// <summary>Two layers at rest: upper over lower (the upper the lighter for a seiche), depths in m, densities in kg/m^3, dynamic
         /// viscosities in Pa s; free-slip walls and floor (<paramref name="NoSlipWalls"/> false) take no Stokes layer.</summary>
         internal sealed record Tank(double Length, double Width, double Gravity,
             double UpperDepth, double UpperDensity, double UpperViscosity,
             double LowerDepth, double LowerDensity, double LowerViscosity, bool NoSlipWalls = true);
 
         /// <summary>The fundamental internal mode's angular frequency, rad/s.</summary>
-        internal static double AngularFrequency(Tank t)
+        internal static double AngularFrequency(Tank t) => Math.Sqrt(InternalRootSquared(t));
+
+        /// <summary>
+        /// The fundamental interface mode's growth rate s, 1/s, when the upper layer is the heavier (Rayleigh-Taylor: the
+        /// interface's amplitude grows as cosh(s t) from rest), or 0 when the layers are stable. The same two-layer relation as
+        /// <see cref="AngularFrequency"/>, whose slow root omega^2 turns negative when the lower layer is the lighter:
+        /// Lamb's relation holds for any two densities, and then -omega^2 = s^2 (Chandrasekhar, "Hydrodynamic and
+        /// Hydromagnetic Stability", ch. X, for unbounded layers: s^2 = g k (rho1 - rho2) / (rho1 + rho2)).
+        /// </summary>
+        internal static double GrowthRate(Tank t) => Math.Sqrt(Math.Max(0, -InternalRootSquared(t)));
+
+        /// <summary>The slow root omega^2 of Lamb's two-layer relation with a free surface at k = pi / L, (rad/s)^2.</summary>
+        static double InternalRootSquared(Tank t)
         {
             double k = Math.PI / t.Length, cu = 1 / Math.Tanh(k * t.UpperDepth), cl = 1 / Math.Tanh(k * t.LowerDepth);
             double a = t.LowerDensity * cu * cl + t.UpperDensity, b = t.LowerDensity * t.Gravity * k * (cu + cl);
             double c = (t.LowerDensity - t.UpperDensity) * t.Gravity * t.Gravity * k * k;
-            return Math.Sqrt((b - Math.Sqrt(b * b - 4 * a * c)) / (2 * a));
+            return (b - Math.Sqrt(b * b - 4 * a * c)) / (2 * a);
         }
 
         /// <summary>The amplitude's laminar decay rate gamma, 1/s (amplitude ~ exp(-gamma t)).</summary>
@@ -86,15 +98,15 @@ namespace SphFluid.Tests.Physics
         /// fluid's lattice beside it as the fluid's own neighbours do (DFSPH since its walls' pressure floor, WCSPH's
         /// mirrored walls throughout). So
         ///   R_max = yieldRatio L ((2 rho1 d1 + rho2 d2) W + [2 d2 (rho1 d1 + rho2 d2 / 2)]) / ((rho2 - rho1) W d2),
-        /// the bracket with side walls, whatever g. An interface tilted by more cannot stand still; one within it can (and
-        /// may still creep into place).
+        /// the bracket with side walls, whatever g, and with |rho2 - rho1| when the upper layer is the heavier, whose push
+        /// is the same. An interface tilted by more cannot stand still; one within it can (and may still creep into place).
         /// </summary>
         internal static double HeldRise(Tank t, double yieldRatio, bool sideWalls)
         {
             double d1 = t.UpperDepth, d2 = t.LowerDepth, rho1 = t.UpperDensity, rho2 = t.LowerDensity;
             double planes = (2 * rho1 * d1 + rho2 * d2) * t.Width;
             double walls = sideWalls ? 2 * d2 * (rho1 * d1 + rho2 * d2 / 2) : 0;
-            return yieldRatio * t.Length * (planes + walls) / ((rho2 - rho1) * t.Width * d2);
+            return yieldRatio * t.Length * (planes + walls) / (Math.Abs(rho2 - rho1) * t.Width * d2);
         }
 
         /// <summary>

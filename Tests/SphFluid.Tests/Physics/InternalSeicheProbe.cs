@@ -63,29 +63,38 @@ namespace SphFluid.Tests.Physics
             _tilt = tilted.Success ? int.Parse(tilted.Groups[1].Value) : 0;
         }
 
+        /// <summary>Each layer's depth as <see cref="TiltLayers"/> lays it, m.</summary>
+        internal const double LayerDepth = 0.105;
+
+        /// <summary>Whole spacings nearest <see cref="LayerDepth"/>.</summary>
+        internal static int LayerSpacings(float spacing) => (int)Math.Round(LayerDepth / spacing);
+
         /// <summary>
-        /// The layers already in place, each seven spacings deep (105 mm; whole spacings, so every box's lattice is
-        /// cubic and both phases keep one particle mass), with the interface displaced by the fundamental seiche mode,
+        /// The layers already in place, each <see cref="LayerDepth"/> deep (seven of the scene's spacings; whole spacings at any
+        /// spacing, so every box's lattice is cubic and both phases keep one particle mass), with the interface displaced by the fundamental seiche mode,
         /// -s round(n cos(pi x / L)) for x from the left wall, in columns two spacings wide: a staircase n spacings up at
         /// one end and down at the other. The free surface starts flat, so the start excites the internal mode and
-        /// hardly the surface's, and no lock exchange or bore precedes the seiche.
+        /// hardly the surface's, and no lock exchange or bore precedes the seiche. With <paramref name="waterOnTop"/> the
+        /// water lies over the oil instead (<see cref="RayleighTaylorProbe"/>).
         /// </summary>
-        static void TiltLayers(FluidSceneDescription scene, int spacings)
+        internal static void TiltLayers(FluidSceneDescription scene, int spacings, bool waterOnTop = false)
         {
+            int layer = LayerSpacings(scene.Settings.ParticleSpacing);
             var boxes = scene.SpawnBoxes;
             var oil = boxes.First(b => b.Phase.RestDensity < boxes.Max(o => o.Phase.RestDensity));
             var water = boxes.First(b => b.Phase.RestDensity == boxes.Max(o => o.Phase.RestDensity));
             var container = scene.Container;
             float s = scene.Settings.ParticleSpacing, width = 2 * s, floor = container.Position.Y - container.Size.Y / 2;
-            int columns = (int)Math.Round(container.Size.X / width), layer = 7;
+            int columns = (int)Math.Round(container.Size.X / width);
+            var (lower, upper) = waterOnTop ? (oil, water) : (water, oil);
             var tilted = new List<FluidBlock>();
             for (int c = 0; c < columns; c++)
             {
                 int rise = -(int)Math.Round(spacings * Math.Cos(Math.PI * (c + 0.5) / columns));
                 float x = container.Position.X - container.Size.X / 2 + (c + 0.5f) * width;
-                float waterDepth = (layer + rise) * s, oilDepth = (layer - rise) * s;
-                tilted.Add(Column(water, x, floor + waterDepth / 2, waterDepth));
-                tilted.Add(Column(oil, x, floor + waterDepth + oilDepth / 2, oilDepth));
+                float lowerDepth = (layer + rise) * s, upperDepth = (layer - rise) * s;
+                tilted.Add(Column(lower, x, floor + lowerDepth / 2, lowerDepth));
+                tilted.Add(Column(upper, x, floor + lowerDepth + upperDepth / 2, upperDepth));
             }
             scene.SpawnBoxes = tilted;
 

@@ -100,6 +100,32 @@ namespace SphFluid.Tests.Physics
             Assert.That(InternalSeiche.AngularFrequency(deep), Is.EqualTo(expected).Within(1e-6 * expected));
         }
 
+        /// <summary>Heavy over light, both deep beside the wavelength: Rayleigh-Taylor's s^2 = g k (rho1 - rho2) / (rho1 + rho2)
+        /// (Chandrasekhar, ch. X), the same relation's other sign; the stable layers have none.</summary>
+        [Test]
+        public void DeepLayersHeavyOverLight_GrowAtTheRayleighTaylorRate()
+        {
+            var inverted = OilAndWater with { UpperDepth = 10, UpperDensity = 1000, LowerDepth = 10, LowerDensity = 900 };
+            double k = Math.PI / inverted.Length;
+            double expected = Math.Sqrt(inverted.Gravity * k * (1000 - 900) / (1000 + 900.0));
+            Assert.That(InternalSeiche.GrowthRate(inverted), Is.EqualTo(expected).Within(1e-6 * expected));
+            Assert.That(InternalSeiche.GrowthRate(OilAndWater), Is.EqualTo(0.0));
+        }
+
+        /// <summary>Seven spacings (105 mm) of water over as much oil in the 0.6 m tank (<see cref="RayleighTaylorProbe"/>):
+        /// under a rigid lid the relation reads s^2 = g k (rho1 - rho2) / (rho1 coth k d1 + rho2 coth k d2) = 1.3527 s^-2;
+        /// the free surface, which a heavy layer's interface lifts, lets it grow a little faster, 1.3804 s^-2.</summary>
+        [Test]
+        public void WaterOverOil_GrowsAboutOnceASecond()
+        {
+            var inverted = OilAndWater with { UpperDepth = 0.105, UpperDensity = 1000, LowerDepth = 0.105, LowerDensity = 900 };
+            double k = Math.PI / inverted.Length, coth = 1 / Math.Tanh(k * 0.105);
+            double lid = inverted.Gravity * k * 100 / (1900 * coth);
+            TestContext.Progress.WriteLine($"water over oil, 105 mm each: growth rate {InternalSeiche.GrowthRate(inverted):F4}/s, under a rigid lid {Math.Sqrt(lid):F4}/s");
+            Assert.That(lid, Is.EqualTo(1.3527).Within(0.0005));
+            Assert.That(Math.Pow(InternalSeiche.GrowthRate(inverted), 2), Is.EqualTo(1.3804).Within(0.0005));
+        }
+
         /// <summary>0.1060/s is what integrating the same slips and the interior's strain rate numerically over the tank's
         /// faces and volume gives (trapezoidal rule on a 2001 x 801 grid per layer), so the closed forms are checked
         /// against an independent sum.</summary>
