@@ -27,8 +27,9 @@ namespace SphFluid.Tests.Physics
     /// </summary>
     internal static class InternalSeiche
     {
-        /// <summary>Two layers at rest: upper over lower (the upper the lighter for a seiche), depths in m, densities in kg/m^3, dynamic
-        /// viscosities in Pa s; free-slip walls and floor (<paramref name="NoSlipWalls"/> false) take no Stokes layer.</summary>
+        /// <summary>Two layers at rest: upper over lower (the upper the lighter for a seiche), depths in m, densities in
+        /// kg/m^3, dynamic viscosities in Pa s; free-slip walls and floor (<paramref name="NoSlipWalls"/> false) take no
+        /// Stokes layer.</summary>
         internal sealed record Tank(double Length, double Width, double Gravity,
             double UpperDepth, double UpperDensity, double UpperViscosity,
             double LowerDepth, double LowerDensity, double LowerViscosity, bool NoSlipWalls = true);

@@ -70,11 +70,11 @@ namespace SphFluid.Tests.Physics
         internal static int LayerSpacings(float spacing) => (int)Math.Round(LayerDepth / spacing);
 
         /// <summary>
-        /// The layers already in place, each <see cref="LayerDepth"/> deep (seven of the scene's spacings; whole spacings at any
-        /// spacing, so every box's lattice is cubic and both phases keep one particle mass), with the interface displaced by the fundamental seiche mode,
-        /// -s round(n cos(pi x / L)) for x from the left wall, in columns two spacings wide: a staircase n spacings up at
-        /// one end and down at the other. The free surface starts flat, so the start excites the internal mode and
-        /// hardly the surface's, and no lock exchange or bore precedes the seiche. With <paramref name="waterOnTop"/> the
+        /// The layers already in place, each <see cref="LayerDepth"/> deep (seven of the scene's spacings; whole spacings at
+        /// any spacing, so every box's lattice is cubic and both phases keep one particle mass), with the interface
+        /// displaced by the fundamental seiche mode, -s round(n cos(pi x / L)) for x from the left wall, in columns two
+        /// spacings wide: a staircase n spacings up at one end and down at the other. The free surface starts flat, so the
+        /// start excites the internal mode and hardly the surface's, and no lock exchange or bore precedes the seiche. With <paramref name="waterOnTop"/> the
         /// water lies over the oil instead (<see cref="RayleighTaylorProbe"/>).
         /// </summary>
         internal static void TiltLayers(FluidSceneDescription scene, int spacings, bool waterOnTop = false)

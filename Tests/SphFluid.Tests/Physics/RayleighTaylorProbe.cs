@@ -27,7 +27,7 @@ namespace SphFluid.Tests.Physics
     /// </para>
     /// <para>
     /// A lattice of particles under pressure carries a shear stress (<see cref="LatticeShearStrength"/>) that holds a
-    /// stable interface tilted by up to a bound (<see cref="InternalSeiche.HeldRise"/>); the same strength resists the
+    /// stable interface tilted by up to a bound (<see cref="InternalSeiche.HeldRise"/>); the same strength may resist the
     /// overturn, so each fixture prints that bound. Fixtures: the scene as shipped (WCSPH); DFSPH as <c>--solver dfsph</c>
     /// runs it; DFSPH with free-slip walls, which take the front and back walls' boundary layers out of it; with a tenth
     /// of the liquids' viscosity as well, the inviscid limit the theory describes, and with forty times it, at which waves
@@ -125,7 +125,7 @@ namespace SphFluid.Tests.Physics
                 var (rate, residual) = FitGrowth(times.Take(n).ToList(), amplitudes.Take(n).ToList());
                 return $"below {spacings} spacings (to {times[n - 1]:F2} s): s = {rate:F3}/s, {rate / theory:F2} of the theory's (RMS residual {1000 * residual:F1} mm)";
             }
-            // How long the start follows the theory's mode, a0 cosh(s t) from rest, before the shorter waves break.
+            // How long the start follows the theory's mode, a0 cosh(s t) from rest, before it parts from it.
             double Mode(int i) => amplitudes[0] * Math.Cosh(theory * times[i]);
             int parted = Enumerable.Range(0, amplitudes.Count).FirstOrDefault(i => Math.Abs(amplitudes[i] / Mode(i) - 1) > Following, -1);
             int last = parted < 0 ? amplitudes.Count - 1 : Math.Max(0, parted - 1);
