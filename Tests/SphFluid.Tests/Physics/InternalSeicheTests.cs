@@ -126,6 +126,47 @@ namespace SphFluid.Tests.Physics
             Assert.That(Math.Pow(InternalSeiche.GrowthRate(inverted), 2), Is.EqualTo(1.3804).Within(0.0005));
         }
 
+        /// <summary>
+        /// The growing mode's flow (<see cref="InternalSeiche.GrowingModeVelocity"/>, at the rate
+        /// <see cref="InternalSeiche.GrowthRate"/> gives) meets the interface from both sides at s a cos(k x),
+        /// leaves the floor and the end walls without a normal flow, and, since a mode growing as e^(s t) keeps its energy only
+        /// at zero, holds as much kinetic energy as the displaced layers release: (rho_upper - rho_lower) g a^2 L / 4 less
+        /// the surface's rho_upper g zeta^2 L / 4, per metre of width (the kinetic energy summed by the midpoint rule on 400
+        /// by 400 cells a layer). A wrong rate or a wrong free-surface condition breaks the balance.
+        /// </summary>
+        [Test]
+        public void TheGrowingModesFlow_HoldsTheEnergyTheLayersRelease()
+        {
+            var tank = OilAndWater with { UpperDepth = 0.105, UpperDensity = 1000, LowerDepth = 0.105, LowerDensity = 900 };
+            double a = 0.015, s = InternalSeiche.GrowthRate(tank), L = tank.Length, depth = tank.LowerDepth + tank.UpperDepth;
+            (double U, double V) At(double x, double y) => InternalSeiche.GrowingModeVelocity(tank, a, x, y);
+            for (double x = 0; x <= L; x += L / 8)
+            {
+                Assert.That(At(x, tank.LowerDepth - 1e-12).V, Is.EqualTo(s * a * Math.Cos(Math.PI * x / L)).Within(1e-9));
+                Assert.That(At(x, tank.LowerDepth + 1e-12).V, Is.EqualTo(s * a * Math.Cos(Math.PI * x / L)).Within(1e-9));
+                Assert.That(At(x, 0).V, Is.EqualTo(0).Within(1e-12));
+            }
+            for (double y = 0; y <= depth; y += depth / 8)
+            {
+                Assert.That(At(0, y).U, Is.EqualTo(0).Within(1e-12));
+                Assert.That(At(L, y).U, Is.EqualTo(0).Within(1e-12));
+            }
+
+            const int cells = 400;
+            double kinetic = 0;
+            foreach (var (bottom, thickness, density) in new[] { (0.0, tank.LowerDepth, tank.LowerDensity), (tank.LowerDepth, tank.UpperDepth, tank.UpperDensity) })
+                for (int i = 0; i < cells; i++)
+                    for (int j = 0; j < cells; j++)
+                    {
+                        var (u, v) = At((i + 0.5) * L / cells, bottom + (j + 0.5) * thickness / cells);
+                        kinetic += 0.5 * density * (u * u + v * v) * (L / cells) * (thickness / cells);
+                    }
+            double surface = At(0, depth).V / s;
+            double released = (tank.UpperDensity - tank.LowerDensity) * tank.Gravity * a * a * L / 4 - tank.UpperDensity * tank.Gravity * surface * surface * L / 4;
+            TestContext.Progress.WriteLine($"growing mode at a = {1000 * a} mm: kinetic {1000 * kinetic:F4} mJ/m, released {1000 * released:F4} mJ/m, surface {1000 * surface:F3} mm");
+            Assert.That(kinetic, Is.EqualTo(released).Within(1e-4 * released));
+        }
+
         /// <summary>0.1060/s is what integrating the same slips and the interior's strain rate numerically over the tank's
         /// faces and volume gives (trapezoidal rule on a 2001 x 801 grid per layer), so the closed forms are checked
         /// against an independent sum.</summary>
