@@ -48,20 +48,20 @@ namespace SphFluid.Tests.Physics
 
         /// <summary>
         /// The velocity (along the tank, up), m/s, at <paramref name="x"/> from the left wall and <paramref name="height"/>
-        /// above the floor, of the growing Rayleigh-Taylor mode (<see cref="GrowthRate"/>) whose interface rises at
-        /// s <paramref name="amplitude"/> cos(k x): Lamb's two layers under a free surface in potential flow, phi = P cosh(k y)
-        /// cos(k x) in the lower layer and (Q cosh(k y') + R sinh(k y')) cos(k x) in the upper (y' above the interface), the
-        /// interface moving alike from both sides (R = P sinh(k d_lower)) and the free surface's Bernoulli condition, s^2 phi
-        /// + g phi_y = 0, fixing Q. Given to a flat interface at rest it starts the growing mode and its decaying twin alone,
-        /// an interface of amplitude(t) = amplitude sinh(s t), and no surface wave.
+        /// above the floor, of the fundamental interface mode as its interface passes flat at its fastest, rising at
+        /// rate <paramref name="amplitude"/> cos(k x): rate = s for the growing Rayleigh-Taylor mode (<see cref="GrowthRate"/>),
+        /// omega for the rocking seiche (<see cref="AngularFrequency"/>). Lamb's two layers under a free surface in potential
+        /// flow, phi = P cosh(k y) cos(k x) in the lower layer and (Q cosh(k y') + R sinh(k y')) cos(k x) in the upper (y'
+        /// above the interface), the interface moving alike from both sides (R = P sinh(k d_lower)) and the free surface's
+        /// Bernoulli condition, lambda phi + g phi_y = 0 with lambda = s^2 or -omega^2, fixing Q. Given to flat layers at rest
+        /// it starts that mode alone, an interface of amplitude sinh(s t) or amplitude sin(omega t), and no surface wave.
         /// </summary>
-        internal static (double Along, double Up) GrowingModeVelocity(Tank t, double amplitude, double x, double height)
+        internal static (double Along, double Up) InterfaceModeVelocity(Tank t, double amplitude, double x, double height)
         {
-            double s = GrowthRate(t), k = Math.PI / t.Length;
-            if (s == 0) throw new ArgumentException("the layers are stable: the lower one is the heavier", nameof(t));
-            double lower = s * amplitude / (k * Math.Sinh(k * t.LowerDepth));
+            double lambda = -InternalRootSquared(t), rate = Math.Sqrt(Math.Abs(lambda)), k = Math.PI / t.Length;
+            double lower = rate * amplitude / (k * Math.Sinh(k * t.LowerDepth));
             double sinh = Math.Sinh(k * t.UpperDepth), cosh = Math.Cosh(k * t.UpperDepth), gk = t.Gravity * k;
-            double r = s * amplitude / k, q = -r * (s * s * sinh + gk * cosh) / (s * s * cosh + gk * sinh);
+            double r = rate * amplitude / k, q = -r * (lambda * sinh + gk * cosh) / (lambda * cosh + gk * sinh);
             double along = -k * Math.Sin(k * x), up = k * Math.Cos(k * x);
             if (height < t.LowerDepth)
                 return (along * lower * Math.Cosh(k * height), up * lower * Math.Sinh(k * height));

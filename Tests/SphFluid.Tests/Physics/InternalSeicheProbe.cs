@@ -34,7 +34,10 @@ namespace SphFluid.Tests.Physics
     /// swing starts small. One of them sets the oil's rest density to 500 kg/m^3 instead of 900, which multiplies the buoyancy that
     /// drives the seiche by five; one tightens DFSPH's density tolerance tenfold, to 0.01 %; one takes the cubic spline
     /// at 2 spacings, whose lattice is about three times as strong in shear (<see cref="LatticeShearStrength"/>). Each
-    /// fixture also prints the largest plane tilt its lattice can hold still (<see cref="InternalSeiche.HeldRise"/>).
+    /// fixture also prints the largest plane tilt its lattice can hold still (<see cref="InternalSeiche.HeldRise"/>). The
+    /// "kicked" fixture starts from flat layers given the seiche's own flow (<see cref="Kick"/>), an interface of
+    /// <see cref="KickAmplitude"/> sin(omega t) with nothing else moving: the seiche at a small amplitude, whose period
+    /// tells whether the lattice adds a stiffness of its own to the buoyancy's.
     /// </para>
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]
@@ -50,6 +53,7 @@ namespace SphFluid.Tests.Physics
     [TestFixture("dfsph, oil at 500 kg/m3, layers tilted by 1 spacing")]
     [TestFixture("dfsph at 0.01 %, layers tilted by 1 spacing")]
     [TestFixture("dfsph, cubic spline at 2 spacings, layers tilted by 1 spacing")]
+    [TestFixture("dfsph, free-slip walls, kicked")]
     public sealed class InternalSeicheProbe
     {
         const double Seconds = 12.0, Sample = 0.05;
@@ -62,6 +66,10 @@ namespace SphFluid.Tests.Physics
             var tilted = System.Text.RegularExpressions.Regex.Match(configuration, @"layers tilted by (\d) spacings?$");
             _tilt = tilted.Success ? int.Parse(tilted.Groups[1].Value) : 0;
         }
+
+        /// <summary>The kicked starts' interface amplitude a, m (the scene's spacing, at any resolution): a sinh(s t) for
+        /// the Rayleigh-Taylor mode, a sin(omega t) for the seiche.</summary>
+        internal const double KickAmplitude = 0.015;
 
         /// <summary>Each layer's depth as <see cref="TiltLayers"/> lays it, m.</summary>
         internal const double LayerDepth = 0.105;
@@ -108,20 +116,38 @@ namespace SphFluid.Tests.Physics
             }
         }
 
+        /// <summary>Gives the flat layers at rest the fundamental interface mode's flow
+        /// (<see cref="InternalSeiche.InterfaceModeVelocity"/>) for an interface of <paramref name="amplitude"/> sinh(s t),
+        /// or <paramref name="amplitude"/> sin(omega t) with the light layer on top, rising first at the left wall; the
+        /// positions are left as they are.</summary>
+        internal static void Kick(FluidSimulation sim, FluidSceneDescription scene, InternalSeiche.Tank tank, Particle[] particles, double amplitude)
+        {
+            var container = scene.Container;
+            float left = container.Position.X - container.Size.X / 2, floor = container.Position.Y - container.Size.Y / 2;
+            sim.Particles.GetData(particles);
+            for (int i = 0; i < particles.Length; i++)
+            {
+                var (along, up) = InternalSeiche.InterfaceModeVelocity(tank, amplitude, particles[i].Position.X - left, particles[i].Position.Y - floor);
+                particles[i].Velocity = new Vector3((float)along, (float)up, 0);
+            }
+            sim.SetParticles(particles);
+        }
+
         [Test]
         public void TheInterfaceRocksAtTheSeichePeriod()
         {
             var scene = SceneLoader.Load(RunnerPaths.Scene("OilAndWater"), RunnerPaths.Project).Description;
             if (_configuration.StartsWith("dfsph")) new SolverChoice { Solver = PressureSolver.Dfsph }.ApplyTo(scene, "DFSPH OilAndWater");
-            if (_configuration.EndsWith("viscosity / 10"))
+            if (_configuration.Contains("viscosity / 10"))
                 foreach (var phase in scene.SpawnBoxes.Select(b => b.Phase).Distinct()) phase.Viscosity /= 10;
-            if (_configuration.EndsWith("free-slip walls")) scene.Container.Friction = WallFriction.Slip;
+            if (_configuration.Contains("free-slip walls")) scene.Container.Friction = WallFriction.Slip;
             if (_configuration.Contains("oil at 500 kg/m3"))
                 scene.SpawnBoxes.First(b => b.Phase.Name == "Oil").Phase.RestDensity = 500f;
-            if (_tilt > 0) TiltLayers(scene, _tilt);
+            bool kicked = _configuration.EndsWith("kicked");
+            if (_tilt > 0 || kicked) TiltLayers(scene, _tilt);
             if (_configuration.Contains("at 0.01 %")) scene.Settings.DensityTolerance = 0.01f;
             if (_configuration.Contains("at 1 %")) scene.Settings.DensityTolerance = 1f;
-            double settled = _tilt > 0 ? 0.0 : 2.0;
+            double settled = _tilt > 0 || kicked ? 0.0 : 2.0;
             var s = scene.Settings;
             if (_configuration == "cubic spline" || _configuration.Contains("cubic spline at 2 spacings"))
             {
@@ -134,6 +160,16 @@ namespace SphFluid.Tests.Physics
 
             using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
             var particles = new Particle[sim.ParticleCount];
+            if (kicked)
+            {
+                var rows = sim.PhaseRows;
+                int heavy = rows[0].RestDensity > rows[1].RestDensity ? 0 : 1, light = 1 - heavy;
+                double layer = LayerSpacings(s.ParticleSpacing) * s.ParticleSpacing;
+                var laid = new InternalSeiche.Tank(scene.Container.Size.X, scene.Container.Size.Z, s.Gravity.Length(),
+                    layer, rows[light].RestDensity, rows[light].Viscosity, layer, rows[heavy].RestDensity, rows[heavy].Viscosity,
+                    scene.Container.Friction == WallFriction.NoSlip);
+                Kick(sim, scene, laid, particles, KickAmplitude);
+            }
             var densities = new Vector4[sim.ParticleCount];
             var times = new List<double>();
             var rises = new List<double>();

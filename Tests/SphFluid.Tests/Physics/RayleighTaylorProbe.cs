@@ -20,10 +20,10 @@ namespace SphFluid.Tests.Physics
     /// The scene's tank holds <see cref="InternalSeicheProbe.LayerDepth"/> of water over as much oil, the interface displaced
     /// by the tank's fundamental mode by one or two spacings (<see cref="InternalSeicheProbe.TiltLayers"/>, a staircase of
     /// whole spacings), from rest; or flat and kicked, given the growing mode's own flow
-    /// (<see cref="InternalSeiche.GrowingModeVelocity"/>), which starts that mode alone. Linear theory lets the mode grow
+    /// (<see cref="InternalSeiche.InterfaceModeVelocity"/>), which starts that mode alone. Linear theory lets the mode grow
     /// as A cosh(s t) + B sinh(s t), s from the two-layer relation the internal seiche obeys with the heavy layer on top
     /// (<see cref="InternalSeiche.GrowthRate"/>: 1.175/s, inviscid; the liquids' own viscosity takes under a percent off
-    /// it at this wavelength): a0 cosh(s t) from the displaced start, <see cref="KickAmplitude"/> sinh(s t) from the
+    /// it at this wavelength): a0 cosh(s t) from the displaced start, <see cref="InternalSeicheProbe.KickAmplitude"/> sinh(s t) from the
     /// kicked one (twice that "kicked twice as hard"). The mode's amplitude (<see cref="FundamentalAmplitude"/>) is sampled
     /// every frame and printed every 0.1 s beside the theory's; the probe prints its largest, how long it stays within
     /// <see cref="Following"/> of the theory's, and s fitted to it while it grows and stays below three spacings, and below
@@ -77,8 +77,6 @@ namespace SphFluid.Tests.Physics
         /// its first millimetre is within the lattice's own ripple.</summary>
         const double Resolvable = 0.002;
 
-        /// <summary>The kicked start's a in a sinh(s t), m: the scene's spacing, at any resolution.</summary>
-        const double KickAmplitude = 0.015;
         readonly string _configuration, _start;
 
         /// <summary>Two arguments, since NUnit cuts each to 40 characters in the test's name: the solver and its settings,
@@ -121,8 +119,8 @@ namespace SphFluid.Tests.Physics
                 scene.Container.Friction == WallFriction.NoSlip);
             double theory = InternalSeiche.GrowthRate(tank);
             var particles = new Particle[sim.ParticleCount];
-            double kick = !kicked ? 0 : _start.EndsWith("twice as hard") ? 2 * KickAmplitude : KickAmplitude;
-            if (kicked) Kick(sim, scene, tank, particles, kick);
+            double kick = !kicked ? 0 : _start.EndsWith("twice as hard") ? 2 * InternalSeicheProbe.KickAmplitude : InternalSeicheProbe.KickAmplitude;
+            if (kicked) InternalSeicheProbe.Kick(sim, scene, tank, particles, kick);
             var densities = new System.Numerics.Vector4[sim.ParticleCount];
             var times = new List<double>();
             var amplitudes = new List<double>();
@@ -172,21 +170,6 @@ namespace SphFluid.Tests.Physics
                 $"max speed at {Seconds} s {1000 * report.MaxSpeed:F1} mm/s; clamp hits {report.ClampHits}; " +
                 $"the oil's depth at {Seconds} s in columns of 2 spacings along the tank, mm: {string.Join(" ", OilDepths(scene, particles, densities, phases, oil).Select(d => (1000 * d).ToString("F0")))}");
             Assert.That(amplitudes.All(double.IsFinite), Is.True);
-        }
-
-        /// <summary>Gives the flat layers at rest the growing mode's flow (<see cref="InternalSeiche.GrowingModeVelocity"/>) for
-        /// an interface of <paramref name="amplitude"/> sinh(s t) (the oil rising at the left wall), positions unchanged.</summary>
-        static void Kick(FluidSimulation sim, FluidSceneDescription scene, InternalSeiche.Tank tank, Particle[] particles, double amplitude)
-        {
-            var container = scene.Container;
-            float left = container.Position.X - container.Size.X / 2, floor = container.Position.Y - container.Size.Y / 2;
-            sim.Particles.GetData(particles);
-            for (int i = 0; i < particles.Length; i++)
-            {
-                var (along, up) = InternalSeiche.GrowingModeVelocity(tank, amplitude, particles[i].Position.X - left, particles[i].Position.Y - floor);
-                particles[i].Velocity = new System.Numerics.Vector3((float)along, (float)up, 0);
-            }
-            sim.SetParticles(particles);
         }
 
         /// <summary>The oil's volume over each column of the floor, two spacings along the tank and the tank's width across,
