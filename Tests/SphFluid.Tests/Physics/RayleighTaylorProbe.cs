@@ -3,7 +3,6 @@ using System.Collections.Generic;
 using System.Linq;
 using NUnit.Framework;
 using SphFluid.Headless.Cli;
-using SphFluid.Headless.Output;
 using SphFluid.Headless.Runs;
 using SphFluid.Headless.Scenes;
 using SphFluid.Simulation;
