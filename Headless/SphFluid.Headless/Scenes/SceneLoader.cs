@@ -237,16 +237,20 @@ public static class SceneLoader
                 {
                     var node = t.Root[field];
                     if (node == null) continue;
+                    // A scalar in the mapping's place was reported as its first axis "must be a finite number (was '-0')",
+                    // which blamed a number that was finite.
+                    if (!node.IsMapping)
+                        throw new SceneException($"{path}:{node.Line}: GameObject '{scene.GameObjectOf(t)?.Name}', Transform.{field} must be {{{string.Join(", ", Array.ConvertAll(axes, a => a + ": <number>"))}}} (was '{node}')");
                     double squares = 0;
                     foreach (string axis in axes)
                     {
-                        var value = node.IsMapping ? node[axis] : null;
+                        var value = node[axis];
                         if (value != null && value.IsScalar && UnityYamlNode.TryParseNumber(value.Value, out double v) && double.IsFinite(v))
                         {
                             squares += v * v;
                             continue;
                         }
-                        string was = value == null ? (node.IsMapping ? "missing" : $"'{node}'") : $"'{value}'";
+                        string was = value == null ? "missing" : $"'{value}'";
                         throw new SceneException($"{path}:{(value ?? node).Line}: GameObject '{scene.GameObjectOf(t)?.Name}', Transform.{field}.{axis} must be a finite number (was {was})");
                     }
                     double length = Math.Sqrt(squares);

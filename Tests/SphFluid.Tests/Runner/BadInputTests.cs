@@ -277,6 +277,19 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', Transform.m_LocalScale.x must be a finite number (was 'abc')"));
         }
 
+        /// <summary>A number where the axes' mapping belongs was blamed as a non-finite first axis ("must be a finite number
+        /// (was '-0')").</summary>
+        [Test]
+        public void ANumberInPlaceOfATransformsAxesNamesTheFieldAndItsShape()
+        {
+            string path = Write(EditDocument(WaterTransform, "m_LocalScale: {x: 0.3, y: 0.2, z: 0.12}", "m_LocalScale: -0", out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', Transform.m_LocalScale must be {{x: <number>, y: <number>, z: <number>}} (was '-0')"));
+        }
+
         /// <summary>A spawn box too thin once placed was named by its GameObject and Transform field but by no line.</summary>
         [Test]
         public void ASpawnBoxTooThinIsNamedAtItsScaleLine()
