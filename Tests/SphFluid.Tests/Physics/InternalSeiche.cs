@@ -70,7 +70,7 @@ namespace SphFluid.Tests.Physics
         }
 
         /// <summary>The slow root omega^2 of Lamb's two-layer relation with a free surface at k = pi / L, (rad/s)^2.</summary>
-        static double InternalRootSquared(Tank t)
+        internal static double InternalRootSquared(Tank t)
         {
             double k = Math.PI / t.Length, cu = 1 / Math.Tanh(k * t.UpperDepth), cl = 1 / Math.Tanh(k * t.LowerDepth);
             double a = t.LowerDensity * cu * cl + t.UpperDensity, b = t.LowerDensity * t.Gravity * k * (cu + cl);

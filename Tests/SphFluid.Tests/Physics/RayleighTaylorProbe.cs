@@ -24,7 +24,8 @@ namespace SphFluid.Tests.Physics
     /// (<see cref="InternalSeiche.GrowthRate"/>: 1.175/s, inviscid; the liquids' own viscosity takes under a percent off
     /// it at this wavelength): a0 cosh(s t) from the displaced start, <see cref="InternalSeicheProbe.KickAmplitude"/> sinh(s t) from the
     /// kicked one (twice that "kicked twice as hard"). The mode's amplitude (<see cref="FundamentalAmplitude"/>) is sampled
-    /// every frame and printed every 0.1 s beside the theory's; the probe prints its largest, how long it stays within
+    /// every frame and printed every 0.1 s beside the theory's, and from a kicked start beside what the lattice as an
+    /// elastic solid gives (<see cref="ElasticInterfaceMode.KickedInterface"/>); the probe prints its largest, how long it stays within
     /// <see cref="Following"/> of the theory's, and s fitted to it while it grows and stays below three spacings, and below
     /// two.
     /// </para>
@@ -120,6 +121,8 @@ namespace SphFluid.Tests.Physics
             var particles = new Particle[sim.ParticleCount];
             double kick = !kicked ? 0 : _start.EndsWith("twice as hard") ? 2 * InternalSeicheProbe.KickAmplitude : InternalSeicheProbe.KickAmplitude;
             if (kicked) InternalSeicheProbe.Kick(sim, scene, tank, particles, kick);
+            var (axis, diagonal) = ElasticInterfaceMode.ModulusRatios(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius);
+            var lattice = kicked && axis > 0 ? ElasticInterfaceMode.Modes(tank, axis, diagonal) : null;
             var densities = new System.Numerics.Vector4[sim.ParticleCount];
             var times = new List<double>();
             var amplitudes = new List<double>();
@@ -133,7 +136,8 @@ namespace SphFluid.Tests.Physics
                 if (sim.SimulatedTime >= nextReport - 1e-6)
                 {
                     double expected = Math.Abs(amplitudes[0]) * Math.Cosh(theory * times[^1]) + kick * Math.Sinh(theory * times[^1]);
-                    TestContext.Progress.WriteLine($"t={sim.SimulatedTime:F2} s amplitude {1000 * Math.Abs(amplitudes[^1]):F1} mm, the theory's {1000 * expected:F1} mm");
+                    string elastic = lattice == null ? "" : $", the elastic lattice's {1000 * ElasticInterfaceMode.KickedInterface(lattice, tank, kick, times[^1]):F1} mm";
+                    TestContext.Progress.WriteLine($"t={sim.SimulatedTime:F2} s amplitude {1000 * Math.Abs(amplitudes[^1]):F1} mm, the theory's {1000 * expected:F1} mm{elastic}");
                     nextReport += Report;
                 }
                 if (sim.SimulatedTime >= Seconds - 1e-6) break;
@@ -166,6 +170,8 @@ namespace SphFluid.Tests.Physics
                 $"fitted {Fit(3)}; {Fit(2)}; {following}amplitude at 0 s {1000 * amplitudes[0]:F1} mm, at {Seconds} s {1000 * amplitudes[^1]:F1} mm; " +
                 $"the lattice's shear strength, {strength:E2} of the pressure, can hold a plane interface still at a tilt of up to " +
                 $"{1000 * held:F1} mm on the interface and the floor, {1000 * heldWithWalls:F1} mm with the front and back walls; " +
+                $"the lattice as an elastic solid, C44 = {axis:F5} p and C' = {diagonal:F5} p: " +
+                (axis <= 0 ? "C44 below 0, no elastic prediction; " : $"its lowest mode lambda = {ElasticInterfaceMode.Modes(tank, axis, diagonal)[0].Lambda:F3}/s^2 (Lamb's {-theory * theory:F3}); ") +
                 $"max speed at {Seconds} s {1000 * report.MaxSpeed:F1} mm/s; clamp hits {report.ClampHits}; " +
                 $"the oil's depth at {Seconds} s in columns of 2 spacings along the tank, mm: {string.Join(" ", OilDepths(scene, particles, densities, phases, oil).Select(d => (1000 * d).ToString("F0")))}");
             Assert.That(amplitudes.All(double.IsFinite), Is.True);
