@@ -39,7 +39,8 @@ namespace SphFluid.Tests.Physics
     /// kg/m^3, five times the density step; twice the resolution (8 times the particles) with the start of the same
     /// size in metres; the cubic spline at 2 spacings, whose lattice is about three times as strong in shear; Wendland
     /// C2 at 3 and 3.5 spacings, six and thirty times weaker (under WCSPH: DFSPH takes Wendland C2 to 2.9 spacings); and
-    /// WCSPH with particle shifting at A = 2, which DamBreak uses.
+    /// WCSPH with particle shifting at A = 2, which DamBreak uses; and kicked starts spawned jittered by half a spacing
+    /// (<see cref="FluidBlock.Jitter"/>), a disordered packing in place of the lattice.
     /// </para>
     /// </summary>
     [Explicit("a measurement, not a check: run it by name")]
@@ -65,6 +66,8 @@ namespace SphFluid.Tests.Physics
     [TestFixture("dfsph, free-slip walls, twice as fine", "kicked")]
     [TestFixture("shipped, particle shifting 2", "1 spacing")]
     [TestFixture("shipped, particle shifting 2", "kicked")]
+    [TestFixture("dfsph, jittered by 0.5", "kicked")]
+    [TestFixture("shipped, jittered by 0.5", "kicked")]
     public sealed class RayleighTaylorProbe
     {
         const double Seconds = 2.0, Report = 0.1;
@@ -107,6 +110,9 @@ namespace SphFluid.Tests.Physics
             }
             var support = System.Text.RegularExpressions.Regex.Match(_configuration, @"Wendland C2 at ([\d.]+) spacings");
             if (support.Success) s.SmoothingRadius = float.Parse(support.Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture) * s.ParticleSpacing;
+            var jitter = System.Text.RegularExpressions.Regex.Match(_configuration, @"jittered by ([\d.]+)");
+            if (jitter.Success)
+                foreach (var box in scene.SpawnBoxes) box.Jitter = float.Parse(jitter.Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture);
             var shifting = System.Text.RegularExpressions.Regex.Match(_configuration, @"particle shifting ([\d.]+)");
             if (shifting.Success) s.ParticleShifting = float.Parse(shifting.Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture);
 
