@@ -266,28 +266,18 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain("46788 x 46788 x 46788 = 1.02E+014 cells"));
         }
 
-        [Test]
-        public void ANonNumberInATransformNamesTheFileLineAndField()
+        /// <summary>A Transform value that is no number is named with its file, line and field; a number where the axes'
+        /// mapping belongs was once blamed as a non-finite first axis ("must be a finite number (was '-0')").</summary>
+        [TestCase("m_LocalScale: {x: 0.3,", "m_LocalScale: {x: abc,", "Transform.m_LocalScale.x must be a finite number (was 'abc')")]
+        [TestCase("m_LocalScale: {x: 0.3, y: 0.2, z: 0.12}", "m_LocalScale: -0", "Transform.m_LocalScale must be {x: <number>, y: <number>, z: <number>} (was '-0')")]
+        public void ABadTransformValueNamesTheFileLineAndField(string from, string to, string message)
         {
-            string path = Write(EditDocument(WaterTransform, "m_LocalScale: {x: 0.3,", "m_LocalScale: {x: abc,", out int line));
+            string path = Write(EditDocument(WaterTransform, from, to, out int line));
 
             var run = Simulate(path);
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', Transform.m_LocalScale.x must be a finite number (was 'abc')"));
-        }
-
-        /// <summary>A number where the axes' mapping belongs was blamed as a non-finite first axis ("must be a finite number
-        /// (was '-0')").</summary>
-        [Test]
-        public void ANumberInPlaceOfATransformsAxesNamesTheFieldAndItsShape()
-        {
-            string path = Write(EditDocument(WaterTransform, "m_LocalScale: {x: 0.3, y: 0.2, z: 0.12}", "m_LocalScale: -0", out int line));
-
-            var run = Simulate(path);
-
-            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', Transform.m_LocalScale must be {{x: <number>, y: <number>, z: <number>}} (was '-0')"));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', {message}"));
         }
 
         /// <summary>A spawn box too thin once placed was named by its GameObject and Transform field but by no line.</summary>
