@@ -160,7 +160,7 @@ namespace SphFluid.Tests.Physics
 
             using var sim = new FluidSimulation(GpuTestDevice.Unvalidated, scene);
             var particles = new Particle[sim.ParticleCount];
-            Func<double, double>? elasticRise = null;
+            Func<double, double>? elasticRise = null, lambRise = null;
             if (kicked)
             {
                 var rows = sim.PhaseRows;
@@ -173,6 +173,8 @@ namespace SphFluid.Tests.Physics
                 // The lattice as an elastic solid (ElasticInterfaceMode), its interface a cos(pi x / L) read as the rise of
                 // its least-squares plane across the tank, -24 a / pi^2 (up at the left wall, so falling along the tank).
                 var (axis, diagonal) = ElasticInterfaceMode.ModulusRatios(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius);
+                var lamb = ElasticInterfaceMode.Modes(laid, 0, 0);
+                lambRise = time => -24 / (Math.PI * Math.PI) * ElasticInterfaceMode.KickedInterface(lamb, laid, KickAmplitude, time);
                 if (axis > 0)
                 {
                     var modes = ElasticInterfaceMode.Modes(laid, axis, diagonal);
@@ -196,6 +198,7 @@ namespace SphFluid.Tests.Physics
                 rises.Add(last.InterfaceRises[0].AlongU);
                 if (times.Count % 10 == 1)
                     TestContext.Progress.WriteLine($"t={sim.SimulatedTime:F2} s rise {1000 * rises[^1]:F1} mm" +
+                        (lambRise == null ? "" : $", Lamb's {1000 * lambRise(sim.SimulatedTime):F1} mm") +
                         (elasticRise == null ? "" : $", the elastic lattice's {1000 * elasticRise(sim.SimulatedTime):F1} mm"));
             }
             Assert.That(last, Is.Not.Null);
