@@ -153,9 +153,7 @@ namespace SphFluid.Tests.Physics
             var report = sim.ReadDiagnostics();
             var fit = InternalSeiche.FitDampedOscillation(times, amplitudes, highestOmega: 2 * omega, highestGamma: 10);
             var crossings = InternalSeiche.ZeroCrossings(times, amplitudes.Select(v => v - amplitudes[0]).ToList());
-            double axis = LatticeStability.ShearModulusRatio(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius, Vector3.UnitX, Vector3.UnitY);
-            double diagonal = LatticeStability.ShearModulusRatio(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius,
-                Vector3.Normalize(new Vector3(1, 1, 0)), Vector3.Normalize(new Vector3(1, -1, 0)));
+            var (axis, diagonal) = ElasticInterfaceMode.ModulusRatios(s.SmoothingKernel, s.ParticleSpacing, s.SmoothingRadius);
             double elastic = SurfaceSeiche.ElasticExcess(k, depth, axis, diagonal);
             TestContext.Progress.WriteLine(
                 $"surface dispersion ({s.PressureSolver}, {s.SmoothingKernel} at {s.SmoothingRadius / s.ParticleSpacing:F2} spacings, " +
