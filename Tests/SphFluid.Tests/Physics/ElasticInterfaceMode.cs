@@ -28,10 +28,10 @@ namespace SphFluid.Tests.Physics
     /// one lattice holds both liquids, so f and f' are too. Walls are left out.
     /// </para>
     /// <para>
-    /// Without a lattice every flow that moves neither the interface nor the surface has lambda = 0; with one, the shear
-    /// waves near the free surface, where p and so the moduli vanish, keep lambda near 0. So the interface mode is told by
-    /// its shape: the mode whose displacement is closest (in the kinetic energy's inner product) to Lamb's potential flow
-    /// (<see cref="InternalSeiche.InterfaceModeVelocity"/>). A growing mode is any with lambda below 0.
+    /// Without a lattice every flow that moves neither the interface nor the surface has lambda = 0, and Lamb's mode is the
+    /// one whose displacement is Lamb's potential flow (<see cref="InternalSeiche.InterfaceModeVelocity"/>); with one,
+    /// Lamb's shape spreads over several modes, so each mode carries its likeness to it (in the kinetic energy's inner
+    /// product) and its share of a kick with Lamb's flow. A growing mode is any with lambda below 0.
     /// </para>
     /// </summary>
     internal static class ElasticInterfaceMode
@@ -123,9 +123,5 @@ namespace SphFluid.Tests.Physics
             }
             return amplitude * rate * sum;
         }
-
-        /// <summary>The mode most like Lamb's interface mode (<see cref="Modes"/>).</summary>
-        internal static Mode InterfaceMode(InternalSeiche.Tank t, double axisModulusRatio, double diagonalModulusRatio, int nodes = 240) =>
-            Modes(t, axisModulusRatio, diagonalModulusRatio, nodes).OrderByDescending(m => m.Likeness).First();
     }
 }

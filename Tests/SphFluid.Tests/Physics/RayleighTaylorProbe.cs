@@ -23,9 +23,10 @@ namespace SphFluid.Tests.Physics
     /// as A cosh(s t) + B sinh(s t), s from the two-layer relation the internal seiche obeys with the heavy layer on top
     /// (<see cref="InternalSeiche.GrowthRate"/>: 1.175/s, inviscid; the liquids' own viscosity takes under a percent off
     /// it at this wavelength): a0 cosh(s t) from the displaced start, <see cref="InternalSeicheProbe.KickAmplitude"/> sinh(s t) from the
-    /// kicked one (twice that "kicked twice as hard", half "kicked half as hard"). The mode's amplitude (<see cref="FundamentalAmplitude"/>) is sampled
-    /// every frame and printed every 0.1 s beside the theory's, and from a kicked start beside what the lattice as an
-    /// elastic solid gives (<see cref="ElasticInterfaceMode.KickedInterface"/>); the probe prints its largest, how long it stays within
+    /// kicked one (twice that "kicked twice as hard", half "kicked half as hard"). The mode's amplitude
+    /// (<see cref="FundamentalAmplitude"/>) is sampled every frame and printed every 0.1 s beside the theory's, and from a
+    /// kicked start beside what the lattice as an elastic solid gives (<see cref="ElasticInterfaceMode.KickedInterface"/>);
+    /// the probe prints its largest, how long it stays within
     /// <see cref="Following"/> of the theory's, and s fitted to it while it grows and stays below three spacings, and below
     /// two.
     /// </para>
