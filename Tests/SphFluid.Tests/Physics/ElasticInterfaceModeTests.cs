@@ -14,7 +14,7 @@ namespace SphFluid.Tests.Physics
         // The probes' layers as they kick them: seven of OilAndWater's 15 mm spacings of each liquid, in its 0.6 x 0.12 m tank.
         static readonly InternalSeiche.Tank Seiche = new(0.6, 0.12, 9.81, 0.105, 900, 0.1, 0.105, 1000, 0.05, NoSlipWalls: false);
         static readonly InternalSeiche.Tank Overturn = Seiche with { UpperDensity = 1000, UpperViscosity = 0.05, LowerDensity = 900, LowerViscosity = 0.1 };
-        const double Kick = 0.015; // InternalSeicheProbe.KickAmplitude
+        const double Kick = InternalSeicheProbe.KickAmplitude;
 
         [Test]
         public void WithoutALattice_TheModesAreLambs()
