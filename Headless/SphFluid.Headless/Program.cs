@@ -4,6 +4,7 @@ using System.IO;
 using SphFluid.Headless.Cli;
 using SphFluid.Headless.Runs;
 using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
 using SphFluid.Vulkan;
 
 namespace SphFluid.Headless;
@@ -38,31 +39,36 @@ public static class Program
         }
         catch (UsageException e)
         {
-            stderr.WriteLine($"sphfluid {e.Message}");
+            stderr.WriteLine($"sphfluid {Shown(e)}");
             return ExitCodes.BadArguments;
         }
         catch (SceneException e)
         {
-            stderr.WriteLine($"sphfluid: scene error: {e.Message}");
+            stderr.WriteLine($"sphfluid: scene error: {Shown(e)}");
             return ExitCodes.BadScene;
         }
         catch (VulkanUnavailableException e)
         {
-            stderr.WriteLine($"sphfluid: no Vulkan device: {e.Message} (install Mesa's lavapipe: Headless/install-deps.sh, or set VK_LOADER_DRIVERS_SELECT)");
+            stderr.WriteLine($"sphfluid: no Vulkan device: {Shown(e)} (install Mesa's lavapipe: Headless/install-deps.sh, or set VK_LOADER_DRIVERS_SELECT)");
             return ExitCodes.Failure;
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
             // A full disk, or a folder taken away or made read-only mid-run: the environment's failure, not the
             // program's, and the message names the file.
-            stderr.WriteLine($"sphfluid: file error, the command stopped: {e.Message}");
+            stderr.WriteLine($"sphfluid: file error, the command stopped: {Shown(e)}");
             return ExitCodes.Failure;
         }
         catch (Exception e)
         {
             // A message for the reader, not a type name; the exit code says it was not their input's fault.
-            stderr.WriteLine($"sphfluid: unexpected failure: {e.Message}");
+            stderr.WriteLine($"sphfluid: unexpected failure: {Shown(e)}");
             return ExitCodes.Failure;
         }
     }
+
+    /// <summary>A message quotes what the user gave (a scene's names and values, a binary file's first bytes, an
+    /// argument, a path) and so may hold control characters; they are shown escaped, and only the message's own line
+    /// breaks stay.</summary>
+    static string Shown(Exception e) => PrintableText.Escape(e.Message, keepLineBreaks: true);
 }

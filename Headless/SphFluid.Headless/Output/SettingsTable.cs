@@ -25,7 +25,7 @@ public static class SettingsTable
             string range = string.IsNullOrEmpty(d.Unit) ? d.RangeText : d.RangeText[..^(d.Unit.Length + 1)];
             if (type == typeof(SettingVector)) range = "magnitude in " + range;
             else if (type == typeof(SettingColor)) range = "each channel in " + range;
-            else if (type == typeof(string)) range = "length in " + range;
+            else if (type == typeof(string)) range = "printable, length in " + range;
             else if (type.IsEnum)
                 range = string.Join(", ", Enum.GetValues(type).Cast<object>().Select(v => $"{Convert.ToInt64(v, CultureInfo.InvariantCulture)} = {v}"));
             table.Append($"| {d.Group} | `{setting.Path}` | {d.Unit} | {range} | {Value(setting.GetValue(defaults))} | {d.Tooltip} |\n");

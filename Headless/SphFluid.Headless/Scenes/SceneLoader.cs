@@ -134,12 +134,16 @@ public static class SceneLoader
                 Name = scene.Name,
                 Description = description,
                 Motion = ReadMotion(containerGo),
-                SimulatorObject = _simulatorGo.Name,
-                SpawnBoxObjects = _boxes.Select(b => b.Go.Name).ToList(),
-                ContainerObject = containerGo.Name,
-                ObstacleObjects = _obstacles.Select(o => o.Go.Name).ToList(),
+                SimulatorObject = Shown(_simulatorGo),
+                SpawnBoxObjects = _boxes.Select(b => Shown(b.Go)).ToList(),
+                ContainerObject = Shown(containerGo),
+                ObstacleObjects = _obstacles.Select(o => Shown(o.Go)).ToList(),
             };
         }
+
+        /// <summary>A GameObject's name as the run prints it, in its lines and in summary.txt: Unity lets a name hold any
+        /// character, and a control character in it would act on the terminal (<see cref="PrintableText"/>).</summary>
+        static string Shown(UnityGameObject go) => PrintableText.Escape(go.Name);
 
         string ScriptGuid(string className)
         {
@@ -420,7 +424,7 @@ public static class SceneLoader
         {
             var box = ReadDeclared<FluidBlock>(go, mb, RuntimeScripts.SpawnBox, RuntimeScripts.Spawn);
             var w = go.World;
-            box.Name = go.Name;
+            box.Name = Shown(go);
             box.Center = w.Position;
             box.Rotation = w.Rotation;
             box.Size = Abs(w.Scale);
@@ -432,7 +436,7 @@ public static class SceneLoader
             var w = go.World;
             var s = Abs(w.Scale);
             float radius = Float(go, mb, RuntimeScripts.SphereObstacle, "radius", 0.5f) * MathF.Max(s.X, MathF.Max(s.Y, s.Z));
-            return new RigidSphere(w.Position, radius, Vector3.Zero) { Name = go.Name };
+            return new RigidSphere(w.Position, radius, Vector3.Zero) { Name = Shown(go) };
         }
 
         SceneMotion ReadMotion(UnityGameObject containerGo)

@@ -6,6 +6,7 @@ using System.Text;
 using NUnit.Framework;
 using SphFluid.Headless;
 using SphFluid.Headless.Cli;
+using SphFluid.Simulation;
 
 namespace SphFluid.Tests.Runner
 {
@@ -265,6 +266,39 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain("GameObject 'Container', Transform.m_LocalScale and GameObject 'Fluid', Fluid.settings.SmoothingRadius"));
             Assert.That(run.Stderr, Does.Contain("46788 x 46788 x 46788 = 1.02E+014 cells"));
         }
+
+        // ---------------------------------------------------------------- text that acts on a terminal
+
+        /// <summary>A scene's double-quoted "\e[2J" is an escape sequence once parsed; as a phase name it was printed on
+        /// every diagnostics line, clearing the terminal. It is refused at its line, and the message shows it escaped.</summary>
+        [Test]
+        public void APhaseNameHoldingAnEscapeSequenceIsRefusedAtItsLineAndShownEscaped()
+        {
+            string path = Write(EditDocument("--- !u!114 &287989891", "Name: Oil", "Name: \"Oil\\e[2J\\e[31m\"", out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Oil', SpawnBox.spawn.Phase.Name: SpawnBox 'Oil': Name must be " +
+                "printable text, without control characters (was 'Oil\\u001B[2J\\u001B[31m', U+001B at character 4)"));
+            AssertNothingActsOnATerminal(run);
+        }
+
+        /// <summary>A file that is no scene is quoted from its first line, which held a binary file's bytes as read.</summary>
+        [Test]
+        public void AFileOfControlCharactersIsQuotedEscaped()
+        {
+            string path = Write("\u001B[2J\u001B]0;title\u0007\r\u202Eelif\n");
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:1: content before the first '--- !u!' document: '\\u001B[2J\\u001B]0;title\\u0007\\u000D\\u202Eelif'"));
+            AssertNothingActsOnATerminal(run);
+        }
+
+        static void AssertNothingActsOnATerminal(Outcome run) =>
+            Assert.That((run.Stdout + run.Stderr).Where(c => c != '\n' && !PrintableText.IsPrintable(c)).Select(c => $"U+{(int)c:X4}"), Is.Empty);
 
         /// <summary>A Transform value that is no number is named with its file, line and field; a number where the axes'
         /// mapping belongs was once blamed as a non-finite first axis ("must be a finite number (was '-0')").</summary>

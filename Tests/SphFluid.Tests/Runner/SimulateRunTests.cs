@@ -124,6 +124,22 @@ namespace SphFluid.Tests.Runner
             Assert.That(int.Parse(grid.Groups[1].Value), Is.EqualTo(7590).And.GreaterThan(PrefixSum.ElementsPerGroup).And.LessThanOrEqualTo(PrefixSum.SmallLength));
         }
 
+        /// <summary>Unity lets a GameObject's name hold any character; named "\e[2J" the container cleared the terminal
+        /// from the run's first line. The run prints and records such names escaped.</summary>
+        [Test]
+        public void AGameObjectNameHoldingAnEscapeSequenceIsPrintedEscaped()
+        {
+            string scene = RunnerPaths.EditedScene("PlayModeTest", ("m_Name: Container", "m_Name: \"Con\\e[2Jtainer\""), ("m_Name: Water", "m_Name: \"Wa\\rter\""));
+            var stdout = new StringWriter();
+            var stderr = new StringWriter();
+            var run = new SimulateRun(SimulateOptions.Parse(new[] { scene, "--steps", "1", "--out", RunnerPaths.ScratchFolder("escaped-name") }), stdout, stderr)
+                { Device = GpuTestDevice.Shared, InteractiveProgress = false };
+
+            Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
+            Assert.That(stdout.ToString(), Does.Contain("container 'Con\\u001B[2Jtainer'"));
+            Assert.That((stdout.ToString() + stderr).Where(c => c != '\n' && !PrintableText.IsPrintable(c)), Is.Empty);
+        }
+
         /// <summary>RestingTank runs WCSPH at Wendland C2's 2.85 spacings with DFSPH's relaxation left at the papers' full step,
         /// which DFSPH refuses there: --solver dfsph runs it at 2 spacings with the cubic spline and says why, instead of
         /// refusing the scene. OilAndWater's DFSPH settings (relaxed to 0.3) fit: it keeps its kernel and nothing is said.</summary>

@@ -132,11 +132,21 @@ namespace SphFluid.Simulation
             object value = info.GetValue(settings);
             if (info.FieldType == typeof(string))
             {
-                int length = value is string text ? text.Length : 0;
-                if (length >= d.Min && length <= d.Max) return true;
-                errors.Add(new ValidationError(path + field, length == 0 && d.Min >= 1
-                    ? $"{owner}: {field} must be non-empty, of length in {d.RangeText} (was empty)"
-                    : $"{owner}: {field} must have a length in {d.RangeText} (was {length})"));
+                string text = value as string ?? "";
+                int length = text.Length;
+                if (length < d.Min || length > d.Max)
+                {
+                    errors.Add(new ValidationError(path + field, length == 0 && d.Min >= 1
+                        ? $"{owner}: {field} must be non-empty, of length in {d.RangeText} (was empty)"
+                        : $"{owner}: {field} must have a length in {d.RangeText} (was {length})"));
+                    return false;
+                }
+                // A name is printed on consoles, in logs and in the readout: a control character in it would act there.
+                int unprintable = PrintableText.FirstUnprintable(text);
+                if (unprintable < 0) return true;
+                errors.Add(new ValidationError(path + field,
+                    $"{owner}: {field} must be printable text, without control characters (was '{PrintableText.Escape(text)}', " +
+                    $"U+{(int)text[unprintable]:X4} at character {unprintable + 1})"));
                 return false;
             }
             switch (value)
@@ -190,7 +200,7 @@ namespace SphFluid.Simulation
             if (fieldType == typeof(int)) return "a whole number in " + d.RangeText;
             if (fieldType == typeof(SettingVector)) return "a vector {x, y, z} with magnitude in " + d.RangeText;
             if (fieldType == typeof(SettingColor)) return "a colour {r, g, b, a} with each channel in " + d.RangeText;
-            if (fieldType == typeof(string)) return "a text of length in " + d.RangeText;
+            if (fieldType == typeof(string)) return "a printable text (no control characters) of length in " + d.RangeText;
             return "a number in " + d.RangeText;
         }
 
