@@ -49,7 +49,9 @@ public static class Program
         }
         catch (VulkanUnavailableException e)
         {
-            stderr.WriteLine($"sphfluid: no Vulkan device: {Shown(e)} (install Mesa's lavapipe: Headless/install-deps.sh, or set VK_LOADER_DRIVERS_SELECT)");
+            // Where adapters were found but none by the name asked for, installing one would not help.
+            stderr.WriteLine($"sphfluid: no Vulkan device: {Shown(e)}" +
+                (e.Adapters == null ? " (install Mesa's lavapipe: Headless/install-deps.sh, or set VK_LOADER_DRIVERS_SELECT)" : ""));
             return ExitCodes.Failure;
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)

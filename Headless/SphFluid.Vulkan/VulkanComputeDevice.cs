@@ -14,10 +14,15 @@ using VkSemaphore = Silk.NET.Vulkan.Semaphore;
 
 namespace SphFluid.Vulkan;
 
-/// <summary>Vulkan could not be set up here (no loader, no driver, no compute-capable device).</summary>
+/// <summary>Vulkan could not be set up here (no loader, no driver, no compute-capable device), or no adapter has the
+/// name asked for.</summary>
 public sealed class VulkanUnavailableException : Exception
 {
     public VulkanUnavailableException(string message, Exception? inner = null) : base(message, inner) { }
+
+    /// <summary>The adapters there are, where none has the name asked for (<see cref="VulkanComputeOptions.DeviceName"/>);
+    /// null where Vulkan itself is missing. The caller knows who asked, an argument or the environment, and says so.</summary>
+    public IReadOnlyList<string>? Adapters { get; init; }
 }
 
 /// <summary>
@@ -282,7 +287,8 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
         {
             pool = candidates.Where(c => NameMatches(c.name, wanted)).ToList();
             if (!pool.Any())
-                throw new VulkanUnavailableException($"No Vulkan device name contains '{wanted}' (SPHFLUID_VULKAN_DEVICE); devices: {string.Join(", ", candidates.Select(c => c.name))}");
+                throw new VulkanUnavailableException($"no Vulkan adapter's name contains '{wanted}' (adapters: {string.Join(", ", candidates.Select(c => c.name))})")
+                    { Adapters = candidates.Select(c => c.name).ToList() };
         }
         var chosen = pool.OrderBy(c => TypeRank(c.props.DeviceType)).First();
         _physical = chosen.dev;

@@ -9,7 +9,7 @@ namespace SphFluid.Headless.Runs;
 /// <summary>Opens the headless Vulkan device on the project's shaders (Packages/com.sphfluid.fluid/Shaders).</summary>
 public static class DeviceFactory
 {
-    /// <exception cref="VulkanUnavailableException">No Vulkan driver.</exception>
+    /// <exception cref="VulkanUnavailableException">No Vulkan driver, or no adapter has the name SPHFLUID_VULKAN_DEVICE gives.</exception>
     /// <exception cref="UsageException">No adapter's name contains <paramref name="deviceName"/> (the --device argument).</exception>
     /// <summary>The device a run was given (tests share theirs; the run must not dispose it), else a new one that the
     /// caller disposes through <paramref name="owned"/>.</summary>
@@ -39,9 +39,14 @@ public static class DeviceFactory
         {
             return new VulkanComputeDevice(options);
         }
-        catch (VulkanUnavailableException e) when (!string.IsNullOrEmpty(deviceName) && e.Message.Contains($"contains '{deviceName}'"))
+        catch (VulkanUnavailableException e) when (e.Adapters != null)
         {
-            throw new UsageException($"{command}: --device '{deviceName}' matches no Vulkan adapter ({e.Message})");
+            // Named by --device, the argument is wrong (exit 2); named by the environment, no device was to be had here.
+            string adapters = string.Join(", ", e.Adapters);
+            if (!string.IsNullOrEmpty(deviceName))
+                throw new UsageException($"{command}: --device '{deviceName}' matches no Vulkan adapter (adapters: {adapters})");
+            throw new VulkanUnavailableException($"SPHFLUID_VULKAN_DEVICE '{options.DeviceName}' matches no Vulkan adapter (adapters: {adapters}; " +
+                "unset it, or pass --device)", e) { Adapters = e.Adapters };
         }
     }
 }

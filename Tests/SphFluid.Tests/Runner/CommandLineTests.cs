@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Text.RegularExpressions;
@@ -181,7 +182,30 @@ namespace SphFluid.Tests.Runner
             int code = Run(out _, out string err, "simulate", RunnerPaths.Scene("PlayModeTest"), "--seconds", "0.01", "--device", "NoSuchAdapter");
             if (code == ExitCodes.Failure && err.Contains("no Vulkan device")) Assert.Ignore("No Vulkan driver here: " + err);
             Assert.That(code, Is.EqualTo(ExitCodes.BadArguments));
-            Assert.That(err, Does.Contain("--device 'NoSuchAdapter' matches no Vulkan adapter"));
+            Assert.That(err, Does.Match(@"simulate: --device 'NoSuchAdapter' matches no Vulkan adapter \(adapters: [^)]+"));
+            Assert.That(err, Does.Not.Contain("SPHFLUID_VULKAN_DEVICE"), "the argument named it, not the environment");
+        }
+
+        /// <summary>Named by the environment, a name no adapter has was answered with "install Mesa's lavapipe", on a
+        /// machine that had it: the message now names the variable and the adapters there are.</summary>
+        [Test]
+        public void AnEnvironmentDeviceNameNoAdapterHasNamesTheVariableAndTheAdapters()
+        {
+            string? before = Environment.GetEnvironmentVariable("SPHFLUID_VULKAN_DEVICE");
+            int code;
+            string err;
+            try
+            {
+                Environment.SetEnvironmentVariable("SPHFLUID_VULKAN_DEVICE", "NoSuchAdapter");
+                code = Run(out _, out err, "simulate", RunnerPaths.Scene("PlayModeTest"), "--seconds", "0.01", "--out", RunnerPaths.ScratchFolder("no-adapter"));
+            }
+            finally
+            {
+                Environment.SetEnvironmentVariable("SPHFLUID_VULKAN_DEVICE", before);
+            }
+            if (!err.Contains("adapters: ")) Assert.Ignore("No Vulkan driver here: " + err);
+            Assert.That(code, Is.EqualTo(ExitCodes.Failure));
+            Assert.That(err, Does.Match(@"^sphfluid: no Vulkan device: SPHFLUID_VULKAN_DEVICE 'NoSuchAdapter' matches no Vulkan adapter \(adapters: [^;]+; unset it, or pass --device\)$"));
         }
 
         [Test]
