@@ -34,11 +34,13 @@ public static class Program
                 case SimulateOptions simulate: return new SimulateRun(simulate, stdout, stderr).Execute();
                 case BenchOptions bench: return new BenchRun(bench, stdout, stderr).Execute();
                 case StudyOptions study: return new StudyRun(study, stdout, stderr).Execute();
-                default: throw new UsageException("a command is missing (commands: simulate, bench, study; see sphfluid --help)");
+                default: throw new UsageException("needs a command (commands: simulate, bench, study; see sphfluid --help)");
             }
         }
         catch (UsageException e)
         {
+            // A command's message starts with its name ("simulate: --seconds must be ..."), the root's with a verb
+            // ("has no command 'render'"): either follows the program's name.
             stderr.WriteLine($"sphfluid {Shown(e)}");
             return ExitCodes.BadArguments;
         }

@@ -145,14 +145,16 @@ phase and figure).";
             string token = result.Tokens.FirstOrDefault(t => t.Type == TokenType.Argument && Ranges.LooksLikeOption(t.Value))?.Value
                 ?? result.UnmatchedTokens[0];
             if (name == null)
-                return $"unknown command '{token}' (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)";
+                return Ranges.LooksLikeOption(token)
+                    ? $"has no option {token} of its own; a command's options follow the command (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)"
+                    : $"has no command '{token}' (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)";
             return Ranges.LooksLikeOption(token)
                 ? $"{name}: unknown option {token} (see sphfluid {name} --help)"
                 : $"{name}: unexpected argument '{token}' (see sphfluid {name} --help)";
         }
         if (result.Errors.Count == 0) return null;
         string message = result.Errors[0].Message;
-        if (name == null) return $"{message} (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)";
+        if (name == null) return $"refuses the command line: {message} (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)";
         return message.StartsWith(name + ":", System.StringComparison.Ordinal) ? message : $"{name}: {message}";
     }
 }

@@ -132,7 +132,9 @@ namespace SphFluid.Tests.Runner
         public void AnUnknownCommandAndNoArgumentsAreBadArguments()
         {
             Assert.That(Run(out _, out string err, "render"), Is.EqualTo(ExitCodes.BadArguments));
-            Assert.That(err, Does.Contain("unknown command 'render'"));
+            Assert.That(err, Does.StartWith("sphfluid has no command 'render' (commands: simulate, bench, study; see sphfluid --help)"));
+            Assert.That(Run(out _, out err, "--seconds", "1"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.StartWith("sphfluid has no option --seconds of its own; a command's options follow the command"));
             Assert.That(Run(out _, out _), Is.EqualTo(ExitCodes.BadArguments));
         }
 
