@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
+using System.Linq;
 using System.Text;
 using SphFluid.Simulation;
 
@@ -50,7 +51,7 @@ public sealed class DiagnosticsCsv : IDisposable
         _path = path;
         _phaseCount = phases.Count;
         var header = new StringBuilder("time_s,frame,substeps,dt_s,particles,total_mass_kg,kinetic_energy_J,max_speed_mps,nan_count,outside_count");
-        foreach (string n in ColumnPrefixes(phases))
+        foreach (string n in ColumnPrefixes(phases.Select(p => p.Name)))
             foreach (string column in PhaseColumns) header.Append(',').Append(n).Append('_').Append(column);
         header.Append(",layering_index,interface_tilt_m,surge_front_m,back_wall_column_m,potential_energy_J,clamp_hits,density_iterations,divergence_iterations,divergence_error_pct_per_s,density_solves_cut_off,divergence_solves_cut_off");
         WriteLine(header.ToString());
@@ -108,16 +109,16 @@ public sealed class DiagnosticsCsv : IDisposable
         }
     }
 
-    /// <summary>One distinct column prefix per phase, in phase order. Validation refuses names that differ only by
-    /// letter case, but names that differ only by punctuation ("oil-1", "oil 1") still fold to one prefix here: the
-    /// second and later take _2, _3, ... so no two columns share a header.</summary>
-    public static IReadOnlyList<string> ColumnPrefixes(IReadOnlyList<PhaseDescription> phases)
+    /// <summary>One distinct column prefix per phase name, in phase order (this log's columns and study.csv's). Validation
+    /// refuses names that differ only by letter case, but names that differ only by punctuation ("oil-1", "oil 1") still
+    /// fold to one prefix here: the second and later take _2, _3, ... so no two columns share a header.</summary>
+    public static IReadOnlyList<string> ColumnPrefixes(IEnumerable<string> phaseNames)
     {
         var prefixes = new List<string>();
         var used = new HashSet<string>(StringComparer.Ordinal);
-        foreach (var p in phases)
+        foreach (string name in phaseNames)
         {
-            string baseName = Column(p.Name), n = baseName;
+            string baseName = Column(name), n = baseName;
             for (int k = 2; !used.Add(n); k++) n = baseName + "_" + k.ToString(CultureInfo.InvariantCulture);
             prefixes.Add(n);
         }

@@ -70,7 +70,8 @@ public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, s
         for (int k = 0; k < phases.Count; k++)
         {
             var p = m.Phases[k];
-            b.AppendLine(string.Format(C, "  {0} | {1:P2} / {2:P2} | {3:P2} / {4:P2} | {5:F4} | {6:F4} | {7:F4} | {8:P1} | {9:P1}", phases[k].Name,
+            // A '|' in the name is escaped, as in Markdown, so that the bars still part the columns.
+            b.AppendLine(string.Format(C, "  {0} | {1:P2} / {2:P2} | {3:P2} / {4:P2} | {5:F4} | {6:F4} | {7:F4} | {8:P1} | {9:P1}", phases[k].Name.Replace("|", "\\|"),
                 p.CompressionAverage, p.CompressionMax, p.ExpansionAverage, p.ExpansionMax, p.MeanHeight, p.Bottom, p.Top, p.FloorShare, p.WallShare));
         }
         if (phases.Count > 1)

@@ -297,7 +297,8 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         var b = new StringBuilder();
         int phases = Rows[0].PhaseNames.Length;
         b.Append("solver,stiffness_factor,density_tolerance_pct,divergence_tolerance_pct_per_s,particles_scale,cfl,particles");
-        foreach (string p in Rows[0].PhaseNames) b.Append(C, $",{p.ToLowerInvariant()}_density_error_avg,{p.ToLowerInvariant()}_density_error_max");
+        // A phase name as it is ("Oil, light") would add a column to the header alone: the prefixes simulate's log uses.
+        foreach (string p in DiagnosticsCsv.ColumnPrefixes(Rows[0].PhaseNames)) b.Append(C, $",{p}_density_error_avg,{p}_density_error_max");
         b.AppendLine(",divergence_error,energy_drift,layering_index,surge_front_m,column_m,layering_error,front_error,column_error,observable_error,"
             + "solver_iterations_per_step,density_solves_cut_off,divergence_solves_cut_off,substeps_per_s,gpu_ms_per_s,wall_ms_per_s,real_time_factor,finest,status");
         foreach (var r in Rows)
@@ -328,7 +329,8 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         b.AppendLine("|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
         foreach (var r in Rows)
         {
-            string density = string.Join("; ", r.PhaseNames.Select((p, k) => string.Format(C, "{0} {1:P2} / {2:P2}", p, r.DensityErrorAverage[k], r.DensityErrorMax[k])));
+            // A '|' in a phase name would end the cell in Markdown.
+            string density = string.Join("; ", r.PhaseNames.Select((p, k) => string.Format(C, "{0} {1:P2} / {2:P2}", p.Replace("|", "\\|"), r.DensityErrorAverage[k], r.DensityErrorMax[k])));
             string cutOff = r.Config.Solver == PressureSolver.Dfsph
                 ? r.DensitySolvesCutOff.ToString("P1", C) + " / " + r.DivergenceSolvesCutOff.ToString("P1", C) : "-";
             // A scene of one liquid has no layering to measure (NaN in the CSV); the table says so with a dash, as for

@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Linq;
 using System.Text;
 using NUnit.Framework;
 using SphFluid.Headless.Output;
@@ -15,7 +16,7 @@ namespace SphFluid.Tests.Output
         public void NamesThatFoldToOnePrefixGetNumberedPrefixes()
         {
             var phases = new[] { new PhaseDescription("Oil-1", 900f, 0.05f), new PhaseDescription("Oil 1", 850f, 0.05f), new PhaseDescription("oil_1_2", 800f, 0.05f) };
-            Assert.That(DiagnosticsCsv.ColumnPrefixes(phases), Is.EqualTo(new[] { "oil_1", "oil_1_2", "oil_1_2_2" }));
+            Assert.That(DiagnosticsCsv.ColumnPrefixes(phases.Select(p => p.Name)), Is.EqualTo(new[] { "oil_1", "oil_1_2", "oil_1_2_2" }));
         }
 
         [Test]

@@ -125,19 +125,24 @@ namespace SphFluid.Tests.Runner
         }
 
         /// <summary>Unity lets a GameObject's name hold any character; named "\e[2J" the container cleared the terminal
-        /// from the run's first line. The run prints and records such names escaped.</summary>
+        /// from the run's first line. The run prints and records such names escaped, and a phase's '|' does not part the
+        /// summary's columns.</summary>
         [Test]
         public void AGameObjectNameHoldingAnEscapeSequenceIsPrintedEscaped()
         {
-            string scene = RunnerPaths.EditedScene("PlayModeTest", ("m_Name: Container", "m_Name: \"Con\\e[2Jtainer\""), ("m_Name: Water", "m_Name: \"Wa\\rter\""));
+            string scene = RunnerPaths.EditedScene("PlayModeTest", ("m_Name: Container", "m_Name: \"Con\\e[2Jtainer\""), ("m_Name: Water", "m_Name: \"Wa\\rter\""),
+                ("      Name: Water\n", "      Name: Wa|ter\n"));
             var stdout = new StringWriter();
             var stderr = new StringWriter();
-            var run = new SimulateRun(SimulateOptions.Parse(new[] { scene, "--steps", "1", "--out", RunnerPaths.ScratchFolder("escaped-name") }), stdout, stderr)
+            string outDir = RunnerPaths.ScratchFolder("escaped-name");
+            var run = new SimulateRun(SimulateOptions.Parse(new[] { scene, "--steps", "1", "--out", outDir }), stdout, stderr)
                 { Device = GpuTestDevice.Shared, InteractiveProgress = false };
 
             Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok), stdout + "\n" + stderr);
             Assert.That(stdout.ToString(), Does.Contain("container 'Con\\u001B[2Jtainer'"));
-            Assert.That((stdout.ToString() + stderr).Where(c => c != '\n' && !PrintableText.IsPrintable(c)), Is.Empty);
+            string summary = File.ReadAllText(Path.Combine(outDir, "summary.txt"));
+            Assert.That(summary, Does.Contain("\n  Wa\\|ter | "));
+            Assert.That((stdout.ToString() + stderr + summary).Where(c => c != '\n' && !PrintableText.IsPrintable(c)), Is.Empty);
         }
 
         /// <summary>RestingTank runs WCSPH at Wendland C2's 2.85 spacings with DFSPH's relaxation left at the papers' full step,

@@ -52,6 +52,30 @@ namespace SphFluid.Tests.Runner
                 "observable error vs finest run (relative, log)", "WCSPH", "DFSPH");
         }
 
+        /// <summary>A phase named "Oil, light | 2" (printable, so allowed) added a column to study.csv's header alone, its
+        /// comma unquoted, and one to its study.md row, its '|' unescaped. The CSV takes the prefixes simulate's log uses,
+        /// and the Markdown escapes the bar.</summary>
+        [Test]
+        public void APhaseNameWithACommaAndABarKeepsTheStudysColumns()
+        {
+            string scene = RunnerPaths.EditedScene("OilAndWater", ("      Name: Oil\n", "      Name: 'Oil, light | 2'\n"));
+            string outDir = RunnerPaths.ScratchFolder("study-names");
+            var run = new StudyRun(StudyOptions.Parse(new[] { scene, "--solvers", "wcsph", "--particles-scales", "0.1", "--seconds", "0.02", "--out", outDir }),
+                new StringWriter(), new StringWriter()) { Device = GpuTestDevice.Shared };
+
+            Assert.That(run.Execute(), Is.EqualTo(ExitCodes.Ok));
+            string[] csv = File.ReadAllLines(Path.Combine(outDir, "study.csv"));
+            Assert.That(csv[0], Does.Contain(",water_density_error_max,oil__light___2_density_error_avg,oil__light___2_density_error_max,"));
+            Assert.That(csv.Select(line => line.Split(',').Length).Distinct(), Is.EqualTo(new[] { csv[0].Split(',').Length }), "as many fields in every row as in the header");
+            string[] table = File.ReadAllLines(Path.Combine(outDir, "study.md")).Where(line => line.StartsWith("|", StringComparison.Ordinal)).ToArray();
+            Assert.That(table, Has.Length.GreaterThanOrEqualTo(3));
+            Assert.That(table.Select(Cells).Distinct(), Is.EqualTo(new[] { Cells(table[0]) }), "as many cells in every row as in the header");
+            Assert.That(table[2], Does.Contain("Oil, light \\| 2 "));
+        }
+
+        /// <summary>Markdown's cells in a table row: its bars less those escaped.</summary>
+        static int Cells(string row) => System.Text.RegularExpressions.Regex.Matches(row, @"(?<!\\)\|").Count - 1;
+
         /// <summary>RestingTank's DFSPH settings (Wendland C2 at 2.85 spacings with the papers' full step) are refused: its
         /// DFSPH rows run at 2 spacings with the cubic spline, and the header says why. OilAndWater's (relaxed to 0.3) fit, so
         /// its rows keep the scene's kernel and the header says nothing.</summary>
