@@ -55,6 +55,9 @@ public sealed class OutputFolder
                         "give a folder or a new path (nothing was changed)");
                 throw new UsageException($"{command}: {option} '{path}' is a file, not a folder");
             }
+            // Creating it would fail with "Could not find a part of the path", which does not say which part.
+            if (FileAmongParents(path) is string parent)
+                throw new UsageException($"{command}: {option} '{path}' lies under '{parent}', which is a file, not a folder");
             Directory.CreateDirectory(path);
             var folder = new OutputFolder(path);
             if (Directory.Exists(folder.ManifestPath) || new FileInfo(folder.ManifestPath).LinkTarget != null)
@@ -79,6 +82,14 @@ public sealed class OutputFolder
         {
             throw new UsageException($"{command}: {option} '{path}' cannot be used as the output folder: {e.Message}");
         }
+    }
+
+    /// <summary>The nearest folder of <paramref name="path"/>'s that is a file, or null.</summary>
+    static string? FileAmongParents(string path)
+    {
+        for (string? dir = IoPath.GetDirectoryName(IoPath.GetFullPath(path)); !string.IsNullOrEmpty(dir); dir = IoPath.GetDirectoryName(dir))
+            if (File.Exists(dir)) return dir;
+        return null;
     }
 
     /// <summary>The first three names of <paramref name="entries"/> that <paramref name="match"/>, in order, and how many

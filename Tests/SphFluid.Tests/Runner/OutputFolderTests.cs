@@ -131,6 +131,18 @@ namespace SphFluid.Tests.Runner
             Assert.That(File.ReadAllText(file), Is.EqualTo("x"));
         }
 
+        /// <summary>A path under a file was refused with "Could not find a part of the path"; the message now names the file.</summary>
+        [Test]
+        public void AnOutputPathUnderAFileNamesTheFile()
+        {
+            string file = Path.Combine(RunnerPaths.ScratchFolder("under-file"), "scene.unity");
+            File.WriteAllText(file, "x");
+            string path = Path.Combine(file, "out", "deeper");
+            var e = Assert.Throws<UsageException>(() => OutputFolder.Claim(path, "--out", "simulate"));
+            Assert.That(e.Message, Is.EqualTo($"simulate: --out '{path}' lies under '{file}', which is a file, not a folder"));
+            Assert.That(File.ReadAllText(file), Is.EqualTo("x"));
+        }
+
         /// <summary>A link that loops (ln -s loop loop) was refused as "a file, not a folder"; it is a link.</summary>
         [Test]
         public void AnOutputPathThatIsALinkToNoFolderIsRefusedAsALink()
