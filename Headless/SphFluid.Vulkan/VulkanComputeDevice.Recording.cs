@@ -23,10 +23,11 @@ public sealed unsafe partial class VulkanComputeDevice
         public readonly List<(VkBuffer Buffer, DeviceMemory Memory, ulong Size, IntPtr Mapped)> UniformChunks = new();
         public int ChunkIndex;
         public ulong ChunkOffset;
-        public readonly List<QueryPool> QueryPools = new();
-        public uint QueriesUsed;
+        public readonly QuerySet Timestamps = new(QueryType.Timestamp);
+        public readonly QuerySet Invocations = new(QueryType.PipelineStatistics, QueryPipelineStatisticFlags.ComputeShaderInvocationsBit);
         public int Dispatches;
         public readonly List<(string Kernel, uint Query)> DispatchQueries = new();
+        public readonly List<(string Kernel, uint Query)> InvocationQueries = new();
         public readonly List<(string Name, uint Begin, uint End)> Samples = new();
     }
 
@@ -181,9 +182,10 @@ public sealed unsafe partial class VulkanComputeDevice
         uint q = 0;
         if (timed)
         {
-            q = AllocateQuery(frame, 2);
+            q = AllocateQuery(frame, frame.Timestamps, 2);
             WriteTimestamp(frame, q);
         }
+        uint counter = CountInvocations ? BeginInvocationCount(frame) : 0;
         if (indirect != null)
         {
             indirect.LastUsedSerial = frame.Serial;
@@ -193,6 +195,7 @@ public sealed unsafe partial class VulkanComputeDevice
         {
             _vk.CmdDispatch(cmd, (uint)groupsX, (uint)groupsY, (uint)groupsZ);
         }
+        if (CountInvocations) EndInvocationCount(frame, v.Kernel, counter);
         if (timed)
         {
             WriteTimestamp(frame, q + 1);
@@ -232,7 +235,7 @@ public sealed unsafe partial class VulkanComputeDevice
             _vk.DestroyBuffer(_device, c.Buffer, null);
             _vk.FreeMemory(_device, c.Memory, null);
         }
-        foreach (var qp in f.QueryPools) _vk.DestroyQueryPool(_device, qp, null);
+        foreach (var qp in f.Timestamps.Pools.Concat(f.Invocations.Pools)) _vk.DestroyQueryPool(_device, qp, null);
         if (f.Fence.Handle != 0) _vk.DestroyFence(_device, f.Fence, null);
         if (f.Pool.Handle != 0) _vk.DestroyCommandPool(_device, f.Pool, null);
     }
@@ -247,9 +250,11 @@ public sealed unsafe partial class VulkanComputeDevice
         f.DescriptorPoolIndex = 0;
         f.ChunkIndex = 0;
         f.ChunkOffset = 0;
-        f.QueriesUsed = 0;
+        f.Timestamps.Used = 0;
+        f.Invocations.Used = 0;
         f.Dispatches = 0;
         f.DispatchQueries.Clear();
+        f.InvocationQueries.Clear();
         f.Samples.Clear();
         f.Serial = _submittedSerial + 1;
         var begin = new CommandBufferBeginInfo { SType = StructureType.CommandBufferBeginInfo, Flags = CommandBufferUsageFlags.OneTimeSubmitBit };
@@ -384,19 +389,9 @@ public sealed unsafe partial class VulkanComputeDevice
 
     void Harvest(Frame f)
     {
-        if (f.QueriesUsed == 0) return;
-        var stamps = new ulong[f.QueriesUsed];
-        fixed (ulong* dst = stamps)
-        {
-            for (int i = 0; i < f.QueryPools.Count; i++)
-            {
-                uint first = (uint)i * QueriesPerPool;
-                if (first >= f.QueriesUsed) break;
-                uint n = Math.Min(QueriesPerPool, f.QueriesUsed - first);
-                // Skipped slots (a pair never straddles pools) were reset but never written: read only what is available.
-                _vk.GetQueryPoolResults(_device, f.QueryPools[i], 0, n, (nuint)(n * 8), dst + first, 8, QueryResultFlags.Result64Bit);
-            }
-        }
+        HarvestInvocations(f);
+        if (f.Timestamps.Used == 0) return;
+        var stamps = ReadQueries(f.Timestamps);
         double Ms(uint begin, uint end) => ((stamps[end] - stamps[begin]) & _timestampMask) * _timestampPeriodNs / 1e6;
         if (f.DispatchQueries.Count > 0)
         {

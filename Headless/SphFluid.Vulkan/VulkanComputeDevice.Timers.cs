@@ -9,30 +9,11 @@ namespace SphFluid.Vulkan;
 /// <summary>GPU timing: timestamp queries around dispatches and named sample ranges, read when a submit's fence has signalled.</summary>
 public sealed unsafe partial class VulkanComputeDevice
 {
-    uint AllocateQuery(Frame f, uint count)
+    void WriteTimestamp(Frame f, uint query)
     {
-        // Keep a pair inside one pool.
-        uint inPool = f.QueriesUsed % QueriesPerPool;
-        if (inPool + count > QueriesPerPool) f.QueriesUsed += QueriesPerPool - inPool;
-        uint first = f.QueriesUsed;
-        for (uint q = first; q < first + count; q++)
-        {
-            if (q % QueriesPerPool != 0) continue;
-            int poolIndex = (int)(q / QueriesPerPool);
-            if (poolIndex == f.QueryPools.Count)
-            {
-                var info = new QueryPoolCreateInfo { SType = StructureType.QueryPoolCreateInfo, QueryType = QueryType.Timestamp, QueryCount = QueriesPerPool };
-                Check(_vk.CreateQueryPool(_device, &info, null, out var pool), "vkCreateQueryPool");
-                f.QueryPools.Add(pool);
-            }
-            _vk.CmdResetQueryPool(f.Cmd, f.QueryPools[poolIndex], 0, QueriesPerPool);
-        }
-        f.QueriesUsed = first + count;
-        return first;
+        var (pool, index) = Slot(f.Timestamps, query);
+        _vk.CmdWriteTimestamp(f.Cmd, PipelineStageFlags.ComputeShaderBit, pool, index);
     }
-
-    void WriteTimestamp(Frame f, uint query) =>
-        _vk.CmdWriteTimestamp(f.Cmd, PipelineStageFlags.ComputeShaderBit, f.QueryPools[(int)(query / QueriesPerPool)], query % QueriesPerPool);
 
     public void BeginSample(string name)
     {
@@ -40,7 +21,7 @@ public sealed unsafe partial class VulkanComputeDevice
         if (name == null) throw new ArgumentNullException(nameof(name));
         if (!_canTime) return;
         var f = BeginRecording();
-        uint q = AllocateQuery(f, 1);
+        uint q = AllocateQuery(f, f.Timestamps, 1);
         WriteTimestamp(f, q);
         _openSamples[name] = q;
         _samplesCutBySubmit.Remove(name);
@@ -56,7 +37,7 @@ public sealed unsafe partial class VulkanComputeDevice
         if (_recording == null || !_openSamples.Remove(name, out uint begin))
             throw new ComputeException($"EndSample('{name}') without a matching BeginSample('{name}') since the last Submit");
         var f = _recording;
-        uint end = AllocateQuery(f, 1);
+        uint end = AllocateQuery(f, f.Timestamps, 1);
         WriteTimestamp(f, end);
         f.Samples.Add((name, begin, end));
         _sampleSerial[name] = f.Serial;

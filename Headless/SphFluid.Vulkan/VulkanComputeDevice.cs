@@ -321,8 +321,11 @@ public sealed unsafe partial class VulkanComputeDevice : IComputeDevice
             RobustBufferAccess = _options.RobustBufferAccess && supported.RobustBufferAccess,
             // RWTexture<float2> is an Rg32f storage image, one of the "extended" formats.
             ShaderStorageImageExtendedFormats = supported.ShaderStorageImageExtendedFormats,
+            // Costs nothing until a query uses it (CountInvocations).
+            PipelineStatisticsQuery = supported.PipelineStatisticsQuery,
         };
         RobustBufferAccess = features.RobustBufferAccess;
+        CanCountInvocations = features.PipelineStatisticsQuery;
         var info = new DeviceCreateInfo
         {
             SType = StructureType.DeviceCreateInfo, QueueCreateInfoCount = 1, PQueueCreateInfos = &queueInfo, PEnabledFeatures = &features,
