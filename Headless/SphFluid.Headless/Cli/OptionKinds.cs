@@ -56,10 +56,14 @@ public static class OptionKinds
         return NeedsAValue(option, command, name);
     }
 
+    /// <summary>A word or path. A blank one (<c>--device ""</c>) is refused: taken as given, the run went ahead on the
+    /// best adapter, as if the option had been left out.</summary>
     public static Option<string> Text(string command, string name, string valueName, string description)
     {
         var option = new Option<string>(name) { Description = description, HelpName = valueName, Arity = ArgumentArity.ZeroOrOne };
-        option.CustomParser = r => Guard(r, command, name, text => text);
+        option.CustomParser = r => Guard(r, command, name, text => string.IsNullOrWhiteSpace(text)
+            ? throw new UsageException($"{command}: option {name} needs a {valueName} (was {(text.Length == 0 ? "empty" : "blank")})")
+            : text);
         return option;
     }
 

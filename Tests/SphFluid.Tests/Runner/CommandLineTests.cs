@@ -210,6 +210,19 @@ namespace SphFluid.Tests.Runner
             Assert.That(err, Does.Match(@"^sphfluid: no Vulkan device: SPHFLUID_VULKAN_DEVICE 'NoSuchAdapter' matches no Vulkan adapter \(adapters: [^;]+; unset it, or pass --device\)$"));
         }
 
+        /// <summary>A blank adapter name or folder is refused at parsing: the blank --device ran on the best adapter as if
+        /// the option had been left out.</summary>
+        [Test]
+        public void ABlankDeviceOrFolderIsRefusedByName()
+        {
+            var empty = Assert.Throws<UsageException>(() => SimulateOptions.Parse(new[] { "x.unity", "--device", "" }));
+            Assert.That(empty.Message, Is.EqualTo("simulate: option --device needs a NAME (was empty)"));
+            var blank = Assert.Throws<UsageException>(() => BenchOptions.Parse(new[] { "x.unity", "--device", " " }));
+            Assert.That(blank.Message, Is.EqualTo("bench: option --device needs a NAME (was blank)"));
+            var folder = Assert.Throws<UsageException>(() => StudyOptions.Parse(new[] { "x.unity", "--out", "" }));
+            Assert.That(folder.Message, Is.EqualTo("study: option --out needs a DIR (was empty)"));
+        }
+
         [Test]
         public void LavapipeNamesMesasCpuAdapterWhoseNameIsLlvmpipe()
         {
