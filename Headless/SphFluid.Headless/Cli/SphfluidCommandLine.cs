@@ -144,7 +144,8 @@ phase and figure).";
             // An unknown option before the scene is taken for the scene, and the scene then is the odd one out.
             string token = result.Tokens.FirstOrDefault(t => t.Type == TokenType.Argument && Ranges.LooksLikeOption(t.Value))?.Value
                 ?? result.UnmatchedTokens[0];
-            if (name == null)
+            // An option before the command (sphfluid --seconds 1 simulate) is the root's to refuse: the command has it.
+            if (name == null || BeforeTheCommand(result, token))
                 return Ranges.LooksLikeOption(token)
                     ? $"has no option {token} of its own; a command's options follow the command (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)"
                     : $"has no command '{token}' (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)";
@@ -156,5 +157,13 @@ phase and figure).";
         string message = result.Errors[0].Message;
         if (name == null) return $"refuses the command line: {message} (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)";
         return message.StartsWith(name + ":", System.StringComparison.Ordinal) ? message : $"{name}: {message}";
+    }
+
+    static bool BeforeTheCommand(ParseResult result, string token)
+    {
+        var tokens = result.Tokens.ToList();
+        int command = tokens.FindIndex(t => t.Type == TokenType.Command);
+        int at = tokens.FindIndex(t => t.Value == token);
+        return command >= 0 && at >= 0 && at < command;
     }
 }

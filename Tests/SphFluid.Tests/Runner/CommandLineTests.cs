@@ -135,6 +135,8 @@ namespace SphFluid.Tests.Runner
             Assert.That(err, Does.StartWith("sphfluid has no command 'render' (commands: simulate, bench, study; see sphfluid --help)"));
             Assert.That(Run(out _, out err, "--seconds", "1"), Is.EqualTo(ExitCodes.BadArguments));
             Assert.That(err, Does.StartWith("sphfluid has no option --seconds of its own; a command's options follow the command"));
+            Assert.That(Run(out _, out err, "--seconds", "1", "simulate", "x.unity"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.StartWith("sphfluid has no option --seconds of its own"), "simulate has --seconds: it stood before the command");
             Assert.That(Run(out _, out _), Is.EqualTo(ExitCodes.BadArguments));
         }
 
