@@ -14,9 +14,11 @@ namespace SphFluid.Headless.Output;
 /// first recorded in a manifest (<see cref="ManifestName"/>) in that folder; a later run deletes exactly the
 /// files an earlier run's manifest lists, so stale frames, CSV and summary never outlive their run. A file the
 /// runner would write but that no manifest lists belongs to someone else: the run refuses the folder rather
-/// than overwrite it.
+/// than overwrite it. A run holds its manifest open, locked against every other, until it is disposed: two runs given
+/// one folder (two scenes' runs started at once with the same default --out) would each delete the other's files and
+/// leave a manifest that lists only one run's, so the second is refused while the first runs.
 /// </summary>
-public sealed class OutputFolder
+public sealed class OutputFolder : IDisposable
 {
     /// <summary>The manifest of the files sphfluid wrote here, one file name a line.</summary>
     public const string ManifestName = ".sphfluid-outputs";
@@ -25,8 +27,13 @@ public sealed class OutputFolder
     static readonly Regex OwnName = new(@"^(frame_\d{4,}\.png|top_\d{4,}\.png|layering\.(png|svg)|bench-scaling\.(png|svg)|study\.(csv|md)|study-pareto\.(png|svg)|diagnostics\.csv|summary\.txt|particles_\d{4,}\.(vtu|ply)|particles\.pvd)$", RegexOptions.CultureInvariant);
 
     readonly HashSet<string> _written = new(StringComparer.Ordinal);
+    readonly FileStream _manifest;
 
-    OutputFolder(string path) => Path = path;
+    OutputFolder(string path, FileStream manifest)
+    {
+        Path = path;
+        _manifest = manifest;
+    }
 
     /// <summary>The folder, as given.</summary>
     public string Path { get; }
@@ -59,30 +66,63 @@ public sealed class OutputFolder
             if (FileAmongParents(path) is string parent)
                 throw new UsageException($"{command}: {option} '{path}' lies under '{parent}', which is a file, not a folder");
             Directory.CreateDirectory(path);
-            var folder = new OutputFolder(path);
-            if (Directory.Exists(folder.ManifestPath) || new FileInfo(folder.ManifestPath).LinkTarget != null)
+            string manifestPath = IoPath.Combine(path, ManifestName);
+            if (Directory.Exists(manifestPath) || new FileInfo(manifestPath).LinkTarget != null)
                 throw new UsageException($"{command}: {option} '{path}' holds a {ManifestName} that is a link or a folder, not the plain file " +
                     "sphfluid writes; choose an empty or new folder (nothing was changed)");
-            if (FirstNames(Directory.EnumerateDirectories(path), IsRunnerName) is string folders)
-                throw new UsageException($"{command}: {option} '{path}' holds a folder named {folders}, where sphfluid writes a file; " +
-                    "choose an empty or new folder (nothing was changed)");
-            var claimed = folder.ReadManifest();
-            if (FirstNames(Directory.EnumerateFiles(path), name => IsRunnerName(name) && !claimed.Contains(name)) is string foreign)
-                throw new UsageException($"{command}: {option} '{path}' already holds {foreign} that sphfluid did not write; " +
-                    "choose an empty or new folder (nothing was deleted)");
-            foreach (string name in claimed)
+            bool manifestExisted = File.Exists(manifestPath);
+            var manifest = OpenHeld(manifestPath, path, option, command);
+            try
             {
-                string file = IoPath.Combine(path, name);
-                if (File.Exists(file)) File.Delete(file);
+                if (FirstNames(Directory.EnumerateDirectories(path), IsRunnerName) is string folders)
+                    throw new UsageException($"{command}: {option} '{path}' holds a folder named {folders}, where sphfluid writes a file; " +
+                        "choose an empty or new folder (nothing was changed)");
+                var claimed = ReadManifest(manifest);
+                if (FirstNames(Directory.EnumerateFiles(path), name => IsRunnerName(name) && !claimed.Contains(name)) is string foreign)
+                    throw new UsageException($"{command}: {option} '{path}' already holds {foreign} that sphfluid did not write; " +
+                        "choose an empty or new folder (nothing was deleted)");
+                foreach (string name in claimed)
+                {
+                    string file = IoPath.Combine(path, name);
+                    if (File.Exists(file)) File.Delete(file);
+                }
+                manifest.SetLength(0);
+                manifest.Position = 0;
+                return new OutputFolder(path, manifest);
             }
-            File.WriteAllText(folder.ManifestPath, "");
-            return folder;
+            catch
+            {
+                manifest.Dispose();
+                // A refused folder keeps nothing of the run, not even the empty manifest it opened to lock.
+                if (!manifestExisted) File.Delete(manifestPath);
+                throw;
+            }
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
         {
             throw new UsageException($"{command}: {option} '{path}' cannot be used as the output folder: {e.Message}");
         }
     }
+
+    /// <summary>The manifest, opened (made where there is none) and locked against every other open until the run
+    /// disposes it; held by another run, the folder is refused.</summary>
+    static FileStream OpenHeld(string manifestPath, string path, string option, string command)
+    {
+        try
+        {
+            return new FileStream(manifestPath, FileMode.OpenOrCreate, FileAccess.ReadWrite, FileShare.None);
+        }
+        catch (IOException e) when (IsHeldByAnother(e))
+        {
+            throw new UsageException($"{command}: {option} '{path}' is in use by another sphfluid run (it holds {ManifestName} open); " +
+                "give another folder, or wait for that run to end (nothing was changed)");
+        }
+    }
+
+    /// <summary>A sharing violation: EWOULDBLOCK from the advisory lock .NET takes on Unix, ERROR_SHARING_VIOLATION or
+    /// ERROR_LOCK_VIOLATION on Windows.</summary>
+    static bool IsHeldByAnother(IOException e) =>
+        OperatingSystem.IsWindows() ? (e.HResult & 0xFFFF) is 32 or 33 : e.HResult is 11 or 35;
 
     /// <summary>The nearest folder of <paramref name="path"/>'s that is a file, or null.</summary>
     static string? FileAmongParents(string path)
@@ -101,15 +141,17 @@ public sealed class OutputFolder
         return string.Join(", ", names.Take(3)) + (names.Count > 3 ? $" and {names.Count - 3} more" : "");
     }
 
-    string ManifestPath => IoPath.Combine(Path, ManifestName);
-
     /// <summary>The full path for <paramref name="fileName"/>, recorded in the manifest before anything is written to it.</summary>
     public string PathOf(string fileName)
     {
         if (!IsRunnerName(fileName))
             throw new ArgumentException($"OutputFolder: '{fileName}' is not a name the runner writes", nameof(fileName));
         if (_written.Add(fileName))
-            File.AppendAllText(ManifestPath, fileName + "\n");
+        {
+            // Flushed at once, so that a run that dies leaves every file it began listed for the next run to remove.
+            _manifest.Write(Encoding.UTF8.GetBytes(fileName + "\n"));
+            _manifest.Flush();
+        }
         return IoPath.Combine(Path, fileName);
     }
 
@@ -121,10 +163,19 @@ public sealed class OutputFolder
     public void Write(string fileName, Action<Stream> write)
     {
         string path = PathOf(fileName);
+        FileStream file;
         try
         {
-            using var file = File.Create(path);
-            write(file);
+            file = File.Create(path);
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            // Nothing was made, so there is no part to remove (a folder taken away mid-run).
+            throw new IOException($"cannot write {path}: {e.Message}", e);
+        }
+        try
+        {
+            using (file) write(file);
         }
         catch (Exception e)
         {
@@ -164,11 +215,11 @@ public sealed class OutputFolder
         }
     }
 
-    HashSet<string> ReadManifest()
+    static HashSet<string> ReadManifest(FileStream manifest)
     {
         var names = new HashSet<string>(StringComparer.Ordinal);
-        if (!File.Exists(ManifestPath)) return names;
-        foreach (string line in File.ReadLines(ManifestPath))
+        using var reader = new StreamReader(manifest, Encoding.UTF8, detectEncodingFromByteOrderMarks: false, bufferSize: 4096, leaveOpen: true);
+        for (string? line = reader.ReadLine(); line != null; line = reader.ReadLine())
         {
             // Only bare runner names count: a manifest edited to name "../x" or "notes.txt" deletes nothing.
             string name = line.Trim();
@@ -176,4 +227,7 @@ public sealed class OutputFolder
         }
         return names;
     }
+
+    /// <summary>Releases the manifest, and with it the folder, to the next run.</summary>
+    public void Dispose() => _manifest.Dispose();
 }

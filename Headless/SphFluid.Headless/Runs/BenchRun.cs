@@ -68,7 +68,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         var descriptions = options.Particles.Count > 0 ? options.Particles.Select(n => ScaledTo(n)).ToList()
             : options.ParticleScales.Count > 0 ? options.ParticleScales.Select(f => ScaledBy(f)).ToList()
             : new List<FluidSceneDescription> { ScaledBy(1) };
-        var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name + "-bench"), "--out", "bench");
+        using var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name + "-bench"), "--out", "bench");
         IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "bench", out IDisposable? owned);
         try
         {

@@ -56,7 +56,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
             string scaleOption = onCpu ? "--particles-scale times --cpu-particles-scale" : "--particles-scale";
             SceneFit.RequireScaled(description, "simulate", scaleOption, scale.ToString("G6", C));
             SceneFit.RequireDevice(description, device, "simulate", scene.Path, scale == 1.0 ? null : scaleOption, scale.ToString("G6", C));
-            var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name), "--out", "simulate");
+            using var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name), "--out", "simulate");
             RequireExportSpace(output, SpawnLayout.TotalCount(description));
             using var simulation = new FluidSimulation(device, description);
             string scaled = sceneCount == simulation.ParticleCount ? ""

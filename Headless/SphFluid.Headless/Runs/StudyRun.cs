@@ -89,7 +89,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         var configs = Matrix(scene.Description.Settings);
         // Every configuration is made into a scene before the device opens: an impossible one is refused by name first.
         var descriptions = configs.Select(c => Describe(c)).ToList();
-        var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name + "-study"), "--out", "study");
+        using var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name + "-study"), "--out", "study");
         IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "study", out IDisposable? owned);
         try
         {

@@ -91,6 +91,7 @@ namespace SphFluid.Tests.Output
 
             export.Write(0.0, first, firstDensities);
             export.Write(0.25, second, secondDensities);
+            output.Dispose(); // the run's end: its manifest is the next run's to read
 
             Assert.That(export.Count, Is.EqualTo(2));
             foreach (string name in new[] { "particles_0000.vtu", "particles_0000.ply", "particles_0001.vtu", "particles_0001.ply", "particles.pvd" })
@@ -115,7 +116,8 @@ namespace SphFluid.Tests.Output
         public void AnExportsSizeIsKnownBeforeItIsWritten(int n)
         {
             string dir = RunnerPaths.ScratchFolder("export-size-" + n);
-            var export = new ParticleExport(OutputFolder.Claim(dir, "--out", "test"));
+            using var output = OutputFolder.Claim(dir, "--out", "test");
+            var export = new ParticleExport(output);
             var (particles, densities) = Sample(n, 5);
 
             export.Write(0.5, particles, densities);

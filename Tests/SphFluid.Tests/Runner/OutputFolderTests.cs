@@ -82,7 +82,7 @@ namespace SphFluid.Tests.Runner
             File.WriteAllText(Path.Combine(dir, "keep.png"), "mine");
             File.WriteAllText(Path.Combine(dir, OutputFolder.ManifestName), "keep.png\n../keep.png\nsummary.txt\n");
 
-            OutputFolder.Claim(dir, "--out", "simulate");
+            OutputFolder.Claim(dir, "--out", "simulate").Dispose();
 
             Assert.That(File.Exists(Path.Combine(dir, "keep.png")), Is.True);
         }
@@ -178,6 +178,26 @@ namespace SphFluid.Tests.Runner
                 "no diagnostics, no manifest: the run never started");
         }
 
+        /// <summary>Two runs given one folder at once (two scenes' runs started together with the same --out) would each
+        /// delete what the other wrote and leave a manifest that lists one run's files: the second is refused while the
+        /// first holds the folder, and takes it once the first is done.</summary>
+        [Test]
+        public void AFolderARunHoldsIsRefusedToASecondUntilTheFirstEnds()
+        {
+            string dir = RunnerPaths.ScratchFolder("held");
+            var first = OutputFolder.Claim(dir, "--out", "simulate");
+            first.WriteText("summary.txt", "the first run's");
+
+            var e = Assert.Throws<UsageException>(() => OutputFolder.Claim(dir, "--out", "bench"));
+            Assert.That(e.Message, Is.EqualTo($"bench: --out '{dir}' is in use by another sphfluid run (it holds {OutputFolder.ManifestName} open); " +
+                "give another folder, or wait for that run to end (nothing was changed)"));
+            Assert.That(File.ReadAllText(Path.Combine(dir, "summary.txt")), Is.EqualTo("the first run's"));
+
+            first.Dispose();
+            using var second = OutputFolder.Claim(dir, "--out", "bench");
+            Assert.That(File.Exists(Path.Combine(dir, "summary.txt")), Is.False, "the first run's outputs are the second's to replace");
+        }
+
         [Test]
         public void AWriteThatFailsLeavesNoPartOfItsFile()
         {
@@ -195,6 +215,7 @@ namespace SphFluid.Tests.Runner
 
             Assert.That(failure.Message, Is.EqualTo($"cannot write {path}: No space left on device; the part written was removed"));
             Assert.That(File.Exists(path), Is.False, "no truncated file is left to pass for an output");
+            output.Dispose();
             Assert.That(File.ReadAllLines(Path.Combine(dir, OutputFolder.ManifestName)), Does.Contain("frame_0000.png"), "the name stays claimed");
         }
 
@@ -222,8 +243,8 @@ namespace SphFluid.Tests.Runner
         }
 
         /// <summary>
-        /// The command line's file-error exit, end to end: the folder goes mid-run, so the next file the run writes (its
-        /// record of outputs, .sphfluid-outputs) cannot be. The command stops with exit 1 and says which file it could not write, instead of an unexpected
+        /// The command line's file-error exit, end to end: the folder goes mid-run, so the next file the run writes (a
+        /// frame) cannot be made. The command stops with exit 1 and says which file it could not write, instead of an unexpected
         /// failure or a run that reports success without its outputs. (A full disk takes the same path; the writers'
         /// own cut-back on a full disk is <see cref="AWriteThatFailsLeavesNoPartOfItsFile"/> and DiagnosticsCsvColumnTests.)
         /// </summary>
@@ -238,7 +259,8 @@ namespace SphFluid.Tests.Runner
                 "--diagnostics-every", "0.05", "--out", dir }, stdout, stderr);
 
             Assert.That(code, Is.EqualTo(ExitCodes.Failure), stdout.ToString() + stderr);
-            Assert.That(stderr.ToString(), Does.Contain("sphfluid: file error, the command stopped: Could not find a part of the path '" + dir + Path.DirectorySeparatorChar));
+            Assert.That(stderr.ToString(), Does.Contain("sphfluid: file error, the command stopped: cannot write " + dir + Path.DirectorySeparatorChar + "frame_")
+                .And.Contain("Could not find a part of the path").And.Not.Contain("the part written"), "nothing was made, so nothing is said to be left");
             Assert.That(stdout.ToString(), Does.Not.Contain("t= 0.100 s"), "the run stopped at the first write it could not make");
             Assert.That(stdout.ToString(), Does.Not.Contain("done ("), "no report of a finished run");
         }
