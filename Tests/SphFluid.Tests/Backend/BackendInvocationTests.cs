@@ -1,6 +1,7 @@
 using System.Linq;
 using NUnit.Framework;
 using SphFluid.Compute;
+using SphFluid.Vulkan;
 
 namespace SphFluid.Tests.Backend
 {
@@ -11,11 +12,18 @@ namespace SphFluid.Tests.Backend
         const int Items = 1000;
         const int GroupSize = 64; // AddOne's numthreads
 
-        [Test]
-        public void EachDispatchCountsItsGroupsThreads_AnIndirectOneOfNoGroupsNone()
+        /// <summary>The shared device; the test is ignored where it cannot count.</summary>
+        static VulkanComputeDevice CountingDevice()
         {
             var device = GpuTestDevice.Shared;
             if (!device.CanCountInvocations) Assert.Ignore($"{device.DeviceName} has no pipelineStatisticsQuery");
+            return device;
+        }
+
+        [Test]
+        public void EachDispatchCountsItsGroupsThreads_AnIndirectOneOfNoGroupsNone()
+        {
+            var device = CountingDevice();
             var program = device.LoadProgram("BackendBuffers");
             int kernel = program.FindKernel("AddOne");
             using var counter = device.CreateBuffer("Counter", Items, sizeof(uint));
@@ -43,8 +51,7 @@ namespace SphFluid.Tests.Backend
         [Test]
         public void ASubmitThatCountedNoneLeavesTheLastCounts()
         {
-            var device = GpuTestDevice.Shared;
-            if (!device.CanCountInvocations) Assert.Ignore($"{device.DeviceName} has no pipelineStatisticsQuery");
+            var device = CountingDevice();
             var program = device.LoadProgram("BackendBuffers");
             int kernel = program.FindKernel("CountUp");
             using var counter = device.CreateBuffer("Counter", 1, sizeof(uint));
