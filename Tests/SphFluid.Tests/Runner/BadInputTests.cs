@@ -284,7 +284,8 @@ namespace SphFluid.Tests.Runner
             AssertNothingActsOnATerminal(run);
         }
 
-        /// <summary>A file that is no scene is quoted from its first line, which held a binary file's bytes as read.</summary>
+        /// <summary>A file that is no scene is refused with its first line quoted, control characters escaped: the quote once
+        /// carried a binary file's bytes to the terminal as they were.</summary>
         [Test]
         public void AFileOfControlCharactersIsQuotedEscaped()
         {
