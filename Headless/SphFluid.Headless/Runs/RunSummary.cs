@@ -71,7 +71,7 @@ public sealed record RunSummary(LoadedScene Scene, FluidSimulation Simulation, s
         {
             var p = m.Phases[k];
             // A '|' in the name is escaped, as in Markdown, so that the bars still part the columns.
-            b.AppendLine(string.Format(C, "  {0} | {1:P2} / {2:P2} | {3:P2} / {4:P2} | {5:F4} | {6:F4} | {7:F4} | {8:P1} | {9:P1}", phases[k].Name.Replace("|", "\\|"),
+            b.AppendLine(string.Format(C, "  {0} | {1:P2} / {2:P2} | {3:P2} / {4:P2} | {5:F4} | {6:F4} | {7:F4} | {8:P1} | {9:P1}", MarkdownCell.Escape(phases[k].Name),
                 p.CompressionAverage, p.CompressionMax, p.ExpansionAverage, p.ExpansionMax, p.MeanHeight, p.Bottom, p.Top, p.FloorShare, p.WallShare));
         }
         if (phases.Count > 1)

@@ -330,7 +330,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         foreach (var r in Rows)
         {
             // A '|' in a phase name would end the cell in Markdown.
-            string density = string.Join("; ", r.PhaseNames.Select((p, k) => string.Format(C, "{0} {1:P2} / {2:P2}", p.Replace("|", "\\|"), r.DensityErrorAverage[k], r.DensityErrorMax[k])));
+            string density = string.Join("; ", r.PhaseNames.Select((p, k) => string.Format(C, "{0} {1:P2} / {2:P2}", MarkdownCell.Escape(p), r.DensityErrorAverage[k], r.DensityErrorMax[k])));
             string cutOff = r.Config.Solver == PressureSolver.Dfsph
                 ? r.DensitySolvesCutOff.ToString("P1", C) + " / " + r.DivergenceSolvesCutOff.ToString("P1", C) : "-";
             // A scene of one liquid has no layering to measure (NaN in the CSV); the table says so with a dash, as for
