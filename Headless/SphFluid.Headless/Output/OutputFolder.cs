@@ -15,7 +15,7 @@ namespace SphFluid.Headless.Output;
 /// files an earlier run's manifest lists, so stale frames, CSV and summary never outlive their run. A file the
 /// runner would write but that no manifest lists belongs to someone else: the run refuses the folder rather
 /// than overwrite it. A run holds its manifest open, locked against every other, until it is disposed: two runs given
-/// one folder (two scenes' runs started at once with the same default --out) would each delete the other's files and
+/// one folder (two runs of one scene started at once share its default --out) would each delete the other's files and
 /// leave a manifest that lists only one run's, so the second is refused while the first runs.
 /// </summary>
 public sealed class OutputFolder : IDisposable

@@ -178,7 +178,7 @@ namespace SphFluid.Tests.Runner
                 "no diagnostics, no manifest: the run never started");
         }
 
-        /// <summary>Two runs given one folder at once (two scenes' runs started together with the same --out) would each
+        /// <summary>Two runs given one folder at once (two runs of one scene started together share its default --out) would each
         /// delete what the other wrote and leave a manifest that lists one run's files: the second is refused while the
         /// first holds the folder, and takes it once the first is done.</summary>
         [Test]
