@@ -39,6 +39,25 @@ public sealed class ShaderCompiler
         _toolFingerprint = new Lazy<string>(() => Fingerprint(_glslang) + "|" + Fingerprint(_spirvVal));
     }
 
+    /// <summary>Why compiled kernels cannot be kept in <see cref="CacheDirectory"/> (it is a file, or cannot be made or
+    /// written), or null where they can. Compile passes such a cache over without a word, since it costs only time;
+    /// this says so before a run pays it. Writes and removes one empty probe file of its own there.</summary>
+    public string? CacheProblem()
+    {
+        try
+        {
+            Directory.CreateDirectory(CacheDirectory);
+            string probe = Path.Combine(CacheDirectory, $".probe-{Guid.NewGuid():N}.tmp");
+            File.WriteAllBytes(probe, Array.Empty<byte>());
+            File.Delete(probe);
+            return null;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException or ArgumentException or NotSupportedException)
+        {
+            return e.Message;
+        }
+    }
+
     public static string DefaultCacheDirectory()
     {
         string? env = Environment.GetEnvironmentVariable("SPHFLUID_SHADER_CACHE");

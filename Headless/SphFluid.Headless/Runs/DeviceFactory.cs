@@ -12,13 +12,18 @@ public static class DeviceFactory
     /// <exception cref="VulkanUnavailableException">No Vulkan driver, or no adapter has the name SPHFLUID_VULKAN_DEVICE gives.</exception>
     /// <exception cref="UsageException">No adapter's name contains <paramref name="deviceName"/> (the --device argument).</exception>
     /// <summary>The device a run was given (tests share theirs; the run must not dispose it), else a new one that the
-    /// caller disposes through <paramref name="owned"/>.</summary>
-    public static IComputeDevice GivenOrOpen(IComputeDevice? given, string projectRoot, string? deviceName, string command, out IDisposable? owned)
+    /// caller disposes through <paramref name="owned"/>; a new one whose shader cache cannot be written is warned of on
+    /// <paramref name="warnings"/>, since every run would then compile its kernels afresh without saying why.</summary>
+    public static IComputeDevice GivenOrOpen(IComputeDevice? given, string projectRoot, string? deviceName, string command, TextWriter warnings,
+        out IDisposable? owned)
     {
         owned = null;
         if (given != null) return given;
         var opened = Open(projectRoot, deviceName, command);
         owned = opened;
+        if (opened.Compiler.CacheProblem() is string why)
+            warnings.WriteLine($"{command}: warning: the shader cache '{opened.Compiler.CacheDirectory}' cannot be written ({why}); every run " +
+                "compiles afresh each kernel not already kept there (set SPHFLUID_SHADER_CACHE to a folder it can write)");
         return opened;
     }
 

@@ -1,5 +1,6 @@
 using System.IO;
 using NUnit.Framework;
+using SphFluid.Headless.Runs;
 using SphFluid.Vulkan;
 
 namespace SphFluid.Tests.Backend
@@ -58,6 +59,44 @@ namespace SphFluid.Tests.Backend
             File.WriteAllText(include, "static const float Value = 2.0f;\n");
             second.Compile(ComputeSource.Load(path, dirs), "Main", new string[0], dirs);
             Assert.That(second.CompileCount, Is.EqualTo(2), "an edited include invalidates the entry");
+        }
+
+        /// <summary>A cache folder that cannot be written costs every run its compiles, so it is named; the probe leaves
+        /// nothing behind.</summary>
+        [Test]
+        public void ACacheThatCannotBeWrittenIsNamed_AWritableOneKeepsNoProbe()
+        {
+            string file = Path.Combine(_dir, "a-file");
+            File.WriteAllText(file, "not a folder");
+            Assert.That(new ShaderCompiler(file).CacheProblem(), Does.Contain(file));
+            Assert.That(new ShaderCompiler(Path.Combine(file, "below")).CacheProblem(), Is.Not.Null);
+
+            string writable = Path.Combine(_dir, "writable");
+            Assert.That(new ShaderCompiler(writable).CacheProblem(), Is.Null);
+            Assert.That(Directory.GetFileSystemEntries(writable), Is.Empty);
+        }
+
+        /// <summary>A run that opens its device says so on its error stream, before it pays for the compiles.</summary>
+        [Test]
+        public void ARunWhoseCacheCannotBeWrittenIsWarned()
+        {
+            _ = GpuTestDevice.Shared; // ignored where no Vulkan driver exists
+            string file = Path.Combine(_dir, "a-file");
+            File.WriteAllText(file, "not a folder");
+            string? before = System.Environment.GetEnvironmentVariable("SPHFLUID_SHADER_CACHE");
+            var warnings = new StringWriter();
+            try
+            {
+                System.Environment.SetEnvironmentVariable("SPHFLUID_SHADER_CACHE", file);
+                DeviceFactory.GivenOrOpen(null, GpuTestDevice.RepoRoot, null, "simulate", warnings, out var owned);
+                owned?.Dispose();
+            }
+            finally
+            {
+                System.Environment.SetEnvironmentVariable("SPHFLUID_SHADER_CACHE", before);
+            }
+            Assert.That(warnings.ToString(), Does.StartWith($"simulate: warning: the shader cache '{file}' cannot be written (")
+                .And.Contain("set SPHFLUID_SHADER_CACHE to a folder it can write"));
         }
     }
 }
