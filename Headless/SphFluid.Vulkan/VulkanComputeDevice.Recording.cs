@@ -185,7 +185,8 @@ public sealed unsafe partial class VulkanComputeDevice
             q = AllocateQuery(frame, frame.Timestamps, 2);
             WriteTimestamp(frame, q);
         }
-        uint counter = CountInvocations ? BeginInvocationCount(frame) : 0;
+        bool counted = CountInvocations;
+        uint counter = counted ? BeginInvocationCount(frame) : 0;
         if (indirect != null)
         {
             indirect.LastUsedSerial = frame.Serial;
@@ -195,7 +196,7 @@ public sealed unsafe partial class VulkanComputeDevice
         {
             _vk.CmdDispatch(cmd, (uint)groupsX, (uint)groupsY, (uint)groupsZ);
         }
-        if (CountInvocations) EndInvocationCount(frame, v.Kernel, counter);
+        if (counted) EndInvocationCount(frame, v.Kernel, counter);
         if (timed)
         {
             WriteTimestamp(frame, q + 1);
