@@ -28,11 +28,15 @@ public sealed class OutputFolder : IDisposable
 
     readonly HashSet<string> _written = new(StringComparer.Ordinal);
     readonly FileStream _manifest;
+    readonly bool _madeManifest;
+    readonly IReadOnlyList<string> _madeFolders;
 
-    OutputFolder(string path, FileStream manifest)
+    OutputFolder(string path, FileStream manifest, bool madeManifest, IReadOnlyList<string> madeFolders)
     {
         Path = path;
         _manifest = manifest;
+        _madeManifest = madeManifest;
+        _madeFolders = madeFolders;
     }
 
     /// <summary>The folder, as given.</summary>
@@ -65,6 +69,7 @@ public sealed class OutputFolder : IDisposable
             // Creating it would fail with "Could not find a part of the path", which does not say which part.
             if (FileAmongParents(path) is string parent)
                 throw new UsageException($"{command}: {option} '{path}' lies under '{parent}', which is a file, not a folder");
+            var madeFolders = MissingFolders(path);
             Directory.CreateDirectory(path);
             string manifestPath = IoPath.Combine(path, ManifestName);
             if (Directory.Exists(manifestPath) || new FileInfo(manifestPath).LinkTarget != null)
@@ -88,7 +93,7 @@ public sealed class OutputFolder : IDisposable
                 }
                 manifest.SetLength(0);
                 manifest.Position = 0;
-                return new OutputFolder(path, manifest);
+                return new OutputFolder(path, manifest, madeManifest: !manifestExisted, madeFolders);
             }
             catch
             {
@@ -130,6 +135,15 @@ public sealed class OutputFolder : IDisposable
         for (string? dir = IoPath.GetDirectoryName(IoPath.GetFullPath(path)); !string.IsNullOrEmpty(dir); dir = IoPath.GetDirectoryName(dir))
             if (File.Exists(dir)) return dir;
         return null;
+    }
+
+    /// <summary>The folders of <paramref name="path"/> (it included) that do not exist yet, the deepest first.</summary>
+    static List<string> MissingFolders(string path)
+    {
+        var missing = new List<string>();
+        for (string? dir = IoPath.GetFullPath(path); !string.IsNullOrEmpty(dir) && !Directory.Exists(dir); dir = IoPath.GetDirectoryName(dir))
+            missing.Add(dir);
+        return missing;
     }
 
     /// <summary>The first three names of <paramref name="entries"/> that <paramref name="match"/>, in order, and how many
@@ -228,6 +242,31 @@ public sealed class OutputFolder : IDisposable
         return names;
     }
 
-    /// <summary>Releases the manifest, and with it the folder, to the next run.</summary>
-    public void Dispose() => _manifest.Dispose();
+    /// <summary>Releases the manifest, and with it the folder, to the next run. A run that wrote nothing (it stopped before
+    /// its first output: no Vulkan device, a bad environment variable) leaves nothing it made, neither the empty manifest
+    /// nor the folders the claim created for it; a manifest or folder that was there before stays.</summary>
+    public void Dispose()
+    {
+        bool leaveNothing = _written.Count == 0 && _madeManifest;
+        string manifestPath = IoPath.Combine(Path, ManifestName);
+        // Unlinked while still held where the system allows it (Unix), so that no other run opens it in between.
+        if (leaveNothing && !OperatingSystem.IsWindows()) TryRemove(() => File.Delete(manifestPath));
+        _manifest.Dispose();
+        if (!leaveNothing) return;
+        if (OperatingSystem.IsWindows()) TryRemove(() => File.Delete(manifestPath));
+        // Deepest first; a folder something else has put a file in since is not empty and stays.
+        foreach (string folder in _madeFolders) TryRemove(() => Directory.Delete(folder, recursive: false));
+    }
+
+    /// <summary>Tidying after a run that wrote nothing: what cannot be removed is left as it is.</summary>
+    static void TryRemove(Action remove)
+    {
+        try
+        {
+            remove();
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+        }
+    }
 }

@@ -198,6 +198,27 @@ namespace SphFluid.Tests.Runner
             Assert.That(File.Exists(Path.Combine(dir, "summary.txt")), Is.False, "the first run's outputs are the second's to replace");
         }
 
+        /// <summary>A run that stopped before its first output (no Vulkan device, a refused environment variable) left the
+        /// folders its --out named and an empty manifest behind. It now leaves only what was there before it.</summary>
+        [Test]
+        public void ARunThatWroteNothingLeavesNothingItMade()
+        {
+            string scratch = RunnerPaths.ScratchFolder("wrote-nothing");
+            string made = Path.Combine(scratch, "a", "b");
+            OutputFolder.Claim(made, "--out", "simulate").Dispose();
+            Assert.That(Directory.GetFileSystemEntries(scratch), Is.Empty, "the folders a and a/b the claim made, and its manifest");
+
+            OutputFolder.Claim(scratch, "--out", "simulate").Dispose();
+            Assert.That(Directory.Exists(scratch), Is.True, "a folder that was there before stays");
+            Assert.That(Directory.GetFileSystemEntries(scratch), Is.Empty);
+
+            using (var run = OutputFolder.Claim(made, "--out", "simulate")) run.WriteText("summary.txt", "written");
+            Assert.That(Directory.GetFiles(made).Select(Path.GetFileName), Is.EquivalentTo(new[] { OutputFolder.ManifestName, "summary.txt" }));
+            OutputFolder.Claim(made, "--out", "simulate").Dispose();
+            Assert.That(Directory.GetFiles(made).Select(Path.GetFileName), Is.EquivalentTo(new[] { OutputFolder.ManifestName }),
+                "a run that wrote nothing removes the earlier run's outputs, as any run does, and keeps the manifest it found");
+        }
+
         [Test]
         public void AWriteThatFailsLeavesNoPartOfItsFile()
         {
