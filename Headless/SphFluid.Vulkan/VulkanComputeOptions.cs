@@ -34,8 +34,25 @@ public sealed class VulkanComputeOptions
 
     /// <summary>Maps storage buffers straight into host memory where the device offers memory that is both
     /// device-local and host-visible (lavapipe, integrated GPUs). Off forces the staging-copy path a discrete GPU takes
-    /// (default from SPHFLUID_VULKAN_MAP_BUFFERS: "0" turns it off, to rehearse a discrete GPU on lavapipe).</summary>
-    public bool MapDeviceBuffers { get; set; } = Environment.GetEnvironmentVariable("SPHFLUID_VULKAN_MAP_BUFFERS") != "0";
+    /// (default from <see cref="MapBuffersVariable"/>: 0 turns it off, to rehearse a discrete GPU on lavapipe; 1, empty or
+    /// unset leaves it on). Any other value makes the constructor throw an <see cref="ArgumentException"/>: "off", "false"
+    /// or "no" read as on while every value but "0" did, and the run rehearsed nothing without saying so.</summary>
+    public bool MapDeviceBuffers { get; set; } = MapBuffersFromEnvironment();
+
+    /// <summary>The environment variable that sets <see cref="MapDeviceBuffers"/>'s default.</summary>
+    public const string MapBuffersVariable = "SPHFLUID_VULKAN_MAP_BUFFERS";
+
+    static bool MapBuffersFromEnvironment()
+    {
+        string? value = Environment.GetEnvironmentVariable(MapBuffersVariable);
+        return value switch
+        {
+            null or "" or "1" => true,
+            "0" => false,
+            _ => throw new ArgumentException($"{MapBuffersVariable} must be 0 (stage every buffer through host copies, as a discrete GPU " +
+                $"does) or 1 (map device-local memory where the device has it), or unset (was '{value}')"),
+        };
+    }
 
     /// <summary>Where compiled SPIR-V is cached; default <see cref="ShaderCompiler.DefaultCacheDirectory"/>.</summary>
     public string? ShaderCacheDirectory { get; set; }

@@ -10,7 +10,8 @@ namespace SphFluid.Headless.Runs;
 public static class DeviceFactory
 {
     /// <exception cref="VulkanUnavailableException">No Vulkan driver, or no adapter has the name SPHFLUID_VULKAN_DEVICE gives.</exception>
-    /// <exception cref="UsageException">No adapter's name contains <paramref name="deviceName"/> (the --device argument).</exception>
+    /// <exception cref="UsageException">No adapter's name contains <paramref name="deviceName"/> (the --device argument), or
+    /// an environment variable of the device's holds a value it refuses.</exception>
     /// <summary>The device a run was given (tests share theirs; the run must not dispose it), else a new one that the
     /// caller disposes through <paramref name="owned"/>; a new one whose shader cache cannot be written is warned of on
     /// <paramref name="warnings"/>, since every run would then compile its kernels afresh without saying why.</summary>
@@ -35,10 +36,16 @@ public static class DeviceFactory
 
     public static VulkanComputeDevice Open(string projectRoot, string? deviceName, string command)
     {
-        var options = new VulkanComputeOptions
+        VulkanComputeOptions options;
+        try
         {
-            ShaderDirectories = new[] { Path.Combine(projectRoot, "Packages", "com.sphfluid.fluid", "Shaders") },
-        };
+            options = new VulkanComputeOptions { ShaderDirectories = new[] { Path.Combine(projectRoot, "Packages", "com.sphfluid.fluid", "Shaders") } };
+        }
+        catch (ArgumentException e)
+        {
+            // An environment variable's value the options refuse: the invocation's fault, as a bad argument is.
+            throw new UsageException($"{command}: {e.Message}");
+        }
         if (!string.IsNullOrEmpty(deviceName)) options.DeviceName = deviceName;
         try
         {

@@ -212,6 +212,36 @@ namespace SphFluid.Tests.Runner
             Assert.That(err, Does.Match(@"^sphfluid: no Vulkan device: SPHFLUID_VULKAN_DEVICE 'NoSuchAdapter' matches no Vulkan adapter \(adapters: [^;]+; unset it, or pass --device\)$"));
         }
 
+        /// <summary>SPHFLUID_VULKAN_MAP_BUFFERS took every value but "0" for on, so "off" or "false" ran the mapped path a
+        /// discrete-GPU rehearsal meant to avoid, without a word. Now only 0, 1, empty or unset are taken; anything else is a
+        /// bad invocation that names the variable, what each value does and what it held, and nothing runs.</summary>
+        [Test]
+        public void AMapBuffersSwitchOtherThan0Or1IsRefusedByName()
+        {
+            string? before = Environment.GetEnvironmentVariable(VulkanComputeOptions.MapBuffersVariable);
+            string folder = RunnerPaths.ScratchFolder("map-buffers-switch");
+            int code;
+            string err;
+            try
+            {
+                Environment.SetEnvironmentVariable(VulkanComputeOptions.MapBuffersVariable, "off");
+                code = Run(out _, out err, "simulate", RunnerPaths.Scene("PlayModeTest"), "--seconds", "0.01", "--out", folder);
+                Assert.That(() => new VulkanComputeOptions(), Throws.ArgumentException);
+                Environment.SetEnvironmentVariable(VulkanComputeOptions.MapBuffersVariable, "0");
+                Assert.That(new VulkanComputeOptions().MapDeviceBuffers, Is.False);
+                Environment.SetEnvironmentVariable(VulkanComputeOptions.MapBuffersVariable, "1");
+                Assert.That(new VulkanComputeOptions().MapDeviceBuffers, Is.True);
+            }
+            finally
+            {
+                Environment.SetEnvironmentVariable(VulkanComputeOptions.MapBuffersVariable, before);
+            }
+            Assert.That(code, Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Is.EqualTo("sphfluid simulate: SPHFLUID_VULKAN_MAP_BUFFERS must be 0 (stage every buffer through host copies, " +
+                "as a discrete GPU does) or 1 (map device-local memory where the device has it), or unset (was 'off')" + Environment.NewLine));
+            Assert.That(Directory.Exists(folder) ? Directory.GetFileSystemEntries(folder) : Array.Empty<string>(), Is.Empty, "nothing was written");
+        }
+
         /// <summary>A blank adapter name or folder is refused at parsing: the blank --device ran on the best adapter as if
         /// the option had been left out.</summary>
         [Test]
