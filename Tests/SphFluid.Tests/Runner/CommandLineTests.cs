@@ -168,6 +168,18 @@ namespace SphFluid.Tests.Runner
             Assert.That(err, Does.Contain("SpawnBox.spawn.Phase.RestDensity"));
         }
 
+        /// <summary>An option of one value given twice was refused in the library's words, "Option '--out' expects a single
+        /// argument but 2 were provided", which do not say which were given; a list option may still be repeated.</summary>
+        [Test]
+        public void AnOptionOfOneValueGivenTwiceNamesTheValues()
+        {
+            var study = Assert.Throws<UsageException>(() => StudyOptions.Parse(new[] { "x.unity", "--out", "a", "--out", "b" }));
+            Assert.That(study.Message, Is.EqualTo("study: --out was given 2 times ('a', 'b'); give it once"));
+            var simulate = Assert.Throws<UsageException>(() => SimulateOptions.Parse(new[] { "x.unity", "--seconds", "1", "--seconds=2", "--seconds", "3" }));
+            Assert.That(simulate.Message, Is.EqualTo("simulate: --seconds was given 3 times ('1', '2', '3'); give it once"));
+            Assert.That(BenchOptions.Parse(new[] { "x.unity", "--particles", "1000", "--particles", "2000" }).Particles, Is.EqualTo(new[] { 1000, 2000 }));
+        }
+
         [Test]
         public void OptionsAcceptTheEqualsFormAndFlagsRefuseAValue()
         {
