@@ -141,7 +141,7 @@ public sealed class OutputFolder : IDisposable
     static List<string> MissingFolders(string path)
     {
         var missing = new List<string>();
-        for (string? dir = IoPath.GetFullPath(path); !string.IsNullOrEmpty(dir) && !Directory.Exists(dir); dir = IoPath.GetDirectoryName(dir))
+        for (string? dir = IoPath.TrimEndingDirectorySeparator(IoPath.GetFullPath(path)); !string.IsNullOrEmpty(dir) && !Directory.Exists(dir); dir = IoPath.GetDirectoryName(dir))
             missing.Add(dir);
         return missing;
     }

@@ -205,7 +205,7 @@ namespace SphFluid.Tests.Runner
         {
             string scratch = RunnerPaths.ScratchFolder("wrote-nothing");
             string made = Path.Combine(scratch, "a", "b");
-            OutputFolder.Claim(made, "--out", "simulate").Dispose();
+            OutputFolder.Claim(made + Path.DirectorySeparatorChar, "--out", "simulate").Dispose();
             Assert.That(Directory.GetFileSystemEntries(scratch), Is.Empty, "the folders a and a/b the claim made, and its manifest");
 
             OutputFolder.Claim(scratch, "--out", "simulate").Dispose();
