@@ -158,7 +158,10 @@ phase and figure).";
         var repeated = result.CommandResult.Children.OfType<OptionResult>()
             .FirstOrDefault(o => o.Option.Arity.MaximumNumberOfValues == 1 && o.Tokens.Count > 1);
         if (name != null && repeated != null)
-            return $"{name}: {repeated.Option.Name} was given {repeated.Tokens.Count} times ({string.Join(", ", repeated.Tokens.Select(t => $"'{t.Value}'"))}); give it once";
+        {
+            string values = string.Join(", ", repeated.Tokens.Select(t => $"'{t.Value}'"));
+            return $"{name}: {repeated.Option.Name} was given {repeated.Tokens.Count} times ({values}); give it once";
+        }
         string message = result.Errors[0].Message;
         if (name == null) return $"refuses the command line: {message} (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)";
         return message.StartsWith(name + ":", System.StringComparison.Ordinal) ? message : $"{name}: {message}";

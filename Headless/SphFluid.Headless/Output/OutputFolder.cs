@@ -141,7 +141,8 @@ public sealed class OutputFolder : IDisposable
     static List<string> MissingFolders(string path)
     {
         var missing = new List<string>();
-        for (string? dir = IoPath.TrimEndingDirectorySeparator(IoPath.GetFullPath(path)); !string.IsNullOrEmpty(dir) && !Directory.Exists(dir); dir = IoPath.GetDirectoryName(dir))
+        string? dir = IoPath.TrimEndingDirectorySeparator(IoPath.GetFullPath(path));
+        for (; !string.IsNullOrEmpty(dir) && !Directory.Exists(dir); dir = IoPath.GetDirectoryName(dir))
             missing.Add(dir);
         return missing;
     }

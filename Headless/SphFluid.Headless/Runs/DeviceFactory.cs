@@ -39,13 +39,14 @@ public static class DeviceFactory
         VulkanComputeOptions options;
         try
         {
-            options = new VulkanComputeOptions { ShaderDirectories = new[] { Path.Combine(projectRoot, "Packages", "com.sphfluid.fluid", "Shaders") } };
+            options = new VulkanComputeOptions();
         }
         catch (ArgumentException e)
         {
             // An environment variable's value the options refuse: the invocation's fault, as a bad argument is.
             throw new UsageException($"{command}: {e.Message}");
         }
+        options.ShaderDirectories = new[] { Path.Combine(projectRoot, "Packages", "com.sphfluid.fluid", "Shaders") };
         if (!string.IsNullOrEmpty(deviceName)) options.DeviceName = deviceName;
         try
         {
