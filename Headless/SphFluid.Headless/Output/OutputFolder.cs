@@ -122,6 +122,13 @@ public sealed class OutputFolder : IDisposable
             throw new UsageException($"{command}: {option} '{path}' is in use by another sphfluid run (it holds {ManifestName} open); " +
                 "give another folder, or wait for that run to end (nothing was changed)");
         }
+        catch (FileNotFoundException e) when (Directory.Exists(path))
+        {
+            // A folder of a system file system (/proc, /sys) answers a new file with "not found", which reads as if the
+            // folder were missing.
+            throw new UsageException($"{command}: {option} '{path}' is a folder in which no file can be made (making {ManifestName} " +
+                $"there failed: {e.Message.TrimEnd('.')}); give a folder on a disk (nothing was changed)");
+        }
     }
 
     /// <summary>A sharing violation: EWOULDBLOCK from the advisory lock .NET takes on Unix, ERROR_SHARING_VIOLATION or

@@ -143,6 +143,16 @@ namespace SphFluid.Tests.Runner
             Assert.That(File.ReadAllText(file), Is.EqualTo("x"));
         }
 
+        /// <summary>A folder of /proc answers a new file with "Could not find file", which read as if the folder were missing.</summary>
+        [Test]
+        public void AFolderInWhichNoFileCanBeMadeIsNamedSo()
+        {
+            if (!Directory.Exists("/proc/self")) Assert.Ignore("no /proc here");
+            var e = Assert.Throws<UsageException>(() => OutputFolder.Claim("/proc/self", "--out", "simulate"));
+            Assert.That(e.Message, Does.StartWith($"simulate: --out '/proc/self' is a folder in which no file can be made (making {OutputFolder.ManifestName} there failed: "));
+            Assert.That(e.Message, Does.EndWith("'); give a folder on a disk (nothing was changed)"), "the system's message, without its full stop");
+        }
+
         /// <summary>A link that loops (ln -s loop loop) was refused as "a file, not a folder"; it is a link.</summary>
         [Test]
         public void AnOutputPathThatIsALinkToNoFolderIsRefusedAsALink()
