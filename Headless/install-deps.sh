@@ -13,6 +13,13 @@ ldconfig -p 2>/dev/null | grep 'libvulkan.so.1 ' >/dev/null || need+=(libvulkan1
 # Debian 12's own lavapipe (Mesa 22.3) runs a DFSPH sub-step three times slower than bookworm-backports' Mesa 25 does
 # (README, the test command; the suite's longest runs are DFSPH's), so there the driver comes from backports, unless
 # SPHFLUID_SYSTEM_LAVAPIPE=1 keeps the release's.
+case "${SPHFLUID_SYSTEM_LAVAPIPE:-0}" in
+    0|1) ;;
+    # "yes" or "true" read as 0 here and went to backports, the opposite of what the caller asked.
+    *) echo "install-deps: SPHFLUID_SYSTEM_LAVAPIPE must be 0 (take Mesa 25 from bookworm-backports on Debian 12) or 1 (keep" \
+            "the release's lavapipe), or unset (was '${SPHFLUID_SYSTEM_LAVAPIPE}')" >&2
+       exit 2 ;;
+esac
 backports=""
 if [ "${SPHFLUID_SYSTEM_LAVAPIPE:-0}" != 1 ] && [ "$(. /etc/os-release 2>/dev/null; echo "${VERSION_CODENAME:-}")" = bookworm ] \
     && ! dpkg --compare-versions "$(dpkg-query -W -f '${Version}' mesa-vulkan-drivers 2>/dev/null || echo 0)" ge 25; then
