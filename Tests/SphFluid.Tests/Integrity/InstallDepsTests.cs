@@ -1,6 +1,7 @@
-using System.Diagnostics;
+using System.Collections.Generic;
 using System.IO;
 using NUnit.Framework;
+using SphFluid.Tests.Runner;
 
 namespace SphFluid.Tests.Integrity
 {
@@ -15,19 +16,12 @@ namespace SphFluid.Tests.Integrity
         [Test]
         public void ASystemLavapipeSwitchOtherThan0Or1IsRefusedByName()
         {
-            var start = new ProcessStartInfo("bash") { WorkingDirectory = GpuTestDevice.RepoRoot, RedirectStandardOutput = true, RedirectStandardError = true };
-            start.ArgumentList.Add(Path.Combine("Headless", "install-deps.sh"));
-            start.Environment["SPHFLUID_SYSTEM_LAVAPIPE"] = "yes";
-            using var process = Process.Start(start)!;
-            var output = process.StandardOutput.ReadToEndAsync();
-            var error = process.StandardError.ReadToEndAsync();
-            bool exited = process.WaitForExit(30_000);
-            if (!exited) process.Kill(true);
-            Assert.That(exited, Is.True, "install-deps.sh did not finish within 30 s");
-            Assert.That(process.ExitCode, Is.EqualTo(2), output.Result + error.Result);
-            Assert.That(error.Result, Is.EqualTo("install-deps: SPHFLUID_SYSTEM_LAVAPIPE must be 0 (take Mesa 25 from bookworm-backports on " +
+            var (exitCode, output, error) = RepositoryScript.Run(Path.Combine("Headless", "install-deps.sh"), new string[0],
+                new Dictionary<string, string> { ["SPHFLUID_SYSTEM_LAVAPIPE"] = "yes" });
+            Assert.That(exitCode, Is.EqualTo(2), output + error);
+            Assert.That(error, Is.EqualTo("install-deps: SPHFLUID_SYSTEM_LAVAPIPE must be 0 (take Mesa 25 from bookworm-backports on " +
                 "Debian 12) or 1 (keep the release's lavapipe), or unset (was 'yes')\n"));
-            Assert.That(output.Result, Is.Empty, "nothing installed");
+            Assert.That(output, Is.Empty, "nothing installed");
         }
     }
 }

@@ -1,4 +1,3 @@
-using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
@@ -17,20 +16,8 @@ namespace SphFluid.Tests.Runner
     {
         const string Profile = "Headless/figures/gpu-h200-realtime.txt";
 
-        static (int exitCode, string output, string error) Estimate(params string[] arguments)
-        {
-            var start = new ProcessStartInfo("bash") { WorkingDirectory = GpuTestDevice.RepoRoot, RedirectStandardOutput = true, RedirectStandardError = true };
-            start.ArgumentList.Add(Path.Combine("Headless", "tools", "realtime-estimate.sh"));
-            foreach (string argument in arguments) start.ArgumentList.Add(argument);
-            using var process = Process.Start(start)!;
-            // Both streams read at once, and the wait bounded: a script that hung would fail the test, not stall the run.
-            var output = process.StandardOutput.ReadToEndAsync();
-            var error = process.StandardError.ReadToEndAsync();
-            bool exited = process.WaitForExit(30_000);
-            if (!exited) process.Kill(true);
-            Assert.That(exited, Is.True, "realtime-estimate.sh did not finish within 30 s");
-            return (process.ExitCode, output.Result, error.Result);
-        }
+        static (int exitCode, string output, string error) Estimate(params string[] arguments) =>
+            RepositoryScript.Run(Path.Combine("Headless", "tools", "realtime-estimate.sh"), arguments);
 
         [Test]
         public void TheOneMillionSliceCostsSeventeenGpuSecondsASimulatedSecond()
