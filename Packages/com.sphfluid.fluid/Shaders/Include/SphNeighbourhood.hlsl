@@ -107,6 +107,42 @@ uint2 BoundaryRowRange(int3 home, uint row)
     return uint2(_BoundaryCellStart[firstCell], _BoundaryCellStart[lastCell] + _BoundaryCellCount[lastCell]);
 }
 
+// The walk's slabs: slab s holds rows s * NEIGHBOUR_ROW_CELLS .. + NEIGHBOUR_ROW_CELLS - 1 (one z, every y), whose cells
+// all lie in one range of linear cells, from its first row's first cell to its last row's last. No particle in that range
+// means none in any of the slab's rows, read from two cells. The range spans the grid's whole x-rows between, so a slab
+// may read occupied and still hold no neighbour.
+bool NeighbourSlabCells(int3 home, uint slab, out uint firstCell, out uint lastCell)
+{
+    int reach = (int)CELLS_PER_SUPPORT;
+    int3 top = (int3)_GridDims - int3(1, 1, 1);
+    int3 first = int3(max(home.x - reach, 0), max(home.y - reach, 0), home.z + (int)slab - reach);
+    int3 last = int3(min(home.x + reach, top.x), min(home.y + reach, top.y), first.z);
+    firstCell = 0u;
+    lastCell = 0u;
+    if (first.z < 0 || first.z > top.z)
+        return false;
+    firstCell = CellIndexOf(first);
+    lastCell = CellIndexOf(last);
+    return true;
+}
+
+// Whether any fluid particle may lie in the walk around cell `home`; false means none does. A container's wall particles
+// away from the fluid (most of a tall or wide one's) learn from five slabs that they have no neighbour, instead of from 25
+// rows.
+bool FluidWithinReach(int3 home)
+{
+    for (uint slab = 0u; slab < NEIGHBOUR_ROW_CELLS; slab++)
+    {
+        uint firstCell, lastCell;
+        if (NeighbourSlabCells(home, slab, firstCell, lastCell))
+        {
+            if (_CellStart[lastCell] + _CellCount[lastCell] > _CellStart[firstCell])
+                return true;
+        }
+    }
+    return false;
+}
+
 // The list of owner `owner` (fluid particle i, or _ParticleCount + wall particle b).
 struct NeighbourList
 {
