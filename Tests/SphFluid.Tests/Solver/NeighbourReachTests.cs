@@ -11,23 +11,32 @@ namespace SphFluid.Tests.Solver
     /// the lists FindNeighbours makes from it hold exactly the fluid and wall particles a search of all pairs finds. The
     /// container is rotated (the grid's cells are not the world's axes) and holds a sphere, and the particles stand off
     /// the lattice, some of them in pairs across a cell's faces, edges and corners, where a walk that reached one cell
-    /// too few, or a grid whose transform rounded a particle into the wrong cell, would lose a neighbour.
+    /// too few, or a grid whose transform rounded a particle into the wrong cell, would lose a neighbour. DFSPH's lists
+    /// are also found in eight lanes an owner, as on a GPU's small scenes, and the fluid is also held in one corner of a
+    /// large container, where a wall particle that wrongly learned it had no fluid in reach would lose its neighbours.
     /// </summary>
     public sealed class NeighbourReachTests
     {
         // Pairs this close to h, relative in r^2, may round either way between the GPU and the CPU.
         const float RoundingBand = 1e-5f;
 
-        [TestCase(PressureSolver.Wcsph, TestName = "TheWalkFindsEveryPairWithinTheSupport_GridWalkOrder")]
-        [TestCase(PressureSolver.Dfsph, TestName = "TheWalkFindsEveryPairWithinTheSupport_DfsphOrder")]
-        public void TheWalkFindsEveryPairWithinTheSupport(PressureSolver solver)
+        [TestCase(PressureSolver.Wcsph, 1, false, TestName = "TheWalkFindsEveryPairWithinTheSupport_GridWalkOrder")]
+        [TestCase(PressureSolver.Dfsph, 1, false, TestName = "TheWalkFindsEveryPairWithinTheSupport_DfsphOrder")]
+        [TestCase(PressureSolver.Dfsph, 8, false, TestName = "TheWalkFindsEveryPairWithinTheSupport_DfsphOrderInEightLanes")]
+        [TestCase(PressureSolver.Wcsph, 1, true, TestName = "TheWalkFindsEveryPairWithinTheSupport_GridWalkOrder_FluidInACorner")]
+        [TestCase(PressureSolver.Dfsph, 8, true, TestName = "TheWalkFindsEveryPairWithinTheSupport_DfsphOrderInEightLanes_FluidInACorner")]
+        public void TheWalkFindsEveryPairWithinTheSupport(PressureSolver solver, int lanes, bool fluidInACorner)
         {
             var scene = SolverKernelTests.RandomScene(true, false, false, true);
             scene.Settings.PressureSolver = solver;
-            scene.Container.Size *= 1.25f; // room to scatter the particles at about the lattice's density: no list overflows
-            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene) { LanesPerParticle = 1 };
+            // Room to scatter the particles at about the lattice's density (no list overflows): a container 1.25 times the
+            // scene's, or, for a corner, one 2.5 times it whose low corner's eighth they fill, so that most wall particles
+            // have no fluid in reach and search nothing (FluidWithinReach, SphNeighbourhood.hlsl).
+            var region = scene.Container.Size * 1.25f;
+            scene.Container.Size = fluidInACorner ? 2f * region : region;
+            using var sim = new FluidSimulation(GpuTestDevice.Shared, scene) { LanesPerParticle = lanes };
             Assert.That(sim.ReadsNeighbourLists, Is.True);
-            var input = Scattered(scene, sim.ParticleCount);
+            var input = Scattered(scene, region, sim.ParticleCount);
             PlacePairsAcrossCellBoundaries(input, scene);
             sim.SetParticles(input);
 
@@ -39,7 +48,7 @@ namespace SphFluid.Tests.Solver
             sim.NeighbourCounts.GetData(counts);
             float h2 = scene.Settings.SmoothingRadius * scene.Settings.SmoothingRadius;
 
-            int pairs = 0, wallPairs = 0;
+            int pairs = 0, wallPairs = 0, lonelyWalls = 0;
             for (int owner = 0; owner < counts.Length; owner++)
             {
                 Assert.That(counts[owner], Is.Not.EqualTo(uint.MaxValue), $"owner {owner} overflows its list");
@@ -52,24 +61,30 @@ namespace SphFluid.Tests.Solver
                 Assert.That((int)foundWalls, Is.InRange(wallLow, wallHigh), $"wall neighbours of owner {owner}");
                 pairs += (int)found;
                 wallPairs += (int)foundWalls;
+                if (!fluidOwner && counts[owner] == 0) lonelyWalls++;
             }
-            TestContext.Progress.WriteLine($"{solver}: {counts.Length} owners, {pairs} fluid and {wallPairs} wall neighbours, as a search of all pairs finds");
-            Assert.That(wallPairs, Is.GreaterThan(fluid.Length), "the particles reach the container's and the sphere's walls");
+            TestContext.Progress.WriteLine($"{solver} in {lanes} lane(s): {counts.Length} owners, {pairs} fluid and {wallPairs} wall neighbours, " +
+                $"as a search of all pairs finds; {lonelyWalls} of {walls.Length} wall particles with no fluid neighbour");
+            Assert.That(wallPairs, Is.GreaterThan(fluid.Length / (fluidInACorner ? 4 : 1)), "the particles reach the container's and the sphere's walls");
+            if (fluidInACorner)
+                Assert.That(lonelyWalls, Is.GreaterThan(walls.Length / 2), "most of the large container's walls have no fluid neighbour");
         }
 
-        /// <summary>The spawn's particles moved to independent uniform places in the container (outside the sphere): pairs at
-        /// every distance and every place in a cell, which a lattice, even a jittered one, does not give.</summary>
-        static Particle[] Scattered(FluidSceneDescription scene, int count)
+        /// <summary>The spawn's particles moved to independent uniform places (outside the sphere) in the box of size
+        /// <paramref name="region"/> at the container's low corner: pairs at every distance and every place in a cell,
+        /// which a lattice, even a jittered one, does not give.</summary>
+        static Particle[] Scattered(FluidSceneDescription scene, Vector3 region, int count)
         {
             var rng = new SolverScenes.Rng(11);
             var spawn = SpawnLayout.Generate(scene);
-            var inner = 0.5f * scene.Container.Size - new Vector3(scene.Settings.ParticleSpacing);
+            var inner = 0.5f * region - new Vector3(scene.Settings.ParticleSpacing);
+            var centre = 0.5f * (region - scene.Container.Size); // the region's centre, in the container's frame
             var sphere = scene.Obstacles[0];
             var particles = new Particle[count];
             for (int i = 0; i < count; i++)
             {
                 Vector3 position;
-                do position = scene.Container.Position + Vector3.Transform(rng.InBox(inner), scene.Container.Rotation);
+                do position = scene.Container.Position + Vector3.Transform(centre + rng.InBox(inner), scene.Container.Rotation);
                 while ((position - sphere.Center).Length() < sphere.Radius + scene.Settings.ParticleSpacing);
                 particles[i] = new Particle(position, Vector3.Zero, spawn[i].Phase, spawn[i].Id);
             }
