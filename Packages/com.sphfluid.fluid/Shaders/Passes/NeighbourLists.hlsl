@@ -24,9 +24,9 @@ bool InSupport(float3 x, float3 y)
 // so a listed neighbour is exactly one the grid walk would have taken. In the grid walk's order (_NeighbourListRows 25)
 // the entries follow the walk and each row's ends are written before them; in DFSPH's (1) fluid fills from the front
 // and walls from the back. A wall particle with no fluid in its walk's five slabs (FluidWithinReach) lists nothing and
-// writes no row words: in a container 60 spacings wide around a droplet of 1 000 particles that took the search on
-// lavapipe from 6.2 to 8.1 ms a sub-step to 2.4 (`sphfluid bench`, two runs each; DamBreak's walls, near its fluid, kept
-// their 4.1 to 4.5 ms).
+// writes no row words: in a container 60 spacings wide around a droplet of 1 000 particles the search then took 2.4 ms
+// a sub-step on lavapipe instead of 6.2 to 8.1 (`sphfluid bench`, two runs each); DamBreak's, whose walls lie near its
+// fluid, stayed at 4.1 to 4.5 ms.
 void ListOneOwner(uint owner)
 {
     if (owner >= _ParticleCount + _BoundaryCount)
