@@ -50,7 +50,8 @@ public sealed class OutputFolder : IDisposable
     /// (<see cref="UsageException"/> naming <paramref name="option"/>) an empty path, a path that is a file,
     /// a folder holding a runner-named file that no manifest claims or a folder under a runner's file name (the run
     /// would fail at that file part-way), and a manifest that is not a plain file: the run writes it, and a link there
-    /// would have it write through to whatever file the link names.
+    /// would have it write through to whatever file the link names. A claim refused, or failed, leaves none of the
+    /// folders it made for the path.
     /// </summary>
     public static OutputFolder Claim(string path, string option, string command)
     {
@@ -70,42 +71,59 @@ public sealed class OutputFolder : IDisposable
             if (FileAmongParents(path) is string parent)
                 throw new UsageException($"{command}: {option} '{path}' lies under '{parent}', which is a file, not a folder");
             var madeFolders = MissingFolders(path);
-            Directory.CreateDirectory(path);
-            string manifestPath = IoPath.Combine(path, ManifestName);
-            if (Directory.Exists(manifestPath) || new FileInfo(manifestPath).LinkTarget != null)
-                throw new UsageException($"{command}: {option} '{path}' holds a {ManifestName} that is a link or a folder, not the plain file " +
-                    "sphfluid writes; choose an empty or new folder (nothing was changed)");
-            bool manifestExisted = File.Exists(manifestPath);
-            var manifest = OpenHeld(manifestPath, path, option, command);
             try
             {
-                if (FirstNames(Directory.EnumerateDirectories(path), IsRunnerName) is string folders)
-                    throw new UsageException($"{command}: {option} '{path}' holds a folder named {folders}, where sphfluid writes a file; " +
-                        "choose an empty or new folder (nothing was changed)");
-                var claimed = ReadManifest(manifest);
-                if (FirstNames(Directory.EnumerateFiles(path), name => IsRunnerName(name) && !claimed.Contains(name)) is string foreign)
-                    throw new UsageException($"{command}: {option} '{path}' already holds {foreign} that sphfluid did not write; " +
-                        "choose an empty or new folder (nothing was deleted)");
-                foreach (string name in claimed)
-                {
-                    string file = IoPath.Combine(path, name);
-                    if (File.Exists(file)) File.Delete(file);
-                }
-                manifest.SetLength(0);
-                manifest.Position = 0;
-                return new OutputFolder(path, manifest, madeManifest: !manifestExisted, madeFolders);
+                Directory.CreateDirectory(path);
+                return ClaimFolder(path, option, command, madeFolders);
             }
             catch
             {
-                manifest.Dispose();
-                // A refused folder keeps nothing of the run, not even the empty manifest it opened to lock.
-                if (!manifestExisted) File.Delete(manifestPath);
+                // Refused, or failed past the folders (a manifest path longer than the system allows), the claim leaves
+                // none of the folders it made.
+                RemoveEmpty(madeFolders);
                 throw;
             }
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
         {
             throw new UsageException($"{command}: {option} '{path}' cannot be used as the output folder: {e.Message}");
+        }
+    }
+
+    /// <summary>The claim of folder <paramref name="path"/>, which exists: its manifest opened and locked, the earlier
+    /// run's outputs removed; refused as <see cref="Claim"/> says.</summary>
+    static OutputFolder ClaimFolder(string path, string option, string command, IReadOnlyList<string> madeFolders)
+    {
+        string manifestPath = IoPath.Combine(path, ManifestName);
+        if (Directory.Exists(manifestPath) || new FileInfo(manifestPath).LinkTarget != null)
+            throw new UsageException($"{command}: {option} '{path}' holds a {ManifestName} that is a link or a folder, not the plain file " +
+                "sphfluid writes; choose an empty or new folder (nothing was changed)");
+        bool manifestExisted = File.Exists(manifestPath);
+        var manifest = OpenHeld(manifestPath, path, option, command);
+        try
+        {
+            if (FirstNames(Directory.EnumerateDirectories(path), IsRunnerName) is string folders)
+                throw new UsageException($"{command}: {option} '{path}' holds a folder named {folders}, where sphfluid writes a file; " +
+                    "choose an empty or new folder (nothing was changed)");
+            var claimed = ReadManifest(manifest);
+            if (FirstNames(Directory.EnumerateFiles(path), name => IsRunnerName(name) && !claimed.Contains(name)) is string foreign)
+                throw new UsageException($"{command}: {option} '{path}' already holds {foreign} that sphfluid did not write; " +
+                    "choose an empty or new folder (nothing was deleted)");
+            foreach (string name in claimed)
+            {
+                string file = IoPath.Combine(path, name);
+                if (File.Exists(file)) File.Delete(file);
+            }
+            manifest.SetLength(0);
+            manifest.Position = 0;
+            return new OutputFolder(path, manifest, madeManifest: !manifestExisted, madeFolders);
+        }
+        catch
+        {
+            manifest.Dispose();
+            // A refused folder keeps nothing of the run, not even the empty manifest it opened to lock.
+            if (!manifestExisted) File.Delete(manifestPath);
+            throw;
         }
     }
 
@@ -262,8 +280,14 @@ public sealed class OutputFolder : IDisposable
         _manifest.Dispose();
         if (!leaveNothing) return;
         if (OperatingSystem.IsWindows()) TryRemove(() => File.Delete(manifestPath));
-        // Deepest first; a folder something else has put a file in since is not empty and stays.
-        foreach (string folder in _madeFolders) TryRemove(() => Directory.Delete(folder, recursive: false));
+        RemoveEmpty(_madeFolders);
+    }
+
+    /// <summary>Removes the folders a claim made, deepest first; one that something else has put a file in since is not
+    /// empty and stays.</summary>
+    static void RemoveEmpty(IEnumerable<string> madeFolders)
+    {
+        foreach (string folder in madeFolders) TryRemove(() => Directory.Delete(folder, recursive: false));
     }
 
     /// <summary>Tidying after a run that wrote nothing: what cannot be removed is left as it is.</summary>

@@ -1,3 +1,4 @@
+using System;
 using System.IO;
 using System.Linq;
 using NUnit.Framework;
@@ -227,6 +228,24 @@ namespace SphFluid.Tests.Runner
             OutputFolder.Claim(made, "--out", "simulate").Dispose();
             Assert.That(Directory.GetFiles(made).Select(Path.GetFileName), Is.EquivalentTo(new[] { OutputFolder.ManifestName }),
                 "a run that wrote nothing removes the earlier run's outputs, as any run does, and keeps the manifest it found");
+        }
+
+        /// <summary>A folder path a few characters short of the system's limit can be made, but not the manifest in it: the
+        /// claim failed with the folders it had made for the path left behind (21 of them for a path of 4 085 characters).</summary>
+        [Test]
+        public void AClaimThatFailsAfterMakingItsFoldersLeavesNoneOfThem()
+        {
+            if (!OperatingSystem.IsLinux()) Assert.Ignore("the limit is Linux's PATH_MAX of 4 096 bytes");
+            string scratch = RunnerPaths.ScratchFolder("path-limit");
+            string path = scratch;
+            while (4085 - path.Length > 202) path = Path.Combine(path, new string('d', 200));
+            path = Path.Combine(path, new string('d', 4085 - path.Length - 1)); // at least one character: 2 to 202 remained
+            Assert.That(path.Length, Is.EqualTo(4085));
+            Assert.That(Path.Combine(path, OutputFolder.ManifestName).Length, Is.GreaterThan(4095), "the manifest's path is past the limit");
+
+            var e = Assert.Throws<UsageException>(() => OutputFolder.Claim(path, "--out", "simulate"));
+            Assert.That(e.Message, Does.StartWith($"simulate: --out '{path}' cannot be used as the output folder: "));
+            Assert.That(Directory.GetFileSystemEntries(scratch), Is.Empty, "every folder the claim made for the path is removed");
         }
 
         [Test]
