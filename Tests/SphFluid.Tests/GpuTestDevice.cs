@@ -183,7 +183,8 @@ namespace SphFluid.Tests
 }
 
 /// <summary>Assembly-wide: after the last test, the kernel variants each device ran are written where Headless/test.sh asks for
-/// them (GpuTestDevice.VariantsFolderVariable), the validation layer must have stayed silent, and the devices are released.</summary>
+/// them (GpuTestDevice.VariantsFolderVariable), the validation layer must have stayed silent, the devices are released and
+/// the runner tests' scratch folders removed.</summary>
 [SetUpFixture]
 public sealed class SuiteTeardown
 {
@@ -198,6 +199,7 @@ public sealed class SuiteTeardown
         finally
         {
             SphFluid.Tests.GpuTestDevice.DisposeShared();
+            SphFluid.Tests.Runner.RunnerPaths.RemoveScratch();
         }
     }
 }
