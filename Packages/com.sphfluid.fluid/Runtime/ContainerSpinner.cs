@@ -6,6 +6,7 @@ namespace SphFluid.Runtime
     /// <summary>Spins its Transform (the rotating-container scene's box) by the core's <see cref="SpinLaw"/>,
     /// the same law the headless runner applies, about a world axis through its own position, on the fluid's simulated
     /// time (<see cref="FluidClock"/>): a hitch, a pause or a single step turns it as far as the fluid.</summary>
+    [AddComponentMenu("SPH Fluid/Container Spinner")]
     public sealed class ContainerSpinner : MonoBehaviour
     {
         [SerializeField, Tooltip("The spin: axis, angular speed and start delay, each declared once in SpinLaw.")]

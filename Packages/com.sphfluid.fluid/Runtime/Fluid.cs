@@ -12,6 +12,7 @@ namespace SphFluid.Runtime
     /// pushes the container's and obstacles' motion, steps, and draws the particles with one procedural call.
     /// GPU resources live exactly from OnEnable to OnDisable; nothing static holds them.
     /// </summary>
+    [AddComponentMenu("SPH Fluid/Fluid")]
     [DefaultExecutionOrder(100)] // after whatever moves the container or the spheres this frame
     [DisallowMultipleComponent]
     public sealed class Fluid : MonoBehaviour

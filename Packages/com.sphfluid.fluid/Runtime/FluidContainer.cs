@@ -8,6 +8,7 @@ namespace SphFluid.Runtime
     /// The box the fluid lives in: this Transform's position, rotation and lossy scale (a unit cube
     /// scaled to the inner size, in metres). Move or rotate it at run time and the walls push the fluid.
     /// </summary>
+    [AddComponentMenu("SPH Fluid/Fluid Container")]
     [DisallowMultipleComponent]
     public sealed class FluidContainer : MonoBehaviour
     {

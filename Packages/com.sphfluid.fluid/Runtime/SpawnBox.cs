@@ -9,6 +9,7 @@ namespace SphFluid.Runtime
     /// phase on a regular lattice of the simulator's particle spacing, with a small deterministic jitter.
     /// Boxes that name the same phase share it and must agree on every phase value.
     /// </summary>
+    [AddComponentMenu("SPH Fluid/Spawn Box")]
     public sealed class SpawnBox : MonoBehaviour
     {
         [SerializeField, Tooltip("The box's liquid and lattice; each value's default, range, unit and meaning are declared once, in the core's PhaseDescription and FluidBlock.")]

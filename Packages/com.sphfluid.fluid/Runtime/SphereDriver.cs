@@ -8,6 +8,7 @@ namespace SphFluid.Runtime
     /// the core's <see cref="DriveLaw"/>, the same law the headless runner applies, on the fluid's simulated
     /// time (<see cref="FluidClock"/>): a hitch, a pause or a single step moves the sphere as far as the fluid.
     /// </summary>
+    [AddComponentMenu("SPH Fluid/Sphere Driver")]
     public sealed class SphereDriver : MonoBehaviour
     {
         [SerializeField, Tooltip("The drive: travel, period and start delay, each declared once in DriveLaw.")]

@@ -8,6 +8,7 @@ namespace SphFluid.Runtime
     /// A solid sphere the fluid flows around. Its centre is this Transform's position; its velocity comes
     /// from how the Transform moves between frames (drag it, animate it, or use a <see cref="SphereDriver"/>).
     /// </summary>
+    [AddComponentMenu("SPH Fluid/Sphere Obstacle")]
     [DisallowMultipleComponent]
     public sealed class SphereObstacle : MonoBehaviour
     {
