@@ -135,7 +135,9 @@ public static class OptionKinds
         {
             var token = r.Tokens.FirstOrDefault()?.Value;
             if (token != null && Ranges.LooksLikeOption(token))
-                r.AddError($"{command}: unknown option {token} (see sphfluid {command} --help)");
+                r.AddError(r.Parent is CommandResult owner
+                    ? UnknownOption.Message(owner.Command, token)
+                    : $"{command}: unknown option {token} (see sphfluid {command} --help)");
         });
         return scene;
     }

@@ -150,7 +150,7 @@ phase and figure).";
                     ? $"has no option {token} of its own; a command's options follow the command (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)"
                     : $"has no command '{token}' (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)";
             return Ranges.LooksLikeOption(token)
-                ? $"{name}: unknown option {token} (see sphfluid {name} --help)"
+                ? UnknownOption.Message(command, token)
                 : $"{name}: unexpected argument '{token}' (see sphfluid {name} --help)";
         }
         if (result.Errors.Count == 0) return null;

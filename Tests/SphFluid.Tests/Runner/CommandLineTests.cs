@@ -35,6 +35,28 @@ namespace SphFluid.Tests.Runner
             int code = Run(out _, out string err, "simulate", RunnerPaths.Scene("PlayModeTest"), "--fast");
             Assert.That(code, Is.EqualTo(ExitCodes.BadArguments));
             Assert.That(err, Does.Contain("unknown option --fast"));
+            Assert.That(err, Does.Not.Contain("did you mean"), "--fast is near no option of simulate");
+        }
+
+        /// <summary>The commands spell alike options apart (simulate takes one --particles-scale and --solver, bench and
+        /// study lists): the refusal names the spelling this command has, after the scene or before it.</summary>
+        [TestCase("study", "--solver", "dfsph", "study: unknown option --solver; did you mean --solvers?")]
+        [TestCase("study", "--particles-scale", "2", "study: unknown option --particles-scale; did you mean --particles-scales?")]
+        [TestCase("bench", "--particles-scale", "2", "bench: unknown option --particles-scale; did you mean --particles-scales?")]
+        [TestCase("simulate", "--particles-scales", "2", "simulate: unknown option --particles-scales; did you mean --particles-scale?")]
+        [TestCase("simulate", "--SECONDS", "1", "simulate: unknown option --SECONDS; did you mean --seconds?")]
+        public void AnUnknownOptionNamesTheNearestSpelling(string command, string option, string value, string message)
+        {
+            foreach (string[] args in new[]
+            {
+                new[] { command, RunnerPaths.Scene("PlayModeTest"), option, value },
+                new[] { command, option, value, RunnerPaths.Scene("PlayModeTest") },
+            })
+            {
+                int code = Run(out _, out string err, args);
+                Assert.That(code, Is.EqualTo(ExitCodes.BadArguments), string.Join(" ", args));
+                Assert.That(err, Does.Contain(message), string.Join(" ", args));
+            }
         }
 
         [TestCase("--steps", "0", "--steps must be in [1, 1000000] (was 0)")]
