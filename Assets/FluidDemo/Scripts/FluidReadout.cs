@@ -89,35 +89,20 @@ namespace SphFluid.Demo
                 step.Substeps, step.TimeStep * 1000f, step.StableTimeStep * 1000f, step.Limit, step.Capped ? "  CAPPED: slower than real time" : "",
                 step.PressureSolver == PressureSolver.Dfsph ? "DFSPH" : "WCSPH");
             if (target.TryGetGpuMilliseconds(out double gpu))
-            {
-                _text.AppendFormat(c, "GPU {0:F2} ms per frame, {1:F3} ms per sub-step", gpu, step.Substeps > 0 ? gpu / step.Substeps : 0.0);
-                // What accuracy costs in the currency of the accuracy-for-time study: GPU seconds per simulated second,
-                // and the real-time factor they allow (a bound: the frame adds the CPU's and the rendering's time).
-                if (step.SimulatedSeconds > 0f && gpu > 0.0)
-                {
-                    double perSimulatedSecond = gpu * 0.001 / step.SimulatedSeconds;
-                    _text.AppendFormat(c, ", {0:F3} s per simulated s (at most {1:F2}x real time)", perSimulatedSecond, 1.0 / perSimulatedSecond);
-                }
-                _text.Append('\n');
-            }
+                ReadoutText.AppendGpuCost(_text, gpu, step);
             else
-                _text.Append("GPU time: not measurable on this platform\n");
+                _text.Append(ReadoutText.GpuTimeUnavailable);
+            _text.Append('\n');
 
             DiagnosticsReport diagnostics = target.LatestDiagnostics;
             if (diagnostics != null)
             {
                 foreach (PhaseDiagnostics phase in diagnostics.Phases)
-                    _text.AppendFormat(c, "{0}: {1} particles, density error avg {2:P2} max {3:P2}\n",
-                        phase.Name, phase.Count, phase.AverageDensityError, phase.MaxDensityError);
+                    _text.Append(phase).Append('\n');
                 _text.AppendFormat(c, "vmax {0:F2} m/s   KE {1:G3} J   NaN {2}   outside {3}\n",
                     diagnostics.MaxSpeed, diagnostics.KineticEnergy, diagnostics.NanCount, diagnostics.OutsideCount);
-                if (diagnostics.PressureSolver == PressureSolver.Dfsph)
-                    _text.AppendFormat(c, "DFSPH {5} iterations per sub-step: density {0:F1} ({1:P0} cut off), divergence {2:F1} ({3:P0} cut off)   divergence error {4:F2} %/s\n",
-                        diagnostics.DensitySolveIterations, diagnostics.DensitySolvesCutOff, diagnostics.DivergenceSolveIterations,
-                        diagnostics.DivergenceSolvesCutOff, diagnostics.DivergenceError, IterationName(target));
-                else
-                    _text.AppendFormat(c, "Divergence error {0:F2} %/s\n", diagnostics.DivergenceError);
                 FluidSimulation simulation = target.Simulation;
+                if (simulation != null) ReadoutText.AppendSolves(_text, diagnostics, simulation).Append('\n');
                 if (simulation != null && simulation.ViscositySolveRounds > 0)
                     _text.AppendFormat(c, "Viscosity solved implicitly: {0} rounds per sub-step\n", simulation.ViscositySolveRounds);
             }
@@ -134,16 +119,6 @@ namespace SphFluid.Demo
                 _text.Append('\n');
             }
             _text.Append("RMB orbit  wheel zoom  LMB drag sphere  Space pause  . / N step  R reset  Tab next scene");
-        }
-
-        // The Chebyshev solve accelerates the constant-density solve only at tolerances tight for the fluid's depth
-        // (ChebyshevBounds.AcceleratesDensitySolve), so the readout says when it takes the Jacobi steps.
-        static string IterationName(Fluid target)
-        {
-            if (target.Settings.SolverIteration == SolverIteration.Jacobi)
-                return "Jacobi";
-            FluidSimulation simulation = target.Simulation;
-            return simulation != null && !simulation.AcceleratesDensitySolve ? "Chebyshev (divergence-free; density Jacobi)" : "Chebyshev";
         }
 
         void AppendJoined(IReadOnlyList<string> items, string separator)

@@ -1,5 +1,6 @@
 using System.Collections.Generic;
 using System.Globalization;
+using System.Text;
 using SphFluid.Runtime;
 using SphFluid.Simulation;
 using UnityEditor;
@@ -48,6 +49,21 @@ namespace SphFluid.Editor
                 plan.Keywords.Count == 0 ? "(none)" : string.Join(" ", plan.Keywords));
         }
 
+        /// <summary>What the solver settings above cost while it runs: the frame's GPU time per simulated second, each
+        /// phase's density error and the pressure solve's iterations, as the demo's on-screen readout words them.</summary>
+        static string Cost(Fluid simulator, StepReport step)
+        {
+            var text = new StringBuilder(step.PressureSolver == PressureSolver.Dfsph ? "DFSPH\n" : "WCSPH\n");
+            if (simulator.TryGetGpuMilliseconds(out double gpu)) ReadoutText.AppendGpuCost(text, gpu, step);
+            else text.Append(ReadoutText.GpuTimeUnavailable);
+            DiagnosticsReport diagnostics = simulator.LatestDiagnostics;
+            if (diagnostics == null)
+                return text.Append("\nDensity error: no read-back yet (or Request Diagnostics is off)").ToString();
+            foreach (PhaseDiagnostics phase in diagnostics.Phases) text.Append('\n').Append(phase);
+            ReadoutText.AppendSolves(text.Append('\n'), diagnostics, simulator.Simulation);
+            return text.ToString();
+        }
+
         static void DrawRunning(Fluid simulator)
         {
             if (!simulator.IsRunning)
@@ -61,6 +77,7 @@ namespace SphFluid.Editor
                 EditorGUILayout.LabelField("Simulated time", simulator.SimulatedTime.ToString("F2", CultureInfo.InvariantCulture) + " s");
                 EditorGUILayout.LabelField("Sub-steps", string.Format(CultureInfo.InvariantCulture, "{0} x {1:F3} ms ({2}){3}",
                     step.Substeps, step.TimeStep * 1000f, step.Limit, step.Capped ? ", capped" : ""));
+                EditorGUILayout.HelpBox(Cost(simulator, step), MessageType.None);
                 if (simulator.HealthProblem != null)
                     EditorGUILayout.HelpBox("Paused by the health check: " + simulator.HealthProblem.Message, MessageType.Error);
             }
