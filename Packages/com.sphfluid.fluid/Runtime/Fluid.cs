@@ -336,7 +336,7 @@ namespace SphFluid.Runtime
 
         /// <summary>Logs once per start when DFSPH's solves ran out of iterations in more than a tenth of the time since,
         /// once a second of it has been seen (a settling start alone does not speak): a healthy run, but one whose error
-        /// stands above the tolerance it asked for, which nothing else in the package shows.</summary>
+        /// stands above the tolerance it asked for, which the Console should say though no inspector or readout is open.</summary>
         void WarnOfCutOffSolves(DiagnosticsReport report)
         {
             if (_cutOffs == null || _cutOffsWarned) return;
