@@ -53,7 +53,7 @@ namespace SphFluid.Editor
         /// phase's density error and the pressure solve's iterations, as the demo's on-screen readout words them.</summary>
         static string Cost(Fluid simulator, StepReport step)
         {
-            var text = new StringBuilder(step.PressureSolver == PressureSolver.Dfsph ? "DFSPH\n" : "WCSPH\n");
+            var text = new StringBuilder(step.PressureSolver == PressureSolver.Dfsph ? "Pressure solver: DFSPH\n" : "Pressure solver: WCSPH\n");
             if (simulator.TryGetGpuMilliseconds(out double gpu)) ReadoutText.AppendGpuCost(text, gpu, step);
             else text.Append(ReadoutText.GpuTimeUnavailable);
             DiagnosticsReport diagnostics = simulator.LatestDiagnostics;
