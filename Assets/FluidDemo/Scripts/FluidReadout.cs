@@ -104,7 +104,7 @@ namespace SphFluid.Demo
                 FluidSimulation simulation = target.Simulation;
                 if (simulation != null) ReadoutText.AppendSolves(_text, diagnostics, simulation).Append('\n');
                 if (simulation != null && simulation.ViscositySolveRounds > 0)
-                    _text.AppendFormat(c, "Viscosity solved implicitly: {0} rounds per sub-step\n", simulation.ViscositySolveRounds);
+                    ReadoutText.AppendViscositySolve(_text, simulation.ViscositySolveRounds).Append('\n');
             }
 
             SimulationPlan plan = target.Plan;

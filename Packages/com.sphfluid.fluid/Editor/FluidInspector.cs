@@ -61,6 +61,8 @@ namespace SphFluid.Editor
                 return text.Append("\nDensity error: no read-back yet (or Request Diagnostics is off)").ToString();
             foreach (PhaseDiagnostics phase in diagnostics.Phases) text.Append('\n').Append(phase);
             ReadoutText.AppendSolves(text.Append('\n'), diagnostics, simulator.Simulation);
+            if (simulator.Simulation.ViscositySolveRounds > 0)
+                ReadoutText.AppendViscositySolve(text.Append('\n'), simulator.Simulation.ViscositySolveRounds);
             return text.ToString();
         }
 

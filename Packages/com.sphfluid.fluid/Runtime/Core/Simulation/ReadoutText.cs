@@ -49,5 +49,10 @@ namespace SphFluid.Simulation
                     diagnostics.DivergenceSolvesCutOff, diagnostics.DivergenceError, iterationName)
                 : text.AppendFormat(C, "Divergence error {0:F2} %/s", diagnostics.DivergenceError);
         }
+
+        /// <summary>The implicit viscosity solve's rounds a sub-step, where the last frame's step was longer than the
+        /// explicit viscous limit (<see cref="ImplicitViscosity"/>); nothing while the viscosity was explicit.</summary>
+        public static StringBuilder AppendViscositySolve(StringBuilder text, int rounds) =>
+            rounds > 0 ? text.AppendFormat(C, "Viscosity solved implicitly: {0} rounds per sub-step", rounds) : text;
     }
 }

@@ -24,6 +24,14 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(paused, Is.EqualTo("GPU 0.00 ms per frame, 0.000 ms per sub-step"));
         }
 
+        [Test]
+        public void TheViscositySolveIsNamedOnlyWhereItRan()
+        {
+            Assert.That(ReadoutText.AppendViscositySolve(new StringBuilder(), 0).ToString(), Is.Empty);
+            Assert.That(ReadoutText.AppendViscositySolve(new StringBuilder(), 20).ToString(),
+                Is.EqualTo("Viscosity solved implicitly: 20 rounds per sub-step"));
+        }
+
         [TestCase(SolverIteration.Jacobi, true, "Jacobi")]
         [TestCase(SolverIteration.Jacobi, false, "Jacobi")]
         [TestCase(SolverIteration.Chebyshev, true, "Chebyshev")]
