@@ -53,7 +53,9 @@ namespace SphFluid.Editor
         /// phase's density error and the pressure solve's iterations, as the demo's on-screen readout words them.</summary>
         static string Cost(Fluid simulator, StepReport step)
         {
-            var text = new StringBuilder(step.PressureSolver == PressureSolver.Dfsph ? "Pressure solver: DFSPH\n" : "Pressure solver: WCSPH\n");
+            // The running simulation's solver: the step report of a frame not yet stepped names none.
+            bool dfsph = simulator.Simulation.Scene.Settings.PressureSolver == PressureSolver.Dfsph;
+            var text = new StringBuilder(dfsph ? "Pressure solver: DFSPH\n" : "Pressure solver: WCSPH\n");
             if (simulator.TryGetGpuMilliseconds(out double gpu)) ReadoutText.AppendGpuCost(text, gpu, step);
             else text.Append(ReadoutText.GpuTimeUnavailable);
             DiagnosticsReport diagnostics = simulator.LatestDiagnostics;
