@@ -9,8 +9,8 @@
 # under, or "study" for a change to the step; default below: the patches that apply to HEAD and that the H200 timed
 # at d599ca0 and left out, so that a lent GPU can time them again beside the code of the day, the code before a
 # change no GPU has timed (correction-reads-particles: the correction's neighbour reads before 6f1fc00), and changes
-# lavapipe could not judge (sorted-positions-search, and the two skips of the walls' rows: walls-in-reach-marks,
-# walls-distance-skip);
+# lavapipe could not judge (sorted-positions-search, the two skips of the walls' rows: walls-in-reach-marks,
+# walls-distance-skip, and cells stored brick by brick for the SMs' caches: brick-ordered-cells);
 # cached-pair-gradients, timed there too, stopped applying when the neighbour search took lanes (947b6cd), and
 # ExperimentPatchTests holds the default to HEAD) goes in as
 # experiments/NAME: the files its patch changes, from a patched copy of the committed tree, and the assemblies built
@@ -40,7 +40,7 @@ cp -L "$loader" "$top/lib/libvulkan.so.1"
 cp /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf "$top/"
 git -C "$root" describe --always --dirty >"$top/commit" 2>/dev/null || echo unknown >"$top/commit"
 
-for entry in ${EXPERIMENTS-longer-dfsph-step:study correction-reads-particles:dfsph sorted-positions-search:wcsph,dfsph walls-in-reach-marks:wcsph,dfsph walls-distance-skip:wcsph,dfsph}; do
+for entry in ${EXPERIMENTS-longer-dfsph-step:study correction-reads-particles:dfsph sorted-positions-search:wcsph,dfsph walls-in-reach-marks:wcsph,dfsph walls-distance-skip:wcsph,dfsph brick-ordered-cells:dfsph}; do
     name="${entry%%:*}" solvers="${entry#*:}"
     patch="$root/Headless/experiments/$name.patch"
     [ -f "$patch" ] || { echo "gpu-kit: EXPERIMENTS names $name, but $patch is missing" >&2; exit 2; }
