@@ -9,8 +9,9 @@ namespace SphFluid.Runtime
     /// The SPH fluid of a scene. On enable it gathers the scene's <see cref="SpawnBox"/>es, its
     /// <see cref="FluidContainer"/> and <see cref="SphereObstacle"/>s into an engine-free scene description and
     /// starts a <see cref="FluidSimulation"/> (the same pipeline the headless runner drives); every frame it
-    /// pushes the container's and obstacles' motion, steps, and draws the particles with one procedural call.
-    /// GPU resources live exactly from OnEnable to OnDisable; nothing static holds them.
+    /// pushes the container's and obstacles' motion and steps, and every camera that renders draws the particles
+    /// with one procedural call (<see cref="ParticleDrawing"/>), a paused editor's views too.
+    /// GPU resources live exactly from OnEnable to OnDisable; nothing static holds them or the fluid after it.
     /// </summary>
     [AddComponentMenu("SPH Fluid/Fluid")]
     [DefaultExecutionOrder(100)] // after whatever moves the container or the spheres this frame
@@ -255,7 +256,7 @@ namespace SphFluid.Runtime
             _cutOffs = new SolveCutOffs();
             _cutOffsWarned = false;
             _motion = new BoundaryMotion(_container, ActiveObstacles());
-            _drawing = new ParticleDrawing(_resources, this);
+            _drawing = new ParticleDrawing(_resources, this, _container.transform);
         }
 
         void Fail(string reason)
@@ -317,7 +318,6 @@ namespace SphFluid.Runtime
                 Fail("the simulation stopped: " + e.Message);
                 return;
             }
-            if (_container != null) _drawing.Draw(_simulation, _container.transform, ParticleRadius, gameObject.layer);
         }
 
         /// <summary>Checks one diagnostics report (each arriving one, from Update; tests pass a made-up one): the

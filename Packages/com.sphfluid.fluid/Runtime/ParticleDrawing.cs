@@ -7,10 +7,13 @@ using Object = UnityEngine.Object;
 namespace SphFluid.Runtime
 {
     /// <summary>
-    /// Draws a simulation's particles with one procedural call, six vertices a particle placed by the particle shader
-    /// from the particle buffer: in the Built-in pipeline with the package's particle material, in URP with a copy of its
-    /// values on the URP particle shader, and not at all (one warning) in any other pipeline. Owns that copy; Dispose
-    /// destroys it.
+    /// Draws a fluid's particles with one procedural call, six vertices a particle placed by the particle shader from
+    /// the particle buffer: in the Built-in pipeline with the package's particle material, in URP with a copy of its
+    /// values on the URP particle shader, and not at all (one warning) in any other pipeline. The call is made for each
+    /// camera as it starts to render (Camera.onPreCull in the Built-in pipeline, RenderPipelineManager.
+    /// beginCameraRendering in URP), not from Update: a draw submitted from Update lasts one frame, and a paused editor
+    /// runs no Update but still renders its Scene and Game views, which then showed no fluid. Owns the URP copy and the
+    /// two subscriptions; Dispose destroys the one and removes the other, so nothing static holds the fluid after it.
     /// </summary>
     sealed class ParticleDrawing : IDisposable
     {
@@ -18,35 +21,46 @@ namespace SphFluid.Runtime
         const string UniversalPipelineTag = "UniversalPipeline";
 
         readonly FluidResources _resources;
-        readonly Fluid _owner; // names the fluid in the Console, and is the messages' context
+        readonly Fluid _owner; // its running simulation is what is drawn; it names the fluid in the Console
+        readonly Transform _container; // the bound that culls the draw holds it at any rotation
         readonly MaterialPropertyBlock _properties = new MaterialPropertyBlock();
         Material _universalMaterial; // the particle material's values on the URP shader, made on the first URP frame
         bool _pipelineWarned;
 
-        public ParticleDrawing(FluidResources resources, Fluid owner)
+        public ParticleDrawing(FluidResources resources, Fluid owner, Transform container)
         {
             _resources = resources;
             _owner = owner;
+            _container = container;
+            Camera.onPreCull += DrawFor;
+            RenderPipelineManager.beginCameraRendering += DrawFor;
         }
 
-        /// <summary>Draws <paramref name="simulation"/>'s particles at <paramref name="radius"/> (m) on
-        /// <paramref name="layer"/>, culled by a bound that holds <paramref name="container"/> at any rotation.</summary>
-        public void Draw(FluidSimulation simulation, Transform container, float radius, int layer)
+        void DrawFor(ScriptableRenderContext context, Camera camera) => DrawFor(camera);
+
+        /// <summary>Draws the owner's particles for <paramref name="camera"/> at the owner's particle radius and on its
+        /// layer; nothing while it runs no simulation, once its container is gone, or for an inspector's preview
+        /// camera, which renders a preview scene of its own.</summary>
+        void DrawFor(Camera camera)
         {
+            FluidSimulation simulation = _owner.Simulation;
+            if (simulation == null || _container == null || camera.cameraType == CameraType.Preview) return;
             Material material = MaterialForPipeline();
             if (material == null) return;
-            var particles = (UnityComputeBuffer)simulation.Particles; // alternates every sort: fetch each frame
+            var particles = (UnityComputeBuffer)simulation.Particles; // alternates every sort: fetch at each draw
             var phases = (UnityComputeBuffer)simulation.PhaseTable;
+            float radius = _owner.ParticleRadius;
             _properties.SetBuffer(ShaderIds.Particles, particles.Buffer);
             _properties.SetBuffer(ShaderIds.Phases, phases.Buffer);
             _properties.SetFloat(ShaderIds.ParticleRadius, radius);
 
-            float reach = container.lossyScale.magnitude + 4f * radius;
+            float reach = _container.lossyScale.magnitude + 4f * radius;
             var parameters = new RenderParams(material)
             {
-                worldBounds = new Bounds(container.position, new Vector3(reach, reach, reach)),
+                camera = camera,
+                worldBounds = new Bounds(_container.position, new Vector3(reach, reach, reach)),
                 matProps = _properties,
-                layer = layer,
+                layer = _owner.gameObject.layer,
                 shadowCastingMode = ShadowCastingMode.Off,
                 receiveShadows = false,
             };
@@ -55,6 +69,8 @@ namespace SphFluid.Runtime
 
         public void Dispose()
         {
+            Camera.onPreCull -= DrawFor;
+            RenderPipelineManager.beginCameraRendering -= DrawFor;
             if (_universalMaterial != null) Object.Destroy(_universalMaterial);
             _universalMaterial = null;
         }
