@@ -24,7 +24,7 @@ namespace SphFluid.Runtime
         readonly Fluid _owner; // its running simulation is what is drawn; it names the fluid in the Console
         readonly Transform _container; // the bound that culls the draw holds it at any rotation
         readonly MaterialPropertyBlock _properties = new MaterialPropertyBlock();
-        Material _universalMaterial; // the particle material's values on the URP shader, made on the first URP frame
+        Material _universalMaterial; // the particle material's values on the URP shader, made at the first URP draw
         bool _pipelineWarned;
 
         public ParticleDrawing(FluidResources resources, Fluid owner, Transform container)
@@ -78,7 +78,7 @@ namespace SphFluid.Runtime
         /// <summary>
         /// The material for the active render pipeline: the resources' particle material itself in the Built-in
         /// pipeline (no pipeline asset), a copy of its values on the URP particle shader in URP, null (not drawn, one
-        /// warning) for any other pipeline. Asked every frame: the pipeline asset may change with the quality level.
+        /// warning) for any other pipeline. Asked at every draw: the pipeline asset may change with the quality level.
         /// </summary>
         Material MaterialForPipeline()
         {

@@ -9,7 +9,8 @@ namespace SphFluid.Tests.PlayMode
     /// <summary>
     /// Each camera draws the particles as it renders, not the fluid's Update: a camera that renders with no Update
     /// since the fluid started, as a paused editor's Scene and Game views do, still shows the fluid, and a disabled
-    /// fluid leaves the cameras' callbacks. Skipped (inconclusive) where there are no compute shaders.
+    /// fluid is no longer drawn and no longer subscribed to the cameras' callback (Camera.onPreCull, the one of the two
+    /// a test can count). Skipped (inconclusive) where there are no compute shaders.
     /// </summary>
     public sealed class ParticleDrawingTests
     {
@@ -37,9 +38,11 @@ namespace SphFluid.Tests.PlayMode
         public IEnumerator ACameraDrawsTheFluidBeforeItsFirstUpdate()
         {
             TestTank.RequireGpu();
+            int callbacks = PreCullCallbacks();
             Fluid simulator = _tank.CreateFluid(false);
             Assert.That(simulator.IsRunning, Is.True, simulator.FailureReason);
             Assert.That(simulator.SimulatedTime, Is.EqualTo(0.0), "no Update has stepped the fluid yet");
+            Assert.That(PreCullCallbacks(), Is.EqualTo(callbacks + 1), "a running fluid draws from Camera.onPreCull");
 
             // The water cube (0.12 m) fills about a quarter of the view; the corner shows the background.
             Color32[] drawn = Render();
@@ -49,6 +52,7 @@ namespace SphFluid.Tests.PlayMode
             simulator.enabled = false;
             Color32[] undrawn = Render();
             Assert.That(PixelsUnlike(undrawn, undrawn[0]), Is.EqualTo(0), "a disabled fluid is still drawn");
+            Assert.That(PreCullCallbacks(), Is.EqualTo(callbacks), "a disabled fluid still holds its Camera.onPreCull callback");
             yield return null;
         }
 
@@ -78,6 +82,8 @@ namespace SphFluid.Tests.PlayMode
             RenderTexture.active = previous;
             return _readBack.GetPixels32();
         }
+
+        static int PreCullCallbacks() => Camera.onPreCull?.GetInvocationList().Length ?? 0;
 
         static int PixelsUnlike(Color32[] image, Color32 background)
         {
