@@ -42,7 +42,8 @@ public sealed class UnityYamlNode
     /// <summary>Scalar text after unquoting; empty for an empty value (<c>key: </c>); null for mappings and sequences.</summary>
     public string? Value { get; }
     public bool IsQuoted { get; }
-    /// <summary>1-based line in the source file where the node starts (0 if unknown).</summary>
+    /// <summary>1-based line in the source file where the node starts (0 if unknown); for a mapping or sequence that is a
+    /// key's value, the key's line, though a block one's first member stands below it.</summary>
     public int Line { get; }
 
     [MemberNotNullWhen(true, nameof(Value))]

@@ -185,16 +185,22 @@ public static partial class UnityYamlParser
                     Attach(UnityYamlNode.Scalar(s.Value, quoted, Line(e)), Line(e));
                     return;
                 case MappingStart ms:
-                    Push(UnityYamlNode.Mapping(Line(e)), ms.Style == MappingStyle.Flow, Line(e));
+                    Push(UnityYamlNode.Mapping(StartLine(e)), ms.Style == MappingStyle.Flow, Line(e));
                     return;
                 case SequenceStart ss:
-                    Push(UnityYamlNode.Sequence(Line(e)), ss.Style == SequenceStyle.Flow, Line(e));
+                    Push(UnityYamlNode.Sequence(StartLine(e)), ss.Style == SequenceStyle.Flow, Line(e));
                     return;
                 case MappingEnd or SequenceEnd:
                     _open.Pop();
                     return;
             }
         }
+
+        /// <summary>The line a mapping or sequence is said to start on: its key's, where it is a key's value. A block one
+        /// opens on the line below its key (Unity writes a serialized struct's fields there), and an error about the field
+        /// as a whole (an axis of zero length) would otherwise point at its first member's line.</summary>
+        int StartLine(ParsingEvent e) =>
+            _open.Count > 0 && _open.Peek().Node.IsMapping && _open.Peek().Key != null ? _open.Peek().KeyLine : Line(e);
 
         static bool IsImplicitTag(NodeEvent node) => node is Scalar { IsPlainImplicit: true } or Scalar { IsQuotedImplicit: true }
             || node is MappingStart { IsImplicit: true } || node is SequenceStart { IsImplicit: true };

@@ -149,10 +149,13 @@ namespace SphFluid.Tests.Runner
         public void AZeroSpinAxisIsRefused()
         {
             string path = RunnerPaths.EditedScene("RotatingContainer", "    Axis:\n      x: 0\n      y: 0\n      z: 1", "    Axis:\n      x: 0\n      y: 0\n      z: 0");
+            // Unity writes the vector's members on the lines below its key; the error is about the field as a whole, so
+            // it names the key's line, not the first member's.
+            int line = File.ReadAllLines(path).ToList().IndexOf("    Axis:") + 1;
 
             var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
 
-            Assert.That(error.Message, Does.Contain("ContainerSpinner.spin.Axis: ContainerSpinner: Axis must be finite with magnitude in (0, 1000000]"));
+            Assert.That(error.Message, Does.Contain($"{path}:{line}: GameObject 'Container', ContainerSpinner.spin.Axis: ContainerSpinner: Axis must be finite with magnitude in (0, 1000000]"));
         }
 
         [Test]
