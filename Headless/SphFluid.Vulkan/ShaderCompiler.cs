@@ -58,13 +58,18 @@ public sealed class ShaderCompiler
         }
     }
 
-    public static string DefaultCacheDirectory()
+    public static string DefaultCacheDirectory() => CacheDirectoryFrom(Environment.GetEnvironmentVariable("SPHFLUID_SHADER_CACHE"),
+        Environment.GetEnvironmentVariable("XDG_CACHE_HOME"), Environment.GetFolderPath(Environment.SpecialFolder.UserProfile));
+
+    /// <summary>The cache folder the variables name: <paramref name="shaderCache"/> (SPHFLUID_SHADER_CACHE), else
+    /// <paramref name="xdgCacheHome"/>/sphfluid-spirv, else <paramref name="home"/>/.cache/sphfluid-spirv. A blank value
+    /// counts as unset, as a blank SPHFLUID_VULKAN_DEVICE does: taken as a path it made a folder named by the blanks
+    /// in the working folder. A relative XDG_CACHE_HOME is passed over, as the XDG base directory specification asks.</summary>
+    public static string CacheDirectoryFrom(string? shaderCache, string? xdgCacheHome, string home)
     {
-        string? env = Environment.GetEnvironmentVariable("SPHFLUID_SHADER_CACHE");
-        if (!string.IsNullOrEmpty(env)) return env;
-        string? xdg = Environment.GetEnvironmentVariable("XDG_CACHE_HOME");
-        if (!string.IsNullOrEmpty(xdg)) return Path.Combine(xdg, "sphfluid-spirv");
-        return Path.Combine(Environment.GetFolderPath(Environment.SpecialFolder.UserProfile), ".cache", "sphfluid-spirv");
+        if (!string.IsNullOrWhiteSpace(shaderCache)) return shaderCache;
+        if (!string.IsNullOrWhiteSpace(xdgCacheHome) && Path.IsPathRooted(xdgCacheHome)) return Path.Combine(xdgCacheHome, "sphfluid-spirv");
+        return Path.Combine(home, ".cache", "sphfluid-spirv");
     }
 
     static string? FindTool(string name, string package)

@@ -76,6 +76,20 @@ namespace SphFluid.Tests.Backend
             Assert.That(Directory.GetFileSystemEntries(writable), Is.Empty);
         }
 
+        /// <summary>A blank SPHFLUID_SHADER_CACHE or XDG_CACHE_HOME is unset, not a folder named by its blanks in the
+        /// working folder; a relative XDG_CACHE_HOME is passed over (the XDG specification); a relative
+        /// SPHFLUID_SHADER_CACHE is the user's own choice and kept.</summary>
+        [TestCase(null, null, "/home/u/.cache/sphfluid-spirv")]
+        [TestCase(" ", "\t", "/home/u/.cache/sphfluid-spirv")]
+        [TestCase("", "/x/cache", "/x/cache/sphfluid-spirv")]
+        [TestCase("  ", "relative/cache", "/home/u/.cache/sphfluid-spirv")]
+        [TestCase("spirv", "/x/cache", "spirv")]
+        [TestCase("/c/spirv", null, "/c/spirv")]
+        public void TheCacheFolderComesFromTheFirstVariableThatNamesOne(string? shaderCache, string? xdgCacheHome, string expected)
+        {
+            Assert.That(ShaderCompiler.CacheDirectoryFrom(shaderCache, xdgCacheHome, "/home/u"), Is.EqualTo(expected));
+        }
+
         /// <summary>A run that opens its device says so on its error stream, before it pays for the compiles.</summary>
         [Test]
         public void ARunWhoseCacheCannotBeWrittenIsWarned()
