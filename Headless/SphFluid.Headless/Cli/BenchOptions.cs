@@ -62,7 +62,7 @@ of at most 16 MiB that passes the integrity check), and every --particles count 
 
 " + SphfluidCommandLine.ExitCodesText;
 
-    readonly Argument<string> _scene = OptionKinds.Scene(Verb);
+    readonly Argument<string> _scene = OptionKinds.Scene();
     readonly Option<List<int>> _particles = OptionKinds.List(Verb, "--particles", "N",
         "particle counts to measure, each in [64, 16777216] (also N,N,...); the scene's spawn spacing and support radius are scaled "
         + "to reach them (default: the scene as it is)",

@@ -127,20 +127,11 @@ public static class OptionKinds
     public static Option<bool> Flag(string name, string description) =>
         new(name) { Description = description, Arity = ArgumentArity.Zero };
 
-    /// <summary>The scene file, the one positional argument; an unknown option standing where it goes is named as such.</summary>
-    public static Argument<string> Scene(string command)
-    {
-        var scene = new Argument<string>("scene.unity") { Description = "the Unity scene file (.unity)", Arity = ArgumentArity.ZeroOrOne };
-        scene.Validators.Add(r =>
-        {
-            var token = r.Tokens.FirstOrDefault()?.Value;
-            if (token != null && Ranges.LooksLikeOption(token))
-                r.AddError(r.Parent is CommandResult owner
-                    ? UnknownOption.Message(owner.Command, token)
-                    : $"{command}: unknown option {token} (see sphfluid {command} --help)");
-        });
-        return scene;
-    }
+    /// <summary>The scene file, the one positional argument. An unknown option standing where it goes is named as such
+    /// by <see cref="SphfluidCommandLine"/>, which alone sees whether it came after <c>--</c> (a scene file whose name
+    /// starts with a dash).</summary>
+    public static Argument<string> Scene() =>
+        new("scene.unity") { Description = "the Unity scene file (.unity)", Arity = ArgumentArity.ZeroOrOne };
 
     /// <summary>The scene argument of a parse, refused when it is missing, with an example of the command.</summary>
     public static string RequiredScene(ParseResult r, Argument<string> scene, string command, string example)

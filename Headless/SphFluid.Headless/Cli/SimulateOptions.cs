@@ -96,7 +96,7 @@ the back wall, spray ignored.
 
 " + SphfluidCommandLine.ExitCodesText;
 
-    readonly Argument<string> _scene = OptionKinds.Scene(Verb);
+    readonly Argument<string> _scene = OptionKinds.Scene();
     readonly Option<double> _seconds = OptionKinds.Number(Verb, "--seconds", SimulateOptions.MinInterval, 3600, false, "s", "S", "simulated seconds to run, in [0.0001, 3600]", SimulateOptions.DefaultSeconds);
     readonly Option<int> _steps = OptionKinds.Whole(Verb, "--steps", 1, 1_000_000, "N", "run N frames of --frame-seconds instead, N in [1, 1000000]");
     readonly Option<double> _frameSeconds = OptionKinds.Number(Verb, "--frame-seconds", SimulateOptions.MinInterval, 0.1, false, "s", "S",

@@ -139,11 +139,19 @@ phase and figure).";
         // "Unrecognized command or argument" says less than what the token is.
         var own = result.Errors.FirstOrDefault(e => name != null && e.Message.StartsWith(name + ":", System.StringComparison.Ordinal));
         if (own != null) return own.Message;
+        if (name != null && OptionTakenForTheScene(result) is string stranger)
+            return stranger.EndsWith(".unity", StringComparison.OrdinalIgnoreCase)
+                ? $"{name}: unknown option {stranger}; a scene file whose name starts with '-' goes after '--' (sphfluid {name} [options] -- {stranger})"
+                : UnknownOption.Message(command, stranger);
         if (result.UnmatchedTokens.Count > 0)
         {
             // An unknown option before the scene is taken for the scene, and the scene then is the odd one out.
-            string token = result.Tokens.FirstOrDefault(t => t.Type == TokenType.Argument && Ranges.LooksLikeOption(t.Value))?.Value
+            string token = result.Tokens.FirstOrDefault(t => t.Type == TokenType.Argument && Ranges.LooksLikeOption(t.Value) && !Literal(result, t))?.Value
                 ?? result.UnmatchedTokens[0];
+            // Past "--" every token is an argument, an option's name too (sphfluid simulate -- scene.unity --seconds 1).
+            if (name != null && result.Tokens.Any(t => t.Value == token && Literal(result, t)))
+                return $"{name}: unexpected argument '{token}' after '--', which makes every later token an argument; " +
+                    $"give options before it (see sphfluid {name} --help)";
             // An option before the command (sphfluid --seconds 1 simulate) is the root's to refuse: the command has it.
             if (name == null || BeforeTheCommand(result, token))
                 return Ranges.LooksLikeOption(token)
@@ -166,6 +174,18 @@ phase and figure).";
         if (name == null) return $"refuses the command line: {message} (commands: {string.Join(", ", Commands.Select(c => c.Name))}; see sphfluid --help)";
         return message.StartsWith(name + ":", System.StringComparison.Ordinal) ? message : $"{name}: {message}";
     }
+
+    /// <summary>The token read as the scene that reads as an option (an unknown one takes the scene's place), or null.
+    /// After <c>--</c> every token is an argument, so a scene file named <c>-take2.unity</c> can be given there.</summary>
+    static string? OptionTakenForTheScene(ParseResult result)
+    {
+        var scene = result.CommandResult.Children.OfType<ArgumentResult>().FirstOrDefault()?.Tokens.FirstOrDefault();
+        return scene != null && Ranges.LooksLikeOption(scene.Value) && !Literal(result, scene) ? scene.Value : null;
+    }
+
+    /// <summary>Whether <paramref name="token"/> comes after <c>--</c>, and so is an argument whatever it reads as.</summary>
+    static bool Literal(ParseResult result, Token token) =>
+        result.Tokens.TakeWhile(t => !ReferenceEquals(t, token)).Any(t => t.Type == TokenType.DoubleDash);
 
     static bool BeforeTheCommand(ParseResult result, string token)
     {

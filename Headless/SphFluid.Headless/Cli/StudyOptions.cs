@@ -70,7 +70,7 @@ simulated second, log axes, one series per solver, DFSPH iteration scheme and di
 
 " + SphfluidCommandLine.ExitCodesText;
 
-    readonly Argument<string> _scene = OptionKinds.Scene(Verb);
+    readonly Argument<string> _scene = OptionKinds.Scene();
     readonly Option<string> _out = OptionKinds.Text(Verb, "--out", "DIR",
         "output folder (default Output/<scene name>-study; the same rules as simulate --out: only files sphfluid wrote there are replaced)");
     readonly Option<double> _seconds = OptionKinds.Number(Verb, "--seconds", SimulateOptions.MinInterval, 60, false, "s", "S", "simulated seconds per configuration, in [0.0001, 60] (default 1; --quick 0.1)");

@@ -38,6 +38,23 @@ namespace SphFluid.Tests.Runner
             Assert.That(err, Does.Not.Contain("did you mean"), "--fast is near no option of simulate");
         }
 
+        /// <summary>After "--" every token is an argument: a scene file whose name starts with a dash can be given there, and
+        /// an option written after it is named as the argument it became, not as an unknown option.</summary>
+        [Test]
+        public void ASceneNamedWithADashGoesAfterTheDoubleDash()
+        {
+            foreach (string command in new[] { "simulate", "bench", "study" })
+            {
+                Assert.That(Run(out _, out string refused, command, "-take2.unity"), Is.EqualTo(ExitCodes.BadArguments));
+                Assert.That(refused, Does.Contain($"{command}: unknown option -take2.unity; a scene file whose name starts with '-' goes after '--'"));
+
+                Assert.That(Run(out _, out string late, command, "--", "-take2.unity", "--out", "x"), Is.EqualTo(ExitCodes.BadArguments));
+                Assert.That(late, Does.Contain($"{command}: unexpected argument '--out' after '--'"));
+            }
+            Assert.That(SimulateOptions.Parse(new[] { "--seconds", "0.5", "--", "-take2.unity" }).ScenePath, Is.EqualTo("-take2.unity"));
+            Assert.That(BenchOptions.Parse(new[] { "--", "--take2.unity" }).ScenePath, Is.EqualTo("--take2.unity"));
+        }
+
         /// <summary>The commands spell alike options apart (simulate takes one --particles-scale and --solver, bench and
         /// study lists): the refusal names the spelling this command has, after the scene or before it.</summary>
         [TestCase("study", "--solver", "dfsph", "study: unknown option --solver; did you mean --solvers?")]
