@@ -116,18 +116,25 @@ phase and figure).";
         return result.Invoke(new InvocationConfiguration { Output = writer, Error = writer, EnableDefaultExceptionHandler = false });
     }
 
-    /// <summary>A switch given a value (<c>--quiet=yes</c>) is refused by name; the library would only see an odd token.</summary>
+    /// <summary>A switch given a value (<c>--quiet=yes</c>, <c>--help=all</c>) is refused by name; the library would only
+    /// see an odd token, or show the help as if no value were there. Past <c>--</c> every token is an argument.</summary>
     void RefuseFlagValues(string[] args)
     {
         var command = Commands.FirstOrDefault(c => args.Length > 0 && c.Name == args[0]);
-        if (command == null) return;
-        foreach (string arg in args.Skip(1))
+        // Before a command only the root's switches stand (sphfluid --help=x); the command's own come after it.
+        var given = command == null ? args.TakeWhile(a => Commands.All(c => c.Name != a)) : args.Skip(1);
+        // The help option is the root's, inherited by every command (Recursive), so not among the command's own options.
+        var switches = (command?.Options ?? Enumerable.Empty<Option>()).Concat(Root.Options.Where(o => command == null || o.Recursive))
+            .Where(o => o.Arity.MaximumNumberOfValues == 0).ToList();
+        foreach (string arg in given.TakeWhile(a => a != "--"))
         {
             int eq = arg.StartsWith("--", System.StringComparison.Ordinal) ? arg.IndexOfAny(new[] { '=', ':' }) : -1;
             if (eq < 0) continue;
             string name = arg[..eq];
-            if (command.Options.Any(o => o.Name == name && o.Arity.MaximumNumberOfValues == 0))
-                throw new UsageException($"{command.Name}: option {name} takes no value (was '{arg[(eq + 1)..]}')");
+            if (switches.Any(o => o.Name == name))
+                throw new UsageException(command == null
+                    ? $"refuses a value for {name}, which takes none (was '{arg[(eq + 1)..]}')"
+                    : $"{command.Name}: option {name} takes no value (was '{arg[(eq + 1)..]}')");
         }
     }
 

@@ -229,6 +229,13 @@ namespace SphFluid.Tests.Runner
             var error = Assert.Throws<UsageException>(() => SimulateOptions.Parse(new[] { "x.unity", "--top-view=yes" }));
             Assert.That(error.Message, Does.Contain("option --top-view takes no value"));
             Assert.That(BenchOptions.Parse(new[] { "x.unity", "--particles", "1000,2000", "4000" }).Particles, Is.EqualTo(new[] { 1000, 2000, 4000 }));
+            // The help switch is the root's; given a value it showed the help as if it had none.
+            Assert.That(Run(out _, out string help, "bench", "--help=all"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(help, Does.Contain("bench: option --help takes no value (was 'all')"));
+            Assert.That(Run(out _, out string rootHelp, "--help=all"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(rootHelp, Does.Contain("sphfluid refuses a value for --help, which takes none (was 'all')"));
+            // Past "--" a token that reads as a switch with a value is an argument (here, the scene file's name).
+            Assert.That(SimulateOptions.Parse(new[] { "--", "--top-view=1.unity" }).ScenePath, Is.EqualTo("--top-view=1.unity"));
         }
 
         [Test]
