@@ -142,6 +142,41 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(Messages(scene), Has.Some.StartsWith("SpawnBox 'Water': each Size component must be in [0.02, 1000] m"));
         }
 
+        // Unity's Transform and a script can hold NaN or infinity; the headless reader refuses them while it reads the
+        // scene, but a Fluid in the editor hands its Transforms straight to this validation.
+        [TestCase("SpawnBoxes[0].Center", float.NaN)]
+        [TestCase("SpawnBoxes[0].Size", float.PositiveInfinity)]
+        [TestCase("SpawnBoxes[0].Rotation", float.NaN)]
+        [TestCase("SpawnBoxes[0].InitialVelocity", float.NegativeInfinity)]
+        [TestCase("Container.Position", float.NaN)]
+        [TestCase("Container.Size", float.NaN)]
+        [TestCase("Container.Rotation", float.PositiveInfinity)]
+        [TestCase("Obstacles[0].Center", float.NaN)]
+        [TestCase("Obstacles[0].Radius", float.NaN)]
+        public void ANonFinitePlacement_IsRefusedNamingItsField(string field, float value)
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.Obstacles.Add(new RigidSphere(scene.Container.Position + new Vector3(0f, 0.15f, 0f), 0.02f, Vector3.Zero) { Name = "Ball" });
+            Assert.That(scene.Validate(), Is.Empty, "the scene before the edit");
+            FluidBlock box = scene.SpawnBoxes[0];
+            ContainerDescription container = scene.Container;
+            RigidSphere sphere = scene.Obstacles[0];
+            var v = new Vector3(1f, value, 1f);
+            switch (field)
+            {
+                case "SpawnBoxes[0].Center": box.Center = box.Center + v; break;
+                case "SpawnBoxes[0].Size": box.Size = v; break;
+                case "SpawnBoxes[0].Rotation": box.Rotation = new Quaternion(0f, value, 0f, 1f); break;
+                case "SpawnBoxes[0].InitialVelocity": box.InitialVelocity = v; break;
+                case "Container.Position": container.Position = v; break;
+                case "Container.Size": container.Size = v; break;
+                case "Container.Rotation": container.Rotation = new Quaternion(value, 0f, 0f, 1f); break;
+                case "Obstacles[0].Center": sphere.Center = v; break;
+                case "Obstacles[0].Radius": sphere.Radius = value; break;
+            }
+            Assert.That(scene.Validate().Select(e => e.Field).ToArray(), Has.Some.StartsWith(field));
+        }
+
         [Test]
         public void JitterAboveHalf_IsRefused()
         {
