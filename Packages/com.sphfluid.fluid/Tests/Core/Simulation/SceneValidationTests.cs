@@ -161,17 +161,18 @@ namespace SphFluid.Tests.Core.Simulation
             FluidBlock box = scene.SpawnBoxes[0];
             ContainerDescription container = scene.Container;
             RigidSphere sphere = scene.Obstacles[0];
-            var v = new Vector3(1f, value, 1f);
+            // Only the one component changes, so that nothing but its value can be what is refused.
+            Vector3 WithY(Vector3 a) => new Vector3(a.X, value, a.Z);
             switch (field)
             {
-                case "SpawnBoxes[0].Center": box.Center = box.Center + v; break;
-                case "SpawnBoxes[0].Size": box.Size = v; break;
-                case "SpawnBoxes[0].Rotation": box.Rotation = new Quaternion(0f, value, 0f, 1f); break;
-                case "SpawnBoxes[0].InitialVelocity": box.InitialVelocity = v; break;
-                case "Container.Position": container.Position = v; break;
-                case "Container.Size": container.Size = v; break;
-                case "Container.Rotation": container.Rotation = new Quaternion(value, 0f, 0f, 1f); break;
-                case "Obstacles[0].Center": sphere.Center = v; break;
+                case "SpawnBoxes[0].Center": box.Center = WithY(box.Center); break;
+                case "SpawnBoxes[0].Size": box.Size = WithY(box.Size); break;
+                case "SpawnBoxes[0].Rotation": box.Rotation = new Quaternion(box.Rotation.X, value, box.Rotation.Z, box.Rotation.W); break;
+                case "SpawnBoxes[0].InitialVelocity": box.InitialVelocity = WithY(box.InitialVelocity); break;
+                case "Container.Position": container.Position = WithY(container.Position); break;
+                case "Container.Size": container.Size = WithY(container.Size); break;
+                case "Container.Rotation": container.Rotation = new Quaternion(value, container.Rotation.Y, container.Rotation.Z, container.Rotation.W); break;
+                case "Obstacles[0].Center": sphere.Center = WithY(sphere.Center); break;
                 case "Obstacles[0].Radius": sphere.Radius = value; break;
             }
             Assert.That(scene.Validate().Select(e => e.Field).ToArray(), Has.Some.StartsWith(field));
