@@ -380,7 +380,7 @@ public static class SceneLoader
         {
             if (errors.Count == 0) return;
             string key = prefix + "." + errors[0].Field;
-            throw new SceneException($"{path}:{mb.Root.At(key)?.Line ?? mb.Line}: {Where(go, component, key)}: {errors[0].Message}");
+            throw new SceneException($"{path}:{mb.Root.At(key)?.Line ?? mb.Line}: {Where(go, component, key)}: {errors[0].Rule}");
         }
 
         /// <summary>The container (the Fluid's assigned one, else the scene's first active one) and its GameObject.</summary>
@@ -482,15 +482,15 @@ public static class SceneLoader
             {
                 string key = RuntimeScripts.Settings + "." + member;
                 int line = _simulator.Root.At(key)?.Line ?? _simulator.Line;
-                return $"{path}:{line}: {Where(_simulatorGo, RuntimeScripts.Fluid, key)}: {error.Message}";
+                return $"{path}:{line}: {Where(_simulatorGo, RuntimeScripts.Fluid, key)}: {error.Rule}";
             }
             if (head == "Container")
             {
                 if (TransformField(member) is { } containerPlacement)
                     return Placed(containerGo, containerPlacement, error);
                 if (member == nameof(ContainerDescription.Friction) && ContainerBehaviour(containerGo) is { } component)
-                    return $"{path}:{component.Root.At("friction")?.Line ?? component.Line}: {Where(containerGo, RuntimeScripts.FluidContainer, "friction")}: {error.Message}";
-                return $"{path}:{containerGo.Document.Line}: GameObject '{containerGo.Name}', {RuntimeScripts.FluidContainer}: {error.Message}";
+                    return $"{path}:{component.Root.At("friction")?.Line ?? component.Line}: {Where(containerGo, RuntimeScripts.FluidContainer, "friction")}: {error.Rule}";
+                return $"{path}:{containerGo.Document.Line}: GameObject '{containerGo.Name}', {RuntimeScripts.FluidContainer}: {error.Rule}";
             }
             if (TryIndex(head, "SpawnBoxes", out int b) && b < _boxes.Count)
             {
@@ -500,12 +500,12 @@ public static class SceneLoader
                 // The core's path below the box is the serialized one: SpawnBoxes[0].Phase.RestDensity is spawn.Phase.RestDensity.
                 string key = RuntimeScripts.Spawn + "." + string.Join(".", parts.Skip(1));
                 int line = mb.Root.At(key)?.Line ?? mb.Line;
-                return $"{path}:{line}: {Where(go, RuntimeScripts.SpawnBox, key)}: {error.Message}";
+                return $"{path}:{line}: {Where(go, RuntimeScripts.SpawnBox, key)}: {error.Rule}";
             }
             if (TryIndex(head, "Obstacles", out int o) && o < _obstacles.Count)
                 return TransformField(member) is { } spherePlacement
                     ? Placed(_obstacles[o].Go, spherePlacement, error)
-                    : $"{path}:{_obstacles[o].Behaviour.Root.At(CamelCase(member))?.Line ?? _obstacles[o].Behaviour.Line}: GameObject '{_obstacles[o].Go.Name}', SphereObstacle.{CamelCase(member)}: {error.Message}";
+                    : $"{path}:{_obstacles[o].Behaviour.Root.At(CamelCase(member))?.Line ?? _obstacles[o].Behaviour.Line}: GameObject '{_obstacles[o].Go.Name}', SphereObstacle.{CamelCase(member)}: {error.Rule}";
             return error.Message;
         }
 
@@ -517,7 +517,7 @@ public static class SceneLoader
             int line = go.Transform?.Root[key]?.Line ?? go.Transform?.Line ?? go.Document.Line;
             var parents = go.SelfAndAncestors.Skip(1).Select(g => $"'{g.Name}'").ToList();
             string under = parents.Count == 0 ? "" : $" (in the world, under {string.Join(", ", parents)}, whose Transforms count too)";
-            return $"{path}:{line}: GameObject '{go.Name}', {transformField}{under}: {error.Message}";
+            return $"{path}:{line}: GameObject '{go.Name}', {transformField}{under}: {error.Rule}";
         }
 
         static string? TransformField(string member) => member switch

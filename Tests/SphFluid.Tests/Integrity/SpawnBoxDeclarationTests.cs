@@ -172,7 +172,7 @@ namespace SphFluid.Tests.Integrity
 
             Assert.That(error.Message, Does.StartWith(path + ": the fluid scene is invalid:"));
             Assert.That(error.Message, Does.Contain(
-                $"{path}:{line}: GameObject 'Water', SpawnBox.spawn.Jitter: SpawnBox 'Water': Jitter must be in [0, 0.5] particle spacings (was 0.75)"));
+                $"{path}:{line}: GameObject 'Water', SpawnBox.spawn.Jitter: Jitter must be in [0, 0.5] particle spacings (was 0.75)"));
         }
 
         static string Text(object value) => string.Format(CultureInfo.InvariantCulture, "{0}", value);

@@ -279,7 +279,7 @@ namespace SphFluid.Tests.Runner
             var run = Simulate(path);
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Oil', SpawnBox.spawn.Phase.Name: SpawnBox 'Oil': Name must be " +
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Oil', SpawnBox.spawn.Phase.Name: Name must be " +
                 "printable text, without control characters (was 'Oil\\u001B[2J\\u001B[31m', U+001B at character 4)"));
             AssertNothingActsOnATerminal(run);
         }
@@ -324,7 +324,7 @@ namespace SphFluid.Tests.Runner
             var run = Simulate(path);
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', Transform.m_LocalScale: SpawnBox 'Water': each Size component must be in"));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', Transform.m_LocalScale: each Size component must be in"));
         }
 
         /// <summary>Under a scaled parent the box's own scale is fine and its world size is not: the message names the
@@ -343,7 +343,7 @@ namespace SphFluid.Tests.Runner
             var run = Simulate(path);
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', Transform.m_LocalScale (in the world, under 'Container', whose Transforms count too): SpawnBox 'Water'"));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Water', Transform.m_LocalScale (in the world, under 'Container', whose Transforms count too): each Size component must be in"));
         }
 
         static int LineOf(string path, string text) => Array.FindIndex(File.ReadAllLines(path), l => l.StartsWith(text, StringComparison.Ordinal));
@@ -415,7 +415,7 @@ namespace SphFluid.Tests.Runner
             var run = Simulate(path);
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Sphere', SphereObstacle.radius: Sphere 'Sphere': the sphere obstacles"));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Sphere', SphereObstacle.radius: the sphere obstacles"));
             Assert.That(run.Stderr, Does.Contain("so the scene would spawn no particle"));
         }
 
@@ -476,7 +476,7 @@ namespace SphFluid.Tests.Runner
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
             Assert.That(run.Stderr, Does.Contain(path + ": the fluid scene is invalid"));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Oil', SpawnBox.spawn.Phase.Color.r: SpawnBox 'Oil': Color.r must be in [0, 1] (was 2)"));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Oil', SpawnBox.spawn.Phase.Color.r: Color.r must be in [0, 1] (was 2)"));
         }
 
         [Test]

@@ -123,7 +123,7 @@ namespace SphFluid.Tests.Runner
         [TestCase("  friction: 1", "  friction: rough",
             @"PlayModeTest\.unity:{line}: GameObject 'Container', FluidContainer\.friction must be one of 0 \(Slip\), 1 \(NoSlip\) \(was 'rough'\)")]
         [TestCase("  friction: 1", "  friction: 5",
-            @"PlayModeTest\.unity:{line}: GameObject 'Container', FluidContainer\.friction: Container: Friction must be one of 0 \(Slip\), 1 \(NoSlip\) \(was 5\)")]
+            @"PlayModeTest\.unity:{line}: GameObject 'Container', FluidContainer\.friction: Friction must be one of 0 \(Slip\), 1 \(NoSlip\) \(was 5\)")]
         public void AValueItCannotUseNamesTheFieldLineAndWhatItAccepts(string original, string edited, string expected)
         {
             string path = RunnerPaths.EditedScene("PlayModeTest", original, edited);
@@ -142,7 +142,7 @@ namespace SphFluid.Tests.Runner
 
             var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
 
-            Assert.That(error.Message, Does.Match(@"RotatingContainer\.unity:\d+: GameObject '[^']+', ContainerSpinner\.spin\.AngularSpeed: ContainerSpinner: AngularSpeed must be in \[-360, 360\] deg/s \(was 400\)"));
+            Assert.That(error.Message, Does.Match(@"RotatingContainer\.unity:\d+: GameObject '[^']+', ContainerSpinner\.spin\.AngularSpeed: AngularSpeed must be in \[-360, 360\] deg/s \(was 400\)"));
         }
 
         [Test]
@@ -155,7 +155,7 @@ namespace SphFluid.Tests.Runner
 
             var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
 
-            Assert.That(error.Message, Does.Contain($"{path}:{line}: GameObject 'Container', ContainerSpinner.spin.Axis: ContainerSpinner: Axis must be finite with magnitude in (0, 1000000]"));
+            Assert.That(error.Message, Does.Contain($"{path}:{line}: GameObject 'Container', ContainerSpinner.spin.Axis: Axis must be finite with magnitude in (0, 1000000]"));
         }
 
         [Test]

@@ -143,7 +143,7 @@ namespace SphFluid.Tests.Runner
         {
             string path = RunnerPaths.EditedScene("PlayModeTest", SceneStiffness, TooStiff);
             Assert.That(Run(out string asWritten, "simulate", path, "--steps", "1"), Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(asWritten, Does.Contain("Fluid.settings.Stiffness: FluidSettings: Stiffness must be in [1, "));
+            Assert.That(asWritten, Does.Contain("Fluid.settings.Stiffness: Stiffness must be in [1, "));
 
             var stdout = new StringWriter();
             var run = new SimulateRun(SimulateOptions.Parse(new[] { path, "--steps", "1", "--solver", "dfsph", "--out", RunnerPaths.ScratchFolder("stiff-dfsph"), "--quiet" }),
@@ -164,7 +164,7 @@ namespace SphFluid.Tests.Runner
             Assert.That(Run(out string err, args.ToArray()), Is.EqualTo(ExitCodes.BadScene));
 
             Assert.That(err, Does.Contain($"the fluid scene is invalid as {command} {arguments} runs it:"));
-            Assert.That(err, Does.Contain($"PlayModeTest.unity:{line}: GameObject 'Fluid', Fluid.settings.Stiffness: FluidSettings: Stiffness must be in [1, "));
+            Assert.That(err, Does.Contain($"PlayModeTest.unity:{line}: GameObject 'Fluid', Fluid.settings.Stiffness: Stiffness must be in [1, "));
             Assert.That(err, Does.Contain("(was 1E+09)"));
         }
 
@@ -177,7 +177,7 @@ namespace SphFluid.Tests.Runner
             Assert.That(Run(out string err, "study", path, "--quick", "--solvers", "wcsph", "--stiffness-factors", "1", "100"), Is.EqualTo(ExitCodes.BadScene));
 
             Assert.That(err, Does.Contain("the fluid scene is invalid as study configuration WCSPH k x100, CFL "));
-            Assert.That(err, Does.Contain($"PlayModeTest.unity:{line}: GameObject 'Fluid', Fluid.settings.Stiffness: FluidSettings: Stiffness must be in [1, "));
+            Assert.That(err, Does.Contain($"PlayModeTest.unity:{line}: GameObject 'Fluid', Fluid.settings.Stiffness: Stiffness must be in [1, "));
             Assert.That(err, Does.Contain("(was 1E+09)"));
         }
 

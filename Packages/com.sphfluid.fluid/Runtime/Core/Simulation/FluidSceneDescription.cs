@@ -87,7 +87,7 @@ namespace SphFluid.Simulation
             var errors = new List<ValidationError>();
             if (Settings == null)
             {
-                errors.Add(new ValidationError("Settings", "FluidScene: Settings must be set (was null)"));
+                errors.Add(new ValidationError("Settings", "FluidScene", "Settings must be set (was null)"));
                 return errors;
             }
             Settings.Validate(errors, "Settings.");
@@ -106,7 +106,7 @@ namespace SphFluid.Simulation
                 for (int i = 1; i < Obstacles.Count; i++)
                     if (Obstacles[i].Radius > Obstacles[largest].Radius) largest = i;
                 errors.Add(new ValidationError(ObstaclePath(largest) + nameof(RigidSphere.Radius),
-                    $"{ObstacleOwner(Obstacles[largest])}: the sphere obstacles ({SphereList()}) cover every lattice point of the spawn boxes (each point within half a spacing of a sphere is left out), so the scene would spawn no particle; the total must be in [1, {Settings.MaxParticles}]: shrink or move the spheres or the boxes"));
+                    ObstacleOwner(Obstacles[largest]), $"the sphere obstacles ({SphereList()}) cover every lattice point of the spawn boxes (each point within half a spacing of a sphere is left out), so the scene would spawn no particle; the total must be in [1, {Settings.MaxParticles}]: shrink or move the spheres or the boxes"));
             }
             // The Tait speed of sound only bounds the weakly compressible solver; DFSPH keeps the density by its solves.
             if (Settings.PressureSolver == PressureSolver.Wcsph)
@@ -121,7 +121,7 @@ namespace SphFluid.Simulation
             const string owner = "Container";
             if (Container == null)
             {
-                errors.Add(new ValidationError("Container", "FluidScene: Container must be set (was null)"));
+                errors.Add(new ValidationError("Container", "FluidScene", "Container must be set (was null)"));
                 return;
             }
             ValidationRules.Finite(errors, owner, "Container.", nameof(ContainerDescription.Position), Container.Position, 1e6f, "m");
@@ -132,17 +132,17 @@ namespace SphFluid.Simulation
                 || size.X < minSize || size.Y < minSize || size.Z < minSize || size.X > 1000f || size.Y > 1000f || size.Z > 1000f)
             {
                 errors.Add(new ValidationError("Container.Size",
-                    $"Container: each Size component must be in [{ValidationRules.Format(minSize)}, 1000] m (two particle spacings or more) (was {ValidationRules.Format(size)})"));
+                    "Container", $"each Size component must be in [{ValidationRules.Format(minSize)}, 1000] m (two particle spacings or more) (was {ValidationRules.Format(size)})"));
             }
             else if (settingsOk)
             {
                 long walls = BoundarySampling.ContainerCount(size, Settings.ParticleSpacing, Settings.SmoothingRadius);
                 if (walls > MaxBoundaryParticles)
                     errors.Add(new ValidationError("Container.Size",
-                        $"Container: Size {ValidationRules.Format(size)} m needs {walls} wall particles at spacing {ValidationRules.Format(Settings.ParticleSpacing)} m, more than the {MaxBoundaryParticles} allowed; shrink the container or raise ParticleSpacing"));
+                        "Container", $"Size {ValidationRules.Format(size)} m needs {walls} wall particles at spacing {ValidationRules.Format(Settings.ParticleSpacing)} m, more than the {MaxBoundaryParticles} allowed; shrink the container or raise ParticleSpacing"));
             }
             if (Container.Friction != WallFriction.Slip && Container.Friction != WallFriction.NoSlip)
-                errors.Add(new ValidationError("Container.Friction", $"Container: Friction must be one of {SettingRules.EnumValues(typeof(WallFriction))} (was {(int)Container.Friction})"));
+                errors.Add(new ValidationError("Container.Friction", "Container", $"Friction must be one of {SettingRules.EnumValues(typeof(WallFriction))} (was {(int)Container.Friction})"));
             ValidationRules.Finite(errors, owner, "Container.", nameof(ContainerDescription.Velocity), Container.Velocity, 1000f, "m/s");
             ValidationRules.Finite(errors, owner, "Container.", nameof(ContainerDescription.AngularVelocity), Container.AngularVelocity, 1000f, "rad/s");
         }
@@ -151,7 +151,7 @@ namespace SphFluid.Simulation
         {
             if (SpawnBoxes == null || SpawnBoxes.Count == 0)
             {
-                errors.Add(new ValidationError("SpawnBoxes", "FluidScene: SpawnBoxes must hold at least one box (was 0)"));
+                errors.Add(new ValidationError("SpawnBoxes", "FluidScene", "SpawnBoxes must hold at least one box (was 0)"));
                 return;
             }
             var firstOfPhase = new Dictionary<string, FluidBlock>();
@@ -165,7 +165,7 @@ namespace SphFluid.Simulation
                 string path = $"SpawnBoxes[{b}].";
                 if (box == null)
                 {
-                    errors.Add(new ValidationError($"SpawnBoxes[{b}]", $"FluidScene: SpawnBoxes[{b}] must be set (was null)"));
+                    errors.Add(new ValidationError($"SpawnBoxes[{b}]", "FluidScene", $"SpawnBoxes[{b}] must be set (was null)"));
                     continue;
                 }
                 string owner = $"SpawnBox '{box.Name}'";
@@ -177,14 +177,14 @@ namespace SphFluid.Simulation
                     {
                         if (!first.Phase.SameDefinition(box.Phase))
                             errors.Add(new ValidationError(path + "Phase",
-                                $"{owner}: phase '{box.Phase.Name}' is defined differently in SpawnBox '{first.Name}' ({first.Phase}) and SpawnBox '{box.Name}' ({box.Phase}); boxes of one phase must agree"));
+                                owner, $"phase '{box.Phase.Name}' is defined differently in SpawnBox '{first.Name}' ({first.Phase}) and SpawnBox '{box.Name}' ({box.Phase}); boxes of one phase must agree"));
                     }
                     else firstOfPhase.Add(box.Phase.Name, box);
                     if (firstOfFoldedName.TryGetValue(box.Phase.Name, out var folded))
                     {
                         if (folded.Phase.Name != box.Phase.Name)
                             errors.Add(new ValidationError(path + "Phase.Name",
-                                $"{owner}: phase name '{box.Phase.Name}' differs from phase '{folded.Phase.Name}' of SpawnBox '{folded.Name}' only by letter case; phase names must differ by more than case (use the same name for the same liquid)"));
+                                owner, $"phase name '{box.Phase.Name}' differs from phase '{folded.Phase.Name}' of SpawnBox '{folded.Name}' only by letter case; phase names must differ by more than case (use the same name for the same liquid)"));
                     }
                     else firstOfFoldedName.Add(box.Phase.Name, box);
                 }
@@ -200,29 +200,29 @@ namespace SphFluid.Simulation
                 if (!sizeOk)
                 {
                     errors.Add(new ValidationError(path + "Size",
-                        $"{owner}: each Size component must be in [{ValidationRules.Format(s)}, 1000] m (one particle spacing or more) (was {ValidationRules.Format(size)})"));
+                        owner, $"each Size component must be in [{ValidationRules.Format(s)}, 1000] m (one particle spacing or more) (was {ValidationRules.Format(size)})"));
                     continue;
                 }
                 total += SpawnLayout.Count(Settings, box);
                 if (Container != null && errors.Count == before && !BoxInsideContainer(box, out Vector3 corner))
                 {
                     errors.Add(new ValidationError(path + "Center",
-                        $"{owner}: the box must lie inside the container (centre {ValidationRules.Format(Container.Position)}, size {ValidationRules.Format(Container.Size)} m); its corner {ValidationRules.Format(corner)} is outside"));
+                        owner, $"the box must lie inside the container (centre {ValidationRules.Format(Container.Position)}, size {ValidationRules.Format(Container.Size)} m); its corner {ValidationRules.Format(corner)} is outside"));
                 }
                 if (errors.Count == before) ParticleMassRule.Validate(this, box.Phase, owner, path + "Phase.", errors);
             }
             if (firstOfPhase.Count > MaxPhases)
-                errors.Add(new ValidationError("SpawnBoxes", $"FluidScene: the number of phases must be in [1, {MaxPhases}] (was {firstOfPhase.Count})"));
+                errors.Add(new ValidationError("SpawnBoxes", "FluidScene", $"the number of phases must be in [1, {MaxPhases}] (was {firstOfPhase.Count})"));
             if (settingsOk && total > Settings.MaxParticles)
                 errors.Add(new ValidationError("Settings.MaxParticles",
-                    $"FluidScene: the spawn boxes hold {total} particles; the total must be in [1, {Settings.MaxParticles}] (Settings.MaxParticles)"));
+                    "FluidScene", $"the spawn boxes hold {total} particles; the total must be in [1, {Settings.MaxParticles}] (Settings.MaxParticles)"));
         }
 
         static void ValidatePhase(List<ValidationError> errors, string owner, string path, PhaseDescription phase)
         {
             if (phase == null)
             {
-                errors.Add(new ValidationError(path.TrimEnd('.'), $"{owner}: Phase must be set (was null)"));
+                errors.Add(new ValidationError(path.TrimEnd('.'), owner, $"Phase must be set (was null)"));
                 return;
             }
             SettingRules.ValidateAll(phase, errors, owner, path);
@@ -232,14 +232,14 @@ namespace SphFluid.Simulation
         {
             if (Obstacles == null) return;
             if (Obstacles.Count > MaxObstacles)
-                errors.Add(new ValidationError("Obstacles", $"FluidScene: the number of obstacles must be in [0, {MaxObstacles}] (was {Obstacles.Count})"));
+                errors.Add(new ValidationError("Obstacles", "FluidScene", $"the number of obstacles must be in [0, {MaxObstacles}] (was {Obstacles.Count})"));
             for (int i = 0; i < Obstacles.Count; i++)
             {
                 var o = Obstacles[i];
                 string path = ObstaclePath(i);
                 if (o == null)
                 {
-                    errors.Add(new ValidationError($"Obstacles[{i}]", $"FluidScene: Obstacles[{i}] must be set (was null)"));
+                    errors.Add(new ValidationError($"Obstacles[{i}]", "FluidScene", $"Obstacles[{i}] must be set (was null)"));
                     continue;
                 }
                 ValidateObstacle(errors, o, ObstacleOwner(o), path);

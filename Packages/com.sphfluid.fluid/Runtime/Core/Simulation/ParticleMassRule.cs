@@ -25,7 +25,7 @@ namespace SphFluid.Simulation
             double min = derived / factor, max = derived * factor;
             if (phase.ParticleMass >= min && phase.ParticleMass <= max) return;
             errors.Add(new ValidationError(path + nameof(PhaseDescription.ParticleMass),
-                $"{owner}: ParticleMass must be 0 (derived: {ValidationRules.Format(derived)} kg) or in [{ValidationRules.Format(min)}, {ValidationRules.Format(max)}] kg ({ValidationRules.Format(1.0 / factor)} to {ValidationRules.Format(factor)} times the derived mass for this spacing, support radius, rest density and Gamma) (was {ValidationRules.Format(phase.ParticleMass)})"));
+                owner, $"ParticleMass must be 0 (derived: {ValidationRules.Format(derived)} kg) or in [{ValidationRules.Format(min)}, {ValidationRules.Format(max)}] kg ({ValidationRules.Format(1.0 / factor)} to {ValidationRules.Format(factor)} times the derived mass for this spacing, support radius, rest density and Gamma) (was {ValidationRules.Format(phase.ParticleMass)})"));
         }
     }
 }

@@ -136,16 +136,16 @@ namespace SphFluid.Simulation
                 int length = text.Length;
                 if (length < d.Min || length > d.Max)
                 {
-                    errors.Add(new ValidationError(path + field, length == 0 && d.Min >= 1
-                        ? $"{owner}: {field} must be non-empty, of length in {d.RangeText} (was empty)"
-                        : $"{owner}: {field} must have a length in {d.RangeText} (was {length})"));
+                    errors.Add(new ValidationError(path + field, owner, length == 0 && d.Min >= 1
+                        ? $"{field} must be non-empty, of length in {d.RangeText} (was empty)"
+                        : $"{field} must have a length in {d.RangeText} (was {length})"));
                     return false;
                 }
                 // A name is printed on consoles, in logs and in the readout: a control character in it would act there.
                 int unprintable = PrintableText.FirstUnprintable(text);
                 if (unprintable < 0) return true;
                 errors.Add(new ValidationError(path + field,
-                    $"{owner}: {field} must be printable text, without control characters (was '{PrintableText.Escape(text)}', " +
+                    owner, $"{field} must be printable text, without control characters (was '{PrintableText.Escape(text)}', " +
                     $"U+{(int)text[unprintable]:X4} at character {unprintable + 1})"));
                 return false;
             }
@@ -153,16 +153,16 @@ namespace SphFluid.Simulation
             {
                 case float f:
                     if (ValidationRules.IsFinite(f) && Above(f, d) && f <= (float)d.Max) return true;
-                    errors.Add(new ValidationError(path + field, $"{owner}: {field} must be in {d.RangeText} (was {ValidationRules.Format(f)})"));
+                    errors.Add(new ValidationError(path + field, owner, $"{field} must be in {d.RangeText} (was {ValidationRules.Format(f)})"));
                     return false;
                 case int i:
                     if ((d.MinExclusive ? i > d.Min : i >= d.Min) && i <= d.Max) return true;
-                    errors.Add(new ValidationError(path + field, $"{owner}: {field} must be in {d.RangeText} (was {i})"));
+                    errors.Add(new ValidationError(path + field, owner, $"{field} must be in {d.RangeText} (was {i})"));
                     return false;
                 case SettingVector v:
                     float length = v.Length();
                     if (ValidationRules.IsFinite(length) && Above(length, d) && length <= d.Max) return true;
-                    errors.Add(new ValidationError(path + field, $"{owner}: {field} must be finite with magnitude in {d.RangeText} (was {v})"));
+                    errors.Add(new ValidationError(path + field, owner, $"{field} must be finite with magnitude in {d.RangeText} (was {v})"));
                     return false;
                 case SettingColor c:
                     // One error per channel, each naming its serialized key (Color.r), so that a scene reader can point at it.
@@ -171,13 +171,13 @@ namespace SphFluid.Simulation
                     {
                         if (ValidationRules.IsFinite(channel) && Above(channel, d) && channel <= (float)d.Max) continue;
                         errors.Add(new ValidationError(path + field + "." + name,
-                            $"{owner}: {field}.{name} must be in {d.RangeText} (was {ValidationRules.Format(channel)})"));
+                            owner, $"{field}.{name} must be in {d.RangeText} (was {ValidationRules.Format(channel)})"));
                         ok = false;
                     }
                     return ok;
                 case Enum e:
                     if (Enum.IsDefined(e.GetType(), e)) return true;
-                    errors.Add(new ValidationError(path + field, $"{owner}: {field} must be {Allowed(e.GetType(), d)} (was {Convert.ToInt64(e)})"));
+                    errors.Add(new ValidationError(path + field, owner, $"{field} must be {Allowed(e.GetType(), d)} (was {Convert.ToInt64(e)})"));
                     return false;
                 default:
                     throw new NotSupportedException($"{settings.GetType().Name}.{field}: settings of type {info.FieldType.Name} are not supported");

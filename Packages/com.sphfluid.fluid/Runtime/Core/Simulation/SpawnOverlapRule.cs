@@ -24,7 +24,7 @@ namespace SphFluid.Simulation
             {
                 if (!Overlap(boxes[a], boxes[b], tolerance, out float depth)) continue;
                 errors.Add(new ValidationError($"SpawnBoxes[{b}].Center",
-                    $"SpawnBox '{boxes[b].Name}': the box must not overlap SpawnBox '{boxes[a].Name}' (they interpenetrate by {ValidationRules.Format(depth)} m; boxes may only touch, within {ValidationRules.Format(tolerance)} m): overlapping boxes spawn particles on top of each other"));
+                    $"SpawnBox '{boxes[b].Name}'", $"the box must not overlap SpawnBox '{boxes[a].Name}' (they interpenetrate by {ValidationRules.Format(depth)} m; boxes may only touch, within {ValidationRules.Format(tolerance)} m): overlapping boxes spawn particles on top of each other"));
             }
         }
 

@@ -72,7 +72,7 @@ namespace SphFluid.Simulation
             {
                 double maxStiffness = Math.Pow(MaxSoundRatio * scale, 2) * lightest.RestDensity / settings.Gamma;
                 errors.Add(new ValidationError("Settings.Stiffness",
-                    $"FluidSettings: Stiffness must be in [1, {ValidationRules.Format(maxStiffness)}] Pa for this scene: the speed of sound {ValidationRules.Format(cLight)} m/s of phase '{lightest.Name}' must be at most {ValidationRules.Format(MaxSoundRatio)} times the fastest speed the scene can reach, {ValidationRules.Format(fastest)} m/s (taken as at least {ValidationRules.Format(MinSceneSpeed)} m/s): free fall along the container's {ValidationRules.Format(diagonal)} m diagonal plus the fastest spawn box, walls and spheres; a stiffer fluid turns spawn noise into fast acoustic motion (was {ValidationRules.Format(settings.Stiffness)})"));
+                    "FluidSettings", $"Stiffness must be in [1, {ValidationRules.Format(maxStiffness)}] Pa for this scene: the speed of sound {ValidationRules.Format(cLight)} m/s of phase '{lightest.Name}' must be at most {ValidationRules.Format(MaxSoundRatio)} times the fastest speed the scene can reach, {ValidationRules.Format(fastest)} m/s (taken as at least {ValidationRules.Format(MinSceneSpeed)} m/s): free fall along the container's {ValidationRules.Format(diagonal)} m diagonal plus the fastest spawn box, walls and spheres; a stiffer fluid turns spawn noise into fast acoustic motion (was {ValidationRules.Format(settings.Stiffness)})"));
             }
             if (fastest <= c) return;
 
@@ -85,20 +85,20 @@ namespace SphFluid.Simulation
                 double left = Math.Max(0.0, c - spawn - drivers);
                 double maxGravity = left * left / (2.0 * diagonal);
                 errors.Add(new ValidationError("Settings.Gravity",
-                    $"FluidSettings: Gravity must have magnitude in [0, {ValidationRules.Format(maxGravity)}] m/s^2 for this scene{orStiffer}: {because} (was {ValidationRules.Format(settings.Gravity.Length())})"));
+                    "FluidSettings", $"Gravity must have magnitude in [0, {ValidationRules.Format(maxGravity)}] m/s^2 for this scene{orStiffer}: {because} (was {ValidationRules.Format(settings.Gravity.Length())})"));
             }
             else if (spawn >= drivers && fastestBox >= 0)
             {
                 var box = scene.SpawnBoxes[fastestBox];
                 double maxSpawn = Math.Max(0.0, c - fall - drivers);
                 errors.Add(new ValidationError($"SpawnBoxes[{fastestBox}].InitialVelocity",
-                    $"SpawnBox '{box.Name}': InitialVelocity must have magnitude in [0, {ValidationRules.Format(maxSpawn)}] m/s for this scene{orStiffer}: {because} (was {ValidationRules.Format(spawn)})"));
+                    $"SpawnBox '{box.Name}'", $"InitialVelocity must have magnitude in [0, {ValidationRules.Format(maxSpawn)}] m/s for this scene{orStiffer}: {because} (was {ValidationRules.Format(spawn)})"));
             }
             else
             {
                 double maxDrivers = Math.Max(0.0, c - fall - spawn);
                 errors.Add(new ValidationError("Container.Velocity",
-                    $"Container: the speed of its walls and spheres must be in [0, {ValidationRules.Format(maxDrivers)}] m/s for this scene{orStiffer}: {because} (was {ValidationRules.Format(drivers)})"));
+                    "Container", $"the speed of its walls and spheres must be in [0, {ValidationRules.Format(maxDrivers)}] m/s for this scene{orStiffer}: {because} (was {ValidationRules.Format(drivers)})"));
             }
         }
     }

@@ -6,7 +6,7 @@ using System.Numerics;
 namespace SphFluid.Simulation
 {
     /// <summary>Range checks that append a <see cref="ValidationError"/> worded the same way everywhere:
-    /// "Owner: Field must be in [min, max] unit (was value)".</summary>
+    /// "Field must be in [min, max] unit (was value)", owned by the object the caller names.</summary>
     internal static class ValidationRules
     {
         internal static string Format(float value) => value.ToString("G6", CultureInfo.InvariantCulture);
@@ -20,7 +20,7 @@ namespace SphFluid.Simulation
         {
             if (!float.IsNaN(value) && !float.IsInfinity(value) && value >= min && value <= max) return true;
             errors.Add(new ValidationError(path + field,
-                $"{owner}: {field} must be in [{Format(min)}, {Format(max)}]{Unit(unit)} (was {Format(value)})"));
+                owner, $"{field} must be in [{Format(min)}, {Format(max)}]{Unit(unit)} (was {Format(value)})"));
             return false;
         }
 
@@ -29,7 +29,7 @@ namespace SphFluid.Simulation
         {
             if (value >= min && value <= max) return true;
             errors.Add(new ValidationError(path + field,
-                $"{owner}: {field} must be in [{min}, {max}]{Unit(unit)} (was {value})"));
+                owner, $"{field} must be in [{min}, {max}]{Unit(unit)} (was {value})"));
             return false;
         }
 
@@ -39,7 +39,7 @@ namespace SphFluid.Simulation
         {
             if (!float.IsNaN(value) && !float.IsInfinity(value) && value > 0f && value <= max) return true;
             errors.Add(new ValidationError(path + field,
-                $"{owner}: {field} must be in (0, {Format(max)}]{Unit(unit)} (was {Format(value)})"));
+                owner, $"{field} must be in (0, {Format(max)}]{Unit(unit)} (was {Format(value)})"));
             return false;
         }
 
@@ -49,7 +49,7 @@ namespace SphFluid.Simulation
             bool finite = IsFinite(value.X) && IsFinite(value.Y) && IsFinite(value.Z);
             if (finite && value.Length() <= maxMagnitude) return true;
             errors.Add(new ValidationError(path + field,
-                $"{owner}: {field} must be finite with magnitude in [0, {Format(maxMagnitude)}]{Unit(unit)} (was {Format(value)})"));
+                owner, $"{field} must be finite with magnitude in [0, {Format(maxMagnitude)}]{Unit(unit)} (was {Format(value)})"));
             return false;
         }
 
@@ -60,7 +60,7 @@ namespace SphFluid.Simulation
                 && value.X > 0 && value.Y > 0 && value.Z > 0 && value.X <= max && value.Y <= max && value.Z <= max;
             if (ok) return true;
             errors.Add(new ValidationError(path + field,
-                $"{owner}: each {field} component must be in (0, {Format(max)}]{Unit(unit)} (was {Format(value)})"));
+                owner, $"each {field} component must be in (0, {Format(max)}]{Unit(unit)} (was {Format(value)})"));
             return false;
         }
 
@@ -69,7 +69,7 @@ namespace SphFluid.Simulation
             float len = q.Length();
             if (IsFinite(len) && Math.Abs(len - 1f) <= FluidSceneDescription.RotationLengthTolerance) return true;
             errors.Add(new ValidationError(path + field,
-                $"{owner}: {field} must be a unit quaternion (length in {FluidSceneDescription.RotationLengthRange}) (was length {Format(len)})"));
+                owner, $"{field} must be a unit quaternion (length in {FluidSceneDescription.RotationLengthRange}) (was length {Format(len)})"));
             return false;
         }
 

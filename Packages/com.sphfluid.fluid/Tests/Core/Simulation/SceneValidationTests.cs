@@ -26,6 +26,28 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(errors.Select(e => e.Field).ToArray(), Has.Member("SpawnBoxes[0].Phase.RestDensity"));
         }
 
+        // A scene file's reader names the GameObject and the serialized field itself, so it prints the rule alone: the
+        // owner apart from the rule keeps it from saying the box twice.
+        [Test]
+        public void AnErrorKeepsItsOwnerApartFromItsRule()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.SpawnBoxes[0].Phase.RestDensity = -3f;
+            scene.Settings.Stiffness = -1f;
+            scene.Container.Friction = (WallFriction)7;
+            var errors = scene.Validate();
+            var density = errors.Single(e => e.Field == "SpawnBoxes[0].Phase.RestDensity");
+            Assert.That(density.Owner, Is.EqualTo("SpawnBox 'Water'"));
+            Assert.That(density.Rule, Is.EqualTo("RestDensity must be in [1, 100000] kg/m^3 (was -3)"));
+            Assert.That(errors.Single(e => e.Field == "Settings.Stiffness").Owner, Is.EqualTo("FluidSettings"));
+            Assert.That(errors.Single(e => e.Field == "Container.Friction").Owner, Is.EqualTo("Container"));
+            foreach (var e in errors)
+            {
+                Assert.That(e.Message, Is.EqualTo(e.Owner + ": " + e.Rule));
+                Assert.That(e.Rule, Does.Not.StartWith(e.Owner), e.Field);
+            }
+        }
+
         [Test]
         public void ARefusedSpacing_IsNotCarriedIntoTheContainersLeastSize()
         {
