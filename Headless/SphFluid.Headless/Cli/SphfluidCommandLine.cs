@@ -159,6 +159,10 @@ phase and figure).";
             if (name != null && result.Tokens.Any(t => t.Value == token && Literal(result, t)))
                 return $"{name}: unexpected argument '{token}' after '--', which makes every later token an argument; " +
                     $"give options before it (see sphfluid {name} --help)";
+            // Past a "--" before any command, a command's name is an argument too (sphfluid -- simulate x.unity).
+            if (name == null && Commands.Any(c => c.Name == token) && result.Tokens.Any(t => t.Value == token && Literal(result, t)))
+                return $"has no command before '--', which makes every later token an argument, '{token}' too; " +
+                    $"write the command first (sphfluid {token} [options] -- scene.unity)";
             // An option before the command (sphfluid --seconds 1 simulate) is the root's to refuse: the command has it.
             if (name == null || BeforeTheCommand(result, token))
                 return Ranges.LooksLikeOption(token)

@@ -176,6 +176,11 @@ namespace SphFluid.Tests.Runner
             Assert.That(err, Does.StartWith("sphfluid has no option --seconds of its own; a command's options follow the command"));
             Assert.That(Run(out _, out err, "--seconds", "1", "simulate", "x.unity"), Is.EqualTo(ExitCodes.BadArguments));
             Assert.That(err, Does.StartWith("sphfluid has no option --seconds of its own"), "simulate has --seconds: it stood before the command");
+            Assert.That(Run(out _, out err, "--", "simulate", "x.unity"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.StartWith("sphfluid has no command before '--', which makes every later token an argument, 'simulate' too; " +
+                "write the command first (sphfluid simulate [options] -- scene.unity)"));
+            Assert.That(Run(out _, out err, "--", "render"), Is.EqualTo(ExitCodes.BadArguments));
+            Assert.That(err, Does.StartWith("sphfluid has no command 'render'"), "not a command's name: the same answer as without '--'");
             Assert.That(Run(out _, out _), Is.EqualTo(ExitCodes.BadArguments));
         }
 
