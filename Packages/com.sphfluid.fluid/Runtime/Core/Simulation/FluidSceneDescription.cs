@@ -177,7 +177,8 @@ namespace SphFluid.Simulation
                     {
                         if (!first.Phase.SameDefinition(box.Phase))
                             errors.Add(new ValidationError(path + "Phase",
-                                owner, $"phase '{box.Phase.Name}' is defined differently in SpawnBox '{first.Name}' ({first.Phase}) and SpawnBox '{box.Name}' ({box.Phase}); boxes of one phase must agree"));
+                                owner, $"phase '{box.Phase.Name}' is defined differently in SpawnBox '{first.Name}' and SpawnBox '{box.Name}', which differ in " +
+                                $"{string.Join(", ", first.Phase.DifferencesFrom(box.Phase))}; boxes of one phase must agree"));
                     }
                     else firstOfPhase.Add(box.Phase.Name, box);
                     if (firstOfFoldedName.TryGetValue(box.Phase.Name, out var folded))

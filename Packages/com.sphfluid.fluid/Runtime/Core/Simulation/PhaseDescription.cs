@@ -1,4 +1,6 @@
 using System;
+using System.Collections.Generic;
+using System.Globalization;
 
 namespace SphFluid.Simulation
 {
@@ -54,13 +56,24 @@ namespace SphFluid.Simulation
 
         /// <summary>Same physical and optical definition, every declared value equal (used to detect conflicting boxes
         /// of one phase).</summary>
-        public bool SameDefinition(PhaseDescription other)
+        public bool SameDefinition(PhaseDescription other) => other != null && DifferencesFrom(other).Count == 0;
+
+        /// <summary>Each declared value in which <paramref name="other"/> differs, in declaration order, worded with this
+        /// phase's value first: "RestDensity (1000 against 998 kg/m^3)". A value printed alone says nothing of which of
+        /// the others differs (Color, Absorption), so a refusal of two boxes lists these.</summary>
+        public List<string> DifferencesFrom(PhaseDescription other)
         {
-            if (other == null) return false;
+            var differences = new List<string>();
             foreach (var declared in SettingRules.Declared(typeof(PhaseDescription)))
-                if (!Equals(declared.Field.GetValue(this), declared.Field.GetValue(other))) return false;
-            return true;
+            {
+                object mine = declared.Field.GetValue(this), theirs = declared.Field.GetValue(other);
+                if (Equals(mine, theirs)) continue;
+                differences.Add($"{declared.Field.Name} ({Shown(mine)} against {Shown(theirs)}{ValidationRules.Unit(declared.Declaration.Unit)})");
+            }
+            return differences;
         }
+
+        static string Shown(object value) => value is float f ? ValidationRules.Format(f) : Convert.ToString(value, CultureInfo.InvariantCulture);
 
         public override string ToString() =>
             $"{Name} (rho0 {RestDensity} kg/m^3, mu {Viscosity} Pa s, sigma {SurfaceTension} N/m)";

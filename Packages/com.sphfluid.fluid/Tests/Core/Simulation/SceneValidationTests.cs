@@ -145,7 +145,24 @@ namespace SphFluid.Tests.Core.Simulation
             scene.SpawnBoxes[1].Phase = SimulationTestScenes.Water();
             scene.SpawnBoxes[1].Phase.RestDensity = 998f;
             var messages = Messages(scene);
-            Assert.That(messages, Has.Some.Contains("phase 'Water'").And.Contains("SpawnBox 'Water'").And.Contains("SpawnBox 'Oil'"));
+            Assert.That(messages, Has.Member("SpawnBox 'Oil': phase 'Water' is defined differently in SpawnBox 'Water' and SpawnBox 'Oil', " +
+                "which differ in RestDensity (1000 against 998 kg/m^3); boxes of one phase must agree"));
+        }
+
+        // The phases' short form names density, viscosity and tension only: two boxes apart in a value it leaves out were
+        // refused with the same text printed for both.
+        [Test]
+        public void ConflictingPhaseDefinitions_NameEveryValueThatDiffers()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.SpawnBoxes[1].Phase = SimulationTestScenes.Water();
+            scene.SpawnBoxes[0].Phase.Absorption = 1f;
+            scene.SpawnBoxes[0].Phase.Color = new SettingColor(0.25f, 0.5f, 1f, 0.75f);
+            scene.SpawnBoxes[1].Phase.Absorption = 3.5f;
+            scene.SpawnBoxes[1].Phase.Color = new SettingColor(0.5f, 0.25f, 1f, 1f);
+            var conflict = scene.Validate().Single(e => e.Field == "SpawnBoxes[1].Phase");
+            Assert.That(conflict.Rule, Does.Contain(
+                "which differ in Color ((0.25, 0.5, 1, 0.75) against (0.5, 0.25, 1, 1)), Absorption (1 against 3.5 1/m);"));
         }
 
         [Test]
