@@ -503,10 +503,26 @@ public static class SceneLoader
                 return $"{path}:{line}: {Where(go, RuntimeScripts.SpawnBox, key)}: {error.Rule}";
             }
             if (TryIndex(head, "Obstacles", out int o) && o < _obstacles.Count)
-                return TransformField(member) is { } spherePlacement
-                    ? Placed(_obstacles[o].Go, spherePlacement, error)
-                    : $"{path}:{_obstacles[o].Behaviour.Root.At(CamelCase(member))?.Line ?? _obstacles[o].Behaviour.Line}: GameObject '{_obstacles[o].Go.Name}', SphereObstacle.{CamelCase(member)}: {error.Rule}";
+            {
+                var (go, mb) = _obstacles[o];
+                if (TransformField(member) is { } spherePlacement) return Placed(go, spherePlacement, error);
+                string key = CamelCase(member);
+                string scaled = member == nameof(RigidSphere.Radius) ? ScaledRadius(go, mb) : "";
+                return $"{path}:{mb.Root.At(key)?.Line ?? mb.Line}: GameObject '{go.Name}', SphereObstacle.{key}{scaled}: {error.Rule}";
+            }
             return error.Message;
+        }
+
+        /// <summary>Where the sphere's scale is not 1, how its world radius, which the rule quotes, comes from the field:
+        /// a radius of 0.5 under a scale of 3000 is refused as 1500 m.</summary>
+        string ScaledRadius(UnityGameObject go, UnityDocument mb)
+        {
+            var s = Abs(go.World.Scale);
+            float scale = MathF.Max(s.X, MathF.Max(s.Y, s.Z));
+            if (scale == 1f) return "";
+            var parents = go.SelfAndAncestors.Skip(1).Select(g => $"'{g.Name}'").ToList();
+            return $" (in the world: {Float(go, mb, RuntimeScripts.SphereObstacle, "radius", 0.5f).ToString("G6", CultureInfo.InvariantCulture)} times the largest scale of its " +
+                $"Transform{(parents.Count == 0 ? "" : $" and those of {string.Join(", ", parents)}")}, {scale.ToString("G6", CultureInfo.InvariantCulture)})";
         }
 
         /// <summary>A message about a world-space placement, at the line of the GameObject's own Transform field. The value

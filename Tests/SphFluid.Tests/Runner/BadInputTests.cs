@@ -415,8 +415,24 @@ namespace SphFluid.Tests.Runner
             var run = Simulate(path);
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
-            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Sphere', SphereObstacle.radius: the sphere obstacles"));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Sphere', SphereObstacle.radius " +
+                "(in the world: 50 times the largest scale of its Transform, 0.09): the sphere obstacles ('Sphere' of world radius 4.5 m"));
             Assert.That(run.Stderr, Does.Contain("so the scene would spawn no particle"));
+        }
+
+        /// <summary>The rule quotes the world radius, which the field alone does not show where the sphere is scaled; at a
+        /// scale of 1 the field is the world radius and nothing is added.</summary>
+        [Test]
+        public void ARadiusRefusedAtAScaleOfOneNamesNoScale()
+        {
+            string path = RunnerPaths.EditedScene("SphereWake", ("\n  radius: 0.5\n", "\n  radius: 1001\n"),
+                ("m_LocalScale: {x: 0.09, y: 0.09, z: 0.09}", "m_LocalScale: {x: 1, y: 1, z: 1}"));
+            int line = Array.IndexOf(File.ReadAllLines(path), "  radius: 1001") + 1;
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Sphere', SphereObstacle.radius: Radius must be in (0, 1000] m (was 1001)"));
         }
 
         /// <summary>Values Unity never writes that were read as something else: a fileID that is no integer as no
