@@ -96,6 +96,9 @@ phase and figure).";
     {
         var cli = new SphfluidCommandLine();
         var result = cli.Parse(new[] { command }.Concat(args).ToArray());
+        // A help request is answered before the options are checked, so it holds none to read (a mistake beside it stays).
+        if (result.Action is DetailedHelp)
+            throw new UsageException($"{command}: --help asks for the help text, which has no options to read (see sphfluid {command} --help)");
         return cli.Read(result) as T
             ?? throw new ArgumentException($"'{command}' is not the sphfluid command that reads {typeof(T).Name}", nameof(command));
     }

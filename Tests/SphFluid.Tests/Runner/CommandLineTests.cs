@@ -224,6 +224,20 @@ namespace SphFluid.Tests.Runner
             Assert.That(BenchOptions.Parse(new[] { "x.unity", "--particles", "1000", "--particles", "2000" }).Particles, Is.EqualTo(new[] { 1000, 2000 }));
         }
 
+        /// <summary>A help request holds no options: reading them beside a mistake threw the library's
+        /// InvalidOperationException, where the program shows the help.</summary>
+        [Test]
+        public void ParsingAHelpRequestForItsOptionsIsRefusedByName()
+        {
+            foreach (var args in new[] { new[] { "x.unity", "--help" }, new[] { "x.unity", "--seconds", "-1", "--help" }, new[] { "--help", "--bogus" } })
+            {
+                var error = Assert.Throws<UsageException>(() => SimulateOptions.Parse(args), string.Join(" ", args));
+                Assert.That(error.Message, Is.EqualTo("simulate: --help asks for the help text, which has no options to read (see sphfluid simulate --help)"));
+            }
+            Assert.That(Run(out string help, out _, "simulate", "--seconds", "-1", "--help"), Is.EqualTo(ExitCodes.Ok));
+            Assert.That(help, Does.Contain("simulate the scene's fluid"));
+        }
+
         [Test]
         public void OptionsAcceptTheEqualsFormAndFlagsRefuseAValue()
         {
