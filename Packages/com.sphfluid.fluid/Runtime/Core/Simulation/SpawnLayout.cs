@@ -99,11 +99,29 @@ namespace SphFluid.Simulation
 
         /// <summary>Particles this box of <paramref name="scene"/> spawns: its lattice points less those inside a sphere
         /// obstacle (<see cref="Generate(FluidSceneDescription)"/>).</summary>
+        /// <remarks>Only the lattice points near a sphere are tested, so the cost goes with the spheres' volume in points,
+        /// not the box's (the inspector counts at every event). Each is the walk's own point (<see cref="BoxLattice.Point"/>),
+        /// so the count is the walk's to the point.</remarks>
         public static long SpawnedCount(FluidSceneDescription scene, FluidBlock box)
         {
-            if (scene.Obstacles == null || scene.Obstacles.Count == 0) return Count(scene.Settings, box);
-            long count = 0;
-            foreach (var _ in Positions(scene, box)) count++;
+            long count = Count(scene.Settings, box);
+            if (scene.Obstacles == null || scene.Obstacles.Count == 0 || count == 0) return count;
+            var lattice = new BoxLattice(scene.Settings, box);
+            float margin = 0.5f * scene.Settings.ParticleSpacing;
+            var near = new LatticeRange[scene.Obstacles.Count];
+            for (int m = 0; m < near.Length; m++)
+            {
+                near[m] = lattice.Near(scene.Obstacles[m], margin);
+                // A point near two spheres is counted out once: with the first whose range holds it.
+                for (int k = near[m].K0; k <= near[m].K1; k++)
+                for (int j = near[m].J0; j <= near[m].J1; j++)
+                for (int i = near[m].I0; i <= near[m].I1; i++)
+                {
+                    bool earlier = false;
+                    for (int e = 0; e < m && !earlier; e++) earlier = near[e].Holds(i, j, k);
+                    if (!earlier && InsideObstacle(scene, lattice.Point(i, j, k), margin)) count--;
+                }
+            }
             return count;
         }
 
@@ -171,26 +189,14 @@ namespace SphFluid.Simulation
         /// without the points inside a sphere obstacle.</summary>
         static System.Collections.Generic.IEnumerable<Vector3> Positions(FluidSceneDescription scene, FluidBlock box)
         {
-            var settings = scene.Settings;
-            CountPerAxis(settings, box, out int nx, out int ny, out int nz);
-            float s = settings.ParticleSpacing;
-            var half = box.Size * 0.5f;
-            var step = new Vector3(box.Size.X / nx, box.Size.Y / ny, box.Size.Z / nz);
-            var rotation = Quaternion.Normalize(box.Rotation);
-            float jitter = Math.Max(0f, Math.Min(MaxJitter, box.Jitter)) * s;
-            var random = new SplitMix64(unchecked((ulong)(uint)box.Seed * 0x9E3779B97F4A7C15UL + 0x632BE59BD9B4E019UL));
-            for (int k = 0; k < nz; k++)
-            for (int j = 0; j < ny; j++)
-            for (int i = 0; i < nx; i++)
+            var lattice = new BoxLattice(scene.Settings, box);
+            float margin = 0.5f * scene.Settings.ParticleSpacing;
+            for (int k = 0; k < lattice.Nz; k++)
+            for (int j = 0; j < lattice.Ny; j++)
+            for (int i = 0; i < lattice.Nx; i++)
             {
-                var local = new Vector3((i - 0.5f * (nx - 1)) * step.X, (j - 0.5f * (ny - 1)) * step.Y, (k - 0.5f * (nz - 1)) * step.Z);
-                if (jitter > 0f)
-                {
-                    local += new Vector3(random.NextSigned(), random.NextSigned(), random.NextSigned()) * jitter;
-                    local = Vector3.Clamp(local, -half, half);
-                }
-                var position = box.Center + Vector3.Transform(local, rotation);
-                if (!InsideObstacle(scene, position, 0.5f * s)) yield return position;
+                var position = lattice.Point(i, j, k);
+                if (!InsideObstacle(scene, position, margin)) yield return position;
             }
         }
 
@@ -202,26 +208,95 @@ namespace SphFluid.Simulation
             return false;
         }
 
-        /// <summary>SplitMix64 (Steele et al. 2014): tiny, and identical on every runtime, unlike System.Random.</summary>
-        struct SplitMix64
+        /// <summary>One box's spawn lattice: point (i, j, k) at its place in the box, jittered by draws that depend on the
+        /// point alone, so that any point can be made without the ones before it.</summary>
+        readonly struct BoxLattice
         {
-            ulong _state;
+            public readonly int Nx, Ny, Nz;
+            readonly Vector3 _center, _half, _step;
+            readonly Quaternion _rotation;
+            readonly float _jitter;
+            readonly ulong _seed;
 
-            public SplitMix64(ulong seed) { _state = seed; }
+            public BoxLattice(FluidSettings settings, FluidBlock box)
+            {
+                CountPerAxis(settings, box, out Nx, out Ny, out Nz);
+                _center = box.Center;
+                _half = box.Size * 0.5f;
+                _step = new Vector3(box.Size.X / Nx, box.Size.Y / Ny, box.Size.Z / Nz);
+                _rotation = Quaternion.Normalize(box.Rotation);
+                _jitter = Math.Max(0f, Math.Min(MaxJitter, box.Jitter)) * settings.ParticleSpacing;
+                _seed = unchecked((ulong)(uint)box.Seed * 0x9E3779B97F4A7C15UL + 0x632BE59BD9B4E019UL);
+            }
 
-            ulong Next()
+            /// <summary>The point in the box's frame before its jitter.</summary>
+            Vector3 Local(int i, int j, int k) =>
+                new Vector3((i - 0.5f * (Nx - 1)) * _step.X, (j - 0.5f * (Ny - 1)) * _step.Y, (k - 0.5f * (Nz - 1)) * _step.Z);
+
+            public Vector3 Point(int i, int j, int k)
+            {
+                var local = Local(i, j, k);
+                if (_jitter > 0f)
+                {
+                    // Three draws a point, x, y, z, in the lattice's order: the sequence a SplitMix64 stream gives.
+                    ulong first = 3UL * (ulong)(i + (long)Nx * (j + (long)Ny * k));
+                    local += new Vector3(Draw(first), Draw(first + 1), Draw(first + 2)) * _jitter;
+                    local = Vector3.Clamp(local, -_half, _half);
+                }
+                return _center + Vector3.Transform(local, _rotation);
+            }
+
+            /// <summary>The lattice points that may lie within <paramref name="margin"/> of <paramref name="sphere"/>: those
+            /// whose unjittered place is within its radius, the margin and the largest jitter on every box axis (the
+            /// clamp only draws a point back towards its place), one more each side against rounding.</summary>
+            public LatticeRange Near(RigidSphere sphere, float margin)
+            {
+                var c = Vector3.Transform(sphere.Center - _center, Quaternion.Conjugate(_rotation));
+                double reach = (double)sphere.Radius + margin + 1.7321 * _jitter;
+                Axis(c.X, reach, _step.X, Nx, out int i0, out int i1);
+                Axis(c.Y, reach, _step.Y, Ny, out int j0, out int j1);
+                Axis(c.Z, reach, _step.Z, Nz, out int k0, out int k1);
+                return new LatticeRange(i0, i1, j0, j1, k0, k1);
+            }
+
+            /// <summary>Indices along one axis whose place lies within <paramref name="reach"/> of <paramref name="c"/>,
+            /// clipped to [0, n - 1] (empty when first &gt; last); every index where a bound is not a number.</summary>
+            static void Axis(double c, double reach, double step, int n, out int first, out int last)
+            {
+                double middle = 0.5 * (n - 1);
+                double lo = Math.Floor((c - reach) / step + middle) - 1, hi = Math.Ceiling((c + reach) / step + middle) + 1;
+                if (double.IsNaN(lo) || double.IsNaN(hi)) { first = 0; last = n - 1; return; }
+                first = (int)Math.Max(0, Math.Min(n, lo));
+                last = (int)Math.Max(-1, Math.Min(n - 1, hi));
+            }
+
+            /// <summary>Draw <paramref name="n"/> of the box's stream, uniform in [-1, 1): SplitMix64 (Steele, Lea and Flood,
+            /// "Fast splittable pseudorandom number generators", 2014), whose n-th value depends on n alone; identical on
+            /// every runtime, unlike System.Random.</summary>
+            float Draw(ulong n)
             {
                 unchecked
                 {
-                    ulong z = _state += 0x9E3779B97F4A7C15UL;
+                    ulong z = _seed + (n + 1) * 0x9E3779B97F4A7C15UL;
                     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9UL;
                     z = (z ^ (z >> 27)) * 0x94D049BB133111EBUL;
-                    return z ^ (z >> 31);
+                    z ^= z >> 31;
+                    return (float)((z >> 40) * (1.0 / (1UL << 24)) * 2.0 - 1.0);
                 }
             }
+        }
 
-            /// <summary>Uniform in [-1, 1).</summary>
-            public float NextSigned() => (float)((Next() >> 40) * (1.0 / (1UL << 24)) * 2.0 - 1.0);
+        /// <summary>A block of lattice indices, bounds included.</summary>
+        readonly struct LatticeRange
+        {
+            public readonly int I0, I1, J0, J1, K0, K1;
+
+            public LatticeRange(int i0, int i1, int j0, int j1, int k0, int k1)
+            {
+                I0 = i0; I1 = i1; J0 = j0; J1 = j1; K0 = k0; K1 = k1;
+            }
+
+            public bool Holds(int i, int j, int k) => i >= I0 && i <= I1 && j >= J0 && j <= J1 && k >= K0 && k <= K1;
         }
     }
 }

@@ -174,6 +174,39 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(SpawnLayout.Count(scene.Settings, box), Is.GreaterThan((long)spawned), "the lattice holds the displaced points");
         }
 
+        // The count tests only the lattice points near each sphere, the walk every point: the two must agree to the point,
+        // for turned boxes, any jitter and spheres that overlap each other or reach past the box.
+        [Test]
+        public void TheCountOfPointsNearTheSpheresIsTheWalks()
+        {
+            var random = new Random(20261207);
+            float Between(float lo, float hi) => lo + (float)random.NextDouble() * (hi - lo);
+            Vector3 Around(float reach) => new Vector3(Between(-reach, reach), Between(-reach, reach), Between(-reach, reach));
+            int compared = 0, displacing = 0;
+            for (int n = 0; n < 60; n++)
+            {
+                var scene = SimulationTestScenes.SingleWater();
+                var box = scene.SpawnBoxes[0];
+                box.Center = Around(0.05f);
+                box.Size = new Vector3(Between(0.08f, 0.2f), Between(0.08f, 0.2f), Between(0.08f, 0.2f));
+                box.Rotation = Quaternion.Normalize(new Quaternion(Around(1f), Between(-1f, 1f)));
+                box.Jitter = n % 4 == 0 ? 0f : Between(0f, 0.5f);
+                box.Seed = random.Next();
+                int spheres = 1 + n % 3;
+                for (int m = 0; m < spheres; m++)
+                    scene.Obstacles.Add(new RigidSphere { Center = box.Center + Around(0.12f), Radius = Between(0.005f, 0.08f), Name = "S" + m });
+                if (scene.Validate().Count > 0) continue;
+
+                int walked = SpawnLayout.Generate(scene).Length;
+
+                Assert.That(SpawnLayout.SpawnedCount(scene, box), Is.EqualTo((long)walked), $"case {n}");
+                compared++;
+                if (walked < SpawnLayout.Count(scene.Settings, box)) displacing++;
+            }
+            Assert.That(compared, Is.GreaterThanOrEqualTo(40), "scenes compared");
+            Assert.That(displacing, Is.GreaterThanOrEqualTo(30), "scenes whose spheres displace points");
+        }
+
         [Test]
         public void ASubmergedSphereCarriesTheFluidAboveIt()
         {
