@@ -521,8 +521,9 @@ public static class SceneLoader
             float scale = MathF.Max(s.X, MathF.Max(s.Y, s.Z));
             if (scale == 1f) return "";
             var parents = go.SelfAndAncestors.Skip(1).Select(g => $"'{g.Name}'").ToList();
-            return $" (in the world: {Float(go, mb, RuntimeScripts.SphereObstacle, "radius", 0.5f).ToString("G6", CultureInfo.InvariantCulture)} times the largest scale of its " +
-                $"Transform{(parents.Count == 0 ? "" : $" and those of {string.Join(", ", parents)}")}, {scale.ToString("G6", CultureInfo.InvariantCulture)})";
+            string radius = Float(go, mb, RuntimeScripts.SphereObstacle, "radius", 0.5f).ToString("G6", CultureInfo.InvariantCulture);
+            return $" (in the world: {radius} times {scale.ToString("G6", CultureInfo.InvariantCulture)}, the largest component of its scale in " +
+                $"the world{(parents.Count == 0 ? "" : $", which the scales of {string.Join(", ", parents)} take part in")})";
         }
 
         /// <summary>A message about a world-space placement, at the line of the GameObject's own Transform field. The value

@@ -416,8 +416,29 @@ namespace SphFluid.Tests.Runner
 
             Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
             Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Sphere', SphereObstacle.radius " +
-                "(in the world: 50 times the largest scale of its Transform, 0.09): the sphere obstacles ('Sphere' of world radius 4.5 m"));
+                "(in the world: 50 times 0.09, the largest component of its scale in the world): the sphere obstacles ('Sphere' of world radius 4.5 m"));
             Assert.That(run.Stderr, Does.Contain("so the scene would spawn no particle"));
+        }
+
+        /// <summary>Under a scaled parent the sphere's world radius takes the parent's scale too: the message names it.</summary>
+        [Test]
+        public void ASphereUnderAParentNamesTheParentInItsRadius()
+        {
+            // The sphere under the container, as Unity writes a parent: the child in the parent's m_Children and no longer a root.
+            string path = RunnerPaths.EditedScene("SphereWake",
+                ("  - {fileID: 1486937963}\n", ""),
+                ("m_LocalScale: {x: 0.09, y: 0.09, z: 0.09}\n  m_ConstrainProportionsScale: 0\n  m_Children: []\n  m_Father: {fileID: 0}",
+                    "m_LocalScale: {x: 0.09, y: 0.09, z: 0.09}\n  m_ConstrainProportionsScale: 0\n  m_Children: []\n  m_Father: {fileID: 1764925814}"),
+                ("m_LocalScale: {x: 0.8, y: 0.3, z: 0.16}\n  m_ConstrainProportionsScale: 0\n  m_Children: []",
+                    "m_LocalScale: {x: 0.8, y: 0.3, z: 0.16}\n  m_ConstrainProportionsScale: 0\n  m_Children:\n  - {fileID: 1486937963}"),
+                ("\n  radius: 0.5\n", "\n  radius: 100000\n"));
+            int line = Array.IndexOf(File.ReadAllLines(path), "  radius: 100000") + 1;
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Sphere', SphereObstacle.radius (in the world: 100000 times 0.072, the largest " +
+                "component of its scale in the world, which the scales of 'Container' take part in): Radius must be in (0, 1000] m (was 7200)"));
         }
 
         /// <summary>The rule quotes the world radius, which the field alone does not show where the sphere is scaled; at a
