@@ -118,10 +118,12 @@ public static class SceneLoader
             string invalid = change == null ? "the fluid scene is invalid" : $"the fluid scene is invalid as {change.Label} runs it";
 
             // The grid's cell limit first: a container too large for its grid is also too large for its wall
-            // particles, and the grid's message names both the container and the support radius.
+            // particles, and the grid's message names both the container and the support radius. A container outside
+            // its own size range is refused for that: the grid would ask a support radius of kilometres for it.
             var errors = description.Validate();
             bool settingsOk = !errors.Any(e => e.Field.StartsWith("Settings", StringComparison.Ordinal));
-            if (settingsOk && SceneFit.GridProblem(description) is { } grid)
+            if (settingsOk && FluidSceneDescription.ContainerSizeInRange(description.Container.Size, description.Settings.ParticleSpacing)
+                && SceneFit.GridProblem(description) is { } grid)
                 throw new SceneException($"{path}:{containerGo.Transform?.Root["m_LocalScale"]?.Line ?? containerGo.Document.Line}: {invalid}:\n  GameObject '{containerGo.Name}', Transform.m_LocalScale and " +
                     $"{Where(_simulatorGo, RuntimeScripts.Fluid, RuntimeScripts.Settings + "." + nameof(FluidSettings.SmoothingRadius))}: {grid}");
             if (errors.Count > 0)

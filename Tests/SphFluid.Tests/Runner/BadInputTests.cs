@@ -267,6 +267,23 @@ namespace SphFluid.Tests.Runner
             Assert.That(run.Stderr, Does.Contain("46788 x 46788 x 46788 = 1.02E+014 cells"));
         }
 
+        /// <summary>A container outside its own size range was refused by the neighbour grid, which asked for a support
+        /// radius of kilometres (or, at a scale of 0, a size "finite and > 0"); the container's range says what to change.</summary>
+        [TestCase("{x: 1000000000, y: 1000000000, z: 1000000000}", "(was (1E+09, 1E+09, 1E+09))")]
+        [TestCase("{x: 0, y: 0, z: 0}", "(was (0, 0, 0))")]
+        [TestCase("{x: 1001, y: 0.4, z: 0.12}", "(was (1001, 0.4, 0.12))")]
+        public void AContainerOutsideItsSizeRangeIsRefusedForItsRange(string scale, string was)
+        {
+            string path = Write(EditDocument("--- !u!4 &280459232", "m_LocalScale: {x: 0.6, y: 0.4, z: 0.12}", "m_LocalScale: " + scale, out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.BadScene));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: GameObject 'Container', Transform.m_LocalScale: each Size component must be in " +
+                "[0.03, 1000] m (two particle spacings or more) " + was));
+            Assert.That(run.Stderr, Does.Not.Contain("CellGrid"));
+        }
+
         // ---------------------------------------------------------------- text that acts on a terminal
 
         /// <summary>A scene's double-quoted "\e[2J" is an escape sequence once parsed; as a phase name it was printed on

@@ -114,6 +114,19 @@ namespace SphFluid.Simulation
             return errors;
         }
 
+        /// <summary>Largest extent of the container along any of its axes, m.</summary>
+        public const float MaxContainerSize = 1000f;
+
+        /// <summary>Whether every component of <paramref name="size"/> lies in the container's own range, [two particle
+        /// spacings, <see cref="MaxContainerSize"/>] m, before its wall particles are counted.</summary>
+        public static bool ContainerSizeInRange(Vector3 size, float particleSpacing)
+        {
+            float least = 2f * particleSpacing;
+            return ValidationRules.IsFinite(size.X) && ValidationRules.IsFinite(size.Y) && ValidationRules.IsFinite(size.Z)
+                && size.X >= least && size.Y >= least && size.Z >= least
+                && size.X <= MaxContainerSize && size.Y <= MaxContainerSize && size.Z <= MaxContainerSize;
+        }
+
         /// <summary>The container's own rules; its least size and wall count follow from the spacing, so they are checked only
         /// with <paramref name="settingsOk"/> (a refused spacing would name a range such as [2E+30, 1000] m here too).</summary>
         internal void ValidateContainer(List<ValidationError> errors, bool settingsOk = true)
@@ -126,13 +139,12 @@ namespace SphFluid.Simulation
             }
             ValidationRules.Finite(errors, owner, "Container.", nameof(ContainerDescription.Position), Container.Position, 1e6f, "m");
             ValidationRules.Rotation(errors, owner, "Container.", nameof(ContainerDescription.Rotation), Container.Rotation);
-            float minSize = settingsOk ? 2f * Settings.ParticleSpacing : 0f;
+            float spacing = settingsOk ? Settings.ParticleSpacing : 0f;
             var size = Container.Size;
-            if (!(ValidationRules.IsFinite(size.X) && ValidationRules.IsFinite(size.Y) && ValidationRules.IsFinite(size.Z))
-                || size.X < minSize || size.Y < minSize || size.Z < minSize || size.X > 1000f || size.Y > 1000f || size.Z > 1000f)
+            if (!ContainerSizeInRange(size, spacing))
             {
-                errors.Add(new ValidationError("Container.Size",
-                    "Container", $"each Size component must be in [{ValidationRules.Format(minSize)}, 1000] m (two particle spacings or more) (was {ValidationRules.Format(size)})"));
+                errors.Add(new ValidationError("Container.Size", "Container", $"each Size component must be in [{ValidationRules.Format(2f * spacing)}, " +
+                    $"{ValidationRules.Format(MaxContainerSize)}] m (two particle spacings or more) (was {ValidationRules.Format(size)})"));
             }
             else if (settingsOk)
             {
