@@ -220,7 +220,8 @@ namespace SphFluid.Simulation
                 if (Container != null && errors.Count == before && !BoxInsideContainer(box, out Vector3 corner))
                 {
                     errors.Add(new ValidationError(path + "Center",
-                        owner, $"the box must lie inside the container (centre {ValidationRules.Format(Container.Position)}, size {ValidationRules.Format(Container.Size)} m); its corner {ValidationRules.Format(corner)} is outside"));
+                        owner, $"the box (centre {ValidationRules.Format(box.Center)}, size {ValidationRules.Format(box.Size)} m) must lie inside the container " +
+                        $"(centre {ValidationRules.Format(Container.Position)}, size {ValidationRules.Format(Container.Size)} m); its corner {ValidationRules.Format(corner)} is outside"));
                 }
                 if (errors.Count == before) ParticleMassRule.Validate(this, box.Phase, owner, path + "Phase.", errors);
             }

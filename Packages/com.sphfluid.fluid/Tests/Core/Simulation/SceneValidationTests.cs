@@ -170,7 +170,9 @@ namespace SphFluid.Tests.Core.Simulation
         {
             var scene = SimulationTestScenes.OilOnWater();
             scene.SpawnBoxes[1].Center = new Vector3(0.2f, 0f, 0f);
-            Assert.That(Messages(scene), Has.Some.StartsWith("SpawnBox 'Oil': the box must lie inside the container"));
+            // The box's size is named beside its centre: a box scaled too large is refused here too, at its position's line.
+            Assert.That(Messages(scene), Has.Some.StartsWith("SpawnBox 'Oil': the box (centre (0.2, 0, 0), size (0.5, 0.12, 0.5) m) " +
+                "must lie inside the container (centre (0, 0, 0), size (0.5, 0.5, 0.5) m); its corner "));
         }
 
         [Test]
