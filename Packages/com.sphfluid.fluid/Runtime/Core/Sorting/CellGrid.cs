@@ -235,8 +235,12 @@ namespace SphFluid.Sorting
             return float.IsFinite(v.X) && float.IsFinite(v.Y) && float.IsFinite(v.Z);
         }
 
+        /// <summary>A message with its vectors written as the validation writes them, (x, y, z), not as Vector3's &lt;x, y, z&gt;:
+        /// the scene reader prints this beside the validation's messages.</summary>
         private static string Format(string format, params object[] args)
         {
+            for (int i = 0; i < args.Length; i++)
+                if (args[i] is Vector3 v) args[i] = Simulation.ValidationRules.Format(v);
             return string.Format(CultureInfo.InvariantCulture, format, args);
         }
     }

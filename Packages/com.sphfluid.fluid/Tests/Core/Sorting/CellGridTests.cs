@@ -133,7 +133,7 @@ namespace SphFluid.Tests.Core.Sorting
             Exception error = Catch(() => _ = new CellGrid(Vector3.Zero, Quaternion.Identity, new Vector3(1f, 0f, 1f), 0.1f));
 
             Assert.That(error, Is.TypeOf<ArgumentOutOfRangeException>());
-            Assert.That(error.Message, Does.Contain("container size"));
+            Assert.That(error.Message, Does.Contain("container size must be finite and > 0 m on every axis (was (1, 0, 1))"));
         }
 
         /// <summary>Cells of h/2: 4 x 2 x 2 m at h = 8 mm needs 1000 x 500 x 500 cells and two margin cells a side, and the
@@ -144,7 +144,7 @@ namespace SphFluid.Tests.Core.Sorting
             Exception error = Catch(() => _ = CellGrid.ForSupport(Vector3.Zero, Quaternion.Identity, new Vector3(4f, 2f, 2f), 0.008f));
 
             Assert.That(error, Is.TypeOf<ArgumentOutOfRangeException>());
-            Assert.That(error.Message, Does.Contain("<4, 2, 2>").And.Contain("smoothing radius h = 0.008")
+            Assert.That(error.Message, Does.Contain("container size (4, 2, 2) m").And.Contain("smoothing radius h = 0.008")
                 .And.Contain("1004 x 504 x 504").And.Contain(CellGrid.MaxCellCount.ToString()));
             string smallest = System.Text.RegularExpressions.Regex.Match(error.Message, @"at least ([0-9.]+) m").Groups[1].Value;
             float h = float.Parse(smallest, System.Globalization.CultureInfo.InvariantCulture);
