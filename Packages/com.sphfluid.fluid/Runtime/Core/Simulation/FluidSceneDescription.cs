@@ -93,8 +93,14 @@ namespace SphFluid.Simulation
             Settings.Validate(errors, "Settings.");
             bool settingsOk = errors.Count == 0;
 
+            int beforeContainer = errors.Count;
             ValidateContainer(errors, settingsOk);
-            ValidateBoxes(errors, settingsOk);
+            // A box is placed against the container's position, rotation and size: where one of those is refused, "the box
+            // must lie inside" would only repeat it.
+            bool containerPlaced = true;
+            for (int i = beforeContainer; i < errors.Count; i++)
+                if (errors[i].Field is "Container" or "Container.Position" or "Container.Rotation" or "Container.Size") containerPlaced = false;
+            ValidateBoxes(errors, settingsOk, containerPlaced);
             ValidateObstacles(errors);
             if (errors.Count > 0) return errors;
             SpawnOverlapRule.Validate(this, errors);
@@ -159,7 +165,7 @@ namespace SphFluid.Simulation
             ValidationRules.Finite(errors, owner, "Container.", nameof(ContainerDescription.AngularVelocity), Container.AngularVelocity, 1000f, "rad/s");
         }
 
-        void ValidateBoxes(List<ValidationError> errors, bool settingsOk)
+        void ValidateBoxes(List<ValidationError> errors, bool settingsOk, bool containerPlaced)
         {
             if (SpawnBoxes == null || SpawnBoxes.Count == 0)
             {
@@ -217,7 +223,7 @@ namespace SphFluid.Simulation
                     continue;
                 }
                 total += SpawnLayout.Count(Settings, box);
-                if (Container != null && errors.Count == before && !BoxInsideContainer(box, out Vector3 corner))
+                if (containerPlaced && errors.Count == before && !BoxInsideContainer(box, out Vector3 corner))
                 {
                     errors.Add(new ValidationError(path + "Center",
                         owner, $"the box (centre {ValidationRules.Format(box.Center)}, size {ValidationRules.Format(box.Size)} m) must lie inside the container " +

@@ -175,6 +175,23 @@ namespace SphFluid.Tests.Core.Simulation
                 "must lie inside the container (centre (0, 0, 0), size (0.5, 0.5, 0.5) m); its corner "));
         }
 
+        // A container refused for its size or placement is not also blamed on every box it no longer holds; a container
+        // refused for another value (its friction) still has its boxes checked.
+        [Test]
+        public void ARefusedContainerPlacementIsNotRepeatedForTheBoxes()
+        {
+            var scene = SimulationTestScenes.OilOnWater();
+            scene.Container.Size = Vector3.Zero;
+            Assert.That(scene.Validate().Select(e => e.Field).ToArray(), Is.EqualTo(new[] { "Container.Size" }));
+            scene = SimulationTestScenes.OilOnWater();
+            scene.Container.Position = new Vector3(float.NaN, 0f, 0f);
+            Assert.That(scene.Validate().Select(e => e.Field).ToArray(), Is.EqualTo(new[] { "Container.Position" }));
+            scene = SimulationTestScenes.OilOnWater();
+            scene.Container.Friction = (WallFriction)7;
+            scene.SpawnBoxes[1].Center = new Vector3(0.2f, 0f, 0f);
+            Assert.That(scene.Validate().Select(e => e.Field).ToArray(), Is.EqualTo(new[] { "Container.Friction", "SpawnBoxes[1].Center" }));
+        }
+
         [Test]
         public void BoxSmallerThanASpacing_IsRefused()
         {
