@@ -515,17 +515,14 @@ public static class SceneLoader
             return error.Message;
         }
 
-        /// <summary>Where the sphere's scale is not 1, how its world radius, which the rule quotes, comes from the field:
-        /// a radius of 0.5 under a scale of 3000 is refused as 1500 m.</summary>
+        /// <summary>Where the sphere's scale is not 1, how its world radius, which the rule quotes, comes from the field.</summary>
         string ScaledRadius(UnityGameObject go, UnityDocument mb)
         {
             var s = Abs(go.World.Scale);
-            float scale = MathF.Max(s.X, MathF.Max(s.Y, s.Z));
-            if (scale == 1f) return "";
-            var parents = go.SelfAndAncestors.Skip(1).Select(g => $"'{g.Name}'").ToList();
-            string radius = Float(go, mb, RuntimeScripts.SphereObstacle, "radius", 0.5f).ToString("G6", CultureInfo.InvariantCulture);
-            return $" (in the world: {radius} times {scale.ToString("G6", CultureInfo.InvariantCulture)}, the largest component of its scale in " +
-                $"the world{(parents.Count == 0 ? "" : $", which the scales of {string.Join(", ", parents)} take part in")})";
+            float radius = Float(go, mb, RuntimeScripts.SphereObstacle, "radius", 0.5f);
+            var parents = go.SelfAndAncestors.Skip(1).Select(g => g.Name).ToList();
+            string note = RigidSphere.WorldRadiusNote(radius, MathF.Max(s.X, MathF.Max(s.Y, s.Z)), parents);
+            return note.Length == 0 ? "" : " " + note;
         }
 
         /// <summary>A message about a world-space placement, at the line of the GameObject's own Transform field. The value

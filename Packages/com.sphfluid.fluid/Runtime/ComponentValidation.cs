@@ -55,11 +55,15 @@ namespace SphFluid.Runtime
             return kept;
         }
 
-        /// <summary>Logs each message with the component as context (click the line to select it).</summary>
-        public static void Log(IReadOnlyList<ValidationError> errors, UnityEngine.Object context)
+        /// <summary>Logs each message with the component as context (click the line to select it). A sphere's
+        /// <paramref name="radiusNote"/> follows the refusal of its radius, which quotes the world radius, not the field.</summary>
+        public static void Log(IReadOnlyList<ValidationError> errors, UnityEngine.Object context, string radiusNote = "")
         {
             foreach (ValidationError e in errors)
-                Debug.LogError($"{e.Message} [{context.GetType().Name} on '{context.name}', field {e.Field}]", context);
+            {
+                bool radius = radiusNote.Length > 0 && e.Field.EndsWith("." + nameof(RigidSphere.Radius), StringComparison.Ordinal);
+                Debug.LogError($"{e.Message} [{context.GetType().Name} on '{context.name}', field {e.Field}{(radius ? " " + radiusNote : "")}]", context);
+            }
         }
     }
 }

@@ -177,6 +177,16 @@ namespace SphFluid.Runtime
         /// <summary>The core's refusals of the settings fields.</summary>
         public IReadOnlyList<ValidationError> ValidationErrors() => ComponentValidation.SettingsErrors(DescribeSettings());
 
+        /// <summary>How the world radius that a sphere's refusal quotes comes from its field; the scene's Obstacles[i] is
+        /// the i-th of <paramref name="spheres"/>, as <see cref="DescribeScene"/> lists them.</summary>
+        static string SphereRadiusNote(ValidationError e, List<SphereObstacle> spheres)
+        {
+            for (int i = 0; i < spheres.Count; i++)
+                if (e.Field == $"Obstacles[{i}].{nameof(RigidSphere.Radius)}" && spheres[i].WorldRadiusNote() is { Length: > 0 } note)
+                    return " " + note;
+            return "";
+        }
+
         static List<SphereObstacle> ActiveObstacles()
         {
             var list = new List<SphereObstacle>();
@@ -231,8 +241,9 @@ namespace SphFluid.Runtime
             IReadOnlyList<ValidationError> errors = scene.Validate();
             if (errors.Count > 0)
             {
+                List<SphereObstacle> spheres = ActiveObstacles();
                 foreach (ValidationError e in errors)
-                    Debug.LogError($"Fluid '{name}': {e.Message} [{e.Field}]", this);
+                    Debug.LogError($"Fluid '{name}': {e.Message} [{e.Field}{SphereRadiusNote(e, spheres)}]", this);
                 Fail($"{errors.Count} invalid value(s) in the scene, listed in the Console; the simulation did not start");
                 return;
             }

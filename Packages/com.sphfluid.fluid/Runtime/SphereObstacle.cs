@@ -16,13 +16,23 @@ namespace SphFluid.Runtime
         float radius = 0.5f;
 
         /// <summary>Radius in metres, world space.</summary>
-        public float WorldRadius
+        public float WorldRadius => radius * LargestScale;
+
+        float LargestScale
         {
             get
             {
                 Vector3 s = FluidContainer.Abs(transform.lossyScale);
-                return radius * Mathf.Max(s.x, Mathf.Max(s.y, s.z));
+                return Mathf.Max(s.x, Mathf.Max(s.y, s.z));
             }
+        }
+
+        /// <summary>How the world radius that a refusal quotes comes from the field and the scales above it.</summary>
+        internal string WorldRadiusNote()
+        {
+            var parents = new List<string>();
+            for (Transform t = transform.parent; t != null; t = t.parent) parents.Add(t.name);
+            return RigidSphere.WorldRadiusNote(radius, LargestScale, parents);
         }
 
         public RigidSphere Describe(Vector3 velocity) =>
@@ -41,7 +51,7 @@ namespace SphFluid.Runtime
 
         public IReadOnlyList<ValidationError> ValidationErrors() => ComponentValidation.ObstacleErrors(Describe(Vector3.zero));
 
-        void OnValidate() => ComponentValidation.Log(ValidationErrors(), this);
+        void OnValidate() => ComponentValidation.Log(ValidationErrors(), this, WorldRadiusNote());
 
         void OnDrawGizmos()
         {
