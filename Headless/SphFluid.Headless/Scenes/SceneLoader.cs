@@ -49,6 +49,7 @@ public static class SceneLoader
         if (problems.Count > 0)
             throw new SceneException($"{scenePath}: the integrity check refuses the scene ({problems.Count} problem(s)):\n  " +
                 string.Join("\n  ", problems.Select(p => $"{scenePath}{(p.Line > 0 ? ":" + p.Line.ToString(CultureInfo.InvariantCulture) : "")}: {p.Message}")));
+        PrefabInstances.RefuseFluidIn(scenePath, scene, project);
         return new Reader(scenePath, scene, project).Read(change);
     }
 
