@@ -69,7 +69,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
             : options.ParticleScales.Count > 0 ? options.ParticleScales.Select(f => ScaledBy(f)).ToList()
             : new List<FluidSceneDescription> { ScaledBy(1) };
         using var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name + "-bench"), "--out", "bench");
-        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "bench", stderr, out IDisposable? owned);
+        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.PackageFolder, options.DeviceName, "bench", stderr, out IDisposable? owned);
         try
         {
             stdout.WriteLine(string.Format(C, "bench: {0} on {1}; {2} warm-up sub-steps (at least {3:G3} s) + {4} timed sub-steps per row, one submit each",

@@ -6,7 +6,7 @@ using SphFluid.Vulkan;
 
 namespace SphFluid.Headless.Runs;
 
-/// <summary>Opens the headless Vulkan device on the project's shaders (Packages/com.sphfluid.fluid/Shaders).</summary>
+/// <summary>Opens the headless Vulkan device on the shaders of the fluid package a scene's project uses (its Shaders/).</summary>
 public static class DeviceFactory
 {
     /// <exception cref="VulkanUnavailableException">No Vulkan driver, or no adapter has the name SPHFLUID_VULKAN_DEVICE gives.</exception>
@@ -15,12 +15,12 @@ public static class DeviceFactory
     /// <summary>The device a run was given (tests share theirs; the run must not dispose it), else a new one that the
     /// caller disposes through <paramref name="owned"/>; a new one whose shader cache cannot be written is warned of on
     /// <paramref name="warnings"/>, since every run would then compile its kernels afresh without saying why.</summary>
-    public static IComputeDevice GivenOrOpen(IComputeDevice? given, string projectRoot, string? deviceName, string command, TextWriter warnings,
+    public static IComputeDevice GivenOrOpen(IComputeDevice? given, string packageFolder, string? deviceName, string command, TextWriter warnings,
         out IDisposable? owned)
     {
         owned = null;
         if (given != null) return given;
-        var opened = Open(projectRoot, deviceName, command);
+        var opened = Open(packageFolder, deviceName, command);
         owned = opened;
         if (opened.Compiler.CacheProblem() is string why)
             warnings.WriteLine($"{command}: warning: the shader cache '{opened.Compiler.CacheDirectory}' cannot be written ({why}); every run " +
@@ -34,7 +34,7 @@ public static class DeviceFactory
         return device is VulkanComputeDevice vulkan && vulkan.Driver.Length > 0 ? $"{device.DeviceName}, driver {vulkan.Driver}" : device.DeviceName;
     }
 
-    public static VulkanComputeDevice Open(string projectRoot, string? deviceName, string command)
+    public static VulkanComputeDevice Open(string packageFolder, string? deviceName, string command)
     {
         VulkanComputeOptions options;
         try
@@ -46,7 +46,7 @@ public static class DeviceFactory
             // An environment variable's value the options refuse: the invocation's fault, as a bad argument is.
             throw new UsageException($"{command}: {e.Message}");
         }
-        options.ShaderDirectories = new[] { Path.Combine(projectRoot, "Packages", "com.sphfluid.fluid", "Shaders") };
+        options.ShaderDirectories = new[] { Path.Combine(packageFolder, "Shaders") };
         if (!string.IsNullOrEmpty(deviceName)) options.DeviceName = deviceName;
         try
         {

@@ -47,7 +47,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
 
         // The device decides the scale (--cpu-particles-scale), so it opens before the scene is scaled and checked; the
         // output folder is claimed only once the scaled scene fits.
-        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "simulate", stderr, out IDisposable? owned);
+        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.PackageFolder, options.DeviceName, "simulate", stderr, out IDisposable? owned);
         try
         {
             bool onCpu = device is VulkanComputeDevice { DeviceType: "Cpu" } && options.CpuParticlesScale != 1.0;

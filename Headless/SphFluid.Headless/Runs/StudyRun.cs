@@ -90,7 +90,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         // Every configuration is made into a scene before the device opens: an impossible one is refused by name first.
         var descriptions = configs.Select(c => Describe(c)).ToList();
         using var output = OutputFolder.Claim(options.OutputDirectory ?? Path.Combine("Output", scene.Name + "-study"), "--out", "study");
-        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.ProjectRoot, options.DeviceName, "study", stderr, out IDisposable? owned);
+        IComputeDevice device = DeviceFactory.GivenOrOpen(Device, scene.PackageFolder, options.DeviceName, "study", stderr, out IDisposable? owned);
         try
         {
             stdout.WriteLine(string.Format(C, "study: {0} on {1}; {2} configuration(s) of {3:G3} s simulated each{4}", scene.Path, DeviceFactory.Describe(device), configs.Count,

@@ -9,8 +9,8 @@ public sealed class LoadedScene
     /// <summary>The scene file as given.</summary>
     public required string Path { get; init; }
 
-    /// <summary>Root of the Unity project the scene belongs to (its shaders are under Packages/com.sphfluid.fluid/Shaders).</summary>
-    public required string ProjectRoot { get; init; }
+    /// <summary>The fluid package the scene's project uses (<see cref="FluidPackage.FolderFor"/>), whose Shaders/ the run compiles.</summary>
+    public required string PackageFolder { get; init; }
 
     /// <summary>File name without extension ("OilAndWater").</summary>
     public required string Name { get; init; }

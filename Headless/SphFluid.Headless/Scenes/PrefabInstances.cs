@@ -26,14 +26,11 @@ public static class PrefabInstances
     };
 
     /// <summary>Throws a <see cref="SceneException"/> listing every part of the fluid that lies in a prefab instance.</summary>
-    public static void RefuseFluidIn(string path, UnityScene scene, UnityProject project)
+    public static void RefuseFluidIn(string path, UnityScene scene, UnityProject project, string packageFolder)
     {
         var scripts = new Dictionary<string, string>(StringComparer.Ordinal);
         foreach (string name in FluidScripts)
-        {
-            try { scripts[project.ScriptGuid(name)] = name; }
-            catch (InvalidOperationException) { } // the reader refuses a project without the fluid's scripts by name
-        }
+            if (FluidPackage.ScriptGuid(project, packageFolder, name) is { } guid) scripts[guid] = name; // the reader refuses a missing one by name
 
         var problems = new List<string>();
         // A scene may hold a prop's instance hundreds of times: each prefab is read once.

@@ -3,7 +3,7 @@ using SphFluid.Simulation;
 
 namespace SphFluid.Headless.Scenes;
 
-/// <summary>The Unity components (Packages/com.sphfluid.fluid/Runtime) the runner reads, by class (= .cs file) name.</summary>
+/// <summary>The Unity components (the package's Runtime/) the runner reads, by class (= .cs file) name.</summary>
 public static class RuntimeScripts
 {
     public const string Fluid = "Fluid";

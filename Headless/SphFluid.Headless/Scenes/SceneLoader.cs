@@ -16,7 +16,7 @@ namespace SphFluid.Headless.Scenes;
 /// Reads a <c>.unity</c> file the way the Fluid component sees its scene at Play: its serialized
 /// settings, every active SpawnBox (world transform = box), the FluidContainer (the assigned one, else the
 /// scene's), every active SphereObstacle, and the ContainerSpinner / SphereDriver motions. Field names are
-/// the C# field names of Packages/com.sphfluid.fluid/Runtime; scripts are matched by the guid of their .cs.meta.
+/// the C# field names of the package's Runtime/ (<see cref="FluidPackage"/>); scripts are matched by the guid of their .cs.meta.
 /// </summary>
 public static class SceneLoader
 {
@@ -43,14 +43,16 @@ public static class SceneLoader
         {
             throw new SceneException(e.Message.StartsWith(scenePath, StringComparison.Ordinal) ? e.Message : $"{scenePath}: {e.Message}", e);
         }
+        // Without the package, every script guid would be refused as unknown: name what is missing instead.
+        string package = FluidPackage.FolderFor(scenePath, project);
         // What Unity would refuse or silently break on (a duplicated fileID, a script guid no .meta has, a parent
         // cycle) would otherwise be simulated as some other scene: refuse it before reading a single field.
         var problems = AssetIntegrity.CheckScene(project.Root, scenePath, scene.File);
         if (problems.Count > 0)
             throw new SceneException($"{scenePath}: the integrity check refuses the scene ({problems.Count} problem(s)):\n  " +
                 string.Join("\n  ", problems.Select(p => $"{scenePath}{(p.Line > 0 ? ":" + p.Line.ToString(CultureInfo.InvariantCulture) : "")}: {p.Message}")));
-        PrefabInstances.RefuseFluidIn(scenePath, scene, project);
-        return new Reader(scenePath, scene, project).Read(change);
+        PrefabInstances.RefuseFluidIn(scenePath, scene, project, package);
+        return new Reader(scenePath, scene, project, package).Read(change);
     }
 
     static UnityProject FindProject(string scenePath)
@@ -73,16 +75,18 @@ public static class SceneLoader
         readonly string path;
         readonly UnityScene scene;
         readonly UnityProject project;
+        readonly string packageFolder;
         readonly List<(UnityGameObject Go, UnityDocument Behaviour)> _boxes = new();
         readonly List<(UnityGameObject Go, UnityDocument Behaviour)> _obstacles = new();
         readonly UnityGameObject _simulatorGo;
         readonly UnityDocument _simulator;
 
-        public Reader(string path, UnityScene scene, UnityProject project)
+        public Reader(string path, UnityScene scene, UnityProject project, string packageFolder)
         {
             this.path = path;
             this.scene = scene;
             this.project = project;
+            this.packageFolder = packageFolder;
             var simulators = Active(ScriptGuid(RuntimeScripts.Fluid));
             if (simulators.Count == 0)
                 throw new SceneException($"{path}: no active GameObject has a {RuntimeScripts.Fluid} component");
@@ -133,7 +137,7 @@ public static class SceneLoader
             return new LoadedScene
             {
                 Path = path,
-                ProjectRoot = project.Root,
+                PackageFolder = packageFolder,
                 Name = scene.Name,
                 Description = description,
                 Motion = ReadMotion(containerGo),
@@ -148,11 +152,8 @@ public static class SceneLoader
         /// character, and a control character in it would act on the terminal (<see cref="PrintableText"/>).</summary>
         static string Shown(UnityGameObject go) => PrintableText.Escape(go.Name);
 
-        string ScriptGuid(string className)
-        {
-            try { return project.ScriptGuid(className); }
-            catch (InvalidOperationException e) { throw new SceneException($"{path}: cannot find the {className} script in the project at {project.Root}: {e.Message}", e); }
-        }
+        string ScriptGuid(string className) => FluidPackage.ScriptGuid(project, packageFolder, className) ?? throw new SceneException(
+            $"{path}: cannot find the {className} script in the project at {project.Root}: no Runtime/{className}.cs with a .meta in {packageFolder}");
 
         /// <summary>Enabled behaviours with the script guid on active GameObjects (active ancestors too), in file order.</summary>
         List<(UnityGameObject Go, UnityDocument Behaviour)> Active(string guid)

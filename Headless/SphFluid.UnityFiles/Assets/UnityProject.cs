@@ -10,8 +10,9 @@ namespace SphFluid.UnityFiles.Assets;
 /// <summary>
 /// A Unity project on disk seen through its GUIDs: turns a reference's guid into the asset path (e.g. which .compute a
 /// scene component points at), a script class name into its guid, and lists scenes and the build's scene list.
-/// Index built once on construction from every .meta under Assets/ and under each embedded package
-/// (Packages/&lt;name&gt;/ with a package.json), where the fluid's own components and shaders live.
+/// Index built once on construction from every .meta under Assets/, under each embedded package (Packages/&lt;name&gt;/
+/// with a package.json), where this project's fluid components and shaders live, and under each package Package Manager
+/// resolved into Library/PackageCache (a project that added the fluid by git URL finds its scripts there).
 /// </summary>
 public sealed class UnityProject
 {
@@ -35,14 +36,42 @@ public sealed class UnityProject
         }
     }
 
+    /// <summary>Assets/, then the embedded packages, then the cached ones: an embedded package is the one Unity uses where
+    /// the cache holds the same package too, and the index keeps the first path of a guid.</summary>
     IEnumerable<string> AssetRoots(string assets)
     {
         yield return assets;
         var packages = Path.Combine(Root, "Packages");
-        if (!Directory.Exists(packages)) yield break;
-        foreach (var dir in Directory.GetDirectories(packages).OrderBy(d => d, StringComparer.Ordinal))
-            if (!Integrity.AssetIntegrity.IsHiddenFromUnity(Path.GetFileName(dir)) && File.Exists(Path.Combine(dir, "package.json")))
-                yield return dir;
+        if (Directory.Exists(packages))
+            foreach (var dir in Directory.GetDirectories(packages).OrderBy(d => d, StringComparer.Ordinal))
+                if (!Integrity.AssetIntegrity.IsHiddenFromUnity(Path.GetFileName(dir)) && File.Exists(Path.Combine(dir, "package.json")))
+                    yield return dir;
+        foreach (var dir in CachedPackageFolders(Root)) yield return dir;
+    }
+
+    /// <summary>The folder of the package <paramref name="name"/> that Unity uses: Packages/<paramref name="name"/> where it is
+    /// embedded, else its one copy in Library/PackageCache (<paramref name="name"/>@version); null where neither holds a
+    /// package.json, or the cache holds several.</summary>
+    public string? PackageFolder(string name)
+    {
+        var embedded = Path.Combine(Root, "Packages", name);
+        if (File.Exists(Path.Combine(embedded, "package.json"))) return embedded;
+        var cached = CachedPackageFolders(Root).Where(dir => Path.GetFileName(dir).StartsWith(name + "@", StringComparison.Ordinal)).ToList();
+        return cached.Count == 1 ? cached[0] : null;
+    }
+
+    /// <summary>Library/PackageCache/&lt;name&gt;@&lt;version&gt;/ folders holding a package.json: the packages Package Manager
+    /// resolved from a registry or a git URL. A cached copy of a package the project embeds is left out: Unity uses the
+    /// embedded one, and the copy's scripts would read as a second script of each name.</summary>
+    public static IReadOnlyList<string> CachedPackageFolders(string projectRoot)
+    {
+        var cache = Path.Combine(projectRoot, "Library", "PackageCache");
+        if (!Directory.Exists(cache)) return Array.Empty<string>();
+        return Directory.GetDirectories(cache).OrderBy(d => d, StringComparer.Ordinal)
+            .Where(dir => File.Exists(Path.Combine(dir, "package.json")))
+            .Where(dir => Path.GetFileName(dir).Split('@')[0] is var name &&
+                !File.Exists(Path.Combine(projectRoot, "Packages", name, "package.json")))
+            .ToList();
     }
 
     /// <summary>Absolute path of the folder holding Assets/.</summary>
@@ -66,7 +95,7 @@ public sealed class UnityProject
         var matches = _guidByPath.Where(kv => Path.GetFileName(kv.Key) == className + ".cs").ToList();
         if (matches.Count == 1) return matches[0].Value;
         throw new InvalidOperationException(matches.Count == 0
-            ? $"no {className}.cs under Assets/ or an embedded package"
+            ? $"no {className}.cs under Assets/, an embedded package or Library/PackageCache"
             : $"{className}.cs exists {matches.Count} times: {string.Join(", ", matches.Select(m => m.Key))}");
     }
 
@@ -79,9 +108,10 @@ public sealed class UnityProject
     /// <summary>Absolute path for an "Assets/…" path.</summary>
     public string FullPath(string projectPath) => Path.GetFullPath(Path.Combine(Root, projectPath));
 
-    /// <summary>Every .unity scene under Assets/, as "Assets/…" paths, sorted.</summary>
+    /// <summary>Every .unity scene of the project's own (under Assets/ and the embedded packages), as project paths, sorted.</summary>
     public IReadOnlyList<string> Scenes =>
-        _guidByPath.Keys.Where(p => p.EndsWith(".unity", StringComparison.Ordinal)).OrderBy(p => p, StringComparer.Ordinal).ToList();
+        _guidByPath.Keys.Where(p => p.EndsWith(".unity", StringComparison.Ordinal) && !p.StartsWith("Library/", StringComparison.Ordinal))
+            .OrderBy(p => p, StringComparer.Ordinal).ToList();
 
     /// <summary>Enabled scenes of ProjectSettings/EditorBuildSettings.asset in build order (empty when the file is absent).</summary>
     public IReadOnlyList<string> BuildScenes

@@ -39,6 +39,21 @@ public sealed partial class AssetIntegrity
         }
     }
 
+    /// <summary>Resolves guids of the packages Package Manager put in Library/PackageCache, which a scene of a project that
+    /// added the fluid by git URL refers to. Only for a scene's check: the whole project's check reads the files this
+    /// repository holds (no Library/), and Unity's own packages are not its to judge.</summary>
+    void IndexCachedPackages()
+    {
+        foreach (var package in UnityProject.CachedPackageFolders(_root))
+            foreach (var metaPath in Directory.EnumerateFiles(package, "*.meta", SearchOption.AllDirectories))
+            {
+                UnityMeta meta;
+                try { meta = UnityMeta.Load(metaPath); }
+                catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException) { continue; }
+                if (UnityMeta.IsValidGuid(meta.Guid)) _assetByGuid.TryAdd(meta.Guid, meta.AssetPath);
+            }
+    }
+
     void CheckMetas()
     {
         foreach (var asset in _assetFolders.Concat(_assetFiles))

@@ -44,6 +44,7 @@ public sealed partial class AssetIntegrity
         check.Guarded("Assets", check.ScanAssetRoots);
         check.Guarded("Assets", check.CheckMetas);
         check.Guarded("ProjectSettings", check.CheckProjectSettings);
+        check.Guarded("Library/PackageCache", check.IndexCachedPackages);
         check._problems.Clear();
         string file = Path.GetFullPath(scenePath);
         check.Guarded(check.Rel(file), () => check.CheckSerializedFile(file, yaml));

@@ -1,6 +1,7 @@
 using System.IO;
 using NUnit.Framework;
 using SphFluid.Headless.Runs;
+using SphFluid.Headless.Scenes;
 using SphFluid.Vulkan;
 
 namespace SphFluid.Tests.Backend
@@ -102,7 +103,7 @@ namespace SphFluid.Tests.Backend
             try
             {
                 System.Environment.SetEnvironmentVariable("SPHFLUID_SHADER_CACHE", file);
-                DeviceFactory.GivenOrOpen(null, GpuTestDevice.RepoRoot, null, "simulate", warnings, out var owned);
+                DeviceFactory.GivenOrOpen(null, Path.Combine(GpuTestDevice.RepoRoot, "Packages", FluidPackage.Name), null, "simulate", warnings, out var owned);
                 owned?.Dispose();
             }
             finally

@@ -126,20 +126,10 @@ namespace SphFluid.Tests.Runner
         /// <summary>A copy of the repository's Unity project in a scratch folder, whose OilAndWater scene a test edits.</summary>
         sealed class PrefabProject
         {
-            readonly string _root = RunnerPaths.ScratchFolder("prefab-project");
+            readonly string _root = RunnerPaths.ProjectCopy("prefab-project");
             bool _prefabFolder;
 
-            public PrefabProject()
-            {
-                foreach (string folder in new[] { "Assets", "Packages", "ProjectSettings" })
-                    foreach (string file in Directory.EnumerateFiles(Path.Combine(RunnerPaths.Project.Root, folder), "*", SearchOption.AllDirectories))
-                    {
-                        string copy = Path.Combine(_root, Path.GetRelativePath(RunnerPaths.Project.Root, file));
-                        Directory.CreateDirectory(Path.GetDirectoryName(copy)!);
-                        File.Copy(file, copy);
-                    }
-                ScenePath = Path.Combine(_root, "Assets", "FluidDemo", "Scenes", "OilAndWater.unity");
-            }
+            public PrefabProject() => ScenePath = Path.Combine(_root, "Assets", "FluidDemo", "Scenes", "OilAndWater.unity");
 
             public string ScenePath { get; }
 

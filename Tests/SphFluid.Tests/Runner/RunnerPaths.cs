@@ -51,6 +51,21 @@ namespace SphFluid.Tests.Runner
             }
         }
 
+        /// <summary>A copy of the repository's Unity project (its Assets, Packages and ProjectSettings) in a scratch folder,
+        /// for a test that changes the project around a scene; returns the copy's root.</summary>
+        public static string ProjectCopy(string purpose)
+        {
+            string root = ScratchFolder(purpose);
+            foreach (string folder in new[] { "Assets", "Packages", "ProjectSettings" })
+                foreach (string file in Directory.EnumerateFiles(Path.Combine(Project.Root, folder), "*", SearchOption.AllDirectories))
+                {
+                    string copy = Path.Combine(root, Path.GetRelativePath(Project.Root, file));
+                    Directory.CreateDirectory(Path.GetDirectoryName(copy)!);
+                    File.Copy(file, copy);
+                }
+            return root;
+        }
+
         /// <summary>A copy of a shipped scene with one piece of text replaced, written to a scratch folder.</summary>
         public static string EditedScene(string name, string find, string replace) => EditedScene(name, (find, replace));
 
