@@ -1,6 +1,8 @@
 using System;
 using System.IO;
+using System.Text.Json;
 using SphFluid.UnityFiles.Assets;
+using SphFluid.UnityFiles.Yaml;
 
 namespace SphFluid.Headless.Scenes;
 
@@ -26,8 +28,9 @@ public static class FluidPackage
             $"Library/PackageCache/{Name}@<version>/ with a package.json)");
         string manifest = Path.Combine(folder, "package.json");
         string? version;
-        try { version = EmbeddedPackage.Load(manifest).Version; }
-        catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException)
+        // Read as the scene is, bounded: a package.json that is a pipe or a device must not hang the run.
+        try { version = EmbeddedPackage.Parse(UnityTextFile.Read(manifest), manifest).Version; }
+        catch (Exception e) when (e is FormatException or JsonException or IOException or UnauthorizedAccessException)
         {
             throw new SceneException($"{manifest}: cannot be read as the {Name} package's manifest: {e.Message}", e);
         }

@@ -1,5 +1,7 @@
+using System;
 using System.IO;
 using System.Linq;
+using System.Runtime.InteropServices;
 using NUnit.Framework;
 using SphFluid.Headless.Scenes;
 using SphFluid.UnityFiles.Assets;
@@ -77,6 +79,38 @@ namespace SphFluid.Tests.Runner
             var e = Assert.Throws<SceneException>(() => SceneLoader.Load(scene, new UnityProject(root)))!;
 
             Assert.That(e.Message, Does.StartWith($"{scene}: the project at {root} has no {FluidPackage.Name} package"));
+        }
+
+        [Test]
+        public void AManifestThatIsNotJsonIsRefusedNamingIt()
+        {
+            string root = ProjectWithTheCachedPackage();
+            string manifest = Path.Combine(root, "Library", "PackageCache", CachedName, "package.json");
+            File.WriteAllText(manifest, "{ \"name\": \"com.sphfluid.fluid\", ");
+            string scene = Path.Combine(root, "Assets", "FluidDemo", "Scenes", "OilAndWater.unity");
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(scene, new UnityProject(root)))!;
+
+            Assert.That(e.Message, Does.StartWith($"{manifest}: cannot be read as the {FluidPackage.Name} package's manifest: "));
+        }
+
+        [DllImport("libc", SetLastError = true)]
+        static extern int mkfifo(string path, uint mode);
+
+        /// <summary>A pipe blocks whoever opens it: the manifest is judged before it is opened, as a scene is.</summary>
+        [Test]
+        public void AManifestThatIsAPipeIsRefusedWithoutOpeningIt()
+        {
+            string root = ProjectWithTheCachedPackage();
+            string manifest = Path.Combine(root, "Library", "PackageCache", CachedName, "package.json");
+            File.Delete(manifest);
+            if (!RuntimeInformation.IsOSPlatform(OSPlatform.Linux) || mkfifo(manifest, Convert.ToUInt32("600", 8)) != 0)
+                Assert.Ignore("mkfifo is not available here");
+            string scene = Path.Combine(root, "Assets", "FluidDemo", "Scenes", "OilAndWater.unity");
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(scene, new UnityProject(root)))!;
+
+            Assert.That(e.Message, Does.Contain($"{manifest}: is empty or not a regular file (a device, a pipe or a /proc file)"));
         }
 
         /// <summary>Unity binds a component to its script by guid; a game's own Fluid.cs is another class.</summary>
