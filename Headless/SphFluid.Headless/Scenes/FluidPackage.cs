@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Linq;
 using System.Text.Json;
 using SphFluid.UnityFiles.Assets;
 using SphFluid.UnityFiles.Yaml;
@@ -23,9 +24,7 @@ public static class FluidPackage
     /// <exception cref="SceneException">The project has no copy of the package, or one of another version.</exception>
     public static string FolderFor(string scenePath, UnityProject project)
     {
-        string folder = project.PackageFolder(Name) ?? throw new SceneException(
-            $"{scenePath}: the project at {project.Root} has no {Name} package (neither Packages/{Name}/ nor one " +
-            $"Library/PackageCache/{Name}@<version>/ with a package.json)");
+        string folder = project.PackageFolder(Name) ?? throw new SceneException(Missing(scenePath, project));
         string manifest = Path.Combine(folder, "package.json");
         string? version;
         // Read as the scene is, bounded: a package.json that is a pipe or a device must not hang the run.
@@ -38,6 +37,20 @@ public static class FluidPackage
             throw new SceneException($"{scenePath}: its project uses {Name} {version ?? "(no version)"} ({folder}), and this runner " +
                 $"is built from {Version}, whose field names and kernel constants it uses: run the scene with a runner built from the same version");
         return folder;
+    }
+
+    /// <summary>Why the project has no one copy of the package: none, or several in the cache, of which the one Unity uses
+    /// cannot be told from the files.</summary>
+    static string Missing(string scenePath, UnityProject project)
+    {
+        var cached = UnityProject.CachedPackageFolders(project.Root)
+            .Where(dir => Path.GetFileName(dir).StartsWith(Name + "@", StringComparison.Ordinal)).ToList();
+        return cached.Count > 1
+            ? $"{scenePath}: the project at {project.Root} holds {cached.Count} copies of {Name} in Library/PackageCache " +
+              $"({string.Join(", ", cached.Select(Path.GetFileName))}), and which one Unity uses cannot be told: close the editor, " +
+              "delete Library/PackageCache and let Unity resolve its packages again"
+            : $"{scenePath}: the project at {project.Root} has no {Name} package (neither Packages/{Name}/ nor " +
+              $"Library/PackageCache/{Name}@<version>/ with a package.json)";
     }
 
     /// <summary>The guid of the package's Runtime/<paramref name="className"/>.cs, by its path: a project may hold a script

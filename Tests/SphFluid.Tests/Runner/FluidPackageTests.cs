@@ -31,7 +31,7 @@ namespace SphFluid.Tests.Runner
 
         /// <summary>Two cached copies leave it open which one Unity uses: neither is guessed at.</summary>
         [Test]
-        public void TwoCachedCopiesAreRefusedAsNoOne()
+        public void TwoCachedCopiesAreRefusedNamingBoth()
         {
             string root = ProjectWithTheCachedPackage();
             CopyFolder(Path.Combine(root, "Library", "PackageCache", CachedName), Path.Combine(root, "Library", "PackageCache", FluidPackage.Name + "@ffff"));
@@ -39,7 +39,9 @@ namespace SphFluid.Tests.Runner
 
             var e = Assert.Throws<SceneException>(() => SceneLoader.Load(scene, new UnityProject(root)))!;
 
-            Assert.That(e.Message, Does.StartWith($"{scene}: the project at {root} has no {FluidPackage.Name} package"));
+            Assert.That(e.Message, Is.EqualTo($"{scene}: the project at {root} holds 2 copies of {FluidPackage.Name} in " +
+                $"Library/PackageCache ({CachedName}, {FluidPackage.Name}@ffff), and which one Unity uses cannot be told: close the " +
+                "editor, delete Library/PackageCache and let Unity resolve its packages again"));
         }
 
         [Test]
