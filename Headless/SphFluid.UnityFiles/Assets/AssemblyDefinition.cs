@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using SphFluid.UnityFiles.Yaml;
 using System.Linq;
 using System.Text.Json;
 
@@ -31,7 +32,7 @@ public sealed class AssemblyDefinition
     /// <summary>A test assembly: only compiled when the test framework defines UNITY_INCLUDE_TESTS.</summary>
     public bool IsTestAssembly => DefineConstraints.Contains("UNITY_INCLUDE_TESTS");
 
-    public static AssemblyDefinition Load(string path) => Parse(File.ReadAllText(path), path);
+    public static AssemblyDefinition Load(string path) => Parse(UnityTextFile.ReadMayBeEmpty(path), path);
 
     public static AssemblyDefinition Parse(string json, string path)
     {

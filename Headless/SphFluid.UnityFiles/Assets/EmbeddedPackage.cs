@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using SphFluid.UnityFiles.Yaml;
 using System.Linq;
 using System.Text.Json;
 using System.Text.RegularExpressions;
@@ -29,7 +30,7 @@ public sealed class EmbeddedPackage
     /// <summary>The folder Package Manager copies samples from; Unity never imports it in place (its name ends in '~').</summary>
     public const string SamplesFolder = "Samples~";
 
-    public static EmbeddedPackage Load(string path) => Parse(File.ReadAllText(path), path);
+    public static EmbeddedPackage Load(string path) => Parse(UnityTextFile.ReadMayBeEmpty(path), path);
 
     public static EmbeddedPackage Parse(string json, string? path = null)
     {

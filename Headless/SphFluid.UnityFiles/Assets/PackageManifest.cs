@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using SphFluid.UnityFiles.Yaml;
 using System.Linq;
 using System.Text.Json;
 
@@ -17,7 +18,7 @@ public sealed class PackageManifest
 
     public string? VersionOf(string package) => Dependencies.TryGetValue(package, out var v) ? v : null;
 
-    public static PackageManifest Load(string path) => Parse(File.ReadAllText(path), path);
+    public static PackageManifest Load(string path) => Parse(UnityTextFile.ReadMayBeEmpty(path), path);
 
     public static PackageManifest Parse(string json, string? path = null)
     {

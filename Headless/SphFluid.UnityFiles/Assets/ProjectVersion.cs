@@ -18,7 +18,7 @@ public sealed record ProjectVersion(string? EditorVersion, string? EditorVersion
 
     public static ProjectVersion Load(string path)
     {
-        var root = UnityYamlParser.ParseBlock(File.ReadAllText(path), path);
+        var root = UnityYamlParser.ParseBlock(UnityTextFile.ReadMayBeEmpty(path), path);
         return new ProjectVersion(root.GetString("m_EditorVersion"), root.GetString("m_EditorVersionWithRevision"));
     }
 }

@@ -44,7 +44,7 @@ public sealed partial class UnityMeta
 
     public static bool IsValidGuid([NotNullWhen(true)] string? guid) => guid != null && GuidFormat().IsMatch(guid);
 
-    public static UnityMeta Load(string metaPath) => Parse(File.ReadAllText(metaPath), metaPath);
+    public static UnityMeta Load(string metaPath) => Parse(UnityTextFile.ReadMayBeEmpty(metaPath), metaPath);
 
     public static UnityMeta Parse(string text, string metaPath) => new(metaPath, UnityYamlParser.ParseBlock(text, metaPath));
 

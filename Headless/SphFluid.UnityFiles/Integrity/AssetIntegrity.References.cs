@@ -53,6 +53,7 @@ public sealed partial class AssetIntegrity
     {
         try
         {
+            if (UnityTextFile.LengthOf(file) == 0) return false; // empty, or a pipe that opening would block on
             using var reader = new StreamReader(file);
             var first = reader.ReadLine();
             return first != null && first.StartsWith("%YAML", StringComparison.Ordinal);

@@ -101,7 +101,7 @@ public sealed partial class AssetIntegrity
 
     string Abs(string relativePath) => Path.GetFullPath(Path.Combine(_root, relativePath));
 
-    string ReadText(string absolutePath) => File.ReadAllText(absolutePath);
+    string ReadText(string absolutePath) => UnityTextFile.ReadMayBeEmpty(absolutePath);
 
     /// <summary>Names Unity never imports: dot-files, <c>name~</c>, <c>cvs</c>, <c>*.tmp</c>.</summary>
     public static bool IsHiddenFromUnity(string name) =>

@@ -20,12 +20,7 @@ public static class UnityTextFile
     /// the message names the path and the allowed size.</exception>
     public static string Read(string path)
     {
-        if (Directory.Exists(path)) throw new IOException($"{path}: is a folder; expected {Limit}");
-        var info = new FileInfo(path);
-        if (!info.Exists) throw new FileNotFoundException($"{path}: no such file", path);
-        // A link's own length is the length of its target's name: judge the file it ends at.
-        var target = info.LinkTarget != null ? File.ResolveLinkTarget(path, returnFinalTarget: true) as FileInfo : info;
-        if (target == null || !target.Exists) throw new FileNotFoundException($"{path}: is a link to nothing", path);
+        var target = Target(path);
         if (target.Length == 0)
             throw new IOException($"{path}: is empty or not a regular file (a device, a pipe or a /proc file); expected {Limit}");
         if (target.Length > MaxBytes)
@@ -38,5 +33,23 @@ public static class UnityTextFile
         if (read > MaxBytes) throw new IOException($"{path}: grew past {MaxBytes} bytes while being read; expected {Limit}");
         using var reader = new StreamReader(new MemoryStream(bytes, 0, read), Encoding.UTF8, detectEncodingFromByteOrderMarks: true);
         return reader.ReadToEnd();
+    }
+
+    /// <summary>A project file that may be empty (an empty script or .meta is a file like any other): as <see cref="Read"/>,
+    /// but a length of 0 reads as empty without the file being opened, so a pipe or a device in its place cannot block.</summary>
+    public static string ReadMayBeEmpty(string path) => Target(path).Length == 0 ? "" : Read(path);
+
+    /// <summary>The length of the file <paramref name="path"/> ends at (through links); 0 for a pipe or a device.</summary>
+    public static long LengthOf(string path) => Target(path).Length;
+
+    static FileInfo Target(string path)
+    {
+        if (Directory.Exists(path)) throw new IOException($"{path}: is a folder; expected {Limit}");
+        var info = new FileInfo(path);
+        if (!info.Exists) throw new FileNotFoundException($"{path}: no such file", path);
+        // A link's own length is the length of its target's name: judge the file it ends at.
+        var target = info.LinkTarget != null ? File.ResolveLinkTarget(path, returnFinalTarget: true) as FileInfo : info;
+        if (target == null || !target.Exists) throw new FileNotFoundException($"{path}: is a link to nothing", path);
+        return target;
     }
 }

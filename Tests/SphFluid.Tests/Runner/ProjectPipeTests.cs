@@ -1,0 +1,67 @@
+using System;
+using System.IO;
+using System.Linq;
+using System.Runtime.InteropServices;
+using System.Threading.Tasks;
+using NUnit.Framework;
+using SphFluid.Headless.Scenes;
+using SphFluid.UnityFiles.Assets;
+
+namespace SphFluid.Tests.Runner
+{
+    /// <summary>
+    /// The scene reader reads the project around the scene (each asset's .meta, the scripts the scene uses) and opened
+    /// every such file as it came: a pipe in place of one blocked the run for good, before a line was printed. A file of
+    /// length 0 is now read as empty without being opened. Each test waits a bounded time, so that a regression fails
+    /// instead of hanging the suite.
+    /// </summary>
+    public sealed class ProjectPipeTests
+    {
+        static readonly TimeSpan Patience = TimeSpan.FromSeconds(60);
+
+        [DllImport("libc", SetLastError = true)]
+        static extern int mkfifo(string path, uint mode);
+
+        static void Pipe(string path)
+        {
+            File.Delete(path);
+            if (!RuntimeInformation.IsOSPlatform(OSPlatform.Linux) || mkfifo(path, Convert.ToUInt32("600", 8)) != 0)
+                Assert.Ignore("mkfifo is not available here");
+        }
+
+        /// <summary>Loads the copy's OilAndWater on another thread; fails if it has not ended within <see cref="Patience"/>.</summary>
+        static Task<LoadedScene> LoadWithin(string root)
+        {
+            var load = Task.Run(() => SceneLoader.Load(Path.Combine(root, "Assets", "FluidDemo", "Scenes", "OilAndWater.unity"), new UnityProject(root)));
+            Assert.That(Task.WaitAny(new Task[] { load }, Patience), Is.EqualTo(0), $"the load had not ended after {Patience.TotalSeconds} s");
+            return load;
+        }
+
+        [Test]
+        public void APipeInPlaceOfAnAssetsMetaDoesNotBlockTheRead()
+        {
+            string root = RunnerPaths.ProjectCopy("pipe");
+            string asset = Path.Combine(root, "Assets", "FluidDemo", "Notes.txt");
+            File.WriteAllText(asset, "notes\n");
+            Pipe(asset + ".meta");
+
+            var scene = LoadWithin(root).Result;
+
+            Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water", "Oil" }));
+        }
+
+        /// <summary>The scene's scripts are read to check that each declares its class: a pipe reads as an empty script,
+        /// which declares none, and the scene is refused for it.</summary>
+        [Test]
+        public void APipeInPlaceOfAScriptTheSceneUsesIsRefusedNotWaitedOn()
+        {
+            string root = RunnerPaths.ProjectCopy("pipe");
+            Pipe(Path.Combine(root, "Assets", "FluidDemo", "Scripts", "OrbitCamera.cs"));
+
+            var load = LoadWithin(root);
+
+            Assert.That(load.Exception?.InnerException, Is.TypeOf<SceneException>());
+            Assert.That(load.Exception!.InnerException!.Message, Does.Contain("OrbitCamera"));
+        }
+    }
+}
