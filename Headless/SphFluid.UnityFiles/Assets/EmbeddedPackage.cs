@@ -1,10 +1,10 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
-using SphFluid.UnityFiles.Yaml;
 using System.Linq;
 using System.Text.Json;
 using System.Text.RegularExpressions;
+using SphFluid.UnityFiles.Yaml;
 
 namespace SphFluid.UnityFiles.Assets;
 

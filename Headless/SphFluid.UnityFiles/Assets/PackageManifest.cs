@@ -1,9 +1,8 @@
 using System;
 using System.Collections.Generic;
-using System.IO;
-using SphFluid.UnityFiles.Yaml;
 using System.Linq;
 using System.Text.Json;
+using SphFluid.UnityFiles.Yaml;
 
 namespace SphFluid.UnityFiles.Assets;
 

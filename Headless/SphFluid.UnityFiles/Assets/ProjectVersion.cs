@@ -1,4 +1,3 @@
-using System.IO;
 using SphFluid.UnityFiles.Yaml;
 
 namespace SphFluid.UnityFiles.Assets;
