@@ -34,21 +34,23 @@ public static class PrefabInstances
 
         var problems = new List<string>();
         // A scene may hold a prop's instance hundreds of times: each prefab is read once.
-        var read = new Dictionary<string, (List<string> Held, string? Unreadable)>(StringComparer.Ordinal);
+        var read = new Dictionary<string, PrefabContents>(StringComparer.Ordinal);
+        PrefabContents Contents(string prefab)
+        {
+            if (!read.TryGetValue(prefab, out var contents))
+                read[prefab] = contents = Read(project, prefab, scripts);
+            return contents;
+        }
+
         foreach (var instance in scene.File.OfClass(PrefabInstanceClassId))
         {
             string? prefab = project.AssetPathOf(instance.Root.GetReference("m_SourcePrefab"));
             if (prefab == null) continue; // an unknown guid is the integrity check's refusal
-            if (!read.TryGetValue(prefab, out var contents))
-            {
-                var found = new List<string>();
-                read[prefab] = contents = (found, FluidComponentsIn(project, prefab, scripts, found, new HashSet<string>(StringComparer.Ordinal), nested: false));
-            }
-            var (held, unreadable) = contents;
-            if (unreadable != null)
-                problems.Add($"{path}:{instance.Line}: {Named(instance, prefab)}: its prefab cannot be read ({unreadable}), so whether it holds the fluid's components cannot be told");
-            else if (held.Count > 0)
-                problems.Add($"{path}:{instance.Line}: {Named(instance, prefab)} holds {string.Join(", ", held)}");
+            var contents = Contents(prefab);
+            if (contents.Unreadable != null)
+                problems.Add($"{path}:{instance.Line}: {Named(instance, prefab, contents)}: its prefab cannot be read ({contents.Unreadable}), so whether it holds the fluid's components cannot be told");
+            else if (contents.Held.Count > 0)
+                problems.Add($"{path}:{instance.Line}: {Named(instance, prefab, contents)} holds {string.Join(", ", contents.Held)}");
         }
 
         foreach (var behaviour in scene.Behaviours())
@@ -57,13 +59,13 @@ public static class PrefabInstances
             var owner = scene.File.Find(behaviour.GameObject);
             if (owner is { IsStripped: true })
             {
-                problems.Add($"{path}:{behaviour.Line}: a {script} added to a GameObject of {Instance(scene, project, owner)}");
+                problems.Add($"{path}:{behaviour.Line}: a {script} added to a GameObject of {Instance(scene, project, owner, Contents)}");
                 continue;
             }
             var go = scene.GameObjectOf(behaviour);
             if (go?.Transform is { } transform && StrippedAncestor(scene, transform) is { } ancestor)
                 problems.Add($"{path}:{behaviour.Line}: the {script} of GameObject '{go.Name}', which lies under a GameObject of " +
-                    $"{Instance(scene, project, ancestor)} that places it");
+                    $"{Instance(scene, project, ancestor, Contents)} that places it");
         }
 
         if (problems.Count > 0)
@@ -72,24 +74,39 @@ public static class PrefabInstances
                 "prefab's are in its own file: unpack each instance in Unity (in the Hierarchy, right-click it, Prefab > Unpack Completely) to run the scene here");
     }
 
-    /// <summary>Adds to <paramref name="held"/> each fluid component of the prefab at <paramref name="prefab"/> and of the
-    /// prefabs nested in it (named with their file); returns why a file could not be read, or null.</summary>
-    static string? FluidComponentsIn(UnityProject project, string prefab, IReadOnlyDictionary<string, string> scripts,
-        List<string> held, HashSet<string> visited, bool nested)
+    /// <summary>What the reader needs of one prefab: the fluid's components in it and in the prefabs nested in it, why it
+    /// could not be read (or null), and its root GameObject, whose name an instance's m_Name override replaces.</summary>
+    sealed record PrefabContents(List<string> Held, string? Unreadable, long RootObject);
+
+    static PrefabContents Read(UnityProject project, string prefab, IReadOnlyDictionary<string, string> scripts)
     {
+        var held = new List<string>();
+        string? unreadable = FluidComponentsIn(project, prefab, scripts, held, new HashSet<string>(StringComparer.Ordinal), nested: false, out long root);
+        return new PrefabContents(held, unreadable, root);
+    }
+
+    /// <summary>Adds to <paramref name="held"/> each fluid component of the prefab at <paramref name="prefab"/> and of the
+    /// prefabs nested in it (named with their file); returns why a file could not be read, or null.
+    /// <paramref name="rootObject"/> is the fileID of the prefab's root GameObject, 0 where it has none of its own (a
+    /// variant's root is its base's).</summary>
+    static string? FluidComponentsIn(UnityProject project, string prefab, IReadOnlyDictionary<string, string> scripts,
+        List<string> held, HashSet<string> visited, bool nested, out long rootObject)
+    {
+        rootObject = 0;
         // A model (.fbx) stands in as a prefab too, and holds no scripts.
         if (!prefab.EndsWith(".prefab", StringComparison.OrdinalIgnoreCase) || !visited.Add(prefab)) return null;
-        UnityYamlFile file;
-        try { file = UnityYamlFile.Load(project.FullPath(prefab)); }
+        UnityScene file;
+        try { file = UnityScene.Load(project.FullPath(prefab)); }
         catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException) { return e.Message; }
 
-        foreach (var behaviour in file.OfClass(UnityScene.MonoBehaviourClassId))
+        rootObject = file.RootTransforms.FirstOrDefault()?.GameObject?.FileId ?? 0;
+        foreach (var behaviour in file.Behaviours())
             if (behaviour.ScriptGuid is { } guid && scripts.TryGetValue(guid, out string? script))
-                held.Add($"a {script} on its GameObject '{file.Find(behaviour.GameObject)?.Root.GetString("m_Name", "") ?? ""}'" +
+                held.Add($"a {script} on its GameObject '{file.File.Find(behaviour.GameObject)?.Root.GetString("m_Name", "") ?? ""}'" +
                     (nested ? $" (in {prefab}, nested in it)" : ""));
-        foreach (var instance in file.OfClass(PrefabInstanceClassId))
+        foreach (var instance in file.File.OfClass(PrefabInstanceClassId))
             if (project.AssetPathOf(instance.Root.GetReference("m_SourcePrefab")) is { } inner &&
-                FluidComponentsIn(project, inner, scripts, held, visited, nested: true) is { } unreadable)
+                FluidComponentsIn(project, inner, scripts, held, visited, nested: true, out _) is { } unreadable)
                 return unreadable;
         return null;
     }
@@ -105,18 +122,22 @@ public static class PrefabInstances
     }
 
     /// <summary>The prefab instance a stripped document belongs to, named with its prefab.</summary>
-    static string Instance(UnityScene scene, UnityProject project, UnityDocument stripped)
+    static string Instance(UnityScene scene, UnityProject project, UnityDocument stripped, Func<string, PrefabContents> contents)
     {
         var instance = scene.File.Find(stripped.Root.GetReference("m_PrefabInstance"));
-        string? prefab = instance == null ? null : project.AssetPathOf(instance.Root.GetReference("m_SourcePrefab"));
-        return instance == null ? "a prefab instance" : Named(instance, prefab ?? "an unknown prefab");
+        if (instance == null) return "a prefab instance";
+        string? prefab = project.AssetPathOf(instance.Root.GetReference("m_SourcePrefab"));
+        return prefab == null ? Named(instance, "an unknown prefab", null) : Named(instance, prefab, contents(prefab));
     }
 
-    /// <summary>"PrefabInstance 'Oil' of Assets/Prefabs/Oil.prefab": the name the instance overrides, else its prefab's.</summary>
-    static string Named(UnityDocument instance, string prefab)
+    /// <summary>"PrefabInstance 'Oil' of Assets/Prefabs/Oil.prefab": the name the instance gives its root GameObject (an
+    /// m_Name override of another of its GameObjects names that one, not the instance), else its prefab's.</summary>
+    static string Named(UnityDocument instance, string prefab, PrefabContents? contents)
     {
-        string? name = instance.Root["m_Modification"]?["m_Modifications"]?.Items
-            .LastOrDefault(m => m.GetString("propertyPath", "") == "m_Name")?.GetString("value", "");
+        string? guid = instance.Root.GetReference("m_SourcePrefab")?.Guid;
+        string? name = contents is { RootObject: not 0 } ? instance.Root["m_Modification"]?["m_Modifications"]?.Items
+            .LastOrDefault(m => m.GetString("propertyPath", "") == "m_Name" && m.GetReference("target") is { } target &&
+                target.FileId == contents.RootObject && target.Guid == guid)?.GetString("value", "") : null;
         return $"PrefabInstance '{name ?? Path.GetFileNameWithoutExtension(prefab)}' of {prefab}";
     }
 }

@@ -91,6 +91,24 @@ namespace SphFluid.Tests.Runner
                 "Assets/Prefabs/Rig.prefab holds a SpawnBox on its GameObject 'Oil' (in Assets/Prefabs/Oil.prefab, nested in it)"));
         }
 
+        /// <summary>Renaming a GameObject inside an instance writes an m_Name override too, after the root's: the instance is
+        /// named by the override of its prefab's root GameObject, not by the last one.</summary>
+        [Test]
+        public void AnInstanceIsNamedByItsRootsNameNotAChildsRename()
+        {
+            var project = new PrefabProject();
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            const long OtherObject = 4242;
+            string childRename = $"    - target: {{fileID: {OtherObject}, guid: {oil}, type: 3}}\n      propertyPath: m_Name\n" +
+                "      value: Handle\n      objectReference: {fileID: 0}\n    m_RemovedComponents: []";
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil Left", OilObject, OilTransform).Replace("    m_RemovedComponents: []", childRename));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("--- !u!1001 &700")}: " +
+                "PrefabInstance 'Oil Left' of Assets/Prefabs/Oil.prefab holds a SpawnBox on its GameObject 'Oil'"));
+        }
+
         /// <summary>A prefab file that cannot be read (emptied here) may hold the fluid's components: refused, not guessed.</summary>
         [Test]
         public void AnUnreadablePrefabIsRefusedForWhatItMayHold()
