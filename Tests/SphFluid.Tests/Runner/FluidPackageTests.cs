@@ -1,7 +1,6 @@
 using System;
 using System.IO;
 using System.Linq;
-using System.Runtime.InteropServices;
 using NUnit.Framework;
 using SphFluid.Headless.Scenes;
 using SphFluid.UnityFiles.Assets;
@@ -96,18 +95,13 @@ namespace SphFluid.Tests.Runner
             Assert.That(e.Message, Does.StartWith($"{manifest}: cannot be read as the {FluidPackage.Name} package's manifest: "));
         }
 
-        [DllImport("libc", SetLastError = true)]
-        static extern int mkfifo(string path, uint mode);
-
         /// <summary>A pipe blocks whoever opens it: the manifest is judged before it is opened, as a scene is.</summary>
         [Test]
         public void AManifestThatIsAPipeIsRefusedWithoutOpeningIt()
         {
             string root = ProjectWithTheCachedPackage();
             string manifest = Path.Combine(root, "Library", "PackageCache", CachedName, "package.json");
-            File.Delete(manifest);
-            if (!RuntimeInformation.IsOSPlatform(OSPlatform.Linux) || mkfifo(manifest, Convert.ToUInt32("600", 8)) != 0)
-                Assert.Ignore("mkfifo is not available here");
+            RunnerPaths.Pipe(manifest);
             string scene = Path.Combine(root, "Assets", "FluidDemo", "Scenes", "OilAndWater.unity");
 
             var e = Assert.Throws<SceneException>(() => SceneLoader.Load(scene, new UnityProject(root)))!;

@@ -1,7 +1,6 @@
 using System;
 using System.IO;
 using System.Linq;
-using System.Runtime.InteropServices;
 using System.Threading.Tasks;
 using NUnit.Framework;
 using SphFluid.Headless.Scenes;
@@ -19,16 +18,6 @@ namespace SphFluid.Tests.Runner
     {
         static readonly TimeSpan Patience = TimeSpan.FromSeconds(60);
 
-        [DllImport("libc", SetLastError = true)]
-        static extern int mkfifo(string path, uint mode);
-
-        static void Pipe(string path)
-        {
-            File.Delete(path);
-            if (!RuntimeInformation.IsOSPlatform(OSPlatform.Linux) || mkfifo(path, Convert.ToUInt32("600", 8)) != 0)
-                Assert.Ignore("mkfifo is not available here");
-        }
-
         /// <summary>Loads the copy's OilAndWater on another thread; fails if it has not ended within <see cref="Patience"/>.</summary>
         static Task<LoadedScene> LoadWithin(string root)
         {
@@ -43,7 +32,7 @@ namespace SphFluid.Tests.Runner
             string root = RunnerPaths.ProjectCopy("pipe");
             string asset = Path.Combine(root, "Assets", "FluidDemo", "Notes.txt");
             File.WriteAllText(asset, "notes\n");
-            Pipe(asset + ".meta");
+            RunnerPaths.Pipe(asset + ".meta");
 
             var scene = LoadWithin(root).Result;
 
@@ -56,7 +45,7 @@ namespace SphFluid.Tests.Runner
         public void APipeInPlaceOfAScriptTheSceneUsesIsRefusedNotWaitedOn()
         {
             string root = RunnerPaths.ProjectCopy("pipe");
-            Pipe(Path.Combine(root, "Assets", "FluidDemo", "Scripts", "OrbitCamera.cs"));
+            RunnerPaths.Pipe(Path.Combine(root, "Assets", "FluidDemo", "Scripts", "OrbitCamera.cs"));
 
             var load = LoadWithin(root);
 

@@ -1,5 +1,7 @@
 using System;
 using System.IO;
+using System.Runtime.InteropServices;
+using NUnit.Framework;
 using SphFluid.UnityFiles.Assets;
 
 namespace SphFluid.Tests.Runner
@@ -25,6 +27,19 @@ namespace SphFluid.Tests.Runner
             string dir = Path.Combine(ScratchRoot, purpose + "-" + Guid.NewGuid().ToString("N").Substring(0, 8));
             Directory.CreateDirectory(dir);
             return dir;
+        }
+
+        [DllImport("libc", SetLastError = true)]
+        static extern int mkfifo(string path, uint mode);
+
+        /// <summary>A named pipe at <paramref name="path"/>, in place of any file there: whoever opens it blocks until a writer
+        /// comes, so it is how the tests show that a file is judged before it is opened. The test is ignored where there is
+        /// no mkfifo.</summary>
+        public static void Pipe(string path)
+        {
+            File.Delete(path);
+            if (!RuntimeInformation.IsOSPlatform(OSPlatform.Linux) || mkfifo(path, Convert.ToUInt32("600", 8)) != 0)
+                Assert.Ignore("mkfifo is not available here");
         }
 
         /// <summary>Removes every scratch folder of this test process (the links among them, not what they lead to), and
