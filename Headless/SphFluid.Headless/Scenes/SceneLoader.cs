@@ -51,7 +51,7 @@ public static class SceneLoader
         if (problems.Count > 0)
             throw new SceneException($"{scenePath}: the integrity check refuses the scene ({problems.Count} problem(s)):\n  " +
                 string.Join("\n  ", problems.Select(p => $"{scenePath}{(p.Line > 0 ? ":" + p.Line.ToString(CultureInfo.InvariantCulture) : "")}: {p.Message}")));
-        PrefabInstances.RefuseFluidIn(scenePath, scene, project, package);
+        scene = PrefabInstances.Build(scenePath, scene, project, package);
         return new Reader(scenePath, scene, project, package).Read(change);
     }
 

@@ -63,6 +63,14 @@ public sealed class UnityYamlNode
     public static UnityYamlNode Mapping(int line = 0) => new(UnityYamlNodeKind.Mapping, null, false, line);
     public static UnityYamlNode Sequence(int line = 0) => new(UnityYamlNodeKind.Sequence, null, false, line);
 
+    /// <summary><c>{fileID: N}</c>: a reference to object N of the same file (0: none).</summary>
+    public static UnityYamlNode LocalReference(long fileId, int line = 0)
+    {
+        var node = Mapping(line);
+        node.TryAdd("fileID", Scalar(fileId.ToString(CultureInfo.InvariantCulture), line: line));
+        return node;
+    }
+
     internal bool TryAdd(string key, UnityYamlNode value)
     {
         if (!IsMapping) throw new InvalidOperationException($"a {Kind} node (line {Line}) holds no keys");
@@ -232,6 +240,24 @@ public sealed class UnityYamlNode
             foreach (var x in e.Value.References(prefix.Length == 0 ? e.Key : prefix + "." + e.Key)) yield return x;
         for (int i = 0; i < Items.Count; i++)
             foreach (var x in Items[i].References(prefix + "[" + i.ToString(CultureInfo.InvariantCulture) + "]")) yield return x;
+    }
+
+    /// <summary>
+    /// A deep copy of this subtree whose every node stands at <paramref name="line"/>, unless <paramref name="replace"/>,
+    /// asked for each node with its property path as Unity writes one in a prefab override (<c>block.size.x</c>, a
+    /// sequence's item <c>list.Array.data[2]</c>), returns a node to take its place (used as it is, not copied).
+    /// </summary>
+    public UnityYamlNode CopyAt(int line, Func<string, UnityYamlNode, UnityYamlNode?> replace) => CopyAt(line, replace, "");
+
+    UnityYamlNode CopyAt(int line, Func<string, UnityYamlNode, UnityYamlNode?> replace, string path)
+    {
+        if (replace(path, this) is { } replacement) return replacement;
+        var copy = new UnityYamlNode(Kind, Value, IsQuoted, line);
+        foreach (var e in Entries)
+            copy.TryAdd(e.Key, e.Value.CopyAt(line, replace, path.Length == 0 ? e.Key : path + "." + e.Key));
+        for (int i = 0; i < Items.Count; i++)
+            copy.Add(Items[i].CopyAt(line, replace, path + ".Array.data[" + i.ToString(CultureInfo.InvariantCulture) + "]"));
+        return copy;
     }
 
     public static bool TryParseNumber(string? text, out double value)

@@ -129,5 +129,31 @@ namespace SphFluid.Tests.Integrity
             Assert.That(scene.FindGameObject("Container").OrFail("Container").Children.Select(c => c.Name), Is.EqualTo(new[] { "Spawn" }));
             Assert.That(scene.RootTransforms.Select(t => t.FileId), Is.EqualTo(new[] { 11L }));
         }
+
+        /// <summary>A prefab override names a field by the path Unity writes (a sequence's items as Array.data[i]); a copy
+        /// asks for each node by that path, and stands wholly at the line it is given.</summary>
+        [Test]
+        public void A_copy_names_each_node_by_its_override_path_and_stands_at_one_line()
+        {
+            var root = UnityYamlFile.Parse(Header +
+                "--- !u!114 &5\nMonoBehaviour:\n  m_GameObject: {fileID: 4}\n  spawn:\n    size: {x: 1, y: 2}\n    seeds:\n    - 7\n    - 8\n", "a.prefab")
+                .Documents[0].Root;
+            var asked = new System.Collections.Generic.List<string>();
+
+            var copy = root.CopyAt(40, (path, node) =>
+            {
+                asked.Add(path);
+                if (path == "spawn.seeds.Array.data[1]") return UnityYamlNode.Scalar("9", line: 41);
+                return node.IsReference ? UnityYamlNode.LocalReference(14, 40) : null;
+            });
+
+            Assert.That(asked, Is.EqualTo(new[] { "", "m_GameObject", "spawn", "spawn.size", "spawn.size.x", "spawn.size.y",
+                "spawn.seeds", "spawn.seeds.Array.data[0]", "spawn.seeds.Array.data[1]" }));
+            Assert.That(copy.GetReference("m_GameObject")?.FileId, Is.EqualTo(14L));
+            Assert.That(copy.At("spawn.seeds[1]")?.Value, Is.EqualTo("9"));
+            Assert.That(copy.At("spawn.seeds[1]")?.Line, Is.EqualTo(41));
+            Assert.That(copy.At("spawn.size.y")?.Line, Is.EqualTo(40));
+            Assert.That(root.At("spawn.seeds[1]")?.Value, Is.EqualTo("8"), "the original is left as it was");
+        }
     }
 }

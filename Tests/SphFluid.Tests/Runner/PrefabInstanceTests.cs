@@ -4,91 +4,198 @@ using System.Linq;
 using System.Text.RegularExpressions;
 using NUnit.Framework;
 using SphFluid.Headless.Scenes;
+using SphFluid.Simulation;
 using SphFluid.UnityFiles.Assets;
 
 namespace SphFluid.Tests.Runner
 {
     /// <summary>
-    /// OilAndWater with its Oil box made a prefab ran as water alone: the reader reads the GameObjects a scene file holds,
-    /// and a prefab instance's are in its .prefab file. Each test copies the project, makes one part of the fluid a prefab
-    /// as Unity writes it (a PrefabInstance, stripped documents for what the scene refers to), and expects the refusal.
+    /// OilAndWater with its Oil box made a prefab ran as water alone: the reader read the GameObjects a scene file holds,
+    /// and a prefab instance's are in its .prefab file. Each test copies the project and makes one part of the fluid a
+    /// prefab as Unity writes it (a PrefabInstance with its overrides, stripped stand-ins for what the scene refers to),
+    /// then expects the instance built as Unity builds it, or, for a prefab that nests others, the refusal.
     /// </summary>
     public sealed class PrefabInstanceTests
     {
-        const string Unpack = "unpack each instance in Unity (in the Hierarchy, right-click it, Prefab > Unpack Completely)";
+        const string Unpack = "unpack each other instance in Unity (in the Hierarchy, right-click it, Prefab > Unpack Completely)";
 
-        // OilAndWater's Oil box: its GameObject, Transform and SpawnBox.
+        // OilAndWater's Oil box: its GameObject, Transform and SpawnBox, at (0.15, 0.1, 0), 0.3 x 0.2 x 0.12 m, 900 kg/m^3.
         const long OilObject = 305626396, OilTransform = 518734963, OilSpawnBox = 287989891;
 
+        static FluidBlock Oil(LoadedScene scene) => scene.Description.SpawnBoxes.Single(b => b.Phase.Name == "Oil");
+
         [Test]
-        public void ASpawnBoxInAPrefabIsRefusedNamingTheInstanceAndItsPrefab()
+        public void ASpawnBoxInAPrefabIsBuiltWithTheInstancesOverrides()
         {
             var project = new PrefabProject();
             string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
-            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform));
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform,
+                PrefabProject.Override(OilTransform, oil, "m_LocalPosition.y", "0.05"),
+                PrefabProject.Override(OilTransform, oil, "m_LocalScale.y", "0.1"),
+                PrefabProject.Override(OilSpawnBox, oil, "spawn.Phase.RestDensity", "850")));
 
-            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+            var scene = SceneLoader.Load(project.ScenePath, project.Project);
 
-            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("--- !u!1001 &700")}: " +
-                "PrefabInstance 'Oil' of Assets/Prefabs/Oil.prefab holds a SpawnBox on its GameObject 'Oil'"));
-            Assert.That(e.Message, Does.Contain(Unpack));
+            Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water", "Oil" }));
+            Assert.That(Oil(scene).Center.Y, Is.EqualTo(0.05f).Within(1e-6f), "the overridden position");
+            Assert.That(Oil(scene).Center.X, Is.EqualTo(0.15f).Within(1e-6f), "the prefab's position");
+            Assert.That(Oil(scene).Size.Y, Is.EqualTo(0.1f).Within(1e-6f), "the overridden scale");
+            Assert.That(Oil(scene).Size.X, Is.EqualTo(0.3f).Within(1e-6f), "the prefab's scale");
+            Assert.That(Oil(scene).Phase.RestDensity, Is.EqualTo(850f), "the overridden rest density");
+            Assert.That(Oil(scene).Phase.Viscosity, Is.EqualTo(0.1f), "the prefab's viscosity");
         }
 
+        /// <summary>Each instance's objects get fileIDs of their own: two instances of one prefab are two boxes.</summary>
         [Test]
-        public void ASpawnBoxAddedToAPrefabInstanceIsRefused()
+        public void TwoInstancesOfOnePrefabAreTwoBoxes()
+        {
+            var project = new PrefabProject();
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform) +
+                PrefabProject.Instance(800, oil, "Oil (1)", OilObject, OilTransform,
+                    PrefabProject.Override(OilTransform, oil, "m_LocalPosition.y", "0.3"), PrefabProject.Override(OilTransform, oil, "m_LocalScale.y", "0.15")));
+            project.Edit("  - {fileID: 701}\n", "  - {fileID: 701}\n  - {fileID: 801}\n");
+
+            var scene = SceneLoader.Load(project.ScenePath, project.Project);
+
+            var boxes = scene.Description.SpawnBoxes.Where(b => b.Phase.Name == "Oil").OrderBy(b => b.Name, StringComparer.Ordinal).ToArray();
+            Assert.That(boxes.Select(b => b.Name).ToArray(), Is.EqualTo(new[] { "Oil", "Oil (1)" }));
+            Assert.That(boxes[0].Center.Y, Is.EqualTo(0.1f).Within(1e-6f));
+            Assert.That(boxes[1].Center.Y, Is.EqualTo(0.3f).Within(1e-6f));
+        }
+
+        /// <summary>A SpawnBox added to an instance's GameObject lives in the scene, on the stand-in of the prefab's GameObject.</summary>
+        [Test]
+        public void ASpawnBoxAddedToAPrefabInstanceIsBuiltOnItsGameObject()
         {
             var project = new PrefabProject();
             string bare = project.AddPrefab("Bare", project.Document(OilObject).Replace($"  - component: {{fileID: {OilSpawnBox}}}\n", "") +
                 project.Document(OilTransform));
             string added = project.Document(OilSpawnBox).Replace($"m_GameObject: {{fileID: {OilObject}}}", "m_GameObject: {fileID: 702}");
-            project.ReplaceOilWith(PrefabProject.Instance(700, bare, "Oil", OilObject, OilTransform).Replace("m_AddedComponents: []",
+            project.ReplaceOilWith(PrefabProject.Instance(700, bare, "Oil", OilObject, OilTransform,
+                    PrefabProject.Override(OilTransform, bare, "m_LocalPosition.z", "0.01"), PrefabProject.Override(OilTransform, bare, "m_LocalScale.z", "0.08"))
+                    .Replace("m_AddedComponents: []",
                     $"m_AddedComponents:\n    - targetCorrespondingSourceObject: {{fileID: {OilObject}, guid: {bare}, type: 3}}\n" +
                     $"      insertIndex: -1\n      addedObject: {{fileID: {OilSpawnBox}}}") + added +
                 PrefabProject.Stripped(1, 702, OilObject, bare, 700));
 
-            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+            var scene = SceneLoader.Load(project.ScenePath, project.Project);
 
-            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf($"--- !u!114 &{OilSpawnBox}")}: " +
-                "a SpawnBox added to a GameObject of PrefabInstance 'Oil' of Assets/Prefabs/Bare.prefab"));
+            Assert.That(Oil(scene).Name, Is.EqualTo("Oil"));
+            Assert.That(Oil(scene).Center.Z, Is.EqualTo(0.01f).Within(1e-6f), "placed by the instance's Transform");
         }
 
+        /// <summary>A box the scene holds under an instance's GameObject is placed by the prefab's Transform and the
+        /// instance's overrides of it.</summary>
         [Test]
-        public void ASpawnBoxUnderAPrefabInstanceIsRefused()
+        public void ASpawnBoxUnderAPrefabInstanceIsPlacedByIt()
         {
-            // The Oil box stays in the scene, moved under an instance of a rig, which places it.
+            // The Oil box stays in the scene, moved under an instance of a rig at the origin, raised 0.05 m.
             var project = new PrefabProject();
             string rig = project.AddPrefab("Rig", project.Document(OilObject).Replace($"  - component: {{fileID: {OilSpawnBox}}}\n", "")
-                .Replace("m_Name: Oil", "m_Name: Rig") + project.Document(OilTransform));
+                .Replace("m_Name: Oil", "m_Name: Rig") + project.Document(OilTransform)
+                .Replace("m_LocalPosition: {x: 0.15, y: 0.1, z: 0}", "m_LocalPosition: {x: 0, y: 0, z: 0}")
+                .Replace("m_LocalScale: {x: 0.3, y: 0.2, z: 0.12}", "m_LocalScale: {x: 1, y: 1, z: 1}"));
             project.Edit(project.Document(OilTransform), project.Document(OilTransform).Replace("m_Father: {fileID: 0}", "m_Father: {fileID: 701}"));
             project.Edit($"  - {{fileID: {OilTransform}}}\n", "  - {fileID: 701}\n");
-            project.Edit("--- !u!1660057539", PrefabProject.Instance(700, rig, "Rig", OilObject, OilTransform).Replace("m_AddedGameObjects: []",
+            project.Edit("--- !u!1660057539", PrefabProject.Instance(700, rig, "Rig", OilObject, OilTransform,
+                    PrefabProject.Override(OilTransform, rig, "m_LocalPosition.y", "0.05")).Replace("m_AddedGameObjects: []",
                 $"m_AddedGameObjects:\n    - targetCorrespondingSourceObject: {{fileID: {OilTransform}, guid: {rig}, type: 3}}\n" +
                 $"      insertIndex: -1\n      addedObject: {{fileID: {OilTransform}}}") + "--- !u!1660057539");
 
-            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+            var scene = SceneLoader.Load(project.ScenePath, project.Project);
 
-            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf($"--- !u!114 &{OilSpawnBox}")}: " +
-                "the SpawnBox of GameObject 'Oil', which lies under a GameObject of PrefabInstance 'Rig' of Assets/Prefabs/Rig.prefab that places it"));
+            Assert.That(Oil(scene).Center.Y, Is.EqualTo(0.15f).Within(1e-6f), "0.05 m of the rig's and 0.1 m of its own");
+            Assert.That(Oil(scene).Center.X, Is.EqualTo(0.15f).Within(1e-6f));
         }
 
+        /// <summary>An override is a field's new value: one out of range is refused at the override's line, as a value in
+        /// the scene itself is at its own.</summary>
         [Test]
-        public void APrefabNestedInAnotherIsLookedInto()
+        public void AnOverriddenValueOutOfRangeIsRefusedAtTheOverridesLine()
         {
             var project = new PrefabProject();
             string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
-            // The rig's own root, with the oil prefab's instance as its one child.
-            string rig = project.AddPrefab("Rig",
-                project.Document(OilObject).Replace($"  - component: {{fileID: {OilSpawnBox}}}\n", "").Replace("m_Name: Oil", "m_Name: Rig")
-                    .Replace($"&{OilObject}", "&11").Replace($"{{fileID: {OilTransform}}}", "{fileID: 12}") +
-                project.Document(OilTransform).Replace($"&{OilTransform}", "&12").Replace($"{{fileID: {OilObject}}}", "{fileID: 11}")
-                    .Replace("m_Children: []", "m_Children:\n  - {fileID: 701}") +
-                PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform).Replace("m_TransformParent: {fileID: 0}", "m_TransformParent: {fileID: 12}"));
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform,
+                PrefabProject.Override(OilSpawnBox, oil, "spawn.Phase.RestDensity", "-5")));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("      value: -5")}: GameObject 'Oil', SpawnBox.spawn.Phase.RestDensity"));
+        }
+
+        /// <summary>Unity keeps an override of a field the component no longer has, and ignores it; on the fluid's own
+        /// components the reader refuses it, as it refuses a field it does not know in the scene.</summary>
+        [Test]
+        public void AnOverrideOfAFieldTheSpawnBoxLacksIsRefusedAtItsLine()
+        {
+            var project = new PrefabProject();
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform,
+                PrefabProject.Override(OilSpawnBox, oil, "spawn.Phase.Density", "850")));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("      propertyPath: spawn.Phase.Density")}: PrefabInstance 'Oil' of " +
+                "Assets/Prefabs/Oil.prefab overrides SpawnBox.spawn.Phase.Density, which is no field of the SpawnBox in Assets/Prefabs/Oil.prefab"));
+            Assert.That(e.Message, Does.Contain("Unity keeps such unused overrides and ignores them"));
+        }
+
+        [Test]
+        public void AComponentTheInstanceRemovesIsLeftOut()
+        {
+            var project = new PrefabProject();
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform)
+                .Replace("m_RemovedComponents: []", $"m_RemovedComponents:\n    - {{fileID: {OilSpawnBox}, guid: {oil}, type: 3}}"));
+
+            var scene = SceneLoader.Load(project.ScenePath, project.Project);
+
+            Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water" }));
+        }
+
+        /// <summary>The Oil box as the child of a rig at the origin, in one prefab: the instance moves the rig, and the
+        /// box with it.</summary>
+        [Test]
+        public void AChildInAPrefabIsPlacedByTheInstancesRoot()
+        {
+            var project = new PrefabProject();
+            string pair = PairPrefab(project);
+            project.ReplaceOilWith(PrefabProject.Instance(700, pair, "Pair", 11, 12, PrefabProject.Override(12, pair, "m_LocalPosition.y", "0.05")));
+
+            var scene = SceneLoader.Load(project.ScenePath, project.Project);
+
+            Assert.That(Oil(scene).Center.Y, Is.EqualTo(0.15f).Within(1e-6f), "0.05 m of the rig's and 0.1 m of its own");
+        }
+
+        [Test]
+        public void AGameObjectTheInstanceRemovesIsLeftOutWithItsComponents()
+        {
+            var project = new PrefabProject();
+            string pair = PairPrefab(project);
+            project.ReplaceOilWith(PrefabProject.Instance(700, pair, "Pair", 11, 12)
+                .Replace("m_RemovedGameObjects: []", $"m_RemovedGameObjects:\n    - {{fileID: {OilObject}, guid: {pair}, type: 3}}"));
+
+            var scene = SceneLoader.Load(project.ScenePath, project.Project);
+
+            Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water" }));
+        }
+
+        /// <summary>A prefab that nests another is built from a chain of prefabs, which the reader does not do: one holding
+        /// the fluid's components is refused, naming the instance, what it holds and where.</summary>
+        [Test]
+        public void APrefabNestingAnotherThatHoldsASpawnBoxIsRefused()
+        {
+            var project = new PrefabProject();
+            string rig = NestedRig(project);
             project.ReplaceOilWith(PrefabProject.Instance(800, rig, "Rig", 11, 12));
 
             var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
 
             Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("--- !u!1001 &800")}: PrefabInstance 'Rig' of " +
-                "Assets/Prefabs/Rig.prefab holds a SpawnBox on its GameObject 'Oil' (in Assets/Prefabs/Oil.prefab, nested in it)"));
+                "Assets/Prefabs/Rig.prefab holds a SpawnBox on its GameObject 'Oil' (in Assets/Prefabs/Oil.prefab, nested in it), " +
+                "and nests other prefabs or is a variant, which the reader does not build"));
+            Assert.That(e.Message, Does.Contain(Unpack));
         }
 
         /// <summary>Renaming a GameObject inside an instance writes an m_Name override too, after the root's: the instance is
@@ -97,16 +204,12 @@ namespace SphFluid.Tests.Runner
         public void AnInstanceIsNamedByItsRootsNameNotAChildsRename()
         {
             var project = new PrefabProject();
-            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
-            const long OtherObject = 4242;
-            string childRename = $"    - target: {{fileID: {OtherObject}, guid: {oil}, type: 3}}\n      propertyPath: m_Name\n" +
-                "      value: Handle\n      objectReference: {fileID: 0}\n    m_RemovedComponents: []";
-            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil Left", OilObject, OilTransform).Replace("    m_RemovedComponents: []", childRename));
+            string rig = NestedRig(project);
+            project.ReplaceOilWith(PrefabProject.Instance(800, rig, "Rig Left", 11, 12, PrefabProject.Override(4242, rig, "m_Name", "Handle")));
 
             var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
 
-            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("--- !u!1001 &700")}: " +
-                "PrefabInstance 'Oil Left' of Assets/Prefabs/Oil.prefab holds a SpawnBox on its GameObject 'Oil'"));
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("--- !u!1001 &800")}: PrefabInstance 'Rig Left' of Assets/Prefabs/Rig.prefab holds"));
         }
 
         /// <summary>A prefab file that cannot be read (emptied here) may hold the fluid's components: refused, not guessed.</summary>
@@ -139,6 +242,30 @@ namespace SphFluid.Tests.Runner
             var scene = SceneLoader.Load(project.ScenePath, project.Project);
 
             Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water", "Oil" }));
+        }
+
+        /// <summary>Pair.prefab: a rig at the origin (&amp;11, Transform &amp;12) with the Oil box as its one child.</summary>
+        static string PairPrefab(PrefabProject project) =>
+            project.AddPrefab("Pair", RigRoot(project, child: OilTransform) +
+                project.Document(OilObject) + project.Document(OilTransform).Replace("m_Father: {fileID: 0}", "m_Father: {fileID: 12}") +
+                project.Document(OilSpawnBox));
+
+        /// <summary>A rig's root GameObject &amp;11 and Transform &amp;12 at the origin, unscaled, with one child Transform.</summary>
+        static string RigRoot(PrefabProject project, long child) =>
+            project.Document(OilObject).Replace($"  - component: {{fileID: {OilSpawnBox}}}\n", "").Replace("m_Name: Oil", "m_Name: Rig")
+                .Replace($"&{OilObject}", "&11").Replace($"{{fileID: {OilTransform}}}", "{fileID: 12}") +
+            project.Document(OilTransform).Replace($"&{OilTransform}", "&12").Replace($"{{fileID: {OilObject}}}", "{fileID: 11}")
+                .Replace("m_LocalPosition: {x: 0.15, y: 0.1, z: 0}", "m_LocalPosition: {x: 0, y: 0, z: 0}")
+                .Replace("m_LocalScale: {x: 0.3, y: 0.2, z: 0.12}", "m_LocalScale: {x: 1, y: 1, z: 1}")
+                .Replace("m_Children: []", $"m_Children:\n  - {{fileID: {child}}}");
+
+        /// <summary>Rig.prefab: its own root (&amp;11, Transform &amp;12) with an instance of Oil.prefab, which holds the Oil
+        /// box, as its one child.</summary>
+        static string NestedRig(PrefabProject project)
+        {
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            return project.AddPrefab("Rig", RigRoot(project, child: 701) +
+                PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform).Replace("m_TransformParent: {fileID: 0}", "m_TransformParent: {fileID: 12}"));
         }
 
         /// <summary>A copy of the repository's Unity project in a scratch folder, whose OilAndWater scene a test edits.</summary>
@@ -196,16 +323,23 @@ namespace SphFluid.Tests.Runner
                 return guid;
             }
 
-            /// <summary>A PrefabInstance &amp;<paramref name="id"/> of the prefab, named <paramref name="name"/>, and the
-            /// stripped Transform &amp;(id + 1) of its root, as Unity writes them.</summary>
-            public static string Instance(long id, string prefabGuid, string name, long rootObject, long rootTransform) =>
+            /// <summary>A PrefabInstance &amp;<paramref name="id"/> of the prefab, named <paramref name="name"/>, with
+            /// <paramref name="overrides"/> after its name, and the stripped Transform &amp;(id + 1) of its root, as Unity
+            /// writes them.</summary>
+            public static string Instance(long id, string prefabGuid, string name, long rootObject, long rootTransform, params string[] overrides) =>
                 $"--- !u!1001 &{id}\nPrefabInstance:\n  m_ObjectHideFlags: 0\n  serializedVersion: 2\n  m_Modification:\n" +
                 "    serializedVersion: 3\n    m_TransformParent: {fileID: 0}\n    m_Modifications:\n" +
-                $"    - target: {{fileID: {rootObject}, guid: {prefabGuid}, type: 3}}\n      propertyPath: m_Name\n      value: {name}\n" +
-                "      objectReference: {fileID: 0}\n    m_RemovedComponents: []\n    m_RemovedGameObjects: []\n" +
+                Override(rootObject, prefabGuid, "m_Name", name) + string.Concat(overrides) +
+                "    m_RemovedComponents: []\n    m_RemovedGameObjects: []\n" +
                 "    m_AddedGameObjects: []\n    m_AddedComponents: []\n" +
                 $"  m_SourcePrefab: {{fileID: 100100000, guid: {prefabGuid}, type: 3}}\n" +
                 Stripped(4, id + 1, rootTransform, prefabGuid, id);
+
+            /// <summary>One entry of an instance's m_Modifications: the field at <paramref name="propertyPath"/> of the
+            /// prefab's object &amp;<paramref name="target"/> takes <paramref name="value"/>.</summary>
+            public static string Override(long target, string prefabGuid, string propertyPath, string value) =>
+                $"    - target: {{fileID: {target}, guid: {prefabGuid}, type: 3}}\n      propertyPath: {propertyPath}\n      value: {value}\n" +
+                "      objectReference: {fileID: 0}\n";
 
             public static string Stripped(int classId, long id, long source, string prefabGuid, long instance) =>
                 $"--- !u!{classId} &{id} stripped\n{(classId == 1 ? "GameObject" : "Transform")}:\n" +
