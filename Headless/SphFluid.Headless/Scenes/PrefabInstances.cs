@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using SphFluid.UnityFiles.Assets;
+using SphFluid.UnityFiles.Integrity;
 using SphFluid.UnityFiles.Scenes;
 using SphFluid.UnityFiles.Yaml;
 
@@ -51,10 +52,7 @@ public static class PrefabInstances
             return contents;
         }
 
-        var taken = new HashSet<long>(scene.File.Documents.Select(d => d.FileId));
-        var standIns = scene.File.Documents.Where(d => d.IsStripped).ToLookup(d => d.Root.GetReference("m_PrefabInstance")?.FileId ?? 0);
-        var builtInto = new HashSet<long>(); // the instances built and their stand-ins, which the built objects replace
-        var built = new List<UnityDocument>();
+        var toBuild = new List<(UnityDocument Instance, Prefab Prefab)>();
         foreach (var instance in scene.File.OfClass(PrefabInstanceClassId))
         {
             string? prefabPath = project.AssetPathOf(instance.Root.GetReference("m_SourcePrefab"));
@@ -63,10 +61,25 @@ public static class PrefabInstances
             if (prefab.Unreadable != null)
                 problems.Add($"{path}:{instance.Line}: {Named(instance, prefab)}: its prefab cannot be read ({prefab.Unreadable}), so whether it holds the fluid's components cannot be told");
             else if (prefab.File != null)
-                built.AddRange(Instantiate(path, standIns, instance, prefab, scripts, taken, builtInto, unknownOverrides));
+                toBuild.Add((instance, prefab));
             else if (prefab.Held.Count > 0)
                 problems.Add($"{path}:{instance.Line}: {Named(instance, prefab)} holds {string.Join(", ", prefab.Held)}, and nests other prefabs or is a variant, which the reader does not build");
         }
+
+        // A prefab Unity would refuse or break on (two documents under one fileID, a parent cycle, two roots, a script
+        // guid no .meta has) would build some other scene: the prefabs get the scene's own check before any is built.
+        var prefabProblems = AssetIntegrity.CheckScenes(project.Root,
+            toBuild.Select(b => b.Prefab).Distinct().Select(p => (project.FullPath(p.Path), p.File!)).ToList());
+        if (prefabProblems.Count > 0)
+            throw new SceneException($"{path}: the integrity check refuses prefabs the scene's instances are built from ({prefabProblems.Count} problem(s)):\n  " +
+                string.Join("\n  ", prefabProblems));
+
+        var taken = new HashSet<long>(scene.File.Documents.Select(d => d.FileId));
+        var standIns = scene.File.Documents.Where(d => d.IsStripped).ToLookup(d => d.Root.GetReference("m_PrefabInstance")?.FileId ?? 0);
+        var builtInto = new HashSet<long>(); // the instances built and their stand-ins, which the built objects replace
+        var built = new List<UnityDocument>();
+        foreach (var (instance, prefab) in toBuild)
+            built.AddRange(Instantiate(path, standIns, instance, prefab, scripts, taken, builtInto, unknownOverrides));
 
         // Unity keeps an override of a field its component no longer has, and ignores it; on the fluid's own components
         // the reader refuses it, as it refuses a field it does not know in the scene itself.
@@ -78,6 +91,10 @@ public static class PrefabInstances
         var file = new UnityYamlFile(scene.File.Path, scene.File.Headers,
             scene.File.Documents.Where(d => !builtInto.Contains(d.FileId)).Concat(built).ToList());
         var result = new UnityScene(file);
+        // The scene's check saw no cycle, but an instance's m_TransformParent may lie under the instance itself.
+        if (result.ParentCycles() is { Count: > 0 } cycles)
+            throw new SceneException($"{path}: prefab instances put GameObjects in a parent cycle, which Unity cannot load:\n  " +
+                string.Join("\n  ", cycles.Select(c => $"{path}:{c[0].Document.Line}: {AssetIntegrity.ParentCycleMessage(c)}")));
 
         foreach (var behaviour in result.Behaviours())
         {

@@ -38,7 +38,11 @@ public sealed partial class AssetIntegrity
     /// anchors, references and scripts against the project's .metas, its GameObject/Transform structure and parent
     /// cycles. The file may lie outside the project (an edited copy); problems of other files are not reported.
     /// </summary>
-    public static IReadOnlyList<IntegrityProblem> CheckScene(string projectRoot, string scenePath, UnityYamlFile yaml)
+    public static IReadOnlyList<IntegrityProblem> CheckScene(string projectRoot, string scenePath, UnityYamlFile yaml) =>
+        CheckScenes(projectRoot, new[] { (scenePath, yaml) });
+
+    /// <summary><see cref="CheckScene"/> for several scenes or prefabs, at one reading of the project.</summary>
+    public static IReadOnlyList<IntegrityProblem> CheckScenes(string projectRoot, IReadOnlyList<(string Path, UnityYamlFile Yaml)> files)
     {
         var check = new AssetIntegrity(projectRoot);
         check.Guarded("Assets", check.ScanAssetRoots);
@@ -46,8 +50,11 @@ public sealed partial class AssetIntegrity
         check.Guarded("ProjectSettings", check.CheckProjectSettings);
         check.Guarded("Library/PackageCache", check.IndexCachedPackages);
         check._problems.Clear();
-        string file = Path.GetFullPath(scenePath);
-        check.Guarded(check.Rel(file), () => check.CheckSerializedFile(file, yaml));
+        foreach (var (path, yaml) in files)
+        {
+            string file = Path.GetFullPath(path);
+            check.Guarded(check.Rel(file), () => check.CheckSerializedFile(file, yaml));
+        }
         return check._problems;
     }
 

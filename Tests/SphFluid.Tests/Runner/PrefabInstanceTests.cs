@@ -201,6 +201,39 @@ namespace SphFluid.Tests.Runner
             Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water" }));
         }
 
+        /// <summary>A prefab is checked as a scene is before it is built: one Unity would break on is refused naming its
+        /// own file and line.</summary>
+        [Test]
+        public void APrefabTheIntegrityCheckRefusesIsNotBuilt()
+        {
+            var project = new PrefabProject();
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox) +
+                project.Document(OilSpawnBox));
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain("the integrity check refuses prefabs the scene's instances are built from"));
+            Assert.That(e.Message, Does.Match($@"Assets/Prefabs/Oil\.prefab:\d+: anchor &{OilSpawnBox} is used by more than one document"));
+        }
+
+        /// <summary>An instance placed under one of its own GameObjects (a hand edit; Unity cannot write it) would loop
+        /// every walk up the hierarchy.</summary>
+        [Test]
+        public void AnInstanceUnderItselfIsRefusedAsAParentCycle()
+        {
+            var project = new PrefabProject();
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform)
+                .Replace("m_TransformParent: {fileID: 0}", "m_TransformParent: {fileID: 701}"));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain("prefab instances put GameObjects in a parent cycle"));
+            Assert.That(e.Message, Does.Contain("GameObject 'Oil' &"));
+            Assert.That(e.Message, Does.Contain("is its own parent"));
+        }
+
         /// <summary>A prefab that nests another is built from a chain of prefabs, which the reader does not do: one holding
         /// the fluid's components is refused, naming the instance, what it holds and where.</summary>
         [Test]
