@@ -66,7 +66,7 @@ namespace SphFluid.Tests.Runner
         }
 
         /// <summary>One edit of <paramref name="lines"/>, described.</summary>
-        static string Mangle(List<string> lines, Random random)
+        internal static string Mangle(List<string> lines, Random random)
         {
             int at = random.Next(lines.Count);
             switch (random.Next(6))
@@ -125,7 +125,7 @@ namespace SphFluid.Tests.Runner
 
         /// <summary>The path of the first float or double in <paramref name="value"/>'s public fields and properties that is
         /// not finite, or null.</summary>
-        static string? NotFinite(object? value, string path, int depth)
+        internal static string? NotFinite(object? value, string path, int depth)
         {
             if (depth > 8) return null;
             switch (value)

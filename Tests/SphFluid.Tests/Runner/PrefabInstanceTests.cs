@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.IO;
 using System.Linq;
 using System.Text.Json;
@@ -232,6 +233,49 @@ namespace SphFluid.Tests.Runner
             Assert.That(e.Message, Does.Contain("prefab instances put GameObjects in a parent cycle"));
             Assert.That(e.Message, Does.Contain("GameObject 'Oil' &"));
             Assert.That(e.Message, Does.Contain("is its own parent"));
+        }
+
+        /// <summary>The Oil box made a prefab, then its prefab file or the scene around its instance hand-edited as
+        /// <see cref="MangledSceneTests"/> edits the shipped scenes: each is read with every number finite, or refused
+        /// naming the scene, within 10 s; no other exception.</summary>
+        [Test]
+        public void AMangledPrefabOrInstanceIsReadOrRefusedByName()
+        {
+            var project = new PrefabProject();
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform,
+                PrefabProject.Override(OilSpawnBox, oil, "spawn.Phase.RestDensity", "850")));
+            string prefabPath = Path.Combine(project.Project.Root, "Assets", "Prefabs", "Oil.prefab");
+            string[] prefab = File.ReadAllLines(prefabPath), scene = File.ReadAllLines(project.ScenePath);
+            var random = new Random(7);
+            var wrong = new List<string>();
+            for (int n = 0; n < 40; n++)
+            {
+                bool editPrefab = n % 2 == 0;
+                var lines = (editPrefab ? prefab : scene).ToList();
+                var edits = new List<string>();
+                for (int e = 1 + random.Next(3); e > 0; e--) edits.Add(MangledSceneTests.Mangle(lines, random));
+                File.WriteAllLines(editPrefab ? prefabPath : project.ScenePath, lines);
+                File.WriteAllLines(editPrefab ? project.ScenePath : prefabPath, editPrefab ? scene : prefab);
+                string what = $"{(editPrefab ? "Oil.prefab" : "the scene")} #{n} ({string.Join("; ", edits)})";
+
+                var (loaded, thrown) = Deadline.Within(10, () =>
+                {
+                    try { return (SceneLoader.Load(project.ScenePath, project.Project), (Exception?)null); }
+                    catch (Exception ex) { return ((LoadedScene?)null, ex); }
+                }, $"loading {what}");
+
+                if (thrown is SceneException refusal)
+                {
+                    if (!refusal.Message.StartsWith(project.ScenePath, StringComparison.Ordinal))
+                        wrong.Add($"{what}: the refusal does not start with the scene: {refusal.Message}");
+                }
+                else if (thrown != null)
+                    wrong.Add($"{what}: {thrown.GetType().Name}: {thrown.Message}");
+                else if (MangledSceneTests.NotFinite(loaded!.Description, "Description", 0) is string field)
+                    wrong.Add($"{what}: read, with {field}");
+            }
+            Assert.That(wrong, Is.Empty, string.Join("\n", wrong));
         }
 
         /// <summary>A prefab that nests another is built from a chain of prefabs, which the reader does not do: one holding
