@@ -12,12 +12,13 @@ namespace SphFluid.Headless.Scenes;
 /// <summary>
 /// A prefab instance's GameObjects and components are in its .prefab file; the scene holds only the instance's overrides
 /// (<c>m_Modifications</c>, removed components and GameObjects) and stripped stand-ins for the objects the scene refers
-/// to. Unity builds each instance at load from the two; so does the reader, for a prefab that nests no other: a SpawnBox
-/// made a prefab, placed twice and tuned per instance, runs as it plays in Unity. Before, such a box was left out without a
-/// word (OilAndWater with its Oil box made a prefab ran as water alone).
-/// A prefab that nests others, or a variant, is built from a chain of prefabs whose objects the scene addresses through
-/// derived fileIDs; one that holds the fluid's components, and a component added to or placed under such an instance, is
-/// refused naming the instance and how to unpack it. Instances that hold none (props, lights) are read past.
+/// to. Unity builds each instance at load from the two, and so does the reader: a SpawnBox made a prefab, placed twice and
+/// tuned per instance, runs as it plays in Unity. A prefab that nests others, or a variant (an instance of its base with
+/// overrides), is built the same way, innermost first. Before, such a box was left out without a word (OilAndWater with
+/// its Oil box made a prefab ran as water alone).
+/// A prefab that cannot be built (one that nests a model, whose objects come from its importer, not from YAML) is read
+/// past when it holds none of the fluid's components; one that holds them, or has them added or placed under an
+/// instance, is refused naming the instance and how to unpack it.
 /// </summary>
 public static class PrefabInstances
 {
@@ -29,67 +30,60 @@ public static class PrefabInstances
         RuntimeScripts.ContainerSpinner, RuntimeScripts.SphereDriver,
     };
 
-    /// <summary>The scene with every instance of a prefab that nests none built into it, as Unity builds it at load: the
-    /// prefab's objects, less those the instance removes, with its overrides applied, its root under the instance's
-    /// parent, and each object under the fileID of its stand-in in the scene. Throws a <see cref="SceneException"/>
-    /// listing every override of a fluid component's field that its prefab does not have, else every part of the fluid
-    /// that lies in an instance it cannot build. A value read from the prefab is reported at the instance's line, an overridden
-    /// one at its override's.</summary>
+    /// <summary>The scene with every prefab instance it can build built into it, as Unity builds it at load: the prefab's
+    /// objects, less those the instance removes, with its overrides applied, its root under the instance's parent, and
+    /// each object under the fileID of its stand-in in the scene. Throws a <see cref="SceneException"/> for a prefab the
+    /// integrity check refuses, for an override of a fluid component's field that its prefab does not have, and for each
+    /// part of the fluid that lies in an instance it cannot build. A value read from a prefab is reported at the
+    /// instance's line, an overridden one at its override's.</summary>
     public static UnityScene Build(string path, UnityScene scene, UnityProject project, string packageFolder)
     {
         var scripts = new Dictionary<string, string>(StringComparer.Ordinal);
         foreach (string name in FluidScripts)
             if (FluidPackage.ScriptGuid(project, packageFolder, name) is { } guid) scripts[guid] = name; // the reader refuses a missing one by name
+        var prefabs = new PrefabReader(project, scripts);
 
         var problems = new List<string>();
-        var unknownOverrides = new List<string>();
-        // A scene may hold a prop's instance hundreds of times: each prefab is read once.
-        var read = new Dictionary<string, Prefab>(StringComparer.Ordinal);
-        Prefab Contents(string prefab)
-        {
-            if (!read.TryGetValue(prefab, out var contents))
-                read[prefab] = contents = Read(project, prefab, scripts);
-            return contents;
-        }
-
         var toBuild = new List<(UnityDocument Instance, Prefab Prefab)>();
         foreach (var instance in scene.File.OfClass(PrefabInstanceClassId))
         {
             string? prefabPath = project.AssetPathOf(instance.Root.GetReference("m_SourcePrefab"));
             if (prefabPath == null) continue; // an unknown guid is the integrity check's refusal
-            var prefab = Contents(prefabPath);
+            var prefab = prefabs.Get(prefabPath);
             if (prefab.Unreadable != null)
                 problems.Add($"{path}:{instance.Line}: {Named(instance, prefab)}: its prefab cannot be read ({prefab.Unreadable}), so whether it holds the fluid's components cannot be told");
             else if (prefab.File != null)
                 toBuild.Add((instance, prefab));
             else if (prefab.Held.Count > 0)
-                problems.Add($"{path}:{instance.Line}: {Named(instance, prefab)} holds {string.Join(", ", prefab.Held)}, and nests other prefabs or is a variant, which the reader does not build");
+                problems.Add($"{path}:{instance.Line}: {Named(instance, prefab)} holds {string.Join(", ", prefab.Held)}; the reader cannot build it: {prefab.NotBuilt}");
         }
 
         // A prefab Unity would refuse or break on (two documents under one fileID, a parent cycle, two roots, a script
         // guid no .meta has) would build some other scene: the prefabs get the scene's own check before any is built.
-        var prefabProblems = AssetIntegrity.CheckScenes(project.Root,
-            toBuild.Select(b => b.Prefab).Distinct().Select(p => (project.FullPath(p.Path), p.File!)).ToList());
+        var used = toBuild.Select(b => b.Prefab).Distinct().ToList();
+        var prefabProblems = AssetIntegrity.CheckScenes(project.Root, used.SelectMany(p => p.Sources).Distinct().ToList());
         if (prefabProblems.Count > 0)
             throw new SceneException($"{path}: the integrity check refuses prefabs the scene's instances are built from ({prefabProblems.Count} problem(s)):\n  " +
                 string.Join("\n  ", prefabProblems));
 
         var taken = new HashSet<long>(scene.File.Documents.Select(d => d.FileId));
-        var standIns = scene.File.Documents.Where(d => d.IsStripped).ToLookup(d => d.Root.GetReference("m_PrefabInstance")?.FileId ?? 0);
-        var builtInto = new HashSet<long>(); // the instances built and their stand-ins, which the built objects replace
+        var standIns = StandIns(scene.File);
+        var unused = used.SelectMany(p => p.UnusedOverrides).ToList();
         var built = new List<UnityDocument>();
         foreach (var (instance, prefab) in toBuild)
-            built.AddRange(Instantiate(path, standIns, instance, prefab, scripts, taken, builtInto, unknownOverrides));
-
+            built.AddRange(Instantiate(path, standIns, instance, prefab, scripts, taken, unused));
         // Unity keeps an override of a field its component no longer has, and ignores it; on the fluid's own components
         // the reader refuses it, as it refuses a field it does not know in the scene itself.
-        if (unknownOverrides.Count > 0)
-            throw new SceneException($"{path}: prefab instances override fields the fluid's components do not have ({unknownOverrides.Count}):\n  " +
-                string.Join("\n  ", unknownOverrides) + "\n  Unity keeps such unused overrides and ignores them: remove them in the Inspector " +
+        if (unused.Count > 0)
+            throw new SceneException($"{path}: prefab instances override fields the fluid's components do not have ({unused.Count}):\n  " +
+                string.Join("\n  ", unused) + "\n  Unity keeps such unused overrides and ignores them: remove them in the Inspector " +
                 "(the instance's Overrides dropdown, Unused overrides) to run the scene here");
 
+        // The stand-ins of the instances built give way to the objects they stood for; one that stands for no object
+        // stays, stripped, and what lies on or under it is refused below.
+        var replaced = new HashSet<long>(built.Select(d => d.FileId));
         var file = new UnityYamlFile(scene.File.Path, scene.File.Headers,
-            scene.File.Documents.Where(d => !builtInto.Contains(d.FileId)).Concat(built).ToList());
+            scene.File.Documents.Where(d => !replaced.Contains(d.FileId)).Concat(built).ToList());
         var result = new UnityScene(file);
         // The scene's check saw no cycle, but an instance's m_TransformParent may lie under the instance itself.
         if (result.ParentCycles() is { Count: > 0 } cycles)
@@ -102,40 +96,42 @@ public static class PrefabInstances
             var owner = file.Find(behaviour.GameObject);
             if (owner is { IsStripped: true })
             {
-                problems.Add($"{path}:{behaviour.Line}: a {script} added to a GameObject of {Instance(result, project, owner, Contents)}, which the reader does not build");
+                problems.Add($"{path}:{behaviour.Line}: a {script} added to a GameObject of {Instance(result, project, owner, prefabs)}, which the reader cannot build");
                 continue;
             }
             var go = result.GameObjectOf(behaviour);
             if (go?.Transform is { } transform && StrippedAncestor(result, transform) is { } ancestor)
                 problems.Add($"{path}:{behaviour.Line}: the {script} of GameObject '{go.Name}', which lies under a GameObject of " +
-                    $"{Instance(result, project, ancestor, Contents)} that places it, which the reader does not build");
+                    $"{Instance(result, project, ancestor, prefabs)} that places it, which the reader cannot build");
         }
 
         if (problems.Count > 0)
             throw new SceneException($"{path}: parts of the fluid lie in prefab instances the headless reader cannot build " +
-                $"({problems.Count}):\n  {string.Join("\n  ", problems)}\n  The reader builds instances of prefabs that nest no other " +
-                "prefab: unpack each other instance in Unity (in the Hierarchy, right-click it, Prefab > Unpack Completely) to run the scene here");
+                $"({problems.Count}):\n  {string.Join("\n  ", problems)}\n  Unpack each such instance in Unity (in the Hierarchy, " +
+                "right-click it, Prefab > Unpack Completely) to run the scene here");
         return result;
     }
 
-    /// <summary>One instance's objects, built from its prefab as Unity builds them.</summary>
+    /// <summary>A file's stripped stand-ins, by the fileID of the instance each stands in for.</summary>
+    static ILookup<long, UnityDocument> StandIns(UnityYamlFile file) =>
+        file.Documents.Where(d => d.IsStripped).ToLookup(d => d.Root.GetReference("m_PrefabInstance")?.FileId ?? 0);
+
+    /// <summary>One instance's objects, built from its prefab as Unity builds them. <paramref name="path"/> is the file
+    /// holding the instance (a scene, or a prefab that nests it), whose fileIDs <paramref name="taken"/> lists.</summary>
     static List<UnityDocument> Instantiate(string path, ILookup<long, UnityDocument> standIns, UnityDocument instance, Prefab prefab,
-        IReadOnlyDictionary<string, string> scripts, HashSet<long> taken, HashSet<long> builtInto, List<string> unknown)
+        IReadOnlyDictionary<string, string> scripts, HashSet<long> taken, List<string> unused)
     {
         var modification = instance.Root["m_Modification"];
-        builtInto.Add(instance.FileId);
+        var objects = prefab.File!.Documents;
 
-        // The objects the scene refers to keep the fileID of their stand-in; the others get one of their own, derived from
-        // the instance's and the object's, so that it stays the same run to run.
+        // The objects the file refers to keep the fileID of their stand-in; the others get the instance's fileID xor their
+        // own, which is how Unity derives the fileIDs that the overrides of an instance of a nesting prefab name.
         var ids = new Dictionary<long, long>();
         foreach (var standIn in standIns[instance.FileId])
             if (standIn.Root.GetReference("m_CorrespondingSourceObject") is { } source && source.Guid == prefab.Guid)
-            {
                 ids[source.FileId] = standIn.FileId;
-                builtInto.Add(standIn.FileId);
-            }
         var removed = Removed(modification, prefab);
-        var kept = prefab.File!.Documents.Where(d => !removed.Contains(d.FileId)).ToList();
+        var kept = objects.Where(d => !removed.Contains(d.FileId)).ToList();
         foreach (var d in kept)
             if (!ids.ContainsKey(d.FileId))
                 ids[d.FileId] = FreeId((instance.FileId ^ d.FileId) & long.MaxValue, taken);
@@ -148,7 +144,7 @@ public static class PrefabInstances
         var applied = new HashSet<(long, string)>();
         var parent = modification?["m_TransformParent"];
 
-        var objects = new List<UnityDocument>();
+        var built = new List<UnityDocument>();
         foreach (var d in kept)
         {
             bool isRoot = d.FileId == prefab.RootTransform;
@@ -165,15 +161,23 @@ public static class PrefabInstances
                     return UnityYamlNode.LocalReference(ids.TryGetValue(reference.FileId, out long id) ? id : 0, instance.Line);
                 return null;
             });
-            objects.Add(new UnityDocument(d.ClassId, ids[d.FileId], d.TypeName, root, IsStripped: false, instance.Line));
+            built.Add(new UnityDocument(d.ClassId, ids[d.FileId], d.TypeName, root, IsStripped: false, instance.Line));
         }
 
+        // An override the prefab has no field for changes nothing in Unity. The reader refuses one of a fluid component's,
+        // and, in a prefab holding the fluid's components, one whose object it cannot find: that may be a fluid field too.
         foreach (var ((target, property), entry) in overrides)
-            if (!applied.Contains((target, property)) && kept.FirstOrDefault(d => d.FileId == target) is { } component &&
-                component.ScriptGuid is { } guid && scripts.TryGetValue(guid, out string? script))
-                unknown.Add($"{path}:{entry["propertyPath"]?.Line ?? entry.Line}: {Named(instance, prefab)} overrides {script}.{property}, " +
-                    $"which is no field of the {script} in {prefab.Path}");
-        return objects;
+        {
+            if (applied.Contains((target, property)) || removed.Contains(target)) continue;
+            string at = $"{path}:{entry["propertyPath"]?.Line ?? entry.Line}: {Named(instance, prefab)} overrides";
+            if (objects.FirstOrDefault(d => d.FileId == target) is not { } component)
+            {
+                if (prefab.Held.Count > 0) unused.Add($"{at} {property} of &{target}, which {prefab.Path} does not hold");
+            }
+            else if (component.ScriptGuid is { } guid && scripts.TryGetValue(guid, out string? script))
+                unused.Add($"{at} {script}.{property}, which is no field of the {script} in {prefab.Path}");
+        }
+        return built;
     }
 
     /// <summary>The new value of a field an override names: its <c>objectReference</c> for a reference field, its
@@ -215,41 +219,102 @@ public static class PrefabInstances
         return id;
     }
 
-    /// <summary>What the reader needs of one prefab: its file where it nests no other prefab and so can be built (else
-    /// null), the fluid's components in it and in the prefabs nested in it, why it could not be read (or null), and its
-    /// root GameObject and Transform.</summary>
-    sealed record Prefab(string Path, string? Guid, UnityYamlFile? File, List<string> Held, string? Unreadable, long RootObject, long RootTransform);
+    /// <summary>
+    /// What the reader knows of one prefab. <see cref="File"/> is its objects with every prefab it nests built in (its
+    /// own fileIDs, as its instances' overrides name them), or null where it cannot be built: <see cref="Unreadable"/>
+    /// says why a file of it could not be read, <see cref="NotBuilt"/> why a readable one cannot be built.
+    /// <see cref="Held"/> names the fluid's components in it and in the prefabs it nests; <see cref="Sources"/> are the
+    /// files it is built from, for the integrity check; <see cref="UnusedOverrides"/> are what its nested instances
+    /// override that no fluid component has.
+    /// </summary>
+    sealed record Prefab(string Path, string? Guid, UnityYamlFile? File, List<string> Held, string? Unreadable, string? NotBuilt,
+        long RootObject, long RootTransform, IReadOnlyList<(string Path, UnityYamlFile Yaml)> Sources, List<string> UnusedOverrides);
 
-    static Prefab Read(UnityProject project, string prefab, IReadOnlyDictionary<string, string> scripts)
+    /// <summary>Reads and builds prefabs, each once per scene (a scene may hold a prop's instance hundreds of times), the
+    /// prefabs they nest first.</summary>
+    sealed class PrefabReader
     {
-        var held = new List<string>();
-        string? unreadable = FluidComponentsIn(project, prefab, scripts, held, new HashSet<string>(StringComparer.Ordinal), nested: false, out var file);
-        var root = file == null ? null : new UnityScene(file).RootTransforms.FirstOrDefault();
-        bool plain = file != null && unreadable == null && !file.Documents.Any(d => d.IsStripped || d.ClassId == PrefabInstanceClassId);
-        return new Prefab(prefab, project.GuidOf(prefab), plain ? file : null, held, unreadable, root?.GameObject?.FileId ?? 0, root?.FileId ?? 0);
-    }
+        readonly UnityProject _project;
+        readonly IReadOnlyDictionary<string, string> _scripts;
+        readonly Dictionary<string, Prefab> _read = new(StringComparer.Ordinal);
+        readonly HashSet<string> _reading = new(StringComparer.Ordinal);
 
-    /// <summary>Adds to <paramref name="held"/> each fluid component of the prefab at <paramref name="prefab"/> and of the
-    /// prefabs nested in it (named with their file); returns why a file could not be read, or null. <paramref name="file"/>
-    /// is the prefab's own file where it was read.</summary>
-    static string? FluidComponentsIn(UnityProject project, string prefab, IReadOnlyDictionary<string, string> scripts,
-        List<string> held, HashSet<string> visited, bool nested, out UnityYamlFile? file)
-    {
-        file = null;
-        // A model (.fbx) stands in as a prefab too, and holds no scripts.
-        if (!prefab.EndsWith(".prefab", StringComparison.OrdinalIgnoreCase) || !visited.Add(prefab)) return null;
-        try { file = UnityYamlFile.Load(project.FullPath(prefab)); }
-        catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException) { return e.Message; }
+        public PrefabReader(UnityProject project, IReadOnlyDictionary<string, string> scripts)
+        {
+            _project = project;
+            _scripts = scripts;
+        }
 
-        foreach (var behaviour in file.OfClass(UnityScene.MonoBehaviourClassId))
-            if (behaviour.ScriptGuid is { } guid && scripts.TryGetValue(guid, out string? script))
-                held.Add($"a {script} on its GameObject '{file.Find(behaviour.GameObject)?.Root.GetString("m_Name", "") ?? ""}'" +
-                    (nested ? $" (in {prefab}, nested in it)" : ""));
-        foreach (var instance in file.OfClass(PrefabInstanceClassId))
-            if (project.AssetPathOf(instance.Root.GetReference("m_SourcePrefab")) is { } inner &&
-                FluidComponentsIn(project, inner, scripts, held, visited, nested: true, out _) is { } unreadable)
-                return unreadable;
-        return null;
+        public Prefab Get(string path)
+        {
+            if (_read.TryGetValue(path, out var prefab)) return prefab;
+            // Unity refuses a prefab that nests itself; following it would not end.
+            if (!_reading.Add(path))
+                return Unbuilt(path, unreadable: $"{path} nests itself");
+            try { prefab = Read(path); }
+            finally { _reading.Remove(path); }
+            return _read[path] = prefab;
+        }
+
+        Prefab Unbuilt(string path, string? unreadable = null, string? notBuilt = null, List<string>? held = null, UnityYamlFile? raw = null)
+        {
+            var root = raw == null ? null : new UnityScene(raw).RootTransforms.FirstOrDefault();
+            return new Prefab(path, _project.GuidOf(path), null, held ?? new List<string>(), unreadable, notBuilt,
+                root?.GameObject?.FileId ?? 0, root?.FileId ?? 0, Array.Empty<(string, UnityYamlFile)>(), new List<string>());
+        }
+
+        Prefab Read(string path)
+        {
+            // A model (.fbx) stands in as a prefab too; its objects come from its importer, and it holds no scripts.
+            if (!path.EndsWith(".prefab", StringComparison.OrdinalIgnoreCase))
+                return Unbuilt(path, notBuilt: $"{path} is a model, whose objects come from its importer, not from YAML");
+            UnityYamlFile raw;
+            try { raw = UnityYamlFile.Load(_project.FullPath(path)); }
+            catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException) { return Unbuilt(path, unreadable: e.Message); }
+
+            var held = new List<string>();
+            foreach (var behaviour in raw.OfClass(UnityScene.MonoBehaviourClassId))
+                if (!behaviour.IsStripped && behaviour.ScriptGuid is { } guid && _scripts.TryGetValue(guid, out string? script))
+                    held.Add($"a {script} on its GameObject '{raw.Find(behaviour.GameObject)?.Root.GetString("m_Name", "") ?? ""}'");
+
+            var documents = raw.Documents.Where(d => !d.IsStripped && d.ClassId != PrefabInstanceClassId).ToList();
+            var sources = new List<(string, UnityYamlFile)> { (_project.FullPath(path), raw) };
+            var unused = new List<string>();
+            var taken = new HashSet<long>(raw.Documents.Select(d => d.FileId));
+            var standIns = StandIns(raw);
+            string? unreadable = null, notBuilt = null;
+            foreach (var nested in raw.OfClass(PrefabInstanceClassId))
+            {
+                string? innerPath = _project.AssetPathOf(nested.Root.GetReference("m_SourcePrefab"));
+                if (innerPath == null)
+                {
+                    notBuilt ??= $"{path}: its PrefabInstance &{nested.FileId} (line {nested.Line}) names a prefab no .meta of the project has";
+                    continue;
+                }
+                var inner = Get(innerPath);
+                held.AddRange(inner.Held.Select(h => h.EndsWith(", nested in it)", StringComparison.Ordinal) ? h : $"{h} (in {innerPath}, nested in it)"));
+                if (inner.Unreadable != null) unreadable ??= inner.Unreadable;
+                else if (inner.File == null) notBuilt ??= inner.NotBuilt;
+                else if (unreadable == null && notBuilt == null)
+                {
+                    documents.AddRange(Instantiate(path, standIns, nested, inner, _scripts, taken, unused));
+                    sources.AddRange(inner.Sources);
+                    unused.AddRange(inner.UnusedOverrides);
+                }
+            }
+            // A stand-in that no object was built for would leave what refers to it (a component added to a nested
+            // instance's GameObject) on nothing.
+            var builtIds = new HashSet<long>(documents.Select(d => d.FileId));
+            if (raw.Documents.FirstOrDefault(d => d.IsStripped && !builtIds.Contains(d.FileId)) is { } orphan)
+                notBuilt ??= $"{path}: its stand-in &{orphan.FileId} (line {orphan.Line}) stands for no object of the prefabs it nests";
+            if (unreadable != null || notBuilt != null)
+                return Unbuilt(path, unreadable, notBuilt, held, raw);
+
+            var file = new UnityYamlFile(_project.FullPath(path), raw.Headers, documents);
+            var root = new UnityScene(file).RootTransforms.FirstOrDefault();
+            return new Prefab(path, _project.GuidOf(path), file, held, null, null, root?.GameObject?.FileId ?? 0, root?.FileId ?? 0,
+                sources, unused);
+        }
     }
 
     /// <summary>The first stripped Transform above <paramref name="transform"/>: a GameObject of a prefab instance.</summary>
@@ -263,12 +328,12 @@ public static class PrefabInstances
     }
 
     /// <summary>The prefab instance a stripped document belongs to, named with its prefab.</summary>
-    static string Instance(UnityScene scene, UnityProject project, UnityDocument stripped, Func<string, Prefab> contents)
+    static string Instance(UnityScene scene, UnityProject project, UnityDocument stripped, PrefabReader prefabs)
     {
         var instance = scene.File.Find(stripped.Root.GetReference("m_PrefabInstance"));
         if (instance == null) return "a prefab instance";
         string? prefab = project.AssetPathOf(instance.Root.GetReference("m_SourcePrefab"));
-        return prefab == null ? $"PrefabInstance &{instance.FileId} of an unknown prefab" : Named(instance, contents(prefab));
+        return prefab == null ? $"PrefabInstance &{instance.FileId} of an unknown prefab" : Named(instance, prefabs.Get(prefab));
     }
 
     /// <summary>"PrefabInstance 'Oil' of Assets/Prefabs/Oil.prefab": the name the instance gives its root GameObject (an

@@ -235,29 +235,29 @@ namespace SphFluid.Tests.Runner
             Assert.That(e.Message, Does.Contain("is its own parent"));
         }
 
-        /// <summary>The Oil box made a prefab, then its prefab file or the scene around its instance hand-edited as
-        /// <see cref="MangledSceneTests"/> edits the shipped scenes: each is read with every number finite, or refused
-        /// naming the scene, within 10 s; no other exception.</summary>
+        /// <summary>The Oil box made a prefab nested in a rig, then the box's prefab, the rig's or the scene around the
+        /// rig's instance hand-edited as <see cref="MangledSceneTests"/> edits the shipped scenes: each is read with every
+        /// number finite, or refused naming the scene, within 10 s; no other exception.</summary>
         [Test]
         public void AMangledPrefabOrInstanceIsReadOrRefusedByName()
         {
             var project = new PrefabProject();
-            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
-            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform,
-                PrefabProject.Override(OilSpawnBox, oil, "spawn.Phase.RestDensity", "850")));
-            string prefabPath = Path.Combine(project.Project.Root, "Assets", "Prefabs", "Oil.prefab");
-            string[] prefab = File.ReadAllLines(prefabPath), scene = File.ReadAllLines(project.ScenePath);
+            string rig = NestedRig(project, oil => PrefabProject.Override(OilSpawnBox, oil, "spawn.Phase.RestDensity", "870"));
+            project.ReplaceOilWith(PrefabProject.Instance(800, rig, "Rig", 11, 12,
+                PrefabProject.Override((700 ^ OilSpawnBox) & long.MaxValue, rig, "spawn.Phase.Viscosity", "0.2")));
+            string prefabs = Path.Combine(project.Project.Root, "Assets", "Prefabs");
+            string[] files = { Path.Combine(prefabs, "Oil.prefab"), Path.Combine(prefabs, "Rig.prefab"), project.ScenePath };
+            string[][] originals = files.Select(File.ReadAllLines).ToArray();
             var random = new Random(7);
             var wrong = new List<string>();
-            for (int n = 0; n < 40; n++)
+            for (int n = 0; n < 45; n++)
             {
-                bool editPrefab = n % 2 == 0;
-                var lines = (editPrefab ? prefab : scene).ToList();
+                int edited = n % files.Length;
+                var lines = originals[edited].ToList();
                 var edits = new List<string>();
                 for (int e = 1 + random.Next(3); e > 0; e--) edits.Add(MangledSceneTests.Mangle(lines, random));
-                File.WriteAllLines(editPrefab ? prefabPath : project.ScenePath, lines);
-                File.WriteAllLines(editPrefab ? project.ScenePath : prefabPath, editPrefab ? scene : prefab);
-                string what = $"{(editPrefab ? "Oil.prefab" : "the scene")} #{n} ({string.Join("; ", edits)})";
+                for (int f = 0; f < files.Length; f++) File.WriteAllLines(files[f], f == edited ? lines : originals[f].ToList());
+                string what = $"{Path.GetFileName(files[edited])} #{n} ({string.Join("; ", edits)})";
 
                 var (loaded, thrown) = Deadline.Within(10, () =>
                 {
@@ -278,21 +278,63 @@ namespace SphFluid.Tests.Runner
             Assert.That(wrong, Is.Empty, string.Join("\n", wrong));
         }
 
-        /// <summary>A prefab that nests another is built from a chain of prefabs, which the reader does not do: one holding
-        /// the fluid's components is refused, naming the instance, what it holds and where.</summary>
+        /// <summary>Rig.prefab nests Oil.prefab and overrides its rest density; the scene's instance of the rig raises it
+        /// and overrides the nested box's viscosity, naming the box by the fileID the rig gives it (the rig's instance's
+        /// fileID xor the box's own). Each level's overrides apply, innermost first.</summary>
         [Test]
-        public void APrefabNestingAnotherThatHoldsASpawnBoxIsRefused()
+        public void APrefabNestingAnotherIsBuiltWithEachLevelsOverrides()
         {
             var project = new PrefabProject();
-            string rig = NestedRig(project);
-            project.ReplaceOilWith(PrefabProject.Instance(800, rig, "Rig", 11, 12));
+            string rig = NestedRig(project, oil => PrefabProject.Override(OilSpawnBox, oil, "spawn.Phase.RestDensity", "870"));
+            long nestedBox = (700 ^ OilSpawnBox) & long.MaxValue;
+            project.ReplaceOilWith(PrefabProject.Instance(800, rig, "Rig", 11, 12,
+                PrefabProject.Override(12, rig, "m_LocalPosition.y", "0.05"),
+                PrefabProject.Override(nestedBox, rig, "spawn.Phase.Viscosity", "0.2")));
 
-            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+            var scene = SceneLoader.Load(project.ScenePath, project.Project);
 
-            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("--- !u!1001 &800")}: PrefabInstance 'Rig' of " +
-                "Assets/Prefabs/Rig.prefab holds a SpawnBox on its GameObject 'Oil' (in Assets/Prefabs/Oil.prefab, nested in it), " +
-                "and nests other prefabs or is a variant, which the reader does not build"));
-            Assert.That(e.Message, Does.Contain(Unpack));
+            Assert.That(Oil(scene).Phase.RestDensity, Is.EqualTo(870f), "the rig's override of its nested box");
+            Assert.That(Oil(scene).Phase.Viscosity, Is.EqualTo(0.2f), "the scene's override of the nested box");
+            Assert.That(Oil(scene).Center.Y, Is.EqualTo(0.15f).Within(1e-6f), "0.05 m of the rig's and 0.1 m of the box's own");
+        }
+
+        /// <summary>A variant is an instance of its base with overrides, in a file of its own; the scene's instance of it
+        /// names the base's objects by the fileIDs the variant gives them.</summary>
+        [Test]
+        public void APrefabVariantIsBuiltFromItsBase()
+        {
+            var project = new PrefabProject();
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            string heavy = project.AddPrefab("Heavy Oil", PrefabProject.Instance(900, oil, "Heavy Oil", OilObject, OilTransform,
+                PrefabProject.Override(OilSpawnBox, oil, "spawn.Phase.RestDensity", "950")));
+            project.ReplaceOilWith(PrefabProject.Instance(700, heavy, "Heavy Oil (1)", (900 ^ OilObject) & long.MaxValue, 901,
+                PrefabProject.Override(901, heavy, "m_LocalPosition.z", "0.01"), PrefabProject.Override(901, heavy, "m_LocalScale.z", "0.08")));
+
+            var scene = SceneLoader.Load(project.ScenePath, project.Project);
+
+            Assert.That(Oil(scene).Name, Is.EqualTo("Heavy Oil (1)"));
+            Assert.That(Oil(scene).Phase.RestDensity, Is.EqualTo(950f), "the variant's override");
+            Assert.That(Oil(scene).Phase.Viscosity, Is.EqualTo(0.1f), "the base's viscosity");
+            Assert.That(Oil(scene).Center.Z, Is.EqualTo(0.01f).Within(1e-6f), "the scene's override");
+        }
+
+        /// <summary>Unity refuses a prefab that nests itself; following it would never end.</summary>
+        [Test]
+        public void APrefabThatNestsItselfIsRefused()
+        {
+            var project = new PrefabProject();
+            string loop = project.AddPrefab("Loop", project.Document(OilObject) + project.Document(OilTransform).Replace("m_Children: []", "m_Children:\n  - {fileID: 701}") +
+                project.Document(OilSpawnBox) + PrefabProject.Instance(700, "SELF", "Inner", OilObject, OilTransform)
+                    .Replace("m_TransformParent: {fileID: 0}", $"m_TransformParent: {{fileID: {OilTransform}}}"));
+            string file = Path.Combine(project.Project.Root, "Assets", "Prefabs", "Loop.prefab");
+            File.WriteAllText(file, File.ReadAllText(file).Replace("SELF", loop));
+            project.ReplaceOilWith(PrefabProject.Instance(800, loop, "Loop", OilObject, OilTransform));
+
+            var thrown = Deadline.Within(10, () => Deadline.Thrown(() => SceneLoader.Load(project.ScenePath, project.Project)), "loading the scene");
+
+            Assert.That(thrown, Is.InstanceOf<SceneException>());
+            Assert.That(thrown!.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("--- !u!1001 &800")}: PrefabInstance 'Loop' of " +
+                "Assets/Prefabs/Loop.prefab: its prefab cannot be read (Assets/Prefabs/Loop.prefab nests itself)"));
         }
 
         /// <summary>Renaming a GameObject inside an instance writes an m_Name override too, after the root's: the instance is
@@ -302,11 +344,28 @@ namespace SphFluid.Tests.Runner
         {
             var project = new PrefabProject();
             string rig = NestedRig(project);
+            File.WriteAllText(Path.Combine(project.Project.Root, "Assets", "Prefabs", "Oil.prefab"), "");
             project.ReplaceOilWith(PrefabProject.Instance(800, rig, "Rig Left", 11, 12, PrefabProject.Override(4242, rig, "m_Name", "Handle")));
 
             var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
 
-            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("--- !u!1001 &800")}: PrefabInstance 'Rig Left' of Assets/Prefabs/Rig.prefab holds"));
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("--- !u!1001 &800")}: PrefabInstance 'Rig Left' of " +
+                "Assets/Prefabs/Rig.prefab: its prefab cannot be read ("));
+        }
+
+        /// <summary>An override in a prefab holding the fluid's components whose object the prefab does not hold may be
+        /// meant for a fluid field: refused, where Unity ignores it.</summary>
+        [Test]
+        public void AnOverrideOfAnObjectThePrefabDoesNotHoldIsRefusedWhereItHoldsTheFluid()
+        {
+            var project = new PrefabProject();
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform, PrefabProject.Override(4242, oil, "spawn.Jitter", "0.1")));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("      propertyPath: spawn.Jitter")}: PrefabInstance 'Oil' of " +
+                "Assets/Prefabs/Oil.prefab overrides spawn.Jitter of &4242, which Assets/Prefabs/Oil.prefab does not hold"));
         }
 
         /// <summary>A prefab file that cannot be read (emptied here) may hold the fluid's components: refused, not guessed.</summary>
@@ -356,13 +415,13 @@ namespace SphFluid.Tests.Runner
                 .Replace("m_LocalScale: {x: 0.3, y: 0.2, z: 0.12}", "m_LocalScale: {x: 1, y: 1, z: 1}")
                 .Replace("m_Children: []", $"m_Children:\n  - {{fileID: {child}}}");
 
-        /// <summary>Rig.prefab: its own root (&amp;11, Transform &amp;12) with an instance of Oil.prefab, which holds the Oil
-        /// box, as its one child.</summary>
-        static string NestedRig(PrefabProject project)
+        /// <summary>Rig.prefab: its own root (&amp;11, Transform &amp;12) with an instance &amp;700 of Oil.prefab, which
+        /// holds the Oil box, as its one child, with the overrides <paramref name="overrides"/> writes given Oil.prefab's guid.</summary>
+        static string NestedRig(PrefabProject project, Func<string, string>? overrides = null)
         {
             string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
             return project.AddPrefab("Rig", RigRoot(project, child: 701) +
-                PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform).Replace("m_TransformParent: {fileID: 0}", "m_TransformParent: {fileID: 12}"));
+                PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform, overrides?.Invoke(oil) ?? "").Replace("m_TransformParent: {fileID: 0}", "m_TransformParent: {fileID: 12}"));
         }
 
         /// <summary>A copy of the repository's Unity project in a scratch folder, whose OilAndWater scene a test edits.</summary>
