@@ -30,7 +30,7 @@ namespace SphFluid.Tests.Runner
         public void ASpawnBoxInAPrefabIsBuiltWithTheInstancesOverrides()
         {
             var project = new PrefabProject();
-            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            string oil = OilPrefab(project);
             project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform,
                 PrefabProject.Override(OilTransform, oil, "m_LocalPosition.y", "0.05"),
                 PrefabProject.Override(OilTransform, oil, "m_LocalScale.y", "0.1"),
@@ -53,7 +53,7 @@ namespace SphFluid.Tests.Runner
         public void ASpawnBoxMadeAPrefabReadsAsTheSceneItCameFrom()
         {
             var project = new PrefabProject();
-            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            string oil = OilPrefab(project);
             project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform));
             var options = new JsonSerializerOptions { IncludeFields = true };
 
@@ -71,7 +71,7 @@ namespace SphFluid.Tests.Runner
         public void TwoInstancesOfOnePrefabAreTwoBoxes()
         {
             var project = new PrefabProject();
-            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            string oil = OilPrefab(project);
             project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform) +
                 PrefabProject.Instance(800, oil, "Oil (1)", OilObject, OilTransform,
                     PrefabProject.Override(OilTransform, oil, "m_LocalPosition.y", "0.3"), PrefabProject.Override(OilTransform, oil, "m_LocalScale.y", "0.15")));
@@ -136,7 +136,7 @@ namespace SphFluid.Tests.Runner
         public void AnOverriddenValueOutOfRangeIsRefusedAtTheOverridesLine()
         {
             var project = new PrefabProject();
-            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            string oil = OilPrefab(project);
             project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform,
                 PrefabProject.Override(OilSpawnBox, oil, "spawn.Phase.RestDensity", "-5")));
 
@@ -151,7 +151,7 @@ namespace SphFluid.Tests.Runner
         public void AnOverrideOfAFieldTheSpawnBoxLacksIsRefusedAtItsLine()
         {
             var project = new PrefabProject();
-            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            string oil = OilPrefab(project);
             project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform,
                 PrefabProject.Override(OilSpawnBox, oil, "spawn.Phase.Density", "850")));
 
@@ -166,7 +166,7 @@ namespace SphFluid.Tests.Runner
         public void AComponentTheInstanceRemovesIsLeftOut()
         {
             var project = new PrefabProject();
-            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            string oil = OilPrefab(project);
             project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform)
                 .Replace("m_RemovedComponents: []", $"m_RemovedComponents:\n    - {{fileID: {OilSpawnBox}, guid: {oil}, type: 3}}"));
 
@@ -224,7 +224,7 @@ namespace SphFluid.Tests.Runner
         public void AnInstanceUnderItselfIsRefusedAsAParentCycle()
         {
             var project = new PrefabProject();
-            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            string oil = OilPrefab(project);
             project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform)
                 .Replace("m_TransformParent: {fileID: 0}", "m_TransformParent: {fileID: 701}"));
 
@@ -304,7 +304,7 @@ namespace SphFluid.Tests.Runner
         public void APrefabVariantIsBuiltFromItsBase()
         {
             var project = new PrefabProject();
-            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            string oil = OilPrefab(project);
             string heavy = project.AddPrefab("Heavy Oil", PrefabProject.Instance(900, oil, "Heavy Oil", OilObject, OilTransform,
                 PrefabProject.Override(OilSpawnBox, oil, "spawn.Phase.RestDensity", "950")));
             project.ReplaceOilWith(PrefabProject.Instance(700, heavy, "Heavy Oil (1)", (900 ^ OilObject) & long.MaxValue, 901,
@@ -359,7 +359,7 @@ namespace SphFluid.Tests.Runner
         public void AnOverrideOfAnObjectThePrefabDoesNotHoldIsRefusedWhereItHoldsTheFluid()
         {
             var project = new PrefabProject();
-            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            string oil = OilPrefab(project);
             project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform, PrefabProject.Override(4242, oil, "spawn.Jitter", "0.1")));
 
             var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
@@ -373,7 +373,7 @@ namespace SphFluid.Tests.Runner
         public void AnUnreadablePrefabIsRefusedForWhatItMayHold()
         {
             var project = new PrefabProject();
-            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            string oil = OilPrefab(project);
             project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform));
             File.WriteAllText(Path.Combine(project.Project.Root, "Assets", "Prefabs", "Oil.prefab"), "");
 
@@ -400,6 +400,10 @@ namespace SphFluid.Tests.Runner
             Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water", "Oil" }));
         }
 
+        /// <summary>Oil.prefab: OilAndWater's Oil box as it stands in the scene; returns its guid.</summary>
+        static string OilPrefab(PrefabProject project) =>
+            project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+
         /// <summary>Pair.prefab: a rig at the origin (&amp;11, Transform &amp;12) with the Oil box as its one child.</summary>
         static string PairPrefab(PrefabProject project) =>
             project.AddPrefab("Pair", RigRoot(project, child: OilTransform) +
@@ -419,7 +423,7 @@ namespace SphFluid.Tests.Runner
         /// holds the Oil box, as its one child, with the overrides <paramref name="overrides"/> writes given Oil.prefab's guid.</summary>
         static string NestedRig(PrefabProject project, Func<string, string>? overrides = null)
         {
-            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            string oil = OilPrefab(project);
             return project.AddPrefab("Rig", RigRoot(project, child: 701) +
                 PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform, overrides?.Invoke(oil) ?? "").Replace("m_TransformParent: {fileID: 0}", "m_TransformParent: {fileID: 12}"));
         }
