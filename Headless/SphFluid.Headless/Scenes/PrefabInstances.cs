@@ -61,7 +61,8 @@ public static class PrefabInstances
         // A prefab Unity would refuse or break on (two documents under one fileID, a parent cycle, two roots, a script
         // guid no .meta has) would build some other scene: the prefabs get the scene's own check before any is built.
         var used = toBuild.Select(b => b.Prefab).Distinct().ToList();
-        var prefabProblems = AssetIntegrity.CheckScenes(project.Root, used.SelectMany(p => p.Sources).Distinct().ToList());
+        var prefabProblems = used.Count == 0 ? Array.Empty<IntegrityProblem>()
+            : AssetIntegrity.CheckScenes(project.Root, used.SelectMany(p => p.Sources).Distinct().ToList());
         if (prefabProblems.Count > 0)
             throw new SceneException($"{path}: the integrity check refuses prefabs the scene's instances are built from ({prefabProblems.Count} problem(s)):\n  " +
                 string.Join("\n  ", prefabProblems));
