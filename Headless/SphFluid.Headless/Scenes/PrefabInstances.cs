@@ -30,9 +30,9 @@ public static class PrefabInstances
         RuntimeScripts.ContainerSpinner, RuntimeScripts.SphereDriver,
     };
 
-    /// <summary>The scene with every prefab instance it can build built into it, as Unity builds it at load: the prefab's
-    /// objects, less those the instance removes, with its overrides applied, its root under the instance's parent, and
-    /// each object under the fileID of its stand-in in the scene. Throws a <see cref="SceneException"/> for a prefab the
+    /// <summary>The scene with every prefab instance that holds, carries or places the fluid built into it (a prop's is
+    /// left as it stands), as Unity builds it at load: the prefab's objects, less those the instance removes, with its
+    /// overrides applied, its root under the instance's parent, and each object under the fileID of its stand-in. Throws a <see cref="SceneException"/> for a prefab the
     /// integrity check refuses, for an override of a fluid component's field that its prefab does not have, and for each
     /// part of the fluid that lies in an instance it cannot build. A value read from a prefab is reported at the
     /// instance's line, an overridden one at its override's.</summary>
@@ -45,11 +45,14 @@ public static class PrefabInstances
 
         var problems = new List<string>();
         var toBuild = new List<(UnityDocument Instance, Prefab Prefab)>();
+        var placing = InstancesPlacingTheFluid(scene, scripts, prefabs, project);
         foreach (var instance in scene.File.OfClass(PrefabInstanceClassId))
         {
             string? prefabPath = project.AssetPathOf(instance.Root.GetReference("m_SourcePrefab"));
             if (prefabPath == null) continue; // an unknown guid is the integrity check's refusal
             var prefab = prefabs.Get(prefabPath);
+            // A prop's instance places none of the fluid: it is neither built nor held to the integrity check.
+            if (!placing.Contains(instance.FileId) && prefab.Unreadable == null && prefab.Held.Count == 0) continue;
             if (prefab.Unreadable != null)
                 problems.Add($"{path}:{instance.Line}: {Named(instance, prefab)}: its prefab cannot be read ({prefab.Unreadable}), so whether it holds the fluid's components cannot be told");
             else if (prefab.File != null)
@@ -111,6 +114,41 @@ public static class PrefabInstances
                 $"({problems.Count}):\n  {string.Join("\n  ", problems)}\n  Unpack each such instance in Unity (in the Hierarchy, " +
                 "right-click it, Prefab > Unpack Completely) to run the scene here");
         return result;
+    }
+
+    /// <summary>The instances that hold a fluid component, have one added to a GameObject of theirs, or place one:
+    /// those on the way up from it, and from each such instance's parent in turn, to the scene's root.</summary>
+    static HashSet<long> InstancesPlacingTheFluid(UnityScene scene, IReadOnlyDictionary<string, string> scripts, PrefabReader prefabs,
+        UnityProject project)
+    {
+        var file = scene.File;
+        var placing = new HashSet<long>();
+        var pending = new Stack<UnityDocument>(); // Transforms, or stand-ins for them, whose chain of parents is to be walked
+        foreach (var instance in file.OfClass(PrefabInstanceClassId))
+            if (project.AssetPathOf(instance.Root.GetReference("m_SourcePrefab")) is { } prefab && prefabs.Get(prefab).Held.Count > 0)
+                pending.Push(instance);
+        foreach (var behaviour in scene.Behaviours())
+            if (behaviour.ScriptGuid is { } guid && scripts.ContainsKey(guid) && file.Find(behaviour.GameObject) is { } owner)
+                pending.Push(owner.IsStripped ? owner : scene.GameObjectOf(behaviour)?.Transform ?? owner);
+
+        var walked = new HashSet<long>();
+        while (pending.Count > 0)
+        {
+            var d = pending.Pop();
+            if (!walked.Add(d.FileId)) continue;
+            if (d.ClassId == PrefabInstanceClassId)
+            {
+                placing.Add(d.FileId);
+                if (file.Find(d.Root["m_Modification"]?.GetReference("m_TransformParent")) is { } parent) pending.Push(parent);
+            }
+            else if (d.IsStripped)
+            {
+                if (file.Find(d.Root.GetReference("m_PrefabInstance")) is { } instance) pending.Push(instance);
+            }
+            else if (file.Find(d.Root.GetReference("m_Father")) is { } father)
+                pending.Push(father);
+        }
+        return placing;
     }
 
     /// <summary>A file's stripped stand-ins, by the fileID of the instance each stands in for.</summary>

@@ -385,13 +385,15 @@ namespace SphFluid.Tests.Runner
             Assert.That(e.Message, Does.Contain("so whether it holds the fluid's components cannot be told"));
         }
 
-        /// <summary>A prefab that holds none of the fluid's components (a prop, a light) is not the reader's business.</summary>
+        /// <summary>A prefab that holds none of the fluid's components and places none (a prop, a light) is not the
+        /// reader's business: it is neither built nor held to the integrity check (this one has two documents under one
+        /// anchor, which the check refuses in a prefab the fluid is built from).</summary>
         [Test]
         public void APrefabWithoutTheFluidsComponentsIsReadPast()
         {
             var project = new PrefabProject();
             string prop = project.AddPrefab("Prop", project.Document(OilObject).Replace($"  - component: {{fileID: {OilSpawnBox}}}\n", "")
-                .Replace("m_Name: Oil", "m_Name: Prop") + project.Document(OilTransform));
+                .Replace("m_Name: Oil", "m_Name: Prop") + project.Document(OilTransform) + project.Document(OilTransform));
             project.Edit("--- !u!1660057539", PrefabProject.Instance(700, prop, "Prop", OilObject, OilTransform) + "--- !u!1660057539");
             project.Edit("  m_Roots:\n", "  m_Roots:\n  - {fileID: 701}\n");
 
