@@ -15,11 +15,11 @@ namespace SphFluid.Tests.Runner
     /// OilAndWater with its Oil box made a prefab ran as water alone: the reader read the GameObjects a scene file holds,
     /// and a prefab instance's are in its .prefab file. Each test copies the project and makes one part of the fluid a
     /// prefab as Unity writes it (a PrefabInstance with its overrides, stripped stand-ins for what the scene refers to),
-    /// then expects the instance built as Unity builds it, or, for a prefab that nests others, the refusal.
+    /// then expects the instance built as Unity builds it, or, for one it cannot build, the refusal.
     /// </summary>
     public sealed class PrefabInstanceTests
     {
-        const string Unpack = "unpack each other instance in Unity (in the Hierarchy, right-click it, Prefab > Unpack Completely)";
+        const string Unpack = "Unpack each such instance in Unity (in the Hierarchy, right-click it, Prefab > Unpack Completely)";
 
         // OilAndWater's Oil box: its GameObject, Transform and SpawnBox, at (0.15, 0.1, 0), 0.3 x 0.2 x 0.12 m, 900 kg/m^3.
         const long OilObject = 305626396, OilTransform = 518734963, OilSpawnBox = 287989891;
@@ -383,6 +383,7 @@ namespace SphFluid.Tests.Runner
                 "Assets/Prefabs/Oil.prefab: its prefab cannot be read ("));
             Assert.That(e.Message, Does.Contain("is empty or not a regular file"));
             Assert.That(e.Message, Does.Contain("so whether it holds the fluid's components cannot be told"));
+            Assert.That(e.Message, Does.Contain(Unpack));
         }
 
         /// <summary>A prefab that holds none of the fluid's components and places none (a prop, a light) is not the
