@@ -43,8 +43,7 @@ public static class FluidPackage
     /// cannot be told from the files.</summary>
     static string Missing(string scenePath, UnityProject project)
     {
-        var cached = UnityProject.CachedPackageFolders(project.Root)
-            .Where(dir => Path.GetFileName(dir).StartsWith(Name + "@", StringComparison.Ordinal)).ToList();
+        var cached = project.CachedCopies(Name);
         return cached.Count > 1
             ? $"{scenePath}: the project at {project.Root} holds {cached.Count} copies of {Name} in Library/PackageCache " +
               $"({string.Join(", ", cached.Select(Path.GetFileName))}), and which one Unity uses cannot be told: close the editor, " +

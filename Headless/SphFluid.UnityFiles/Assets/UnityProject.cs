@@ -56,9 +56,14 @@ public sealed class UnityProject
     {
         var embedded = Path.Combine(Root, "Packages", name);
         if (File.Exists(Path.Combine(embedded, "package.json"))) return embedded;
-        var cached = CachedPackageFolders(Root).Where(dir => Path.GetFileName(dir).StartsWith(name + "@", StringComparison.Ordinal)).ToList();
+        var cached = CachedCopies(name);
         return cached.Count == 1 ? cached[0] : null;
     }
+
+    /// <summary>The folders of <paramref name="name"/> in Library/PackageCache (<paramref name="name"/>@version), unless
+    /// the project embeds it: one where Package Manager resolved it, several where stale copies were left behind.</summary>
+    public IReadOnlyList<string> CachedCopies(string name) =>
+        CachedPackageFolders(Root).Where(dir => Path.GetFileName(dir).StartsWith(name + "@", StringComparison.Ordinal)).ToList();
 
     /// <summary>Library/PackageCache/&lt;name&gt;@&lt;version&gt;/ folders holding a package.json: the packages Package Manager
     /// resolved from a registry or a git URL. A cached copy of a package the project embeds is left out: Unity uses the
