@@ -34,8 +34,8 @@ public static class PrefabInstances
     /// left as it stands), as Unity builds it at load: the prefab's objects, less those the instance removes, with its
     /// overrides applied, its root under the instance's parent, and each object under the fileID of its stand-in. Throws a <see cref="SceneException"/> for a prefab the
     /// integrity check refuses, for an override of a fluid component's field that its prefab does not have, and for each
-    /// part of the fluid that lies in an instance it cannot build. A value read from a prefab is reported at the
-    /// instance's line, an overridden one at its override's.</summary>
+    /// part of the fluid that lies in an instance it cannot build. A value read from a prefab keeps its line there
+    /// (<see cref="UnityYamlNode.SourceFile"/> names the prefab), an overridden one is at its override's line.</summary>
     public static UnityScene Build(string path, UnityScene scene, UnityProject project, string packageFolder)
     {
         var scripts = new Dictionary<string, string>(StringComparer.Ordinal);
@@ -187,14 +187,14 @@ public static class PrefabInstances
         foreach (var d in kept)
         {
             bool isRoot = d.FileId == prefab.RootTransform;
-            var root = d.Root.CopyAt(instance.Line, (property, node) =>
+            var root = d.Root.CopyFrom(prefab.Path, (property, node) =>
             {
                 if (overrides.TryGetValue((d.FileId, property), out var entry) && Override(node, entry) is { } value)
                 {
                     applied.Add((d.FileId, property));
                     return value;
                 }
-                if (isRoot && property == "m_Father" && parent != null) return parent.CopyAt(parent.Line, (_, _) => null);
+                if (isRoot && property == "m_Father" && parent != null) return parent.CopyFrom(null, (_, _) => null);
                 // A reference within the prefab follows its object to the fileID it has here; one to a removed object is null.
                 if (UnityReference.TryFrom(node, out var reference) && reference.IsLocal)
                     return UnityYamlNode.LocalReference(ids.TryGetValue(reference.FileId, out long id) ? id : 0, instance.Line);
@@ -226,7 +226,7 @@ public static class PrefabInstances
     {
         var replacement = node.IsReference ? entry["objectReference"] : node.IsScalar ? entry["value"] : null;
         if (replacement == null || replacement.IsReference != node.IsReference) return null;
-        return replacement.CopyAt(replacement.Line, (_, _) => null);
+        return replacement.CopyFrom(null, (_, _) => null);
     }
 
     /// <summary>The prefab's objects an instance removes: its removed components, and its removed GameObjects with their

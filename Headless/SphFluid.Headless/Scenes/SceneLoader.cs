@@ -129,7 +129,7 @@ public static class SceneLoader
             bool settingsOk = !errors.Any(e => e.Field.StartsWith("Settings", StringComparison.Ordinal));
             if (settingsOk && FluidSceneDescription.ContainerSizeInRange(description.Container.Size, description.Settings.ParticleSpacing)
                 && SceneFit.GridProblem(description) is { } grid)
-                throw new SceneException($"{path}:{containerGo.Transform?.Root["m_LocalScale"]?.Line ?? containerGo.Document.Line}: {invalid}:\n  GameObject '{containerGo.Name}', Transform.m_LocalScale and " +
+                throw new SceneException($"{At(containerGo.Transform?.Root["m_LocalScale"], containerGo.Transform ?? containerGo.Document)}: {invalid}:\n  GameObject '{containerGo.Name}', Transform.m_LocalScale and " +
                     $"{Where(_simulatorGo, RuntimeScripts.Fluid, RuntimeScripts.Settings + "." + nameof(FluidSettings.SmoothingRadius))}: {grid}");
             if (errors.Count > 0)
                 throw new SceneException($"{path}: {invalid}:\n  " + string.Join("\n  ", errors.Select(e => Locate(e, containerGo))));
@@ -173,6 +173,18 @@ public static class SceneLoader
         string Where(UnityGameObject go, string component, string field) =>
             $"GameObject '{go?.Name}', {component}.{field}";
 
+        /// <summary>Where a value stands, as <c>scene:line</c>: the node's own line, else its document's. A value a prefab
+        /// instance keeps from its prefab is at the instance's line, and at its own line in the .prefab, where it can be
+        /// mended for every instance; one the instance overrides in part (one axis of a rotation) is at its first override.
+        /// Every refusal starts with the scene, whichever file holds the value.</summary>
+        string At(UnityYamlNode? node, UnityDocument document)
+        {
+            if (node == null) return $"{path}:{document.Line}";
+            if (node.SourceFile is not { } prefab) return $"{path}:{node.Line}";
+            if (node.DescendantsAndSelf().FirstOrDefault(n => n.SourceFile != prefab) is { } overridden) return At(overridden, document);
+            return $"{path}:{document.Line} (the value at {prefab}:{node.Line}, which the instance does not override)";
+        }
+
         // Each reader below quotes `allowed` when the text is not even of the field's type, so that the message says what
         // to write: a declared setting's range (SettingRules.Allowed), else the bare type.
         float Float(UnityGameObject go, UnityDocument mb, string component, string field, float fallback, string allowed = "a number")
@@ -180,7 +192,7 @@ public static class SceneLoader
             var node = mb.Root.At(field);
             if (node == null) return fallback;
             if (node.IsScalar && UnityYamlNode.TryParseNumber(node.Value, out double v)) return (float)v;
-            throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be {allowed} (was '{node}')");
+            throw new SceneException($"{At(node, mb)}: {Where(go, component, field)} must be {allowed} (was '{node}')");
         }
 
         int Int(UnityGameObject go, UnityDocument mb, string component, string field, int fallback, string allowed = "a whole number")
@@ -188,44 +200,44 @@ public static class SceneLoader
             var node = mb.Root.At(field);
             if (node == null) return fallback;
             if (node.IsScalar && long.TryParse(node.Value, out long v) && v >= int.MinValue && v <= int.MaxValue) return (int)v;
-            throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be {allowed} (was '{node}')");
+            throw new SceneException($"{At(node, mb)}: {Where(go, component, field)} must be {allowed} (was '{node}')");
         }
 
         Vector3 Vector(UnityGameObject go, UnityDocument mb, string component, string field, Vector3 fallback, string allowed = "a vector {x, y, z}")
         {
             var node = mb.Root.At(field);
             if (node == null) return fallback;
-            RequireComponents(go, component, field, node, "x", "y", "z");
+            RequireComponents(go, mb, component, field, node, "x", "y", "z");
             try { return mb.Root.GetVector3(field); }
-            catch (FormatException) { throw new SceneException($"{path}:{UnreadableLine(node, "x", "y", "z")}: {Where(go, component, field)} must be {allowed} (was '{node}')"); }
+            catch (FormatException) { throw new SceneException($"{At(Unreadable(node, "x", "y", "z"), mb)}: {Where(go, component, field)} must be {allowed} (was '{node}')"); }
         }
 
         Vector4 Color(UnityGameObject go, UnityDocument mb, string component, string field, Vector4 fallback, string allowed = "a colour {r, g, b, a}")
         {
             var node = mb.Root.At(field);
             if (node == null) return fallback;
-            RequireComponents(go, component, field, node, "r", "g", "b", "a");
+            RequireComponents(go, mb, component, field, node, "r", "g", "b", "a");
             try { return mb.Root.GetColor(field); }
-            catch (FormatException) { throw new SceneException($"{path}:{UnreadableLine(node, "r", "g", "b", "a")}: {Where(go, component, field)} must be {allowed} (was '{node}')"); }
+            catch (FormatException) { throw new SceneException($"{At(Unreadable(node, "r", "g", "b", "a"), mb)}: {Where(go, component, field)} must be {allowed} (was '{node}')"); }
         }
 
         /// <summary>A vector or colour as Unity writes it, every component and no other: a misspelt component (<c>alpha:</c>)
         /// was dropped and the colour's alpha read as 1. The values themselves are the reader's to parse.</summary>
-        void RequireComponents(UnityGameObject go, string component, string field, UnityYamlNode node, params string[] components)
+        void RequireComponents(UnityGameObject go, UnityDocument mb, string component, string field, UnityYamlNode node, params string[] components)
         {
             if (!node.IsMapping) return;
             string written = string.Join(", ", components);
             foreach (var (key, value) in node.Entries)
                 if (Array.IndexOf(components, key) < 0)
-                    throw new SceneException($"{path}:{value.Line}: {Where(go, component, field)} has no component '{key}' (Unity writes {written})");
+                    throw new SceneException($"{At(value, mb)}: {Where(go, component, field)} has no component '{key}' (Unity writes {written})");
             foreach (string c in components)
                 if (node[c] == null)
-                    throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} lacks its '{c}' (Unity writes {written})");
+                    throw new SceneException($"{At(node, mb)}: {Where(go, component, field)} lacks its '{c}' (Unity writes {written})");
         }
 
-        /// <summary>The line of the first component that holds no number, else the whole value's.</summary>
-        static int UnreadableLine(UnityYamlNode node, params string[] components) =>
-            components.Select(c => node[c]).FirstOrDefault(c => c != null && !(c.IsScalar && UnityYamlNode.TryParseNumber(c.Value, out _)))?.Line ?? node.Line;
+        /// <summary>The first component that holds no number, else the whole value.</summary>
+        static UnityYamlNode Unreadable(UnityYamlNode node, params string[] components) =>
+            components.Select(c => node[c]).FirstOrDefault(c => c != null && !(c.IsScalar && UnityYamlNode.TryParseNumber(c.Value, out _))) ?? node;
 
         static readonly (string Field, string[] Axes)[] TransformFields =
         {
@@ -248,7 +260,7 @@ public static class SceneLoader
                     // A scalar in the mapping's place was reported as its first axis "must be a finite number (was '-0')",
                     // which blamed a number that was finite.
                     if (!node.IsMapping)
-                        throw new SceneException($"{path}:{node.Line}: GameObject '{scene.GameObjectOf(t)?.Name}', Transform.{field} must be {{{string.Join(", ", Array.ConvertAll(axes, a => a + ": <number>"))}}} (was '{node}')");
+                        throw new SceneException($"{At(node, t)}: GameObject '{scene.GameObjectOf(t)?.Name}', Transform.{field} must be {{{string.Join(", ", Array.ConvertAll(axes, a => a + ": <number>"))}}} (was '{node}')");
                     double squares = 0;
                     foreach (string axis in axes)
                     {
@@ -259,12 +271,12 @@ public static class SceneLoader
                             continue;
                         }
                         string was = value == null ? "missing" : $"'{value}'";
-                        throw new SceneException($"{path}:{(value ?? node).Line}: GameObject '{scene.GameObjectOf(t)?.Name}', Transform.{field}.{axis} must be a finite number (was {was})");
+                        throw new SceneException($"{At(value ?? node, t)}: GameObject '{scene.GameObjectOf(t)?.Name}', Transform.{field}.{axis} must be a finite number (was {was})");
                     }
                     double length = Math.Sqrt(squares);
                     if (field == "m_LocalRotation" && !(Math.Abs(length - 1) <= FluidSceneDescription.RotationLengthTolerance))
                         throw new SceneException(FormattableString.Invariant(
-                            $"{path}:{node.Line}: GameObject '{scene.GameObjectOf(t)?.Name}', Transform.{field} must be a unit quaternion (length in {FluidSceneDescription.RotationLengthRange}) (was {node}, length {length:G4})"));
+                            $"{At(node, t)}: GameObject '{scene.GameObjectOf(t)?.Name}', Transform.{field} must be a unit quaternion (length in {FluidSceneDescription.RotationLengthRange}) (was {node}, length {length:G4})"));
                 }
         }
 
@@ -284,8 +296,8 @@ public static class SceneLoader
             string range = string.Format(CultureInfo.InvariantCulture, "[{0}, {1}] {2}", min, max, unit);
             float v = Float(go, mb, component, field, fallback, "a number in " + range);
             if (!(v >= min && v <= max))
-                throw new SceneException(string.Format(CultureInfo.InvariantCulture, "{0}:{1}: {2} must be in {3} (was {4})",
-                    path, mb.Root[field]?.Line ?? mb.Line, Where(go, component, field), range, v));
+                throw new SceneException(string.Format(CultureInfo.InvariantCulture, "{0}: {1} must be in {2} (was {3})",
+                    At(mb.Root[field], mb), Where(go, component, field), range, v));
         }
 
         string Text(UnityGameObject go, UnityDocument mb, string component, string field, string fallback, string allowed = "text")
@@ -293,7 +305,7 @@ public static class SceneLoader
             var node = mb.Root.At(field);
             if (node == null) return fallback;
             if (node.IsScalar) return node.Value;
-            throw new SceneException($"{path}:{node.Line}: {Where(go, component, field)} must be {allowed} (was '{node}')");
+            throw new SceneException($"{At(node, mb)}: {Where(go, component, field)} must be {allowed} (was '{node}')");
         }
 
         /// <summary>The compute shaders Unity would run: those the package's resources asset names, which must be the
@@ -373,7 +385,7 @@ public static class SceneLoader
                     }
                     var fields = declared.Where(d => d.Path.StartsWith(within, StringComparison.Ordinal))
                         .Select(d => d.Path.Substring(within.Length).Split('.')[0]).Distinct();
-                    throw new SceneException($"{path}:{child.Line}: {Where(go, component, prefix + "." + keyPath)}: no field of {typeName}{(within.Length > 0 ? "." + within.TrimEnd('.') : "")} " +
+                    throw new SceneException($"{At(child, mb)}: {Where(go, component, prefix + "." + keyPath)}: no field of {typeName}{(within.Length > 0 ? "." + within.TrimEnd('.') : "")} " +
                         $"is named '{key}', so Unity would drop it and keep the field's default (its fields: {string.Join(", ", fields)})");
                 }
             }
@@ -384,7 +396,7 @@ public static class SceneLoader
         {
             if (errors.Count == 0) return;
             string key = prefix + "." + errors[0].Field;
-            throw new SceneException($"{path}:{mb.Root.At(key)?.Line ?? mb.Line}: {Where(go, component, key)}: {errors[0].Rule}");
+            throw new SceneException($"{At(mb.Root.At(key), mb)}: {Where(go, component, key)}: {errors[0].Rule}");
         }
 
         /// <summary>The container (the Fluid's assigned one, else the scene's first active one) and its GameObject.</summary>
@@ -485,15 +497,14 @@ public static class SceneLoader
             if (head == "Settings")
             {
                 string key = RuntimeScripts.Settings + "." + member;
-                int line = _simulator.Root.At(key)?.Line ?? _simulator.Line;
-                return $"{path}:{line}: {Where(_simulatorGo, RuntimeScripts.Fluid, key)}: {error.Rule}";
+                return $"{At(_simulator.Root.At(key), _simulator)}: {Where(_simulatorGo, RuntimeScripts.Fluid, key)}: {error.Rule}";
             }
             if (head == "Container")
             {
                 if (TransformField(member) is { } containerPlacement)
                     return Placed(containerGo, containerPlacement, error);
                 if (member == nameof(ContainerDescription.Friction) && ContainerBehaviour(containerGo) is { } component)
-                    return $"{path}:{component.Root.At("friction")?.Line ?? component.Line}: {Where(containerGo, RuntimeScripts.FluidContainer, "friction")}: {error.Rule}";
+                    return $"{At(component.Root.At("friction"), component)}: {Where(containerGo, RuntimeScripts.FluidContainer, "friction")}: {error.Rule}";
                 return $"{path}:{containerGo.Document.Line}: GameObject '{containerGo.Name}', {RuntimeScripts.FluidContainer}: {error.Rule}";
             }
             if (TryIndex(head, "SpawnBoxes", out int b) && b < _boxes.Count)
@@ -503,8 +514,7 @@ public static class SceneLoader
                     return Placed(go, placement, error);
                 // The core's path below the box is the serialized one: SpawnBoxes[0].Phase.RestDensity is spawn.Phase.RestDensity.
                 string key = RuntimeScripts.Spawn + "." + string.Join(".", parts.Skip(1));
-                int line = mb.Root.At(key)?.Line ?? mb.Line;
-                return $"{path}:{line}: {Where(go, RuntimeScripts.SpawnBox, key)}: {error.Rule}";
+                return $"{At(mb.Root.At(key), mb)}: {Where(go, RuntimeScripts.SpawnBox, key)}: {error.Rule}";
             }
             if (TryIndex(head, "Obstacles", out int o) && o < _obstacles.Count)
             {
@@ -512,7 +522,7 @@ public static class SceneLoader
                 if (TransformField(member) is { } spherePlacement) return Placed(go, spherePlacement, error);
                 string key = CamelCase(member);
                 string scaled = member == nameof(RigidSphere.Radius) ? ScaledRadius(go, mb) : "";
-                return $"{path}:{mb.Root.At(key)?.Line ?? mb.Line}: GameObject '{go.Name}', SphereObstacle.{key}{scaled}: {error.Rule}";
+                return $"{At(mb.Root.At(key), mb)}: GameObject '{go.Name}', SphereObstacle.{key}{scaled}: {error.Rule}";
             }
             return error.Message;
         }
@@ -532,10 +542,9 @@ public static class SceneLoader
         string Placed(UnityGameObject go, string transformField, ValidationError error)
         {
             string key = transformField.Substring(transformField.IndexOf('.') + 1);
-            int line = go.Transform?.Root[key]?.Line ?? go.Transform?.Line ?? go.Document.Line;
             var parents = go.SelfAndAncestors.Skip(1).Select(g => $"'{g.Name}'").ToList();
             string under = parents.Count == 0 ? "" : $" (in the world, under {string.Join(", ", parents)}, whose Transforms count too)";
-            return $"{path}:{line}: GameObject '{go.Name}', {transformField}{under}: {error.Rule}";
+            return $"{At(go.Transform?.Root[key], go.Transform ?? go.Document)}: GameObject '{go.Name}', {transformField}{under}: {error.Rule}";
         }
 
         static string? TransformField(string member) => member switch

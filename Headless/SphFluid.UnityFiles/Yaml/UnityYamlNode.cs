@@ -24,12 +24,13 @@ public sealed class UnityYamlNode
     readonly Dictionary<string, UnityYamlNode>? _byKey;
     readonly List<UnityYamlNode>? _items;
 
-    UnityYamlNode(UnityYamlNodeKind kind, string? value, bool quoted, int line)
+    UnityYamlNode(UnityYamlNodeKind kind, string? value, bool quoted, int line, string? sourceFile = null)
     {
         Kind = kind;
         Value = value;
         IsQuoted = quoted;
         Line = line;
+        SourceFile = sourceFile;
         if (kind == UnityYamlNodeKind.Mapping)
         {
             _entries = new();
@@ -45,6 +46,10 @@ public sealed class UnityYamlNode
     /// <summary>1-based line in the source file where the node starts (0 if unknown); for a mapping or sequence that is a
     /// key's value, the key's line, though a block one's first member stands below it.</summary>
     public int Line { get; }
+    /// <summary>The file <see cref="Line"/> is in where that is not the file the node is read as part of: a prefab's value
+    /// copied into the scene that places the prefab (<see cref="CopyFrom"/>) names the prefab. Null for a node of the file
+    /// itself.</summary>
+    public string? SourceFile { get; }
 
     [MemberNotNullWhen(true, nameof(Value))]
     public bool IsScalar => Kind == UnityYamlNodeKind.Scalar;
@@ -243,20 +248,21 @@ public sealed class UnityYamlNode
     }
 
     /// <summary>
-    /// A deep copy of this subtree whose every node stands at <paramref name="line"/>, unless <paramref name="replace"/>,
-    /// asked for each node with its property path as Unity writes one in a prefab override (<c>block.size.x</c>, a
-    /// sequence's item <c>list.Array.data[2]</c>), returns a node to take its place (used as it is, not copied).
+    /// A deep copy of this subtree, each node at its own line, and in <paramref name="sourceFile"/> where it names no
+    /// file of its own (null: where the original is), unless <paramref name="replace"/>, asked for each node with its
+    /// property path as Unity writes one in a prefab override (<c>block.size.x</c>, a sequence's item
+    /// <c>list.Array.data[2]</c>), returns a node to take its place (used as it is, not copied).
     /// </summary>
-    public UnityYamlNode CopyAt(int line, Func<string, UnityYamlNode, UnityYamlNode?> replace) => CopyAt(line, replace, "");
+    public UnityYamlNode CopyFrom(string? sourceFile, Func<string, UnityYamlNode, UnityYamlNode?> replace) => CopyFrom(sourceFile, replace, "");
 
-    UnityYamlNode CopyAt(int line, Func<string, UnityYamlNode, UnityYamlNode?> replace, string path)
+    UnityYamlNode CopyFrom(string? sourceFile, Func<string, UnityYamlNode, UnityYamlNode?> replace, string path)
     {
         if (replace(path, this) is { } replacement) return replacement;
-        var copy = new UnityYamlNode(Kind, Value, IsQuoted, line);
+        var copy = new UnityYamlNode(Kind, Value, IsQuoted, Line, SourceFile ?? sourceFile);
         foreach (var e in Entries)
-            copy.TryAdd(e.Key, e.Value.CopyAt(line, replace, path.Length == 0 ? e.Key : path + "." + e.Key));
+            copy.TryAdd(e.Key, e.Value.CopyFrom(sourceFile, replace, path.Length == 0 ? e.Key : path + "." + e.Key));
         for (int i = 0; i < Items.Count; i++)
-            copy.Add(Items[i].CopyAt(line, replace, path + ".Array.data[" + i.ToString(CultureInfo.InvariantCulture) + "]"));
+            copy.Add(Items[i].CopyFrom(sourceFile, replace, path + ".Array.data[" + i.ToString(CultureInfo.InvariantCulture) + "]"));
         return copy;
     }
 
@@ -279,7 +285,7 @@ public sealed class UnityYamlNode
     }
 
     Exception Missing(string path, string what) =>
-        new FormatException($"'{path}' is not {what} (node at line {Line}{(At(path) is { IsScalar: true } s ? $", found '{s.Value}'" : "")})");
+        new FormatException($"'{path}' is not {what} (node at line {Line}{(SourceFile != null ? " of " + SourceFile : "")}{(At(path) is { IsScalar: true } s ? $", found '{s.Value}'" : "")})");
 
     public override string ToString() => Kind switch
     {

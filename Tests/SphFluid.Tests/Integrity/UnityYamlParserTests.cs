@@ -131,16 +131,16 @@ namespace SphFluid.Tests.Integrity
         }
 
         /// <summary>A prefab override names a field by the path Unity writes (a sequence's items as Array.data[i]); a copy
-        /// asks for each node by that path, and stands wholly at the line it is given.</summary>
+        /// asks for each node by that path, and each copied node keeps its line, in the file it was copied from.</summary>
         [Test]
-        public void A_copy_names_each_node_by_its_override_path_and_stands_at_one_line()
+        public void A_copy_names_each_node_by_its_override_path_and_keeps_its_line_in_its_file()
         {
             var root = UnityYamlFile.Parse(Header +
                 "--- !u!114 &5\nMonoBehaviour:\n  m_GameObject: {fileID: 4}\n  spawn:\n    size: {x: 1, y: 2}\n    seeds:\n    - 7\n    - 8\n", "a.prefab")
                 .Documents[0].Root;
             var asked = new System.Collections.Generic.List<string>();
 
-            var copy = root.CopyAt(40, (path, node) =>
+            var copy = root.CopyFrom("a.prefab", (path, node) =>
             {
                 asked.Add(path);
                 if (path == "spawn.seeds.Array.data[1]") return UnityYamlNode.Scalar("9", line: 41);
@@ -152,7 +152,11 @@ namespace SphFluid.Tests.Integrity
             Assert.That(copy.GetReference("m_GameObject")?.FileId, Is.EqualTo(14L));
             Assert.That(copy.At("spawn.seeds[1]")?.Value, Is.EqualTo("9"));
             Assert.That(copy.At("spawn.seeds[1]")?.Line, Is.EqualTo(41));
-            Assert.That(copy.At("spawn.size.y")?.Line, Is.EqualTo(40));
+            Assert.That(copy.At("spawn.seeds[1]")?.SourceFile, Is.Null, "a replacement stays where it was");
+            Assert.That(copy.At("spawn.size.y")?.Line, Is.EqualTo(root.At("spawn.size.y")?.Line));
+            Assert.That(copy.At("spawn.size.y")?.SourceFile, Is.EqualTo("a.prefab"));
+            Assert.That(copy.CopyFrom("b.prefab", (_, _) => null).At("spawn.size.y")?.SourceFile, Is.EqualTo("a.prefab"),
+                "a copy of a copy keeps the file the value is written in");
             Assert.That(root.At("spawn.seeds[1]")?.Value, Is.EqualTo("8"), "the original is left as it was");
         }
     }

@@ -145,6 +145,53 @@ namespace SphFluid.Tests.Runner
             Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("      value: -5")}: GameObject 'Oil', SpawnBox.spawn.Phase.RestDensity"));
         }
 
+        /// <summary>A value the instance keeps from its prefab is mended in the .prefab (for every instance) or overridden
+        /// in the scene: the refusal names the instance's line and the value's own line in the prefab.</summary>
+        [Test]
+        public void APrefabsOwnValueOutOfRangeIsNamedAtItsLineInThePrefab()
+        {
+            var project = new PrefabProject();
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) +
+                project.Document(OilSpawnBox).Replace("RestDensity: 900", "RestDensity: -5"));
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("--- !u!1001 &700")} (the value at Assets/Prefabs/Oil.prefab:" +
+                $"{project.LineIn("Oil", "      RestDensity: -5")}, which the instance does not override): GameObject 'Oil', SpawnBox.spawn.Phase.RestDensity"));
+        }
+
+        /// <summary>A Transform's value is found bad before any field is read (here a NaN in the prefab's position), and is
+        /// named in the prefab as well.</summary>
+        [Test]
+        public void APrefabsTransformValueIsNamedAtItsLineInThePrefab()
+        {
+            var project = new PrefabProject();
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform)
+                .Replace("m_LocalPosition: {x: 0.15, y: 0.1, z: 0}", "m_LocalPosition:\n    x: 0.15\n    y: NaN\n    z: 0") + project.Document(OilSpawnBox));
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.StartWith($"{project.ScenePath}:{project.LineOf("--- !u!1001 &700")} (the value at Assets/Prefabs/Oil.prefab:" +
+                $"{project.LineIn("Oil", "    y: NaN")}, which the instance does not override): GameObject 'Oil', Transform.m_LocalPosition.y must be a finite number"));
+        }
+
+        /// <summary>A rotation the instance overrides in one axis holds the prefab's other three: the refusal of the whole
+        /// quaternion names the override, which made it what it is.</summary>
+        [Test]
+        public void AValueOverriddenInPartIsNamedAtTheOverride()
+        {
+            var project = new PrefabProject();
+            string oil = OilPrefab(project);
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform,
+                PrefabProject.Override(OilTransform, oil, "m_LocalRotation.x", "0.5")));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.StartWith($"{project.ScenePath}:{project.LineOf("      value: 0.5")}: GameObject 'Oil', Transform.m_LocalRotation must be a unit quaternion"));
+        }
+
         /// <summary>Unity keeps an override of a field the component no longer has, and ignores it; on the fluid's own
         /// components the reader refuses it, as it refuses a field it does not know in the scene.</summary>
         [Test]
@@ -318,6 +365,20 @@ namespace SphFluid.Tests.Runner
             Assert.That(Oil(scene).Center.Z, Is.EqualTo(0.01f).Within(1e-6f), "the scene's override");
         }
 
+        /// <summary>A nested box's value that the outer prefab overrides is named at that override, in the outer prefab.</summary>
+        [Test]
+        public void ANestedPrefabsOverrideIsNamedAtItsLineInTheOuterPrefab()
+        {
+            var project = new PrefabProject();
+            string rig = NestedRig(project, oil => PrefabProject.Override(OilSpawnBox, oil, "spawn.Phase.RestDensity", "-5"));
+            project.ReplaceOilWith(PrefabProject.Instance(800, rig, "Rig", 11, 12));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("--- !u!1001 &800")} (the value at Assets/Prefabs/Rig.prefab:" +
+                $"{project.LineIn("Rig", "      value: -5")}, which the instance does not override): GameObject 'Oil', SpawnBox.spawn.Phase.RestDensity"));
+        }
+
         /// <summary>Unity refuses a prefab that nests itself; following it would never end.</summary>
         [Test]
         public void APrefabThatNestsItselfIsRefused()
@@ -449,6 +510,10 @@ namespace SphFluid.Tests.Runner
                     ? d : throw new InvalidOperationException($"the scene has no document &{fileId}");
 
             public int LineOf(string text) => Array.IndexOf(File.ReadAllLines(ScenePath), text) + 1;
+
+            /// <summary>The 1-based line of <paramref name="text"/> in Assets/Prefabs/<paramref name="prefab"/>.prefab.</summary>
+            public int LineIn(string prefab, string text) =>
+                Array.IndexOf(File.ReadAllLines(Path.Combine(_root, "Assets", "Prefabs", prefab + ".prefab")), text) + 1;
 
             public void Edit(string find, string replace)
             {
