@@ -41,7 +41,7 @@ public static class PrefabInstances
         var scripts = new Dictionary<string, string>(StringComparer.Ordinal);
         foreach (string name in FluidScripts)
             if (FluidPackage.ScriptGuid(project, packageFolder, name) is { } guid) scripts[guid] = name; // the reader refuses a missing one by name
-        var prefabs = new PrefabReader(project, scripts);
+        var prefabs = new PrefabReader(path, project, scripts);
 
         var problems = new List<string>();
         var toBuild = new List<(UnityDocument Instance, Prefab Prefab)>();
@@ -75,7 +75,7 @@ public static class PrefabInstances
         var unused = used.SelectMany(p => p.UnusedOverrides).ToList();
         var built = new List<UnityDocument>();
         foreach (var (instance, prefab) in toBuild)
-            built.AddRange(Instantiate(path, standIns, instance, prefab, scripts, taken, unused));
+            built.AddRange(Instantiate(path, standIns, instance, prefab, prefabs, taken, unused));
         // Unity keeps an override of a field its component no longer has, and ignores it; on the fluid's own components
         // the reader refuses it, as it refuses a field it does not know in the scene itself.
         if (unused.Count > 0)
@@ -158,7 +158,7 @@ public static class PrefabInstances
     /// <summary>One instance's objects, built from its prefab as Unity builds them. <paramref name="path"/> is the file
     /// holding the instance (a scene, or a prefab that nests it), whose fileIDs <paramref name="taken"/> lists.</summary>
     static List<UnityDocument> Instantiate(string path, ILookup<long, UnityDocument> standIns, UnityDocument instance, Prefab prefab,
-        IReadOnlyDictionary<string, string> scripts, HashSet<long> taken, List<string> unused)
+        PrefabReader prefabs, HashSet<long> taken, List<string> unused)
     {
         var modification = instance.Root["m_Modification"];
         var objects = prefab.File!.Documents;
@@ -171,6 +171,7 @@ public static class PrefabInstances
                 ids[source.FileId] = standIn.FileId;
         var removed = Removed(modification, prefab);
         var kept = objects.Where(d => !removed.Contains(d.FileId)).ToList();
+        prefabs.Build(kept.Count, prefab.Path, path);
         foreach (var d in kept)
             if (!ids.ContainsKey(d.FileId))
                 ids[d.FileId] = FreeId((instance.FileId ^ d.FileId) & long.MaxValue, taken);
@@ -213,7 +214,7 @@ public static class PrefabInstances
             {
                 if (prefab.Held.Count > 0) unused.Add($"{at} {property} of &{target}, which {prefab.Path} does not hold");
             }
-            else if (component.ScriptGuid is { } guid && scripts.TryGetValue(guid, out string? script))
+            else if (component.ScriptGuid is { } guid && prefabs.Scripts.TryGetValue(guid, out string? script))
                 unused.Add($"{at} {script}.{property}, which is no field of the {script} in {prefab.Path}");
         }
         return built;
@@ -273,15 +274,38 @@ public static class PrefabInstances
     /// prefabs they nest first.</summary>
     sealed class PrefabReader
     {
+        /// <summary>The objects one scene's prefabs may build, every level of nesting counted: about twice what the
+        /// largest scene file the reader takes holds (<see cref="UnityTextFile.MaxBytes"/>, some 600 bytes an object),
+        /// some 350 MB built. Nesting multiplies: a prefab holding two instances of one holding two, twenty levels down,
+        /// is a million copies of the innermost, and a chain of 2 000 nested prefabs built 4 million objects in nearly
+        /// 5 minutes.</summary>
+        public const int MaxBuiltObjects = 50_000;
+
+        readonly string _scenePath;
         readonly UnityProject _project;
-        readonly IReadOnlyDictionary<string, string> _scripts;
         readonly Dictionary<string, Prefab> _read = new(StringComparer.Ordinal);
         readonly HashSet<string> _reading = new(StringComparer.Ordinal);
+        int _built;
 
-        public PrefabReader(UnityProject project, IReadOnlyDictionary<string, string> scripts)
+        public PrefabReader(string scenePath, UnityProject project, IReadOnlyDictionary<string, string> scripts)
         {
+            _scenePath = scenePath;
             _project = project;
-            _scripts = scripts;
+            Scripts = scripts;
+        }
+
+        /// <summary>The fluid's script names by the guid of their .cs.meta.</summary>
+        public IReadOnlyDictionary<string, string> Scripts { get; }
+
+        /// <summary>Counts <paramref name="objects"/> built from <paramref name="prefab"/> into <paramref name="into"/>
+        /// against <see cref="MaxBuiltObjects"/>, refusing the scene past it.</summary>
+        public void Build(int objects, string prefab, string into)
+        {
+            _built += objects;
+            if (_built > MaxBuiltObjects)
+                throw new SceneException($"{_scenePath}: its prefab instances build more than {MaxBuiltObjects} objects, every level of " +
+                    $"nesting counted (the count passed it building {prefab} into {into}); the reader refuses prefabs nested that deep " +
+                    $"or that many times over, as it refuses a scene file over {UnityTextFile.MaxBytes >> 20} MiB");
         }
 
         public Prefab Get(string path)
@@ -313,7 +337,7 @@ public static class PrefabInstances
 
             var held = new List<string>();
             foreach (var behaviour in raw.OfClass(UnityScene.MonoBehaviourClassId))
-                if (!behaviour.IsStripped && behaviour.ScriptGuid is { } guid && _scripts.TryGetValue(guid, out string? script))
+                if (!behaviour.IsStripped && behaviour.ScriptGuid is { } guid && Scripts.TryGetValue(guid, out string? script))
                     held.Add($"a {script} on its GameObject '{raw.Find(behaviour.GameObject)?.Root.GetString("m_Name", "") ?? ""}'");
 
             var documents = raw.Documents.Where(d => !d.IsStripped && d.ClassId != PrefabInstanceClassId).ToList();
@@ -336,7 +360,7 @@ public static class PrefabInstances
                 else if (inner.File == null) notBuilt ??= inner.NotBuilt;
                 else if (unreadable == null && notBuilt == null)
                 {
-                    documents.AddRange(Instantiate(path, standIns, nested, inner, _scripts, taken, unused));
+                    documents.AddRange(Instantiate(path, standIns, nested, inner, this, taken, unused));
                     sources.AddRange(inner.Sources);
                     unused.AddRange(inner.UnusedOverrides);
                 }
