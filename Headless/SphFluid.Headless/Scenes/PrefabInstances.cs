@@ -281,6 +281,10 @@ public static class PrefabInstances
         /// 5 minutes.</summary>
         public const int MaxBuiltObjects = 50_000;
 
+        /// <summary>Prefabs nested within prefabs, levels deep: each level is read within the one above it, and a chain of
+        /// 20 000 exhausted the stack and ended the program. Unity sets no such limit; its users nest a few levels.</summary>
+        public const int MaxNestingDepth = 64;
+
         readonly string _scenePath;
         readonly UnityProject _project;
         readonly Dictionary<string, Prefab> _read = new(StringComparer.Ordinal);
@@ -314,6 +318,9 @@ public static class PrefabInstances
             // Unity refuses a prefab that nests itself; following it would not end.
             if (!_reading.Add(path))
                 return Unbuilt(path, unreadable: $"{path} nests itself");
+            if (_reading.Count > MaxNestingDepth)
+                throw new SceneException($"{_scenePath}: its prefab instances nest prefabs more than {MaxNestingDepth} levels deep " +
+                    $"({path} at level {_reading.Count}); the reader refuses nesting that deep");
             try { prefab = Read(path); }
             finally { _reading.Remove(path); }
             return _read[path] = prefab;

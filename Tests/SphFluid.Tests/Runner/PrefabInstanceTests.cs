@@ -422,6 +422,28 @@ namespace SphFluid.Tests.Runner
             Assert.That(thrown!.Message, Does.StartWith($"{project.ScenePath}: its prefab instances build more than 50000 objects, every level of nesting counted"));
         }
 
+        /// <summary>Each level of nesting is read within the one above it: a chain of 20 000 prefabs, each nesting the
+        /// next, exhausted the stack and ended the program. Past 64 levels the scene is refused.</summary>
+        [Test]
+        public void PrefabsNestedDeeperThanTheLimitAreRefused()
+        {
+            var project = new PrefabProject();
+            string inner = OilPrefab(project);
+            long rootObject = OilObject, rootTransform = OilTransform;
+            for (int level = 1; level <= 70; level++)
+            {
+                inner = project.AddPrefab($"Level {level}", RigRoot(project, child: 701) + PrefabProject.Instance(700, inner, "Inner", rootObject, rootTransform)
+                    .Replace("m_TransformParent: {fileID: 0}", "m_TransformParent: {fileID: 12}"));
+                (rootObject, rootTransform) = (11, 12);
+            }
+            project.ReplaceOilWith(PrefabProject.Instance(800, inner, "Chain", rootObject, rootTransform));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Is.EqualTo($"{project.ScenePath}: its prefab instances nest prefabs more than 64 levels deep " +
+                "(Assets/Prefabs/Level 6.prefab at level 65); the reader refuses nesting that deep"));
+        }
+
         /// <summary>Renaming a GameObject inside an instance writes an m_Name override too, after the root's: the instance is
         /// named by the override of its prefab's root GameObject, not by the last one.</summary>
         [Test]
