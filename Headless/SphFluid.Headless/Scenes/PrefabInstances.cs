@@ -240,14 +240,17 @@ public static class PrefabInstances
         var gone = new Queue<long>();
         foreach (var item in modification?["m_RemovedGameObjects"]?.Items ?? Array.Empty<UnityYamlNode>())
             if (UnityReference.TryFrom(item, out var r) && r.Guid == prefab.Guid) gone.Enqueue(r.FileId);
-        var scene = gone.Count > 0 ? new UnityScene(prefab.File!) : null;
-        while (scene != null && gone.Count > 0)
+        if (gone.Count == 0) return removed;
+        var scene = new UnityScene(prefab.File!);
+        // Looked up, not scanned for each GameObject removed: removing the top of a chain of 4 000 took 40 s.
+        var children = scene.GameObjects.ToLookup(g => g.Parent?.FileId ?? 0);
+        while (gone.Count > 0)
         {
             var go = scene.GameObject(gone.Dequeue());
             if (go == null || !removed.Add(go.FileId)) continue;
             foreach (var item in go.Document.Root["m_Component"]?.Items ?? Array.Empty<UnityYamlNode>())
                 if (item.GetReference("component") is { } c) removed.Add(c.FileId);
-            foreach (var child in scene.GameObjects.Where(g => g.Parent?.FileId == go.FileId)) gone.Enqueue(child.FileId);
+            foreach (var child in children[go.FileId]) gone.Enqueue(child.FileId);
         }
         return removed;
     }

@@ -249,6 +249,34 @@ namespace SphFluid.Tests.Runner
             Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water" }));
         }
 
+        /// <summary>Removing a GameObject removes every one under it; the prefab's children were scanned for each one
+        /// removed, and removing the top of a chain of 4 000 took 40 s.</summary>
+        [Test]
+        public void RemovingTheTopOfALongChainTakesLinearTime()
+        {
+            var project = new PrefabProject();
+            const int chain = 4000;
+            var links = new System.Text.StringBuilder();
+            for (int i = 0; i < chain; i++)
+            {
+                long go = 10_000 + i, transform = 20_001 + i, father = i == 0 ? OilTransform : transform - 1;
+                string children = i + 1 < chain ? $"m_Children:\n  - {{fileID: {transform + 1}}}" : "m_Children: []";
+                links.Append($"--- !u!1 &{go}\nGameObject:\n  m_ObjectHideFlags: 0\n  serializedVersion: 6\n  m_Component:\n  - component: {{fileID: {transform}}}\n" +
+                    $"  m_Layer: 0\n  m_Name: Link {i}\n  m_TagString: Untagged\n  m_IsActive: 1\n--- !u!4 &{transform}\nTransform:\n  m_ObjectHideFlags: 0\n" +
+                    $"  m_GameObject: {{fileID: {go}}}\n  serializedVersion: 2\n  m_LocalRotation: {{x: 0, y: 0, z: 0, w: 1}}\n  m_LocalPosition: {{x: 0, y: 0, z: 0}}\n" +
+                    $"  m_LocalScale: {{x: 1, y: 1, z: 1}}\n  m_ConstrainProportionsScale: 0\n  {children}\n  m_Father: {{fileID: {father}}}\n" +
+                    "  m_LocalEulerAnglesHint: {x: 0, y: 0, z: 0}\n");
+            }
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) +
+                project.Document(OilTransform).Replace("m_Children: []", "m_Children:\n  - {fileID: 20001}") + links + project.Document(OilSpawnBox));
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform)
+                .Replace("m_RemovedGameObjects: []", $"m_RemovedGameObjects:\n    - {{fileID: 10000, guid: {oil}, type: 3}}"));
+
+            var scene = Deadline.Within(10, () => SceneLoader.Load(project.ScenePath, project.Project), "loading the scene");
+
+            Assert.That(Oil(scene).Center.X, Is.EqualTo(0.15f).Within(1e-6f), "the box on the prefab's root stays");
+        }
+
         /// <summary>A prefab is checked as a scene is before it is built: one Unity would break on is refused naming its
         /// own file and line.</summary>
         [Test]
