@@ -79,7 +79,7 @@ public static class PrefabInstances
         // Unity keeps an override of a field its component no longer has, and ignores it; on the fluid's own components
         // the reader refuses it, as it refuses a field it does not know in the scene itself.
         if (unused.Count > 0)
-            throw new SceneException($"{path}: prefab instances override fields the fluid's components do not have ({unused.Count}):\n  " +
+            throw new SceneException($"{path}: prefab instances hold overrides of the fluid's components that Unity cannot apply ({unused.Count}):\n  " +
                 string.Join("\n  ", unused) + "\n  Unity keeps such unused overrides and ignores them: remove them in the Inspector " +
                 "(the instance's Overrides dropdown, Unused overrides) to run the scene here");
 
@@ -182,6 +182,7 @@ public static class PrefabInstances
             if (entry.GetReference("target") is { } target && target.Guid == prefab.Guid)
                 overrides[(target.FileId, entry.GetString("propertyPath", "") ?? "")] = entry;
         var applied = new HashSet<(long, string)>();
+        var misfits = new Dictionary<(long, string), UnityYamlNode>(); // fields an override names that its value cannot stand for
         var parent = modification?["m_TransformParent"];
 
         var built = new List<UnityDocument>();
@@ -190,10 +191,14 @@ public static class PrefabInstances
             bool isRoot = d.FileId == prefab.RootTransform;
             var root = d.Root.CopyFrom(prefab.Path, (property, node) =>
             {
-                if (overrides.TryGetValue((d.FileId, property), out var entry) && Override(node, entry) is { } value)
+                if (overrides.TryGetValue((d.FileId, property), out var entry))
                 {
-                    applied.Add((d.FileId, property));
-                    return value;
+                    if (Override(node, entry) is { } value)
+                    {
+                        applied.Add((d.FileId, property));
+                        return value;
+                    }
+                    misfits[(d.FileId, property)] = node;
                 }
                 if (isRoot && property == "m_Father" && parent != null) return parent.CopyFrom(null, (_, _) => null);
                 // A reference within the prefab follows its object to the fileID it has here; one to a removed object is null.
@@ -215,7 +220,9 @@ public static class PrefabInstances
                 if (prefab.Held.Count > 0) unused.Add($"{at} {property} of &{target}, which {prefab.Path} does not hold");
             }
             else if (component.ScriptGuid is { } guid && prefabs.Scripts.TryGetValue(guid, out string? script))
-                unused.Add($"{at} {script}.{property}, which is no field of the {script} in {prefab.Path}");
+                unused.Add(misfits.TryGetValue((target, property), out var field)
+                    ? $"{at} {script}.{property}, {Misfit(field, property)}"
+                    : $"{at} {script}.{property}, which is no field of the {script} in {prefab.Path}");
         }
         return built;
     }
@@ -229,6 +236,13 @@ public static class PrefabInstances
         if (replacement == null || replacement.IsReference != node.IsReference) return null;
         return replacement.CopyFrom(null, (_, _) => null);
     }
+
+    /// <summary>Why an override cannot stand for the field it names: Unity writes one per value, never one for a block.</summary>
+    static string Misfit(UnityYamlNode field, string property) =>
+        field.IsReference ? "a reference, with no objectReference to put in it"
+        : field.IsMapping ? $"a block of fields, with one value (Unity overrides each field of it: {property}.<field>)"
+        : field.IsSequence ? $"a list, with one value (Unity overrides its length and items: {property}.Array.size, {property}.Array.data[i])"
+        : "a value, with none to put in it";
 
     /// <summary>The prefab's objects an instance removes: its removed components, and its removed GameObjects with their
     /// components and every GameObject under them.</summary>

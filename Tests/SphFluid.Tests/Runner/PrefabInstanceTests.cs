@@ -209,6 +209,23 @@ namespace SphFluid.Tests.Runner
             Assert.That(e.Message, Does.Contain("Unity keeps such unused overrides and ignores them"));
         }
 
+        /// <summary>Unity writes an override for each value; one that names a whole block with one value cannot be
+        /// applied, and was refused as no field of the SpawnBox, which it is.</summary>
+        [Test]
+        public void AnOverrideOfAWholeBlockIsRefusedAsOneValueForABlock()
+        {
+            var project = new PrefabProject();
+            string oil = OilPrefab(project);
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform,
+                PrefabProject.Override(OilSpawnBox, oil, "spawn.Phase", "850")));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.StartWith($"{project.ScenePath}: prefab instances hold overrides of the fluid's components that Unity cannot apply (1):"));
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("      propertyPath: spawn.Phase")}: PrefabInstance 'Oil' of " +
+                "Assets/Prefabs/Oil.prefab overrides SpawnBox.spawn.Phase, a block of fields, with one value (Unity overrides each field of it: spawn.Phase.<field>)"));
+        }
+
         [Test]
         public void AComponentTheInstanceRemovesIsLeftOut()
         {
