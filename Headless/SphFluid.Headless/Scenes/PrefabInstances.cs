@@ -354,7 +354,9 @@ public static class PrefabInstances
         {
             // A model (.fbx) stands in as a prefab too; its objects come from its importer, and it holds no scripts.
             if (!path.EndsWith(".prefab", StringComparison.OrdinalIgnoreCase))
-                return Unbuilt(path, notBuilt: $"{path} is a model, whose objects come from its importer, not from YAML");
+                return Unbuilt(path, notBuilt: IsModel(path)
+                    ? $"{path} is a model, whose objects come from its importer, not from YAML"
+                    : $"{path} is neither a prefab nor a model, so no objects can be built from it");
             UnityYamlFile raw;
             try { raw = UnityYamlFile.Load(_project.FullPath(path)); }
             catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException) { return Unbuilt(path, unreadable: e.Message); }
@@ -401,6 +403,13 @@ public static class PrefabInstances
             var root = new UnityScene(file).RootTransforms.FirstOrDefault();
             return new Prefab(path, _project.GuidOf(path), file, held, null, null, root?.GameObject?.FileId ?? 0, root?.FileId ?? 0,
                 sources, unused);
+        }
+
+        /// <summary>Whether Unity imports the asset as a model (its .meta says ModelImporter).</summary>
+        bool IsModel(string path)
+        {
+            try { return UnityMeta.Load(_project.FullPath(path) + ".meta").ImporterType == "ModelImporter"; }
+            catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException) { return false; }
         }
     }
 

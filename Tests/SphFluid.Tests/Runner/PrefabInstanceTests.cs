@@ -520,6 +520,43 @@ namespace SphFluid.Tests.Runner
                 "Assets/Prefabs/Oil.prefab overrides spawn.Jitter of &4242, which Assets/Prefabs/Oil.prefab does not hold"));
         }
 
+        /// <summary>A model placed as a prefab instance has its objects from its importer, which the reader cannot run: a
+        /// SpawnBox placed under one is refused naming the instance and the model.</summary>
+        [Test]
+        public void ASpawnBoxUnderAModelsInstanceIsRefusedNamingIt()
+        {
+            var project = new PrefabProject();
+            string rock = project.AddAsset("Rock.fbx", "Kaydara FBX Binary", "ModelImporter");
+            project.Edit(project.Document(OilTransform), project.Document(OilTransform).Replace("m_Father: {fileID: 0}", "m_Father: {fileID: 701}"));
+            project.Edit($"  - {{fileID: {OilTransform}}}\n", "  - {fileID: 701}\n");
+            project.Edit("--- !u!1660057539", PrefabProject.Instance(700, rock, "Rock", 919132149155446097, -8679921383154817045) + "--- !u!1660057539");
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf($"--- !u!114 &{OilSpawnBox}")}: the SpawnBox of GameObject 'Oil', " +
+                "which lies under a GameObject of PrefabInstance 'Rock' of Assets/Prefabs/Rock.fbx that places it, which the reader cannot build"));
+            Assert.That(e.Message, Does.Contain(Unpack));
+        }
+
+        /// <summary>An instance whose source is no prefab (a material, by a hand-edited guid) in a prefab holding the Oil
+        /// box: the prefab is refused for it, and the material is not called a model.</summary>
+        [Test]
+        public void APrefabNestingAnInstanceOfAMaterialIsRefusedNamingIt()
+        {
+            var project = new PrefabProject();
+            string material = project.AddAsset("Paint.mat", "%YAML 1.1\n", "NativeFormatImporter");
+            string oil = project.AddPrefab("Oil", project.Document(OilObject) +
+                project.Document(OilTransform).Replace("m_Children: []", "m_Children:\n  - {fileID: 701}") + project.Document(OilSpawnBox) +
+                PrefabProject.Instance(700, material, "Paint", 1, 2).Replace("m_TransformParent: {fileID: 0}", $"m_TransformParent: {{fileID: {OilTransform}}}"));
+            project.ReplaceOilWith(PrefabProject.Instance(800, oil, "Oil", OilObject, OilTransform));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("--- !u!1001 &800")}: PrefabInstance 'Oil' of Assets/Prefabs/Oil.prefab " +
+                "holds a SpawnBox on its GameObject 'Oil'; the reader cannot build it: Assets/Prefabs/Paint.mat is neither a prefab nor a model, " +
+                "so no objects can be built from it"));
+        }
+
         /// <summary>A prefab file that cannot be read (emptied here) may hold the fluid's components: refused, not guessed.</summary>
         [Test]
         public void AnUnreadablePrefabIsRefusedForWhatItMayHold()
@@ -625,7 +662,12 @@ namespace SphFluid.Tests.Runner
             }
 
             /// <summary>Writes Assets/Prefabs/<paramref name="name"/>.prefab and its .meta; returns its guid.</summary>
-            public string AddPrefab(string name, string documents)
+            public string AddPrefab(string name, string documents) =>
+                AddAsset(name + ".prefab", "%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n" + documents, "PrefabImporter");
+
+            /// <summary>Writes Assets/Prefabs/<paramref name="fileName"/> and its .meta for <paramref name="importer"/>;
+            /// returns its guid.</summary>
+            public string AddAsset(string fileName, string text, string importer)
             {
                 string folder = Path.Combine(_root, "Assets", "Prefabs");
                 if (!_prefabFolder)
@@ -636,8 +678,8 @@ namespace SphFluid.Tests.Runner
                     _prefabFolder = true;
                 }
                 string guid = NewGuid();
-                File.WriteAllText(Path.Combine(folder, name + ".prefab"), "%YAML 1.1\n%TAG !u! tag:unity3d.com,2011:\n" + documents);
-                File.WriteAllText(Path.Combine(folder, name + ".prefab.meta"), $"fileFormatVersion: 2\nguid: {guid}\nPrefabImporter:\n" +
+                File.WriteAllText(Path.Combine(folder, fileName), text);
+                File.WriteAllText(Path.Combine(folder, fileName + ".meta"), $"fileFormatVersion: 2\nguid: {guid}\n{importer}:\n" +
                     "  externalObjects: {}\n  userData: \n  assetBundleName: \n  assetBundleVariant: \n");
                 return guid;
             }
