@@ -79,7 +79,7 @@ public static class PrefabInstances
         // Unity keeps an override of a field its component no longer has, and ignores it; on the fluid's own components
         // the reader refuses it, as it refuses a field it does not know in the scene itself.
         if (unused.Count > 0)
-            throw new SceneException($"{path}: prefab instances hold overrides of the fluid's components that Unity cannot apply ({unused.Count}):\n  " +
+            throw new SceneException($"{path}: instances of prefabs that hold the fluid's components carry overrides Unity cannot apply ({unused.Count}):\n  " +
                 string.Join("\n  ", unused) + "\n  Unity keeps such unused overrides and ignores them: remove them in the Inspector " +
                 "(the instance's Overrides dropdown, Unused overrides) to run the scene here");
 
@@ -179,8 +179,18 @@ public static class PrefabInstances
         // Unity writes one override a field; should a hand-merged file hold two, the later wins, as it does in Unity.
         var overrides = new Dictionary<(long Target, string Path), UnityYamlNode>();
         foreach (var entry in modification?["m_Modifications"]?.Items ?? Array.Empty<UnityYamlNode>())
-            if (entry.GetReference("target") is { } target && target.Guid == prefab.Guid)
-                overrides[(target.FileId, entry.GetString("propertyPath", "") ?? "")] = entry;
+        {
+            if (entry.GetReference("target") is not { } target) continue;
+            string property = entry.GetString("propertyPath", "") ?? "";
+            if (target.Guid == prefab.Guid)
+                overrides[(target.FileId, property)] = entry;
+            // An override names an object of the instance's own prefab; one of another asset's (a hand edit, or a merge
+            // gone wrong) changes nothing in Unity, and in a prefab holding the fluid may have been meant for a fluid field.
+            else if (prefab.Held.Count > 0 && !target.IsNull)
+                unused.Add($"{path}:{entry["propertyPath"]?.Line ?? entry.Line}: {Named(instance, prefab)} overrides {property} of " +
+                    $"&{target.FileId} {(target.IsLocal ? "of this file" : $"of another asset (guid {target.Guid})")}; an instance's " +
+                    $"overrides name objects of its own prefab, {prefab.Path}");
+        }
         var applied = new HashSet<(long, string)>();
         var misfits = new Dictionary<(long, string), UnityYamlNode>(); // fields an override names that its value cannot stand for
         var parent = modification?["m_TransformParent"];

@@ -221,7 +221,7 @@ namespace SphFluid.Tests.Runner
 
             var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
 
-            Assert.That(e.Message, Does.StartWith($"{project.ScenePath}: prefab instances hold overrides of the fluid's components that Unity cannot apply (1):"));
+            Assert.That(e.Message, Does.StartWith($"{project.ScenePath}: instances of prefabs that hold the fluid's components carry overrides Unity cannot apply (1):"));
             Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("      propertyPath: spawn.Phase")}: PrefabInstance 'Oil' of " +
                 "Assets/Prefabs/Oil.prefab overrides SpawnBox.spawn.Phase, a block of fields, with one value (Unity overrides each field of it: spawn.Phase.<field>)"));
         }
@@ -555,6 +555,24 @@ namespace SphFluid.Tests.Runner
             Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("--- !u!1001 &800")}: PrefabInstance 'Oil' of Assets/Prefabs/Oil.prefab " +
                 "holds a SpawnBox on its GameObject 'Oil'; the reader cannot build it: Assets/Prefabs/Paint.mat is neither a prefab nor a model, " +
                 "so no objects can be built from it"));
+        }
+
+        /// <summary>An override names an object of the instance's own prefab; one naming another asset's object (here the
+        /// SpawnBox of a copy of its prefab) changes nothing in Unity and, in a prefab holding the fluid, is refused.</summary>
+        [Test]
+        public void AnOverrideOfAnotherAssetsObjectIsRefusedWhereThePrefabHoldsTheFluid()
+        {
+            var project = new PrefabProject();
+            string oil = OilPrefab(project);
+            string other = project.AddPrefab("Other Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform,
+                PrefabProject.Override(OilSpawnBox, other, "spawn.Phase.RestDensity", "850")));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("      propertyPath: spawn.Phase.RestDensity")}: PrefabInstance 'Oil' of " +
+                $"Assets/Prefabs/Oil.prefab overrides spawn.Phase.RestDensity of &{OilSpawnBox} of another asset (guid {other}); " +
+                "an instance's overrides name objects of its own prefab, Assets/Prefabs/Oil.prefab"));
         }
 
         /// <summary>A prefab file that cannot be read (emptied here) may hold the fluid's components: refused, not guessed.</summary>
