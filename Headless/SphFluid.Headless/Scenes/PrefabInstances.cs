@@ -171,7 +171,7 @@ public static class PrefabInstances
                 ids[source.FileId] = standIn.FileId;
         var removed = Removed(modification, prefab);
         var kept = objects.Where(d => !removed.Contains(d.FileId)).ToList();
-        prefabs.Build(kept.Count, prefab.Path, path);
+        prefabs.CountBuilt(kept.Count, prefab.Path, path);
         foreach (var d in kept)
             if (!ids.ContainsKey(d.FileId))
                 ids[d.FileId] = FreeId((instance.FileId ^ d.FileId) & long.MaxValue, taken);
@@ -330,7 +330,7 @@ public static class PrefabInstances
 
         /// <summary>Counts <paramref name="objects"/> built from <paramref name="prefab"/> into <paramref name="into"/>
         /// against <see cref="MaxBuiltObjects"/>, refusing the scene past it.</summary>
-        public void Build(int objects, string prefab, string into)
+        public void CountBuilt(int objects, string prefab, string into)
         {
             _built += objects;
             if (_built > MaxBuiltObjects)
