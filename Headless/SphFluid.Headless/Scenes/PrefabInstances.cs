@@ -55,7 +55,7 @@ public static class PrefabInstances
             if (!placing.Contains(instance.FileId) && prefab.Unreadable == null && prefab.Held.Count == 0) continue;
             if (prefab.Unreadable != null)
                 problems.Add($"{path}:{instance.Line}: {Named(instance, prefab)}: its prefab cannot be read ({prefab.Unreadable}), so whether it holds the fluid's components cannot be told");
-            else if (prefab.File != null)
+            else if (prefabs.Build(prefab) != null)
                 toBuild.Add((instance, prefab));
             else if (prefab.Held.Count > 0)
                 problems.Add($"{path}:{instance.Line}: {Named(instance, prefab)} holds {string.Join(", ", prefab.Held)}; the reader cannot build it: {prefab.NotBuilt}");
@@ -65,14 +65,14 @@ public static class PrefabInstances
         // guid no .meta has) would build some other scene: the prefabs get the scene's own check before any is built.
         var used = toBuild.Select(b => b.Prefab).Distinct().ToList();
         var prefabProblems = used.Count == 0 ? Array.Empty<IntegrityProblem>()
-            : AssetIntegrity.CheckScenes(project.Root, used.SelectMany(p => p.Sources).Distinct().ToList());
+            : AssetIntegrity.CheckScenes(project.Root, used.SelectMany(p => p.Contents!.Sources).Distinct().ToList());
         if (prefabProblems.Count > 0)
             throw new SceneException($"{path}: the integrity check refuses prefabs the scene's instances are built from ({prefabProblems.Count} problem(s)):\n  " +
                 string.Join("\n  ", prefabProblems));
 
         var taken = new HashSet<long>(scene.File.Documents.Select(d => d.FileId));
         var standIns = StandIns(scene.File);
-        var unused = used.SelectMany(p => p.UnusedOverrides).ToList();
+        var unused = used.SelectMany(p => p.Contents!.UnusedOverrides).ToList();
         var built = new List<UnityDocument>();
         foreach (var (instance, prefab) in toBuild)
             built.AddRange(Instantiate(path, standIns, instance, prefab, prefabs, taken, unused));
@@ -161,7 +161,8 @@ public static class PrefabInstances
         PrefabReader prefabs, HashSet<long> taken, List<string> unused)
     {
         var modification = instance.Root["m_Modification"];
-        var objects = prefab.File!.Documents;
+        var contents = prefab.Contents!;
+        var objects = contents.File.Documents;
 
         // The objects the file refers to keep the fileID of their stand-in; the others get the instance's fileID xor their
         // own, which is how Unity derives the fileIDs that the overrides of an instance of a nesting prefab name.
@@ -198,7 +199,7 @@ public static class PrefabInstances
         var built = new List<UnityDocument>();
         foreach (var d in kept)
         {
-            bool isRoot = d.FileId == prefab.RootTransform;
+            bool isRoot = d.FileId == contents.RootTransform;
             var root = d.Root.CopyFrom(prefab.Path, (property, node) =>
             {
                 if (overrides.TryGetValue((d.FileId, property), out var entry))
@@ -265,7 +266,7 @@ public static class PrefabInstances
         foreach (var item in modification?["m_RemovedGameObjects"]?.Items ?? Array.Empty<UnityYamlNode>())
             if (UnityReference.TryFrom(item, out var r) && r.Guid == prefab.Guid) gone.Enqueue(r.FileId);
         if (gone.Count == 0) return removed;
-        var scene = new UnityScene(prefab.File!);
+        var scene = new UnityScene(prefab.Contents!.File);
         // Looked up, not scanned for each GameObject removed: removing the top of a chain of 4 000 took 40 s.
         var children = scene.GameObjects.ToLookup(g => g.Parent?.FileId ?? 0);
         while (gone.Count > 0)
@@ -287,18 +288,48 @@ public static class PrefabInstances
     }
 
     /// <summary>
-    /// What the reader knows of one prefab. <see cref="File"/> is its objects with every prefab it nests built in (its
-    /// own fileIDs, as its instances' overrides name them), or null where it cannot be built: <see cref="Unreadable"/>
-    /// says why a file of it could not be read, <see cref="NotBuilt"/> why a readable one cannot be built.
-    /// <see cref="Held"/> names the fluid's components in it and in the prefabs it nests; <see cref="Sources"/> are the
-    /// files it is built from, for the integrity check; <see cref="UnusedOverrides"/> are what its nested instances
-    /// override that no fluid component has.
+    /// What the reader knows of one prefab from reading it and the prefabs it nests: <see cref="Held"/> names the fluid's
+    /// components in them; <see cref="Unreadable"/> says why a file of them could not be read, <see cref="NotBuilt"/> why
+    /// they cannot be built. <see cref="Contents"/> is set once the prefab is built (<see cref="PrefabReader.Build"/>),
+    /// which only a prefab the fluid needs is: a prop's is read for what it holds and left as it stands.
     /// </summary>
-    sealed record Prefab(string Path, string? Guid, UnityYamlFile? File, List<string> Held, string? Unreadable, string? NotBuilt,
-        long RootObject, long RootTransform, IReadOnlyList<(string Path, UnityYamlFile Yaml)> Sources, List<string> UnusedOverrides);
+    sealed class Prefab
+    {
+        long? _rootObject;
 
-    /// <summary>Reads and builds prefabs, each once per scene (a scene may hold a prop's instance hundreds of times), the
-    /// prefabs they nest first.</summary>
+        public Prefab(string path, string? guid, UnityYamlFile? raw, List<string> held, string? unreadable, string? notBuilt)
+        {
+            Path = path;
+            Guid = guid;
+            Raw = raw;
+            Held = held;
+            Unreadable = unreadable;
+            NotBuilt = notBuilt;
+        }
+
+        public string Path { get; }
+        public string? Guid { get; }
+        /// <summary>The prefab's own file as read, its nested instances not built; null where it could not be read.</summary>
+        public UnityYamlFile? Raw { get; }
+        public List<string> Held { get; }
+        public string? Unreadable { get; }
+        public string? NotBuilt { get; set; }
+        public PrefabContents? Contents { get; set; }
+
+        /// <summary>The prefab's root GameObject: the built one's, else the one its own file holds (0 for a variant's,
+        /// whose root is its base's).</summary>
+        public long RootObject => Contents?.RootObject ?? (_rootObject ??= Raw == null ? 0
+            : new UnityScene(Raw).RootTransforms.FirstOrDefault()?.GameObject?.FileId ?? 0);
+    }
+
+    /// <summary>A prefab built: its objects with every prefab it nests built in (its own fileIDs, as its instances'
+    /// overrides name them); <see cref="Sources"/> are the files it is built from, for the integrity check;
+    /// <see cref="UnusedOverrides"/> are what its nested instances override that Unity cannot apply.</summary>
+    sealed record PrefabContents(UnityYamlFile File, long RootObject, long RootTransform,
+        IReadOnlyList<(string Path, UnityYamlFile Yaml)> Sources, List<string> UnusedOverrides);
+
+    /// <summary>Reads prefabs, each once per scene (a scene may hold a prop's instance hundreds of times), and builds those
+    /// the fluid needs, the prefabs they nest first.</summary>
     sealed class PrefabReader
     {
         /// <summary>The objects one scene's prefabs may build, every level of nesting counted: about twice what the
@@ -344,7 +375,7 @@ public static class PrefabInstances
             if (_read.TryGetValue(path, out var prefab)) return prefab;
             // Unity refuses a prefab that nests itself; following it would not end.
             if (!_reading.Add(path))
-                return Unbuilt(path, unreadable: $"{path} nests itself");
+                return new Prefab(path, _project.GuidOf(path), null, new List<string>(), $"{path} nests itself", null);
             if (_reading.Count > MaxNestingDepth)
                 throw new SceneException($"{_scenePath}: its prefab instances nest prefabs more than {MaxNestingDepth} levels deep " +
                     $"({path} at level {_reading.Count}); the reader refuses nesting that deep");
@@ -353,34 +384,25 @@ public static class PrefabInstances
             return _read[path] = prefab;
         }
 
-        Prefab Unbuilt(string path, string? unreadable = null, string? notBuilt = null, List<string>? held = null, UnityYamlFile? raw = null)
-        {
-            var root = raw == null ? null : new UnityScene(raw).RootTransforms.FirstOrDefault();
-            return new Prefab(path, _project.GuidOf(path), null, held ?? new List<string>(), unreadable, notBuilt,
-                root?.GameObject?.FileId ?? 0, root?.FileId ?? 0, Array.Empty<(string, UnityYamlFile)>(), new List<string>());
-        }
-
         Prefab Read(string path)
         {
+            string? guid = _project.GuidOf(path);
             // A model (.fbx) stands in as a prefab too; its objects come from its importer, and it holds no scripts.
             if (!path.EndsWith(".prefab", StringComparison.OrdinalIgnoreCase))
-                return Unbuilt(path, notBuilt: IsModel(path)
+                return new Prefab(path, guid, null, new List<string>(), null, IsModel(path)
                     ? $"{path} is a model, whose objects come from its importer, not from YAML"
                     : $"{path} is neither a prefab nor a model, so no objects can be built from it");
             UnityYamlFile raw;
             try { raw = UnityYamlFile.Load(_project.FullPath(path)); }
-            catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException) { return Unbuilt(path, unreadable: e.Message); }
+            catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException)
+            {
+                return new Prefab(path, guid, null, new List<string>(), e.Message, null);
+            }
 
             var held = new List<string>();
             foreach (var behaviour in raw.OfClass(UnityScene.MonoBehaviourClassId))
-                if (!behaviour.IsStripped && behaviour.ScriptGuid is { } guid && Scripts.TryGetValue(guid, out string? script))
-                    held.Add($"a {script} on its GameObject '{raw.Find(behaviour.GameObject)?.Root.GetString("m_Name", "") ?? ""}'");
-
-            var documents = raw.Documents.Where(d => !d.IsStripped && d.ClassId != PrefabInstanceClassId).ToList();
-            var sources = new List<(string, UnityYamlFile)> { (_project.FullPath(path), raw) };
-            var unused = new List<string>();
-            var taken = new HashSet<long>(raw.Documents.Select(d => d.FileId));
-            var standIns = StandIns(raw);
+                if (!behaviour.IsStripped && behaviour.ScriptGuid is { } script && Scripts.TryGetValue(script, out string? name))
+                    held.Add($"a {name} on its GameObject '{raw.Find(behaviour.GameObject)?.Root.GetString("m_Name", "") ?? ""}'");
             string? unreadable = null, notBuilt = null;
             foreach (var nested in raw.OfClass(PrefabInstanceClassId))
             {
@@ -393,26 +415,48 @@ public static class PrefabInstances
                 var inner = Get(innerPath);
                 held.AddRange(inner.Held.Select(h => h.EndsWith(", nested in it)", StringComparison.Ordinal) ? h : $"{h} (in {innerPath}, nested in it)"));
                 if (inner.Unreadable != null) unreadable ??= inner.Unreadable;
-                else if (inner.File == null) notBuilt ??= inner.NotBuilt;
-                else if (unreadable == null && notBuilt == null)
+                else if (inner.NotBuilt != null) notBuilt ??= inner.NotBuilt;
+            }
+            return new Prefab(path, guid, raw, held, unreadable, notBuilt);
+        }
+
+        /// <summary>Builds the prefab, the prefabs it nests first; null where it cannot be built, and then
+        /// <see cref="Prefab.NotBuilt"/> (or <see cref="Prefab.Unreadable"/>) says why.</summary>
+        public PrefabContents? Build(Prefab prefab)
+        {
+            if (prefab.Contents != null) return prefab.Contents;
+            if (prefab.Raw is not { } raw || prefab.Unreadable != null || prefab.NotBuilt != null) return null;
+            var documents = raw.Documents.Where(d => !d.IsStripped && d.ClassId != PrefabInstanceClassId).ToList();
+            var sources = new List<(string, UnityYamlFile)> { (_project.FullPath(prefab.Path), raw) };
+            var unused = new List<string>();
+            var taken = new HashSet<long>(raw.Documents.Select(d => d.FileId));
+            var standIns = StandIns(raw);
+            foreach (var nested in raw.OfClass(PrefabInstanceClassId))
+            {
+                // Read found every nested prefab's path and readable (the prefab would be NotBuilt otherwise); the
+                // nesting is no deeper than Get allows.
+                var inner = Get(_project.AssetPathOf(nested.Root.GetReference("m_SourcePrefab"))!);
+                if (Build(inner) is not { } contents)
                 {
-                    documents.AddRange(Instantiate(path, standIns, nested, inner, this, taken, unused));
-                    sources.AddRange(inner.Sources);
-                    unused.AddRange(inner.UnusedOverrides);
+                    prefab.NotBuilt = inner.NotBuilt ?? inner.Unreadable;
+                    return null;
                 }
+                documents.AddRange(Instantiate(prefab.Path, standIns, nested, inner, this, taken, unused));
+                sources.AddRange(contents.Sources);
+                unused.AddRange(contents.UnusedOverrides);
             }
             // A stand-in that no object was built for would leave what refers to it (a component added to a nested
             // instance's GameObject) on nothing.
             var builtIds = new HashSet<long>(documents.Select(d => d.FileId));
             if (raw.Documents.FirstOrDefault(d => d.IsStripped && !builtIds.Contains(d.FileId)) is { } orphan)
-                notBuilt ??= $"{path}: its stand-in &{orphan.FileId} (line {orphan.Line}) stands for no object of the prefabs it nests";
-            if (unreadable != null || notBuilt != null)
-                return Unbuilt(path, unreadable, notBuilt, held, raw);
+            {
+                prefab.NotBuilt = $"{prefab.Path}: its stand-in &{orphan.FileId} (line {orphan.Line}) stands for no object of the prefabs it nests";
+                return null;
+            }
 
-            var file = new UnityYamlFile(_project.FullPath(path), raw.Headers, documents);
+            var file = new UnityYamlFile(_project.FullPath(prefab.Path), raw.Headers, documents);
             var root = new UnityScene(file).RootTransforms.FirstOrDefault();
-            return new Prefab(path, _project.GuidOf(path), file, held, null, null, root?.GameObject?.FileId ?? 0, root?.FileId ?? 0,
-                sources, unused);
+            return prefab.Contents = new PrefabContents(file, root?.GameObject?.FileId ?? 0, root?.FileId ?? 0, sources, unused);
         }
 
         /// <summary>Whether Unity imports the asset as a model (its .meta says ModelImporter).</summary>

@@ -610,6 +610,33 @@ namespace SphFluid.Tests.Runner
             Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water", "Oil" }));
         }
 
+        /// <summary>A prop's prefab is read for what it holds, not built: a site of eight warehouses of sixty pallets of
+        /// sixty crates (58 000 objects built) was built only to be read past, and refused at the object limit.</summary>
+        [Test]
+        public void ALargePropIsReadPastWithoutBeingBuilt()
+        {
+            var project = new PrefabProject();
+            string Props(string name, string inner, long innerObject, long innerTransform, int count)
+            {
+                var children = string.Concat(Enumerable.Range(0, count).Select(i => $"  - {{fileID: {1001 + 10 * i}}}\n"));
+                string root = RigRoot(project, child: 0).Replace("  - {fileID: 0}\n", children).Replace("m_Name: Rig", $"m_Name: {name}");
+                return project.AddPrefab(name, root + string.Concat(Enumerable.Range(0, count).Select(i =>
+                    PrefabProject.Instance(1000 + 10 * i, inner, $"{name} {i}", innerObject, innerTransform)
+                        .Replace("m_TransformParent: {fileID: 0}", "m_TransformParent: {fileID: 12}"))));
+            }
+            string crate = project.AddPrefab("Crate", RigRoot(project, child: 0).Replace("  - {fileID: 0}\n", "").Replace("m_Children:\n", "m_Children: []\n")
+                .Replace("m_Name: Rig", "m_Name: Crate"));
+            string pallet = Props("Pallet", crate, 11, 12, 60);
+            string warehouse = Props("Warehouse", pallet, 11, 12, 60);
+            string site = Props("Site", warehouse, 11, 12, 8);
+            project.Edit("--- !u!1660057539", PrefabProject.Instance(700, site, "Site", 11, 12) + "--- !u!1660057539");
+            project.Edit("  m_Roots:\n", "  m_Roots:\n  - {fileID: 701}\n");
+
+            var scene = Deadline.Within(10, () => SceneLoader.Load(project.ScenePath, project.Project), "loading the scene");
+
+            Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water", "Oil" }));
+        }
+
         /// <summary>Oil.prefab: OilAndWater's Oil box as it stands in the scene; returns its guid.</summary>
         static string OilPrefab(PrefabProject project) =>
             project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));
