@@ -177,6 +177,10 @@ public static class PrefabInstances
             if (!ids.ContainsKey(d.FileId))
                 ids[d.FileId] = FreeId((instance.FileId ^ d.FileId) & long.MaxValue, taken);
 
+        // Named once: it reads the overrides, and a refusal of 60 000 of them named the instance afresh for each (minutes).
+        string? name = null;
+        string At(UnityYamlNode entry) => $"{path}:{entry["propertyPath"]?.Line ?? entry.Line}: {name ??= Named(instance, prefab)} overrides";
+
         // Unity writes one override a field; should a hand-merged file hold two, the later wins, as it does in Unity.
         var overrides = new Dictionary<(long Target, string Path), UnityYamlNode>();
         foreach (var entry in modification?["m_Modifications"]?.Items ?? Array.Empty<UnityYamlNode>())
@@ -188,7 +192,7 @@ public static class PrefabInstances
             // An override names an object of the instance's own prefab; one of another asset's (a hand edit, or a merge
             // gone wrong) changes nothing in Unity, and in a prefab holding the fluid may have been meant for a fluid field.
             else if (prefab.Held.Count > 0 && !target.IsNull)
-                unused.Add($"{path}:{entry["propertyPath"]?.Line ?? entry.Line}: {Named(instance, prefab)} overrides {property} of " +
+                unused.Add($"{At(entry)} {property} of " +
                     $"&{target.FileId} {(target.IsLocal ? "of this file" : $"of another asset (guid {target.Guid})")}; an instance's " +
                     $"overrides name objects of its own prefab, {prefab.Path}");
         }
@@ -225,8 +229,8 @@ public static class PrefabInstances
         foreach (var ((target, property), entry) in overrides)
         {
             if (applied.Contains((target, property)) || removed.Contains(target)) continue;
-            string at = $"{path}:{entry["propertyPath"]?.Line ?? entry.Line}: {Named(instance, prefab)} overrides";
-            if (objects.FirstOrDefault(d => d.FileId == target) is not { } component)
+            string at = At(entry);
+            if (contents.File.Find(target) is not { } component)
             {
                 if (prefab.Held.Count > 0) unused.Add($"{at} {property} of &{target}, which {prefab.Path} does not hold");
             }

@@ -192,6 +192,22 @@ namespace SphFluid.Tests.Runner
             Assert.That(e.Message, Does.StartWith($"{project.ScenePath}:{project.LineOf("      value: 0.5")}: GameObject 'Oil', Transform.m_LocalRotation must be a unit quaternion"));
         }
 
+        /// <summary>Each refused override names its instance, and the name is read from the overrides: named afresh for
+        /// each, 60 000 of them took over 5 minutes to refuse. 20 000 are refused within 10 s.</summary>
+        [Test]
+        public void ManyUnusedOverridesAreRefusedInLinearTime()
+        {
+            var project = new PrefabProject();
+            string oil = OilPrefab(project);
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform,
+                Enumerable.Range(0, 20_000).Select(k => PrefabProject.Override(900_000_000 + k, oil, "m_Name", "x")).ToArray()));
+
+            var thrown = Deadline.Within(10, () => Deadline.Thrown(() => SceneLoader.Load(project.ScenePath, project.Project)), "loading the scene");
+
+            Assert.That(thrown, Is.InstanceOf<SceneException>());
+            Assert.That(thrown!.Message, Does.Contain("carry overrides Unity cannot apply (20000)"));
+        }
+
         /// <summary>Unity keeps an override of a field the component no longer has, and ignores it; on the fluid's own
         /// components the reader refuses it, as it refuses a field it does not know in the scene.</summary>
         [Test]
