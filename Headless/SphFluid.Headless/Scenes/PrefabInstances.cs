@@ -80,9 +80,10 @@ public static class PrefabInstances
         // Unity keeps an override of a field its component no longer has, and ignores it; on the fluid's own components
         // the reader refuses it, as it refuses a field it does not know in the scene itself.
         if (unused.Count > 0)
-            throw new SceneException($"{path}: instances of prefabs that hold the fluid's components carry overrides Unity cannot apply ({unused.Count}):\n  " +
-                string.Join("\n  ", unused) + "\n  Unity keeps such unused overrides and ignores them: remove them in the Inspector " +
-                "(the instance's Overrides dropdown, Unused overrides) to run the scene here");
+            throw new SceneException($"{path}: prefab instances that hold or place the fluid carry overrides the reader refuses ({unused.Count}):\n  " +
+                string.Join("\n  ", unused) + "\n  Unity keeps an override of a field or object its prefab lacks and ignores it: remove " +
+                "such unused overrides in the Inspector (the instance's Overrides dropdown, Unused overrides), and the others from the " +
+                "instance's m_Modifications in the scene file, to run the scene here");
 
         // The stand-ins of the instances built give way to the objects they stood for; one that stands for no object
         // stays, stripped, and what lies on or under it is refused below.
@@ -188,7 +189,12 @@ public static class PrefabInstances
         {
             if (entry.GetReference("target") is not { } target) continue;
             string property = entry.GetString("propertyPath", "") ?? "";
-            if (target.Guid == prefab.Guid)
+            // Which object a component is on, which script it runs and where a Transform hangs are the prefab's; Unity
+            // restructures no instance, and an override of them (a hand edit) made a SpawnBox vanish without a word.
+            if (target.Guid == prefab.Guid && Structural.Contains(property.Split('.', '[')[0]))
+                unused.Add($"{At(entry)} {Described(contents.File.Find(target.FileId), prefabs)}.{property}, which ties the prefab's " +
+                    "objects together: Unity writes no such override (it restructures no instance), and what it would build from a hand-written one is not known here");
+            else if (target.Guid == prefab.Guid)
                 overrides[(target.FileId, property)] = entry;
             // An override names an object of the instance's own prefab; one of another asset's (a hand edit, or a merge
             // gone wrong) changes nothing in Unity, and in a prefab holding the fluid may have been meant for a fluid field.
@@ -242,6 +248,18 @@ public static class PrefabInstances
         }
         return built;
     }
+
+    /// <summary>The fields that tie a prefab's objects together (a component to its GameObject and script, a Transform to
+    /// its parent and children, an object to its source), which an instance in Unity does not override.</summary>
+    static readonly HashSet<string> Structural = new(StringComparer.Ordinal)
+    {
+        "m_GameObject", "m_Script", "m_Component", "m_Father", "m_Children", "m_CorrespondingSourceObject", "m_PrefabInstance", "m_PrefabAsset",
+    };
+
+    /// <summary>An object as a refusal names it: a fluid component by its script, any other by its type.</summary>
+    static string Described(UnityDocument? d, PrefabReader prefabs) =>
+        d == null ? "an object the prefab does not hold"
+        : d.ScriptGuid is { } guid && prefabs.Scripts.TryGetValue(guid, out string? script) ? script : d.TypeName;
 
     /// <summary>The new value of a field an override names: its <c>objectReference</c> for a reference field, its
     /// <c>value</c> for a plain one, at the override's line; null where the override cannot stand for the node (a

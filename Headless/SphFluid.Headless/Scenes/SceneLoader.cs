@@ -87,7 +87,7 @@ public static class SceneLoader
             this.scene = scene;
             this.project = project;
             this.packageFolder = packageFolder;
-            var simulators = Active(ScriptGuid(RuntimeScripts.Fluid));
+            var simulators = Active(RuntimeScripts.Fluid);
             if (simulators.Count == 0)
                 throw new SceneException($"{path}: no active GameObject has a {RuntimeScripts.Fluid} component");
             if (simulators.Count > 1)
@@ -108,12 +108,12 @@ public static class SceneLoader
                 Settings = settings,
                 Container = container,
             };
-            foreach (var (go, mb) in Active(ScriptGuid(RuntimeScripts.SpawnBox)))
+            foreach (var (go, mb) in Active(RuntimeScripts.SpawnBox))
             {
                 _boxes.Add((go, mb));
                 description.SpawnBoxes.Add(ReadSpawnBox(go, mb));
             }
-            foreach (var (go, mb) in Active(ScriptGuid(RuntimeScripts.SphereObstacle)))
+            foreach (var (go, mb) in Active(RuntimeScripts.SphereObstacle))
             {
                 _obstacles.Add((go, mb));
                 description.Obstacles.Add(ReadObstacle(go, mb));
@@ -155,20 +155,28 @@ public static class SceneLoader
         string ScriptGuid(string className) => FluidPackage.ScriptGuid(project, packageFolder, className) ?? throw new SceneException(
             $"{path}: cannot find the {className} script in the project at {project.Root}: no Runtime/{className}.cs with a .meta in {packageFolder}");
 
-        /// <summary>Enabled behaviours with the script guid on active GameObjects (active ancestors too), in file order.</summary>
-        List<(UnityGameObject Go, UnityDocument Behaviour)> Active(string guid)
+        /// <summary>Enabled <paramref name="script"/> behaviours on active GameObjects (active ancestors too), in file order.</summary>
+        List<(UnityGameObject Go, UnityDocument Behaviour)> Active(string script)
         {
             var list = new List<(UnityGameObject, UnityDocument)>();
-            foreach (var mb in scene.Behaviours(guid))
+            foreach (var mb in scene.Behaviours(ScriptGuid(script)))
             {
                 var go = scene.GameObjectOf(mb);
-                if (go == null || !mb.Root.GetBool("m_Enabled", true) || !ActiveInHierarchy(go)) continue;
+                if (go == null || !Flag(go, mb, script, "m_Enabled") || !go.SelfAndAncestors.All(g => Flag(g, g.Document, "GameObject", "m_IsActive"))) continue;
                 list.Add((go, mb));
             }
             return list;
         }
 
-        static bool ActiveInHierarchy(UnityGameObject go) => go.SelfAndAncestors.All(g => g.IsActive);
+        /// <summary>A bool as Unity writes it, 0 or 1. The integrity check holds the scene's own flags to that; a prefab
+        /// instance's override is not checked there, and an m_IsActive of 2 on it was read as active.</summary>
+        bool Flag(UnityGameObject go, UnityDocument document, string component, string key)
+        {
+            var node = document.Root[key];
+            if (node == null || node is { IsScalar: true, Value: "1" }) return true;
+            if (node is { IsScalar: true, Value: "0" }) return false;
+            throw new SceneException($"{At(node, document)}: {Where(go, component, key)} must be 0 or 1, as Unity writes a bool (was '{node}')");
+        }
 
         string Where(UnityGameObject go, string component, string field) =>
             $"GameObject '{go?.Name}', {component}.{field}";
@@ -415,7 +423,7 @@ public static class SceneLoader
             }
             else
             {
-                var found = Active(containerGuid);
+                var found = Active(RuntimeScripts.FluidContainer);
                 if (found.Count == 0)
                     throw new SceneException($"{path}: the scene has no active {RuntimeScripts.FluidContainer} (assign {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} or add one)");
                 containerGo = found[0].Go;
@@ -432,7 +440,7 @@ public static class SceneLoader
         /// <summary>The active FluidContainer component on <paramref name="containerGo"/>; null when the Fluid's reference
         /// names a container on an object that is inactive or whose component is disabled.</summary>
         UnityDocument? ContainerBehaviour(UnityGameObject containerGo) =>
-            Active(ScriptGuid(RuntimeScripts.FluidContainer)).Find(found => found.Go == containerGo).Behaviour;
+            Active(RuntimeScripts.FluidContainer).Find(found => found.Go == containerGo).Behaviour;
 
         /// <summary>The box's declared values (its phase among them) from its serialized block; the placement from its
         /// GameObject, as SpawnBox.Describe takes it.</summary>
@@ -459,7 +467,7 @@ public static class SceneLoader
         {
             SpinLaw? spin = null;
             Vector3 pivot = Vector3.Zero;
-            foreach (var (go, mb) in Active(ScriptGuid(RuntimeScripts.ContainerSpinner)))
+            foreach (var (go, mb) in Active(RuntimeScripts.ContainerSpinner))
             {
                 if (!IsSelfOrAncestor(go, containerGo))
                     throw new SceneException($"{path}: GameObject '{go.Name}' has a {RuntimeScripts.ContainerSpinner} but is neither the container '{containerGo.Name}' nor its parent; the runner turns only the container");
@@ -472,7 +480,7 @@ public static class SceneLoader
             }
 
             var drives = new List<DrivenSphere>();
-            foreach (var (go, mb) in Active(ScriptGuid(RuntimeScripts.SphereDriver)))
+            foreach (var (go, mb) in Active(RuntimeScripts.SphereDriver))
             {
                 int index = _obstacles.FindIndex(o => o.Go.FileId == go.FileId);
                 if (index < 0)

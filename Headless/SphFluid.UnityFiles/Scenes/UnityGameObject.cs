@@ -19,7 +19,6 @@ public sealed class UnityGameObject
     public UnityDocument Document { get; }
     public long FileId => Document.FileId;
     public string Name => Document.Root.GetString("m_Name", "");
-    public bool IsActive => Document.Root.GetBool("m_IsActive", true);
     public string Tag => Document.Root.GetString("m_TagString", "Untagged");
     public int Layer => Document.Root.GetInt("m_Layer", 0);
 

@@ -205,7 +205,7 @@ namespace SphFluid.Tests.Runner
             var thrown = Deadline.Within(10, () => Deadline.Thrown(() => SceneLoader.Load(project.ScenePath, project.Project)), "loading the scene");
 
             Assert.That(thrown, Is.InstanceOf<SceneException>());
-            Assert.That(thrown!.Message, Does.Contain("carry overrides Unity cannot apply (20000)"));
+            Assert.That(thrown!.Message, Does.Contain("carry overrides the reader refuses (20000)"));
         }
 
         /// <summary>Unity keeps an override of a field the component no longer has, and ignores it; on the fluid's own
@@ -222,7 +222,7 @@ namespace SphFluid.Tests.Runner
 
             Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("      propertyPath: spawn.Phase.Density")}: PrefabInstance 'Oil' of " +
                 "Assets/Prefabs/Oil.prefab overrides SpawnBox.spawn.Phase.Density, which is no field of the SpawnBox in Assets/Prefabs/Oil.prefab"));
-            Assert.That(e.Message, Does.Contain("Unity keeps such unused overrides and ignores them"));
+            Assert.That(e.Message, Does.Contain("Unity keeps an override of a field or object its prefab lacks and ignores it"));
         }
 
         /// <summary>Unity writes an override for each value; one that names a whole block with one value cannot be
@@ -237,9 +237,58 @@ namespace SphFluid.Tests.Runner
 
             var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
 
-            Assert.That(e.Message, Does.StartWith($"{project.ScenePath}: instances of prefabs that hold the fluid's components carry overrides Unity cannot apply (1):"));
+            Assert.That(e.Message, Does.StartWith($"{project.ScenePath}: prefab instances that hold or place the fluid carry overrides the reader refuses (1):"));
             Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("      propertyPath: spawn.Phase")}: PrefabInstance 'Oil' of " +
                 "Assets/Prefabs/Oil.prefab overrides SpawnBox.spawn.Phase, a block of fields, with one value (Unity overrides each field of it: spawn.Phase.<field>)"));
+        }
+
+        /// <summary>An instance that deactivates the box's GameObject, or disables its SpawnBox, spawns none of it, as in Unity.</summary>
+        [TestCase(OilObject, "m_IsActive")]
+        [TestCase(OilSpawnBox, "m_Enabled")]
+        public void ABoxTheInstanceTurnsOffIsLeftOut(long target, string flag)
+        {
+            var project = new PrefabProject();
+            string oil = OilPrefab(project);
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform, PrefabProject.Override(target, oil, flag, "0")));
+
+            var scene = SceneLoader.Load(project.ScenePath, project.Project);
+
+            Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water" }));
+        }
+
+        /// <summary>The integrity check holds a scene's own flags to 0 or 1; an instance's override of one was not held to
+        /// it, and an m_IsActive of 2 or an m_Enabled of 'abc' was read as on.</summary>
+        [TestCase(OilObject, "m_IsActive", "2", "GameObject.m_IsActive")]
+        [TestCase(OilSpawnBox, "m_Enabled", "abc", "SpawnBox.m_Enabled")]
+        public void AFlagOverriddenWithNeither0Nor1IsRefusedAtItsLine(long target, string flag, string value, string field)
+        {
+            var project = new PrefabProject();
+            string oil = OilPrefab(project);
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform, PrefabProject.Override(target, oil, flag, value)));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.StartWith($"{project.ScenePath}:{project.LineOf($"      value: {value}")}: GameObject 'Oil', {field} must be 0 or 1, " +
+                $"as Unity writes a bool (was '{value}')"));
+        }
+
+        /// <summary>Unity restructures no instance: which GameObject a component is on, which script it runs and where a
+        /// Transform hangs are its prefab's. A hand-written override of them made the SpawnBox vanish without a word
+        /// (m_GameObject, m_Script) or was read past (m_Father); each is refused at its line.</summary>
+        [TestCase(OilSpawnBox, "m_GameObject", "SpawnBox")]
+        [TestCase(OilSpawnBox, "m_Script", "SpawnBox")]
+        [TestCase(OilTransform, "m_Father", "Transform")]
+        [TestCase(OilObject, "m_Component.Array.data[0].component", "GameObject")]
+        public void AnOverrideOfHowThePrefabsObjectsFitTogetherIsRefused(long target, string property, string type)
+        {
+            var project = new PrefabProject();
+            string oil = OilPrefab(project);
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform, PrefabProject.Override(target, oil, property, "")));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf($"      propertyPath: {property}")}: PrefabInstance 'Oil' of " +
+                $"Assets/Prefabs/Oil.prefab overrides {type}.{property}, which ties the prefab's objects together"));
         }
 
         [Test]
@@ -652,6 +701,7 @@ namespace SphFluid.Tests.Runner
 
             Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water", "Oil" }));
         }
+
 
         /// <summary>Oil.prefab: OilAndWater's Oil box as it stands in the scene; returns its guid.</summary>
         static string OilPrefab(PrefabProject project) =>
