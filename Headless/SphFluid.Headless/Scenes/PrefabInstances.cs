@@ -22,8 +22,6 @@ namespace SphFluid.Headless.Scenes;
 /// </summary>
 public static class PrefabInstances
 {
-    public const int PrefabInstanceClassId = 1001;
-
     static readonly string[] FluidScripts =
     {
         RuntimeScripts.Fluid, RuntimeScripts.SpawnBox, RuntimeScripts.FluidContainer, RuntimeScripts.SphereObstacle,
@@ -46,7 +44,7 @@ public static class PrefabInstances
         var problems = new List<string>();
         var toBuild = new List<(UnityDocument Instance, Prefab Prefab)>();
         var placing = InstancesPlacingTheFluid(scene, scripts, prefabs, project);
-        foreach (var instance in scene.File.OfClass(PrefabInstanceClassId))
+        foreach (var instance in scene.File.OfClass(UnityScene.PrefabInstanceClassId))
         {
             string? prefabPath = project.AssetPathOf(instance.Root.GetReference("m_SourcePrefab"));
             if (prefabPath == null) continue; // an unknown guid is the integrity check's refusal
@@ -126,7 +124,7 @@ public static class PrefabInstances
         var file = scene.File;
         var placing = new HashSet<long>();
         var pending = new Stack<UnityDocument>(); // Transforms, or stand-ins for them, whose chain of parents is to be walked
-        foreach (var instance in file.OfClass(PrefabInstanceClassId))
+        foreach (var instance in file.OfClass(UnityScene.PrefabInstanceClassId))
             if (project.AssetPathOf(instance.Root.GetReference("m_SourcePrefab")) is { } prefab && prefabs.Get(prefab).Held.Count > 0)
                 pending.Push(instance);
         foreach (var behaviour in scene.Behaviours())
@@ -138,7 +136,7 @@ public static class PrefabInstances
         {
             var d = pending.Pop();
             if (!walked.Add(d.FileId)) continue;
-            if (d.ClassId == PrefabInstanceClassId)
+            if (d.ClassId == UnityScene.PrefabInstanceClassId)
             {
                 placing.Add(d.FileId);
                 if (file.Find(d.Root["m_Modification"]?.GetReference("m_TransformParent")) is { } parent) pending.Push(parent);
@@ -182,6 +180,17 @@ public static class PrefabInstances
         // Named once: it reads the overrides, and a refusal of 60 000 of them named the instance afresh for each (minutes).
         string? name = null;
         string At(UnityYamlNode entry) => $"{path}:{entry["propertyPath"]?.Line ?? entry.Line}: {name ??= Named(instance, prefab)} overrides";
+
+        // Unity removes neither a GameObject's Transform nor the instance's root (deleting the instance removes that); a
+        // hand-written removal of either left the box at the world's origin, or left it out, without a word.
+        foreach (var item in modification?["m_RemovedComponents"]?.Items ?? Array.Empty<UnityYamlNode>())
+            if (UnityReference.TryFrom(item, out var r) && r.Guid == prefab.Guid && contents.File.Find(r.FileId) is { } c && UnityScene.IsTransform(c))
+                unused.Add($"{path}:{item.Line}: {name ??= Named(instance, prefab)} removes the {c.TypeName} &{r.FileId} of {prefab.Path}, " +
+                    "which Unity cannot remove: a GameObject keeps its Transform");
+        foreach (var item in modification?["m_RemovedGameObjects"]?.Items ?? Array.Empty<UnityYamlNode>())
+            if (UnityReference.TryFrom(item, out var r) && r.Guid == prefab.Guid && r.FileId == contents.RootObject)
+                unused.Add($"{path}:{item.Line}: {name ??= Named(instance, prefab)} removes the root GameObject of {prefab.Path}, which Unity " +
+                    "does not: deleting the instance is how its root leaves the scene");
 
         // Unity writes one override a field; should a hand-merged file hold two, the later wins, as it does in Unity.
         var overrides = new Dictionary<(long Target, string Path), UnityYamlNode>();
@@ -427,7 +436,7 @@ public static class PrefabInstances
                 if (!behaviour.IsStripped && behaviour.ScriptGuid is { } script && Scripts.TryGetValue(script, out string? name))
                     held.Add($"a {name} on its GameObject '{raw.Find(behaviour.GameObject)?.Root.GetString("m_Name", "") ?? ""}'");
             string? unreadable = null, notBuilt = null;
-            foreach (var nested in raw.OfClass(PrefabInstanceClassId))
+            foreach (var nested in raw.OfClass(UnityScene.PrefabInstanceClassId))
             {
                 string? innerPath = _project.AssetPathOf(nested.Root.GetReference("m_SourcePrefab"));
                 if (innerPath == null)
@@ -449,12 +458,12 @@ public static class PrefabInstances
         {
             if (prefab.Contents != null) return prefab.Contents;
             if (prefab.Raw is not { } raw || prefab.Unreadable != null || prefab.NotBuilt != null) return null;
-            var documents = raw.Documents.Where(d => !d.IsStripped && d.ClassId != PrefabInstanceClassId).ToList();
+            var documents = raw.Documents.Where(d => !d.IsStripped && d.ClassId != UnityScene.PrefabInstanceClassId).ToList();
             var sources = new List<(string, UnityYamlFile)> { (_project.FullPath(prefab.Path), raw) };
             var unused = new List<string>();
             var taken = new HashSet<long>(raw.Documents.Select(d => d.FileId));
             var standIns = StandIns(raw);
-            foreach (var nested in raw.OfClass(PrefabInstanceClassId))
+            foreach (var nested in raw.OfClass(UnityScene.PrefabInstanceClassId))
             {
                 // Read found every nested prefab's path and readable (the prefab would be NotBuilt otherwise); the
                 // nesting is no deeper than Get allows.

@@ -107,6 +107,15 @@ public sealed partial class AssetIntegrity
             }
         }
 
+        // An instance's root hangs under its m_TransformParent as a Transform hangs under its m_Father; the reader took one
+        // pointing at a GameObject for no parent and built the instance at the scene's root.
+        foreach (var instance in yaml.OfClass(UnityScene.PrefabInstanceClassId))
+        {
+            var parent = instance.Root.At("m_Modification.m_TransformParent");
+            if (yaml.Find(instance.Root.GetReference("m_Modification.m_TransformParent")) is { } found && !UnityScene.IsTransform(found))
+                ReportAt(file, $"PrefabInstance &{instance.FileId} m_Modification.m_TransformParent points at a {found.TypeName}, not a Transform", parent?.Line ?? instance.Line);
+        }
+
         foreach (var cycle in new UnityScene(yaml).ParentCycles())
             ReportAt(file, ParentCycleMessage(cycle), cycle[0].Transform?.Root["m_Father"]?.Line ?? cycle[0].Document.Line);
 
@@ -114,7 +123,7 @@ public sealed partial class AssetIntegrity
         var rootsDoc = yaml.OfClass(UnityScene.SceneRootsClassId).ToList();
         if (!isScene)
         {
-            if (parentless.Count != 1 && !yaml.OfClass(1001).Any())
+            if (parentless.Count != 1 && !yaml.OfClass(UnityScene.PrefabInstanceClassId).Any())
                 ReportAt(file, $"a prefab needs exactly one root Transform (found {parentless.Count})");
             return;
         }

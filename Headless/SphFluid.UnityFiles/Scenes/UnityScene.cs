@@ -19,6 +19,7 @@ public sealed class UnityScene
     public const int RectTransformClassId = 224;
     public const int MonoBehaviourClassId = 114;
     public const int SceneRootsClassId = 1660057539;
+    public const int PrefabInstanceClassId = 1001;
 
     readonly Dictionary<long, UnityGameObject> _gameObjects = new();
     readonly Dictionary<long, WorldTransform> _worldCache = new();

@@ -291,6 +291,39 @@ namespace SphFluid.Tests.Runner
                 $"Assets/Prefabs/Oil.prefab overrides {type}.{property}, which ties the prefab's objects together"));
         }
 
+        /// <summary>Unity removes neither a GameObject's Transform nor an instance's root (deleting the instance is how
+        /// the root leaves). A hand-written removal of the Transform built the box at the world's origin, refused for lying
+        /// outside the container; one of the root left the box out without a word. Each is refused at its line.</summary>
+        [TestCase(OilTransform, "m_RemovedComponents", "removes the Transform &518734963 of Assets/Prefabs/Oil.prefab, which Unity cannot remove")]
+        [TestCase(OilObject, "m_RemovedGameObjects", "removes the root GameObject of Assets/Prefabs/Oil.prefab, which Unity does not")]
+        public void ARemovalUnityCannotMakeIsRefusedAtItsLine(long target, string list, string refusal)
+        {
+            var project = new PrefabProject();
+            string oil = OilPrefab(project);
+            string removal = $"    - {{fileID: {target}, guid: {oil}, type: 3}}";
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform).Replace($"{list}: []", $"{list}:\n{removal}"));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf(removal)}: PrefabInstance 'Oil' of Assets/Prefabs/Oil.prefab {refusal}"));
+        }
+
+        /// <summary>An instance's root hangs under its m_TransformParent as a Transform under its m_Father: one pointing
+        /// at the camera's GameObject was taken for no parent, and the box built at the scene's root.</summary>
+        [Test]
+        public void AnInstanceUnderAGameObjectRatherThanATransformIsRefused()
+        {
+            var project = new PrefabProject();
+            string oil = OilPrefab(project);
+            project.ReplaceOilWith(PrefabProject.Instance(700, oil, "Oil", OilObject, OilTransform)
+                .Replace("m_TransformParent: {fileID: 0}", "m_TransformParent: {fileID: 1067556328}"));
+
+            var e = Assert.Throws<SceneException>(() => SceneLoader.Load(project.ScenePath, project.Project))!;
+
+            Assert.That(e.Message, Does.Contain($"{project.ScenePath}:{project.LineOf("    m_TransformParent: {fileID: 1067556328}")}: " +
+                "PrefabInstance &700 m_Modification.m_TransformParent points at a GameObject, not a Transform"));
+        }
+
         [Test]
         public void AComponentTheInstanceRemovesIsLeftOut()
         {
@@ -701,6 +734,7 @@ namespace SphFluid.Tests.Runner
 
             Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water", "Oil" }));
         }
+
 
 
         /// <summary>Oil.prefab: OilAndWater's Oil box as it stands in the scene; returns its guid.</summary>
