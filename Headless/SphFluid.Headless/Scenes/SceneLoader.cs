@@ -416,10 +416,11 @@ public static class SceneLoader
             if (reference is { IsNull: false })
             {
                 var doc = scene.File.Find(reference);
+                string at = At(_simulator.Root.At("container"), _simulator);
                 if (doc == null || doc.ScriptGuid != containerGuid)
-                    throw new SceneException($"{path}: {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} refers to {reference}, which is not a {RuntimeScripts.FluidContainer} component of this scene");
+                    throw new SceneException($"{at}: {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} refers to {reference}, which is not a {RuntimeScripts.FluidContainer} component of this scene");
                 containerGo = scene.GameObjectOf(doc)
-                    ?? throw new SceneException($"{path}:{doc.Line}: {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} refers to {reference}, a {RuntimeScripts.FluidContainer} on no GameObject of this scene (its m_GameObject is missing or dangling)");
+                    ?? throw new SceneException($"{at}: {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} refers to {reference}, a {RuntimeScripts.FluidContainer} on no GameObject of this scene (its m_GameObject is missing or dangling)");
             }
             else
             {

@@ -735,8 +735,6 @@ namespace SphFluid.Tests.Runner
             Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water", "Oil" }));
         }
 
-
-
         /// <summary>Oil.prefab: OilAndWater's Oil box as it stands in the scene; returns its guid.</summary>
         static string OilPrefab(PrefabProject project) =>
             project.AddPrefab("Oil", project.Document(OilObject) + project.Document(OilTransform) + project.Document(OilSpawnBox));

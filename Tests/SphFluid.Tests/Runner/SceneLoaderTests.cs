@@ -124,6 +124,8 @@ namespace SphFluid.Tests.Runner
             @"PlayModeTest\.unity:{line}: GameObject 'Container', FluidContainer\.friction must be one of 0 \(Slip\), 1 \(NoSlip\) \(was 'rough'\)")]
         [TestCase("  friction: 1", "  friction: 5",
             @"PlayModeTest\.unity:{line}: GameObject 'Container', FluidContainer\.friction: Friction must be one of 0 \(Slip\), 1 \(NoSlip\) \(was 5\)")]
+        [TestCase("  container: {fileID: 758566559}", "  container: {fileID: 190528737}",
+            @"PlayModeTest\.unity:{line}: GameObject 'Fluid', Fluid\.container refers to \{fileID: 190528737\}, which is not a FluidContainer component of this scene")]
         public void AValueItCannotUseNamesTheFieldLineAndWhatItAccepts(string original, string edited, string expected)
         {
             string path = RunnerPaths.EditedScene("PlayModeTest", original, edited);
