@@ -471,9 +471,9 @@ public static class SceneLoader
             foreach (var (go, mb) in Active(RuntimeScripts.ContainerSpinner))
             {
                 if (!IsSelfOrAncestor(go, containerGo))
-                    throw new SceneException($"{path}: GameObject '{go.Name}' has a {RuntimeScripts.ContainerSpinner} but is neither the container '{containerGo.Name}' nor its parent; the runner turns only the container");
+                    throw new SceneException($"{At(null, mb)}: GameObject '{go.Name}' has a {RuntimeScripts.ContainerSpinner} but is neither the container '{containerGo.Name}' nor its parent; the runner turns only the container");
                 if (spin != null)
-                    throw new SceneException($"{path}: more than one {RuntimeScripts.ContainerSpinner} turns the container '{containerGo.Name}'");
+                    throw new SceneException($"{At(null, mb)}: more than one {RuntimeScripts.ContainerSpinner} turns the container '{containerGo.Name}'");
                 const string c = RuntimeScripts.ContainerSpinner;
                 spin = ReadDeclared<SpinLaw>(go, mb, c, RuntimeScripts.Spin);
                 RequireValid(spin.Validate(c), go, mb, c, RuntimeScripts.Spin);
@@ -485,7 +485,7 @@ public static class SceneLoader
             {
                 int index = _obstacles.FindIndex(o => o.Go.FileId == go.FileId);
                 if (index < 0)
-                    throw new SceneException($"{path}: GameObject '{go.Name}' has a {RuntimeScripts.SphereDriver} but no active {RuntimeScripts.SphereObstacle}; the runner drives obstacles only");
+                    throw new SceneException($"{At(null, mb)}: GameObject '{go.Name}' has a {RuntimeScripts.SphereDriver} but no active {RuntimeScripts.SphereObstacle}; the runner drives obstacles only");
                 const string c = RuntimeScripts.SphereDriver;
                 var drive = ReadDeclared<DriveLaw>(go, mb, c, RuntimeScripts.Drive);
                 RequireValid(drive.Validate(c), go, mb, c, RuntimeScripts.Drive);

@@ -147,6 +147,25 @@ namespace SphFluid.Tests.Runner
             Assert.That(error.Message, Does.Match(@"RotatingContainer\.unity:\d+: GameObject '[^']+', ContainerSpinner\.spin\.AngularSpeed: AngularSpeed must be in \[-360, 360\] deg/s \(was 400\)"));
         }
 
+        /// <summary>A motion the runner cannot give is refused at the line of the component that asks for it: a driver on
+        /// a sphere whose obstacle is off, and a second spinner on the container (a copy of its first, &amp;1540063501).</summary>
+        [Test]
+        public void AMotionTheRunnerCannotGiveNamesItsComponentsLine()
+        {
+            string driver = RunnerPaths.EditedScene("SphereWake", "  m_Enabled: 1\n  m_EditorHideFlags: 0\n  m_Script: {fileID: 11500000, guid: 5f115756d2174588b65a748dd0438752",
+                "  m_Enabled: 0\n  m_EditorHideFlags: 0\n  m_Script: {fileID: 11500000, guid: 5f115756d2174588b65a748dd0438752");
+            string spinner = System.Text.RegularExpressions.Regex.Match(File.ReadAllText(RunnerPaths.Scene("RotatingContainer")), @"(?ms)^--- !u!114 &1540063500\n.*?(?=^--- )").Value;
+            string twice = RunnerPaths.EditedScene("RotatingContainer", ("  - component: {fileID: 1540063500}\n", "  - component: {fileID: 1540063500}\n  - component: {fileID: 1540063501}\n"),
+                ("--- !u!1 &507020402\n", spinner.Replace("&1540063500", "&1540063501") + "--- !u!1 &507020402\n"));
+
+            var undriven = Assert.Throws<SceneException>(() => SceneLoader.Load(driver, RunnerPaths.Project));
+            var spun = Assert.Throws<SceneException>(() => SceneLoader.Load(twice, RunnerPaths.Project));
+
+            int Line(string path, string header) => File.ReadAllLines(path).ToList().IndexOf(header) + 1;
+            Assert.That(undriven.Message, Does.StartWith($"{driver}:{Line(driver, "--- !u!114 &129498543")}: GameObject 'Sphere' has a SphereDriver but no active SphereObstacle"));
+            Assert.That(spun.Message, Does.StartWith($"{twice}:{Line(twice, "--- !u!114 &1540063501")}: more than one ContainerSpinner turns the container 'Container'"));
+        }
+
         [Test]
         public void AZeroSpinAxisIsRefused()
         {
