@@ -91,7 +91,7 @@ public static class SceneLoader
             if (simulators.Count == 0)
                 throw new SceneException($"{path}: no active GameObject has a {RuntimeScripts.Fluid} component");
             if (simulators.Count > 1)
-                throw new SceneException($"{path}: {simulators.Count} active {RuntimeScripts.Fluid} components (GameObjects {string.Join(", ", simulators.Select(s => $"'{s.Go.Name}'"))}); the runner simulates one fluid per scene");
+                throw new SceneException($"{path}: {simulators.Count} active {RuntimeScripts.Fluid} components (on GameObjects {string.Join(", ", simulators.Select(s => $"'{s.Go.Name}' at line {s.Behaviour.Line}"))}); the runner simulates one fluid per scene");
             (_simulatorGo, _simulator) = simulators[0];
         }
 

@@ -166,6 +166,22 @@ namespace SphFluid.Tests.Runner
             Assert.That(spun.Message, Does.StartWith($"{twice}:{Line(twice, "--- !u!114 &1540063501")}: more than one ContainerSpinner turns the container 'Container'"));
         }
 
+        /// <summary>The runner simulates one fluid; two are refused with the line of each, which tells apart two
+        /// GameObjects of one name, or two Fluids on one (here a copy of the first, &amp;1090854010).</summary>
+        [Test]
+        public void TwoFluidsAreRefusedNamingTheLineOfEach()
+        {
+            string fluid = System.Text.RegularExpressions.Regex.Match(File.ReadAllText(RunnerPaths.Scene("PlayModeTest")), @"(?ms)^--- !u!114 &1090854009\n.*?(?=^--- )").Value;
+            string path = RunnerPaths.EditedScene("PlayModeTest", ("  - component: {fileID: 1090854009}\n", "  - component: {fileID: 1090854009}\n  - component: {fileID: 1090854010}\n"),
+                (fluid, fluid + fluid.Replace("&1090854009", "&1090854010")));
+            var lines = File.ReadAllLines(path).ToList();
+
+            var error = Assert.Throws<SceneException>(() => SceneLoader.Load(path, RunnerPaths.Project));
+
+            Assert.That(error.Message, Is.EqualTo($"{path}: 2 active Fluid components (on GameObjects 'Fluid' at line {lines.IndexOf("--- !u!114 &1090854009") + 1}, " +
+                $"'Fluid' at line {lines.IndexOf("--- !u!114 &1090854010") + 1}); the runner simulates one fluid per scene"));
+        }
+
         [Test]
         public void AZeroSpinAxisIsRefused()
         {
