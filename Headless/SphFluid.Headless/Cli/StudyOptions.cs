@@ -66,7 +66,7 @@ sub-steps, GPU ms and wall ms per simulated second and the real-time factor. Wri
 (the same table in Markdown) and study-pareto.png/.svg (observable error against wall time per
 simulated second, log axes, one series per solver, DFSPH iteration scheme and divergence tolerance given) into --out.
 --quick: a small matrix for a check in a few minutes on 2 CPU cores (0.1 s simulated; scales 0.25 and
-0.5; the scene's CFL; WCSPH x1; DFSPH 1, 0.1 and 0.01 %).
+0.5; the scene's CFL; WCSPH x1; DFSPH 1, 0.1 and 0.01 %). A matrix of more than 1000 configurations is refused.
 
 " + SphfluidCommandLine.ExitCodesText;
 

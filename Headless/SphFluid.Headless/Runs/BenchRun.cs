@@ -195,7 +195,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         return (null, "1");
     }
 
-    /// <summary>The scene's description (a fresh load: each row owns its copy) rescaled to about <paramref name="target"/> particles.</summary>
+    /// <summary>The scene's description (a fresh read: each row owns its copy) rescaled to about <paramref name="target"/> particles.</summary>
     FluidSceneDescription ScaledTo(int target)
     {
         var description = Load().Description;
@@ -213,8 +213,11 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
         return description;
     }
 
-    /// <summary>The scene as this bench runs it (--solver and its settings), validated so.</summary>
-    LoadedScene Load() => SceneLoader.Load(options.ScenePath, change: options.Solver.AsChange("bench", note => _solverNote = note));
+    /// <summary>The scene as this bench runs it (--solver and its settings), validated so: the file read and checked
+    /// once, each size's description its own.</summary>
+    LoadedScene Load() => (_scene ??= SceneLoader.Open(options.ScenePath)).Read(options.Solver.AsChange("bench", note => _solverNote = note));
+
+    SceneLoader.CheckedScene? _scene;
 
     /// <summary>The largest particle count whose 60 Hz frame fits the GPU budget on this device (<see cref="FrameSizing"/>).</summary>
     public FrameSizing.Fit? DeviceFit { get; private set; }

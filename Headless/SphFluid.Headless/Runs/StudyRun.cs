@@ -25,6 +25,11 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
     static readonly CultureInfo C = CultureInfo.InvariantCulture;
     const double FrameSeconds = 1.0 / 60.0;
 
+    /// <summary>The most configurations one study runs. The matrix is the product of its options' lists, so a list
+    /// given one value too many times over (two hundred scales by two hundred stiffnesses) asks for a hundred thousand
+    /// runs; the default is 20, a broad study a few hundred.</summary>
+    public const int MaxConfigurations = 1000;
+
     /// <summary>A device to use instead of opening one (tests share theirs); not disposed here. Null: the run opens its own.</summary>
     public IComputeDevice? Device { get; init; }
 
@@ -76,6 +81,9 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
 
     public List<Row> Rows { get; } = new();
 
+    /// <summary>The scene file, read and checked once; each configuration reads its own description of it.</summary>
+    SceneLoader.CheckedScene? _scene;
+
     /// <summary>What <see cref="SolverChoice.FitSupport"/> changed for the DFSPH rows, printed with the header; null if nothing.</summary>
     string? _supportNote;
 
@@ -84,7 +92,8 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         // The matrix reads the scene's own CFL number and DFSPH settings; the scene is checked here as the first
         // solver asked runs it, and each configuration again as it runs.
         var first = options.Solvers[0];
-        var scene = SceneLoader.Load(options.ScenePath, change: new SceneChange("study with " + SolverChoice.ShortName(first),
+        _scene = SceneLoader.Open(options.ScenePath);
+        var scene = _scene.Read(new SceneChange("study with " + SolverChoice.ShortName(first),
             d => { d.Settings.PressureSolver = first; SolverChoice.FitSupport(d.Settings, "study"); }));
         var configs = Matrix(scene.Description.Settings);
         // Every configuration is made into a scene before the device opens: an impossible one is refused by name first.
@@ -135,13 +144,24 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         bool namesDivergence = options.DivergenceTolerances.Count > 0;
         var divergences = namesDivergence ? options.DivergenceTolerances : new List<double> { scene.DivergenceTolerance };
         var iterations = options.SolverIterations.Count > 0 ? options.SolverIterations : new List<SolverIteration> { scene.SolverIteration };
+        bool wcsph = options.Solvers.Contains(PressureSolver.Wcsph), dfsph = options.Solvers.Contains(PressureSolver.Dfsph);
+        long rows = (wcsph ? options.StiffnessFactors.Count : 0) + (dfsph ? (long)options.DensityTolerances.Count * divergences.Count * iterations.Count : 0);
+        long count = (long)options.ParticleScales.Count * cfls.Count * rows;
+        if (count > MaxConfigurations)
+        {
+            var solvers = new List<string>();
+            if (wcsph) solvers.Add($"{options.StiffnessFactors.Count} --stiffness-factors");
+            if (dfsph) solvers.Add($"{options.DensityTolerances.Count} --density-tolerances x {divergences.Count} --divergence-tolerances x {iterations.Count} --solver-iterations");
+            throw new UsageException($"study: the matrix has {count} configurations, more than the {MaxConfigurations} one study runs: " +
+                $"{options.ParticleScales.Count} --particles-scales x {cfls.Count} --cfl x ({string.Join(" + ", solvers)}); give those options fewer values");
+        }
         var configs = new List<Configuration>();
         foreach (double scale in options.ParticleScales)
             foreach (double cfl in cfls)
             {
-                if (options.Solvers.Contains(PressureSolver.Wcsph))
+                if (wcsph)
                     foreach (double k in options.StiffnessFactors) configs.Add(new Configuration(PressureSolver.Wcsph, k, 0, scale, cfl));
-                if (options.Solvers.Contains(PressureSolver.Dfsph))
+                if (dfsph)
                     foreach (double tolerance in options.DensityTolerances)
                         foreach (double divergence in divergences)
                             foreach (var iteration in iterations)
@@ -150,11 +170,11 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
         return configs;
     }
 
-    /// <summary>The scene as one configuration runs it, validated so (a fresh load: each row owns its copy).</summary>
+    /// <summary>The scene as one configuration runs it, validated so (a fresh read: each row owns its copy).</summary>
     FluidSceneDescription Describe(Configuration config)
     {
         string label = string.Format(C, "study configuration {0}, CFL {1:G3}", config.Label, config.Cfl);
-        var description = SceneLoader.Load(options.ScenePath, change: new SceneChange(label, d => Configure(d.Settings, config))).Description;
+        var description = _scene!.Read(new SceneChange(label, d => Configure(d.Settings, config))).Description;
         ParticleScaling.ScaleBy(description, config.ParticleScale);
         SceneFit.RequireScaled(description, "study", "--particles-scales", config.ParticleScale.ToString("G6", C));
         return description;

@@ -208,6 +208,23 @@ namespace SphFluid.Tests.Runner
             Assert.That(BenchRun.GrownPasses(with, baseline), Is.EqualTo("Sort +0.250"), "the passes that shrank, Normals to zero among them, are left out");
         }
 
+        /// <summary>Each bench size and study configuration reads the scene, and each read scanned the project's every
+        /// .meta twice: a bench of a thousand sizes, its last too fine to run, failed this test's deadline before it was
+        /// refused. The file is read and checked once a run, and each size reads its own description of it.</summary>
+        [Test]
+        public void AThousandBenchSizesAreReadBeforeTheDeadline()
+        {
+            var sizes = Enumerable.Range(200, 999).Select(n => n.ToString(System.Globalization.CultureInfo.InvariantCulture));
+            var bench = new BenchRun(BenchOptions.Parse(new[] { RunnerPaths.Scene("PlayModeTest"), "--skip-savings", "--out", RunnerPaths.ScratchFolder("bench-sizes"), "--particles" }
+                .Concat(sizes).Append("16000000").ToArray()), new StringWriter(), new StringWriter()) { Device = GpuTestDevice.Shared };
+
+            var thrown = Deadline.Within(10, () => Deadline.Thrown(() => bench.Execute()), "reading a thousand sizes");
+
+            Assert.That(thrown, Is.InstanceOf<UsageException>());
+            Assert.That(thrown!.Message, Does.StartWith("bench: --particles 16000000 is out of range for this scene"));
+            Assert.That(bench.Rows, Is.Empty, "refused before the first row was measured");
+        }
+
         [Test]
         public void BenchPrintsATableWithEveryPass()
         {

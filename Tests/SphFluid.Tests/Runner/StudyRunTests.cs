@@ -202,6 +202,25 @@ namespace SphFluid.Tests.Runner
                 .And.EndWith(": DFSPH 0.01 % (scale 0.5, CFL 0.4), DFSPH 0.001 % (scale 0.5, CFL 0.4)."));
         }
 
+        /// <summary>The matrix is the product of the options' lists: 200 scales by 200 stiffnesses by 3 CFL numbers asked
+        /// for 121 800 runs, and the study read the scene for each (two minutes without a line before it was killed). A
+        /// matrix past the limit is refused at once with its shape, before the scene's configurations are read.</summary>
+        [Test]
+        public void AMatrixPastTheLimitIsRefusedWithItsShape()
+        {
+            string[] Values(int n) => Enumerable.Range(0, n).Select(i => (1 + i * 0.01).ToString(System.Globalization.CultureInfo.InvariantCulture)).ToArray();
+            var args = new[] { RunnerPaths.Scene("PlayModeTest"), "--out", RunnerPaths.ScratchFolder("study"), "--cfl", "0.1", "0.2", "0.3" }
+                .Append("--stiffness-factors").Concat(Values(200)).Append("--particles-scales").Concat(Values(200)).ToArray();
+            var run = new StudyRun(StudyOptions.Parse(args), new StringWriter(), new StringWriter()) { Device = GpuTestDevice.Shared };
+
+            var thrown = Deadline.Within(10, () => Deadline.Thrown(() => run.Execute()), "refusing the matrix");
+
+            Assert.That(thrown, Is.InstanceOf<UsageException>());
+            Assert.That(thrown!.Message, Is.EqualTo($"study: the matrix has 121800 configurations, more than the {StudyRun.MaxConfigurations} one study runs: " +
+                "200 --particles-scales x 3 --cfl x (200 --stiffness-factors + 3 --density-tolerances x 1 --divergence-tolerances x 1 --solver-iterations); " +
+                "give those options fewer values"));
+        }
+
         [Test]
         public void StudyOptionsAreRefusedByName()
         {
