@@ -201,7 +201,7 @@ public static partial class PrefabInstances
             // Which object a component is on, which script it runs and where a Transform hangs are the prefab's; Unity
             // restructures no instance, and an override of them (a hand edit) made a SpawnBox vanish without a word.
             if (target.Guid == prefab.Guid && Structural.Contains(property.Split('.', '[')[0]))
-                unused.Add($"{At(entry)} {Described(contents.File.Find(target.FileId), prefabs)}.{property}, which ties the prefab's " +
+                unused.Add($"{At(entry)} {Described(prefab, target.FileId, prefabs)}.{property}, which ties the prefab's " +
                     "objects together: Unity writes no such override (it restructures no instance), and what it would build from a hand-written one is not known here");
             else if (target.Guid == prefab.Guid)
                 overrides[(target.FileId, property)] = entry;
@@ -265,9 +265,10 @@ public static partial class PrefabInstances
         "m_GameObject", "m_Script", "m_Component", "m_Father", "m_Children", "m_CorrespondingSourceObject", "m_PrefabInstance", "m_PrefabAsset",
     };
 
-    /// <summary>An object as a refusal names it: a fluid component by its script, any other by its type.</summary>
-    static string Described(UnityDocument? d, PrefabReader prefabs) =>
-        d == null ? "an object the prefab does not hold"
+    /// <summary>An object of <paramref name="prefab"/> as a refusal names it: a fluid component by its script, any other
+    /// by its type, one the prefab does not hold by its fileID.</summary>
+    static string Described(Prefab prefab, long fileId, PrefabReader prefabs) =>
+        prefab.Contents!.File.Find(fileId) is not { } d ? $"&{fileId}"
         : d.ScriptGuid is { } guid && prefabs.Scripts.TryGetValue(guid, out string? script) ? script : d.TypeName;
 
     /// <summary>The new value of a field an override names: its <c>objectReference</c> for a reference field, its

@@ -279,6 +279,7 @@ namespace SphFluid.Tests.Runner
         [TestCase(OilSpawnBox, "m_Script", "SpawnBox")]
         [TestCase(OilTransform, "m_Father", "Transform")]
         [TestCase(OilObject, "m_Component.Array.data[0].component", "GameObject")]
+        [TestCase(999L, "m_Script", "&999")]
         public void AnOverrideOfHowThePrefabsObjectsFitTogetherIsRefused(long target, string property, string type)
         {
             var project = new PrefabProject();
