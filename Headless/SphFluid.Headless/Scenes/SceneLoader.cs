@@ -104,6 +104,7 @@ public static class SceneLoader
         readonly List<(UnityGameObject Go, UnityDocument Behaviour)> _obstacles = new();
         readonly UnityGameObject _simulatorGo;
         readonly UnityDocument _simulator;
+        UnityDocument? _container; // the FluidContainer component the fluid runs in, once ReadContainer has found it
 
         public Reader(string path, UnityScene scene, UnityProject project, string packageFolder)
         {
@@ -431,12 +432,14 @@ public static class SceneLoader
             throw new SceneException($"{At(mb.Root.At(key), mb)}: {Where(go, component, key)}: {errors[0].Rule}");
         }
 
-        /// <summary>The container (the Fluid's assigned one, else the scene's first active one) and its GameObject.</summary>
+        /// <summary>The container (the Fluid's assigned one, else the scene's first active one) and its GameObject; its
+        /// component is kept in <see cref="_container"/> for the refusals that name its fields.</summary>
         (ContainerDescription Container, UnityGameObject Go) ReadContainer()
         {
             string containerGuid = ScriptGuid(RuntimeScripts.FluidContainer);
             var reference = _simulator.Root.GetReference("container");
             UnityGameObject containerGo;
+            UnityDocument component;
             if (reference is { IsNull: false })
             {
                 var doc = scene.File.Find(reference);
@@ -445,27 +448,24 @@ public static class SceneLoader
                     throw new SceneException($"{at}: {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} refers to {reference}, which is not a {RuntimeScripts.FluidContainer} component of this scene");
                 containerGo = scene.GameObjectOf(doc)
                     ?? throw new SceneException($"{at}: {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} refers to {reference}, a {RuntimeScripts.FluidContainer} on no GameObject of this scene (its m_GameObject is missing or dangling)");
+                component = doc;
             }
             else
             {
                 var found = Active(RuntimeScripts.FluidContainer);
                 if (found.Count == 0)
                     throw new SceneException($"{path}: the scene has no active {RuntimeScripts.FluidContainer} (assign {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} or add one)");
-                containerGo = found[0].Go;
+                (containerGo, component) = found[0];
             }
             var w = containerGo.World;
             var container = new ContainerDescription(w.Position, w.Rotation, Abs(w.Scale));
-            var component = ContainerBehaviour(containerGo);
-            if (component != null)
-                container.Friction = (WallFriction)Int(containerGo, component, RuntimeScripts.FluidContainer, "friction", (int)container.Friction,
-                    "one of " + SettingRules.EnumValues(typeof(WallFriction)));
+            // Fluid.FindContainer takes the assigned container as it is, active or not, and reads its friction: so does
+            // the reader (it read an inactive one's as the default, NoSlip, where Unity runs the Slip it holds).
+            container.Friction = (WallFriction)Int(containerGo, component, RuntimeScripts.FluidContainer, "friction", (int)container.Friction,
+                "one of " + SettingRules.EnumValues(typeof(WallFriction)));
+            _container = component;
             return (container, containerGo);
         }
-
-        /// <summary>The active FluidContainer component on <paramref name="containerGo"/>; null when the Fluid's reference
-        /// names a container on an object that is inactive or whose component is disabled.</summary>
-        UnityDocument? ContainerBehaviour(UnityGameObject containerGo) =>
-            Active(RuntimeScripts.FluidContainer).Find(found => found.Go == containerGo).Behaviour;
 
         /// <summary>The box's declared values (its phase among them) from its serialized block; the placement from its
         /// GameObject, as SpawnBox.Describe takes it.</summary>
@@ -536,7 +536,7 @@ public static class SceneLoader
             {
                 if (TransformField(member) is { } containerPlacement)
                     return Placed(containerGo, containerPlacement, error);
-                if (member == nameof(ContainerDescription.Friction) && ContainerBehaviour(containerGo) is { } component)
+                if (member == nameof(ContainerDescription.Friction) && _container is { } component)
                     return $"{At(component.Root.At("friction"), component)}: {Where(containerGo, RuntimeScripts.FluidContainer, "friction")}: {error.Rule}";
                 return $"{path}:{containerGo.Document.Line}: GameObject '{containerGo.Name}', {RuntimeScripts.FluidContainer}: {error.Rule}";
             }

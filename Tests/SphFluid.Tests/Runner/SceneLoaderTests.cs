@@ -94,6 +94,21 @@ namespace SphFluid.Tests.Runner
             Assert.That(error.Message, Does.Match(@"PlayModeTest\.unity:\d+: GameObject 'Fluid', Fluid\.settings\.SmoothingRadius"));
         }
 
+        /// <summary>Fluid.FindContainer takes the assigned container whether its GameObject is active or not, and reads
+        /// its friction; the reader read an inactive one's as the default, NoSlip, where Unity runs the Slip it holds.</summary>
+        [Test]
+        public void AnAssignedContainerOnAnInactiveGameObjectKeepsItsFriction()
+        {
+            string path = RunnerPaths.EditedScene("PlayModeTest", ("  m_Name: Container\n  m_TagString: Untagged\n  m_Icon: {fileID: 0}\n  m_NavMeshLayer: 0\n" +
+                "  m_StaticEditorFlags: 0\n  m_IsActive: 1", "  m_Name: Container\n  m_TagString: Untagged\n  m_Icon: {fileID: 0}\n  m_NavMeshLayer: 0\n" +
+                "  m_StaticEditorFlags: 0\n  m_IsActive: 0"), ("  friction: 1", "  friction: 0"));
+
+            var scene = SceneLoader.Load(path, RunnerPaths.Project);
+
+            Assert.That(scene.Description.Container.Friction, Is.EqualTo(WallFriction.Slip));
+            Assert.That(scene.ContainerObject, Is.EqualTo("Container"));
+        }
+
         [Test]
         public void AMissingContainerIsNamed()
         {
