@@ -203,7 +203,7 @@ namespace SphFluid.Tests.Runner
         }
 
         /// <summary>The matrix is the product of the options' lists: 200 scales by 200 stiffnesses by 3 CFL numbers asked
-        /// for 121 800 runs, and the study read the scene for each (two minutes without a line before it was killed). A
+        /// for 121 800 runs, and the study read the scene for each (100 s without a line before it was killed). A
         /// matrix past the limit is refused at once with its shape, before the scene's configurations are read.</summary>
         [Test]
         public void AMatrixPastTheLimitIsRefusedWithItsShape()
