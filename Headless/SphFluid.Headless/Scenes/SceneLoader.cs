@@ -180,14 +180,17 @@ public static class SceneLoader
         string ScriptGuid(string className) => FluidPackage.ScriptGuid(project, packageFolder, className) ?? throw new SceneException(
             $"{path}: cannot find the {className} script in the project at {project.Root}: no Runtime/{className}.cs with a .meta in {packageFolder}");
 
-        /// <summary>Enabled <paramref name="script"/> behaviours on active GameObjects (active ancestors too), in file order.</summary>
-        List<(UnityGameObject Go, UnityDocument Behaviour)> Active(string script)
+        /// <summary>Enabled <paramref name="script"/> behaviours on active GameObjects (active ancestors too), in file order;
+        /// with <paramref name="enabledOnly"/> false, disabled ones too, as Unity's FindObjectsByType finds them.</summary>
+        List<(UnityGameObject Go, UnityDocument Behaviour)> Active(string script, bool enabledOnly = true)
         {
             var list = new List<(UnityGameObject, UnityDocument)>();
             foreach (var mb in scene.Behaviours(ScriptGuid(script)))
             {
                 var go = scene.GameObjectOf(mb);
-                if (go == null || !Flag(go, mb, script, "m_Enabled") || !go.SelfAndAncestors.All(g => Flag(g, g.Document, "GameObject", "m_IsActive"))) continue;
+                if (go == null) continue;
+                bool enabled = Flag(go, mb, script, "m_Enabled");
+                if (enabledOnly && !enabled || !go.SelfAndAncestors.All(g => Flag(g, g.Document, "GameObject", "m_IsActive"))) continue;
                 list.Add((go, mb));
             }
             return list;
@@ -432,7 +435,7 @@ public static class SceneLoader
             throw new SceneException($"{At(mb.Root.At(key), mb)}: {Where(go, component, key)}: {errors[0].Rule}");
         }
 
-        /// <summary>The container (the Fluid's assigned one, else the scene's first active one) and its GameObject; its
+        /// <summary>The container (the Fluid's assigned one, else the scene's first on an active GameObject) and its GameObject; its
         /// component is kept in <see cref="_container"/> for the refusals that name its fields.</summary>
         (ContainerDescription Container, UnityGameObject Go) ReadContainer()
         {
@@ -452,7 +455,8 @@ public static class SceneLoader
             }
             else
             {
-                var found = Active(RuntimeScripts.FluidContainer);
+                // Fluid.FindContainer's FindFirstObjectByType skips inactive GameObjects, not disabled components.
+                var found = Active(RuntimeScripts.FluidContainer, enabledOnly: false);
                 if (found.Count == 0)
                     throw new SceneException($"{path}: the scene has no active {RuntimeScripts.FluidContainer} (assign {Where(_simulatorGo, RuntimeScripts.Fluid, "container")} or add one)");
                 (containerGo, component) = found[0];

@@ -109,6 +109,20 @@ namespace SphFluid.Tests.Runner
             Assert.That(scene.ContainerObject, Is.EqualTo("Container"));
         }
 
+        /// <summary>With no container assigned, Fluid.FindContainer's FindFirstObjectByType finds a disabled FluidContainer
+        /// on an active GameObject (it skips inactive GameObjects only); the reader refused the scene as having none.</summary>
+        [Test]
+        public void AnUnassignedDisabledContainerIsFoundAsUnityFindsIt()
+        {
+            string path = RunnerPaths.EditedScene("PlayModeTest", ("  container: {fileID: 758566559}", "  container: {fileID: 0}"),
+                ("  m_GameObject: {fileID: 1097463687}\n  m_Enabled: 1", "  m_GameObject: {fileID: 1097463687}\n  m_Enabled: 0"));
+
+            var scene = SceneLoader.Load(path, RunnerPaths.Project);
+
+            Assert.That(scene.ContainerObject, Is.EqualTo("Container"));
+            Assert.That(scene.Description.Container.Friction, Is.EqualTo(WallFriction.NoSlip), "its friction: 1");
+        }
+
         [Test]
         public void AMissingContainerIsNamed()
         {
