@@ -179,17 +179,18 @@ public static partial class PrefabInstances
 
         // Named once: it reads the overrides, and a refusal of 60 000 of them named the instance afresh for each (minutes).
         string? name = null;
-        string At(UnityYamlNode entry) => $"{path}:{entry["propertyPath"]?.Line ?? entry.Line}: {name ??= Named(instance, prefab)} overrides";
+        string Name() => name ??= Named(instance, prefab);
+        string At(UnityYamlNode entry) => $"{path}:{entry["propertyPath"]?.Line ?? entry.Line}: {Name()} overrides";
 
         // Unity removes neither a GameObject's Transform nor the instance's root (deleting the instance removes that); a
         // hand-written removal of either left the box at the world's origin, or left it out, without a word.
         foreach (var item in modification?["m_RemovedComponents"]?.Items ?? Array.Empty<UnityYamlNode>())
             if (UnityReference.TryFrom(item, out var r) && r.Guid == prefab.Guid && contents.File.Find(r.FileId) is { } c && UnityScene.IsTransform(c))
-                unused.Add($"{path}:{item.Line}: {name ??= Named(instance, prefab)} removes the {c.TypeName} &{r.FileId} of {prefab.Path}, " +
+                unused.Add($"{path}:{item.Line}: {Name()} removes the {c.TypeName} &{r.FileId} of {prefab.Path}, " +
                     "which Unity cannot remove: a GameObject keeps its Transform");
         foreach (var item in modification?["m_RemovedGameObjects"]?.Items ?? Array.Empty<UnityYamlNode>())
             if (UnityReference.TryFrom(item, out var r) && r.Guid == prefab.Guid && r.FileId == contents.RootObject)
-                unused.Add($"{path}:{item.Line}: {name ??= Named(instance, prefab)} removes the root GameObject of {prefab.Path}, which Unity " +
+                unused.Add($"{path}:{item.Line}: {Name()} removes the root GameObject of {prefab.Path}, which Unity " +
                     "does not: deleting the instance is how its root leaves the scene");
 
         // Unity writes one override a field; should a hand-merged file hold two, the later wins, as it does in Unity.

@@ -200,10 +200,8 @@ public static class SceneLoader
         /// instance's override is not checked there, and an m_IsActive of 2 on it was read as active.</summary>
         bool Flag(UnityGameObject go, UnityDocument document, string component, string key)
         {
-            var node = document.Root[key];
-            if (node == null || node is { IsScalar: true, Value: "1" }) return true;
-            if (node is { IsScalar: true, Value: "0" }) return false;
-            throw new SceneException($"{At(node, document)}: {Where(go, component, key)} must be 0 or 1, as Unity writes a bool (was '{node}')");
+            if (document.Root[key] is not { } node) return true;
+            return node.AsFlag ?? throw new SceneException($"{At(node, document)}: {Where(go, component, key)} must be 0 or 1, as Unity writes a bool (was '{node}')");
         }
 
         string Where(UnityGameObject go, string component, string field) =>

@@ -22,7 +22,7 @@ public sealed partial class AssetIntegrity
     /// </summary>
     void CheckFlag(string file, UnityYamlNode root, string key, string owner)
     {
-        if (root[key] is not { } flag || flag is { IsScalar: true, Value: "0" or "1" }) return;
+        if (root[key] is not { } flag || flag.AsFlag != null) return;
         ReportAt(file, $"{owner} {key} must be 0 or 1 (was '{flag}')", flag.Line);
     }
 

@@ -178,6 +178,10 @@ public sealed class UnityYamlNode
     /// <summary>Unity writes bools as 0/1.</summary>
     public bool GetBool(string path) => GetLong(path) != 0;
 
+    /// <summary>This node as one of the flags Unity writes as 0 or 1 (m_IsActive, m_Enabled); null for any other text,
+    /// which the integrity check and the scene reader refuse rather than read as one or the other.</summary>
+    public bool? AsFlag => this is { IsScalar: true, Value: "1" } ? true : this is { IsScalar: true, Value: "0" } ? false : null;
+
     public bool GetBool(string path, bool fallback) => TryGetLong(path, out var v) ? v != 0 : fallback;
 
     /// <summary>Reads <c>{x: 1, y: 2, z: 3}</c>.</summary>
