@@ -50,17 +50,20 @@ namespace SphFluid.Tests.Core.Simulation
             Assert.That(Messages(closer), Has.Some.Contains("interpenetrate by 0.0151"));
         }
 
-        /// <summary>Boxes a spacing wide on a grid inside a 1 m tank, or all at its centre.</summary>
-        static FluidSceneDescription ManyBoxes(int count, bool atOneSpot)
+        enum Layout { Grid, Wall, OneSpot }
+
+        /// <summary>Boxes a spacing wide on a grid filling a cube (<see cref="Layout.Grid"/>) or a square in the plane
+        /// x = 0 (<see cref="Layout.Wall"/>), or all at the tank's centre, in a tank that holds them.</summary>
+        static FluidSceneDescription ManyBoxes(int count, Layout layout)
         {
             var scene = SimulationTestScenes.SingleWater();
-            scene.Container.Size = new Vector3(1f);
             scene.SpawnBoxes.Clear();
-            int side = (int)Math.Ceiling(Math.Pow(count, 1.0 / 3.0));
+            int side = (int)Math.Ceiling(Math.Pow(count, layout == Layout.Wall ? 0.5 : 1.0 / 3.0));
+            scene.Container.Size = new Vector3(Math.Max(1f, 0.02f * side + 0.5f));
             for (int i = 0; i < count; i++)
             {
-                var cell = new Vector3(i % side, i / side % side, i / (side * side));
-                var centre = atOneSpot ? Vector3.Zero : new Vector3(-0.24f) + 0.02f * cell;
+                var cell = layout == Layout.Wall ? new Vector3(0f, i % side, i / side) : new Vector3(i % side, i / side % side, i / (side * side));
+                var centre = layout == Layout.OneSpot ? Vector3.Zero : 0.02f * (cell - new Vector3(layout == Layout.Wall ? 0f : 0.5f * side, 0.5f * side, 0.5f * side));
                 scene.SpawnBoxes.Add(new FluidBlock("B" + i, SimulationTestScenes.Water(), centre, new Vector3(0.02f)) { Seed = i + 1 });
             }
             return scene;
@@ -71,11 +74,23 @@ namespace SphFluid.Tests.Core.Simulation
         [Test]
         public void TwentyThousandBoxesSideBySide_AreValidatedInSeconds()
         {
-            var scene = ManyBoxes(20000, atOneSpot: false);
+            var scene = ManyBoxes(20000, Layout.Grid);
             var watch = System.Diagnostics.Stopwatch.StartNew();
             var errors = scene.Validate();
             Assert.That(watch.Elapsed.TotalSeconds, Is.LessThan(5.0));
             Assert.That(errors, Is.Empty, "boxes side by side only touch (the overlap rule runs only on a scene with no other error)");
+        }
+
+        /// <summary>The sweep ran along x, where boxes laid in one plane across x all meet: these 100 000 took 14.5 s.
+        /// It runs along the axis where it meets fewest pairs now (1.4 s on the same machine).</summary>
+        [Test]
+        public void AHundredThousandBoxesInAWallAcrossX_AreValidatedInSeconds()
+        {
+            var scene = ManyBoxes(100000, Layout.Wall);
+            var watch = System.Diagnostics.Stopwatch.StartNew();
+            var errors = scene.Validate();
+            Assert.That(watch.Elapsed.TotalSeconds, Is.LessThan(5.0));
+            Assert.That(errors, Is.Empty, "tiles side by side only touch (the overlap rule runs only on a scene with no other error)");
         }
 
         /// <summary>Every overlapping pair was named: 2 000 boxes at one spot made 1 999 000 messages. Ten pairs are named
@@ -83,7 +98,7 @@ namespace SphFluid.Tests.Core.Simulation
         [Test]
         public void BoxesPiledAtOneSpot_NameTenPairsAndSayMoreOverlap()
         {
-            var errors = ManyBoxes(2000, atOneSpot: true).Validate();
+            var errors = ManyBoxes(2000, Layout.OneSpot).Validate();
             Assert.That(errors.Count, Is.EqualTo(11));
             Assert.That(errors[0].Message, Does.StartWith("SpawnBox 'B1': the box must not overlap SpawnBox 'B0' (they interpenetrate by 0.02 m"));
             Assert.That(errors[0].Field, Is.EqualTo("SpawnBoxes[1].Center"));
