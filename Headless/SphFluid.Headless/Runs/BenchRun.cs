@@ -78,6 +78,7 @@ public sealed class BenchRun(BenchOptions options, TextWriter stdout, TextWriter
             if (_solverNote != null) stdout.WriteLine(_solverNote);
             if (descriptions.Select(FreeVolume.Warning).FirstOrDefault(w => w != null) is string crowded)
                 stderr.WriteLine($"bench: warning: {crowded}");
+            if (_scene?.UnreadProblems is string unread) stderr.WriteLine($"bench: warning: {unread}");
             SolverName = SolverChoice.ShortName(descriptions[0].Settings.PressureSolver);
             for (int i = 0; i < descriptions.Count; i++)
             {

@@ -36,12 +36,17 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
     /// <summary>What --solver changed besides the solver (<see cref="SolverChoice.FitSupport"/>), printed with the plan.</summary>
     string? _solverNote;
 
+    /// <summary>The integrity check's problems on what the fluid is not read from, printed with the plan.</summary>
+    string? _unreadProblems;
+
     /// <summary>What the run ended with (null until it ran).</summary>
     public RunSummary? Summary { get; private set; }
 
     public int Execute()
     {
-        var scene = SceneLoader.Load(options.ScenePath, change: options.Solver.AsChange("simulate", note => _solverNote = note));
+        var checkedScene = SceneLoader.Open(options.ScenePath);
+        _unreadProblems = checkedScene.UnreadProblems;
+        var scene = checkedScene.Read(options.Solver.AsChange("simulate", note => _solverNote = note));
         var description = scene.Description;
         int sceneCount = SpawnLayout.TotalCount(description);
 
@@ -117,6 +122,7 @@ public sealed class SimulateRun(SimulateOptions options, TextWriter stdout, Text
         stdout.WriteLine(SolverChoice.Describe(settings, sim));
         if (_solverNote != null) stdout.WriteLine(_solverNote);
         if (FreeVolume.Warning(description) is string crowded) stderr.WriteLine($"simulate: warning: {crowded}");
+        if (_unreadProblems != null) stderr.WriteLine($"simulate: warning: {_unreadProblems}");
         stdout.WriteLine(string.Format(C, "device: {0}", DeviceFactory.Describe(device)));
         stdout.WriteLine(string.Format(C, "run: {0:G4} s simulated in {1} frames of {2:G4} ms; output: {3}", duration, frames, options.FrameSeconds * 1000, Path.GetFullPath(output.Path))
             + (options.ExportEvery > 0 ? string.Format(C, "; exports every {0:G4} s: {1} of {2:F2} MB", options.ExportEvery,

@@ -108,6 +108,7 @@ public sealed class StudyRun(StudyOptions options, TextWriter stdout, TextWriter
             var crowded = descriptions.Select(FreeVolume.Warning).Where(w => w != null).ToList();
             if (crowded.Count > 0)
                 stderr.WriteLine($"study: warning: {crowded.Count} of the configurations (their cut-off column shows the cost): {crowded[0]}");
+            if (_scene.UnreadProblems is string unread) stderr.WriteLine($"study: warning: {unread}");
             for (int i = 0; i < configs.Count; i++)
             {
                 double scale = configs[i].ParticleScale;

@@ -22,12 +22,6 @@ namespace SphFluid.Headless.Scenes;
 /// </summary>
 public static partial class PrefabInstances
 {
-    static readonly string[] FluidScripts =
-    {
-        RuntimeScripts.Fluid, RuntimeScripts.SpawnBox, RuntimeScripts.FluidContainer, RuntimeScripts.SphereObstacle,
-        RuntimeScripts.ContainerSpinner, RuntimeScripts.SphereDriver,
-    };
-
     /// <summary>The scene with every prefab instance that holds, carries or places the fluid built into it (a prop's is
     /// left as it stands), as Unity builds it at load: the prefab's objects, less those the instance removes, with its
     /// overrides applied, its root under the instance's parent, and each object under the fileID of its stand-in. Throws a <see cref="SceneException"/> for a prefab the
@@ -37,7 +31,7 @@ public static partial class PrefabInstances
     public static UnityScene Build(string path, UnityScene scene, UnityProject project, string packageFolder)
     {
         var scripts = new Dictionary<string, string>(StringComparer.Ordinal);
-        foreach (string name in FluidScripts)
+        foreach (string name in RuntimeScripts.Components)
             if (FluidPackage.ScriptGuid(project, packageFolder, name) is { } guid) scripts[guid] = name; // the reader refuses a missing one by name
         var prefabs = new PrefabReader(path, project, scripts);
 

@@ -13,6 +13,22 @@ public static class RuntimeScripts
     public const string ContainerSpinner = "ContainerSpinner";
     public const string SphereDriver = "SphereDriver";
 
+    /// <summary>Every component of the fluid, which the reader finds by its script's guid.</summary>
+    public static readonly IReadOnlyList<string> Components = new[] { Fluid, SpawnBox, FluidContainer, SphereObstacle, ContainerSpinner, SphereDriver };
+
+    /// <summary>Each component's serialized fields, as Unity writes them into a scene (<c>RuntimeScriptTests</c> holds
+    /// them to the shipped scenes). A MonoBehaviour whose script is missing but which carries one of them may be a fluid
+    /// component whose script reference broke (<see cref="FluidDocuments"/>).</summary>
+    public static readonly IReadOnlyDictionary<string, IReadOnlyList<string>> Fields = new Dictionary<string, IReadOnlyList<string>>
+    {
+        [Fluid] = new[] { "particleRadiusScale", "container", "settings", "maxFrameTime", "requestDiagnostics" },
+        [SpawnBox] = new[] { "spawn" },
+        [FluidContainer] = new[] { "friction" },
+        [SphereObstacle] = new[] { "radius" },
+        [ContainerSpinner] = new[] { "spin", "fluid" },
+        [SphereDriver] = new[] { "drive", "fluid" },
+    };
+
     /// <summary>Fluid's serialized FluidSettings field, which holds every declared setting by its field name.</summary>
     public const string Settings = "settings";
 

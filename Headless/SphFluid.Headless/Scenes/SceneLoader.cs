@@ -39,8 +39,12 @@ public static class SceneLoader
         readonly UnityProject _project;
         readonly string _package;
 
-        internal CheckedScene(string path, UnityScene scene, UnityProject project, string package) =>
-            (_path, _scene, _project, _package) = (path, scene, project, package);
+        internal CheckedScene(string path, UnityScene scene, UnityProject project, string package, string? unreadProblems) =>
+            (_path, _scene, _project, _package, UnreadProblems) = (path, scene, project, package, unreadProblems);
+
+        /// <summary>The integrity check's problems on objects the fluid is not read from, as a warning, or null for none
+        /// (<see cref="FluidDocuments"/>).</summary>
+        public string? UnreadProblems { get; }
 
         /// <summary>The scene's description with <paramref name="change"/> applied, validated so; each call's is its own.</summary>
         public LoadedScene Read(SceneChange? change = null) => new Reader(_path, _scene, _project, _package).Read(change);
@@ -72,11 +76,15 @@ public static class SceneLoader
         string package = FluidPackage.FolderFor(scenePath, project);
         // What Unity would refuse or silently break on (a duplicated fileID, a script guid no .meta has, a parent
         // cycle) would otherwise be simulated as some other scene: refuse it before reading a single field.
-        var problems = AssetIntegrity.CheckScene(project.Root, scenePath, scene.File);
+        // Only what the fluid is read from is held to it: Unity plays a scene whose props have a stale field or a missing
+        // script, and so does the run, with a warning.
+        var fluidScripts = RuntimeScripts.Components.Select(c => FluidPackage.ScriptGuid(project, package, c)).OfType<string>().ToList();
+        var (problems, unread) = FluidDocuments.Split(scene, project.Root, AssetIntegrity.CheckScene(project.Root, scenePath, scene.File), fluidScripts);
         if (problems.Count > 0)
             throw new SceneException($"{scenePath}: the integrity check refuses the scene ({problems.Count} problem(s)):\n  " +
                 string.Join("\n  ", problems.Select(p => $"{scenePath}{(p.Line > 0 ? ":" + p.Line.ToString(CultureInfo.InvariantCulture) : "")}: {p.Message}")));
-        return new CheckedScene(scenePath, PrefabInstances.Build(scenePath, scene, project, package), project, package);
+        return new CheckedScene(scenePath, PrefabInstances.Build(scenePath, scene, project, package), project, package,
+            FluidDocuments.Warning(scenePath, unread));
     }
 
     static UnityProject FindProject(string scenePath)

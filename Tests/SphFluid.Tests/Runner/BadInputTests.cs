@@ -396,12 +396,26 @@ namespace SphFluid.Tests.Runner
             AssertRefusedAtTheEditedLine(header, find, replace, "GameObject '", message);
 
         /// <summary>Fields the runner does not read (Unity's alone) passed whatever they held; they must be what Unity
-        /// writes for the type their script declares.</summary>
+        /// writes for the type their script declares. On the Fluid such a value refuses the scene; on another component
+        /// (the demo's readout, on the Fluid's own GameObject) it is a warning at its line, and the scene runs, as in
+        /// Unity (<see cref="UnreadObjectTests"/>).</summary>
         [TestCase("--- !u!114 &1249553504", "requestDiagnostics: 1", "requestDiagnostics: abc", "requestDiagnostics must be 0 or 1 (a bool) (was 'abc')")]
-        [TestCase("--- !u!114 &482617472", "fontSize: 14", "fontSize: 1e30", "fontSize must be a whole number in the range of an int (was '1e30')")]
-        [TestCase("--- !u!114 &482617472", "visible: 1", "visible: 2", "visible must be 0 or 1 (a bool) (was '2')")]
         public void UnityOnlyFieldsMustHoldWhatUnityWritesForTheirType(string header, string find, string replace, string message) =>
             AssertRefusedAtTheEditedLine(header, find, replace, "MonoBehaviour &", message);
+
+        [TestCase("--- !u!114 &482617472", "fontSize: 14", "fontSize: 1e30", "fontSize must be a whole number in the range of an int (was '1e30')")]
+        [TestCase("--- !u!114 &482617472", "visible: 1", "visible: 2", "visible must be 0 or 1 (a bool) (was '2')")]
+        public void AnotherComponentsFieldThatUnityWouldNotWriteIsAWarningAtItsLine(string header, string find, string replace, string message)
+        {
+            string path = Write(EditDocument(header, find, replace, out int line));
+
+            var run = Simulate(path);
+
+            Assert.That(run.Code, Is.EqualTo(ExitCodes.Ok));
+            Assert.That(run.Stderr, Does.Contain($"simulate: warning: {path}: the integrity check finds 1 problem(s) on objects the fluid is not read from"));
+            Assert.That(run.Stderr, Does.Contain($"{path}:{line}: MonoBehaviour &"));
+            Assert.That(run.Stderr, Does.Contain(message));
+        }
 
         /// <summary>Edits one line of the default scene's document <paramref name="header"/>: the run must be refused as a
         /// scene error located at that line, its text starting with <paramref name="located"/> and holding <paramref name="message"/>.</summary>

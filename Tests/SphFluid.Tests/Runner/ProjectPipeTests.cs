@@ -18,12 +18,12 @@ namespace SphFluid.Tests.Runner
     {
         static readonly TimeSpan Patience = TimeSpan.FromSeconds(60);
 
-        /// <summary>Loads the copy's OilAndWater on another thread; fails if it has not ended within <see cref="Patience"/>.</summary>
-        static Task<LoadedScene> LoadWithin(string root)
+        /// <summary>Opens the copy's OilAndWater on another thread; fails if it has not ended within <see cref="Patience"/>.</summary>
+        static Task<SceneLoader.CheckedScene> OpenWithin(string root)
         {
-            var load = Task.Run(() => SceneLoader.Load(Path.Combine(root, "Assets", "FluidDemo", "Scenes", "OilAndWater.unity"), new UnityProject(root)));
-            Assert.That(Task.WaitAny(new Task[] { load }, Patience), Is.EqualTo(0), $"the load had not ended after {Patience.TotalSeconds} s");
-            return load;
+            var open = Task.Run(() => SceneLoader.Open(Path.Combine(root, "Assets", "FluidDemo", "Scenes", "OilAndWater.unity"), new UnityProject(root)));
+            Assert.That(Task.WaitAny(new Task[] { open }, Patience), Is.EqualTo(0), $"the read had not ended after {Patience.TotalSeconds} s");
+            return open;
         }
 
         [Test]
@@ -34,23 +34,22 @@ namespace SphFluid.Tests.Runner
             File.WriteAllText(asset, "notes\n");
             RunnerPaths.Pipe(asset + ".meta");
 
-            var scene = LoadWithin(root).Result;
+            var scene = OpenWithin(root).Result.Read();
 
             Assert.That(scene.Description.Phases().Select(p => p.Name).ToArray(), Is.EqualTo(new[] { "Water", "Oil" }));
         }
 
         /// <summary>The scene's scripts are read to check that each declares its class: a pipe reads as an empty script,
-        /// which declares none, and the scene is refused for it.</summary>
+        /// which declares none. The camera's OrbitCamera is no fluid component, so the problem is a warning naming it.</summary>
         [Test]
-        public void APipeInPlaceOfAScriptTheSceneUsesIsRefusedNotWaitedOn()
+        public void APipeInPlaceOfAScriptTheSceneUsesIsReportedNotWaitedOn()
         {
             string root = RunnerPaths.ProjectCopy("pipe");
             RunnerPaths.Pipe(Path.Combine(root, "Assets", "FluidDemo", "Scripts", "OrbitCamera.cs"));
 
-            var load = LoadWithin(root);
+            var scene = OpenWithin(root).Result;
 
-            Assert.That(load.Exception?.InnerException, Is.TypeOf<SceneException>());
-            Assert.That(load.Exception!.InnerException!.Message, Does.Contain("OrbitCamera"));
+            Assert.That(scene.UnreadProblems, Does.Contain("OrbitCamera"));
         }
     }
 }
