@@ -61,11 +61,16 @@ public static partial class FluidDocuments
     public static string? Warning(string scenePath, IReadOnlyList<IntegrityProblem> unread)
     {
         if (unread.Count == 0) return null;
-        var lines = unread.Take(MaxListed).Select(p => $"{scenePath}{(p.Line > 0 ? ":" + p.Line.ToString(CultureInfo.InvariantCulture) : "")}: {p.Message}").ToList();
+        var lines = unread.Take(MaxListed).Select(p => Located(scenePath, p)).ToList();
         if (unread.Count > MaxListed) lines.Add($"... and {unread.Count - MaxListed} more");
         return $"{scenePath}: the integrity check finds {unread.Count} problem(s) on objects the fluid is not read from; Unity plays " +
             "the scene with them (dropping what it cannot read), and so does this run:\n  " + string.Join("\n  ", lines);
     }
+
+    /// <summary>A problem of the scene at <paramref name="scenePath"/> as <c>scene:line: message</c>, as given on the command
+    /// line rather than relative to the project.</summary>
+    public static string Located(string scenePath, IntegrityProblem problem) =>
+        $"{scenePath}{(problem.Line > 0 ? ":" + problem.Line.ToString(CultureInfo.InvariantCulture) : "")}: {problem.Message}";
 
     /// <summary>The fileIDs of the documents the fluid is read from (see the remarks above).</summary>
     static HashSet<long> ReadFrom(UnityYamlFile file, IReadOnlyList<IntegrityProblem> problems, IReadOnlyCollection<string> fluidScripts)

@@ -82,7 +82,7 @@ public static class SceneLoader
         var (problems, unread) = FluidDocuments.Split(scene, project.Root, AssetIntegrity.CheckScene(project.Root, scenePath, scene.File), fluidScripts);
         if (problems.Count > 0)
             throw new SceneException($"{scenePath}: the integrity check refuses the scene ({problems.Count} problem(s)):\n  " +
-                string.Join("\n  ", problems.Select(p => $"{scenePath}{(p.Line > 0 ? ":" + p.Line.ToString(CultureInfo.InvariantCulture) : "")}: {p.Message}")));
+                string.Join("\n  ", problems.Select(p => FluidDocuments.Located(scenePath, p))));
         return new CheckedScene(scenePath, PrefabInstances.Build(scenePath, scene, project, package), project, package,
             FluidDocuments.Warning(scenePath, unread));
     }
