@@ -54,17 +54,8 @@ namespace SphFluid.Tests.Runner
 
         /// <summary>The default scene with <paramref name="find"/> replaced inside the one document that starts with
         /// <paramref name="header"/>; <paramref name="line"/> is the 1-based line of the edit.</summary>
-        static string EditDocument(string header, string find, string replace, out int line, string? text = null)
-        {
-            text = text ?? File.ReadAllText(RunnerPaths.Scene(Default));
-            int start = text.IndexOf(header, StringComparison.Ordinal);
-            int end = text.IndexOf("\n--- ", start + 1, StringComparison.Ordinal);
-            if (end < 0) end = text.Length; // the file's last document
-            int at = text.IndexOf(find, start, end - start, StringComparison.Ordinal);
-            Assert.That(at, Is.GreaterThan(0), $"{Default}.unity has no '{find}' in '{header}'");
-            line = text.Take(at).Count(c => c == '\n') + 1;
-            return text.Substring(0, at) + replace + text.Substring(at + find.Length);
-        }
+        static string EditDocument(string header, string find, string replace, out int line, string? text = null) =>
+            RunnerPaths.EditDocument(text ?? File.ReadAllText(RunnerPaths.Scene(Default)), header, find, replace, out line);
 
         static string Write(string text, string name = Default + ".unity")
         {

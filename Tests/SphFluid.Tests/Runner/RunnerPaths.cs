@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Linq;
 using System.Runtime.InteropServices;
 using NUnit.Framework;
 using SphFluid.UnityFiles.Assets;
@@ -79,6 +80,21 @@ namespace SphFluid.Tests.Runner
                     File.Copy(file, copy);
                 }
             return root;
+        }
+
+        /// <summary><paramref name="text"/> (a scene's) with <paramref name="find"/> replaced inside the one document that
+        /// starts with <paramref name="header"/>, its last line included; <paramref name="line"/> is the 1-based line of the
+        /// edit. Fails the test when the document does not hold <paramref name="find"/>.</summary>
+        public static string EditDocument(string text, string header, string find, string replace, out int line)
+        {
+            int start = text.IndexOf(header, StringComparison.Ordinal);
+            Assert.That(start, Is.GreaterThanOrEqualTo(0), $"no document '{header}'");
+            int end = text.IndexOf("\n--- ", start + 1, StringComparison.Ordinal);
+            end = end < 0 ? text.Length : end + 1; // the file's last document, else up to the next header's line
+            int at = text.IndexOf(find, start, end - start, StringComparison.Ordinal);
+            Assert.That(at, Is.GreaterThan(0), $"no '{find}' in '{header}'");
+            line = text.Take(at).Count(c => c == '\n') + 1;
+            return text.Substring(0, at) + replace + text.Substring(at + find.Length);
         }
 
         /// <summary>A copy of a shipped scene with one piece of text replaced, written to a scratch folder.</summary>

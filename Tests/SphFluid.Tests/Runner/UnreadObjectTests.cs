@@ -26,19 +26,10 @@ namespace SphFluid.Tests.Runner
         const string Light = "--- !u!1 &1603977669";
         const string UnknownGuid = "0123456789abcdef0123456789abcdef";
 
-        /// <summary>The scene with <paramref name="find"/> replaced by <paramref name="replace"/> in the document that
-        /// starts with <paramref name="header"/>, written to a scratch folder; <paramref name="line"/> is the edit's.</summary>
-        static string Edited(string header, string find, string replace, out int line, string? text = null)
-        {
-            text ??= File.ReadAllText(RunnerPaths.Scene(Scene));
-            int start = text.IndexOf(header + "\n", StringComparison.Ordinal);
-            int end = text.IndexOf("\n--- ", start + 1, StringComparison.Ordinal);
-            int at = text.IndexOf(find, start, (end < 0 ? text.Length : end + 1) - start, StringComparison.Ordinal);
-            Assert.That(start, Is.GreaterThanOrEqualTo(0), header);
-            Assert.That(at, Is.GreaterThan(0), $"{Scene}.unity has no '{find}' in '{header}'");
-            line = text.Take(at).Count(c => c == '\n') + 1;
-            return text.Substring(0, at) + replace + text.Substring(at + find.Length);
-        }
+        /// <summary>The scene, or <paramref name="text"/>, edited in the document that starts with <paramref name="header"/>
+        /// (<see cref="RunnerPaths.EditDocument"/>).</summary>
+        static string Edited(string header, string find, string replace, out int line, string? text = null) =>
+            RunnerPaths.EditDocument(text ?? File.ReadAllText(RunnerPaths.Scene(Scene)), header + "\n", find, replace, out line);
 
         static string Write(string text)
         {
