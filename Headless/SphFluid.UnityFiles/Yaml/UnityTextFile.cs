@@ -18,9 +18,10 @@ public static class UnityTextFile
 
     /// <exception cref="IOException">The path is missing, a folder, not a regular file, empty or too large;
     /// the message names the path and the allowed size.</exception>
-    public static string Read(string path)
+    public static string Read(string path) => Read(path, Target(path));
+
+    static string Read(string path, FileInfo target)
     {
-        var target = Target(path);
         if (target.Length == 0)
             throw new IOException($"{path}: is empty or not a regular file (a device, a pipe or a /proc file); expected {Limit}");
         if (target.Length > MaxBytes)
@@ -37,16 +38,19 @@ public static class UnityTextFile
 
     /// <summary>A project file that may be empty (an empty script or .meta is a file like any other): as <see cref="Read"/>,
     /// but a length of 0 reads as empty without the file being opened, so a pipe or a device in its place cannot block.</summary>
-    public static string ReadMayBeEmpty(string path) => Target(path).Length == 0 ? "" : Read(path);
+    public static string ReadMayBeEmpty(string path) => Target(path) is var target && target.Length == 0 ? "" : Read(path, target);
 
     /// <summary>The length of the file <paramref name="path"/> ends at (through links); 0 for a pipe or a device.</summary>
     public static long LengthOf(string path) => Target(path).Length;
 
     static FileInfo Target(string path)
     {
-        if (Directory.Exists(path)) throw new IOException($"{path}: is a folder; expected {Limit}");
+        // One status read for the common case, a regular file: a project reads tens of thousands of .metas, and each
+        // question to the file system costs microseconds.
         var info = new FileInfo(path);
+        if (!info.Exists && Directory.Exists(path)) throw new IOException($"{path}: is a folder; expected {Limit}");
         if (!info.Exists) throw new FileNotFoundException($"{path}: no such file", path);
+        if ((info.Attributes & FileAttributes.ReparsePoint) == 0) return info;
         // A link's own length is the length of its target's name: judge the file it ends at.
         var target = info.LinkTarget != null ? File.ResolveLinkTarget(path, returnFinalTarget: true) as FileInfo : info;
         if (target == null || !target.Exists) throw new FileNotFoundException($"{path}: is a link to nothing", path);

@@ -43,5 +43,27 @@ namespace SphFluid.Tests.Integrity
 
             Assert.That(UnityTextFile.Read(link), Is.EqualTo("%YAML 1.1\n"));
         }
+
+        /// <summary>A regular file is judged from one status read, and only a link is followed: a link to a folder still
+        /// reads as a folder, and one to nothing as a link to nothing, by both reads.</summary>
+        [Test]
+        public void A_link_to_a_folder_or_to_nothing_is_named_so()
+        {
+            string dir = RunnerPaths.ScratchFolder("text-file");
+            string toFolder = Path.Combine(dir, "Folder.unity");
+            string toNothing = Path.Combine(dir, "Nothing.unity");
+            try
+            {
+                File.CreateSymbolicLink(toFolder, dir);
+                File.CreateSymbolicLink(toNothing, Path.Combine(dir, "None"));
+            }
+            catch (IOException e) { Assert.Ignore("no symbolic links here: " + e.Message); }
+
+            foreach (var read in new System.Func<string, string>[] { UnityTextFile.Read, UnityTextFile.ReadMayBeEmpty })
+            {
+                Assert.That(Assert.Throws<IOException>(() => read(toFolder)).Message, Is.EqualTo($"{toFolder}: is a folder; expected a text file of 1 byte to 16 MiB"));
+                Assert.That(Assert.Throws<FileNotFoundException>(() => read(toNothing)).Message, Is.EqualTo($"{toNothing}: is a link to nothing"));
+            }
+        }
     }
 }
