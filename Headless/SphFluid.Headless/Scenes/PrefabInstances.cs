@@ -58,7 +58,7 @@ public static partial class PrefabInstances
         // guid no .meta has) would build some other scene: the prefabs get the scene's own check before any is built.
         var used = toBuild.Select(b => b.Prefab).Distinct().ToList();
         var prefabProblems = used.Count == 0 ? Array.Empty<IntegrityProblem>()
-            : AssetIntegrity.CheckScenes(project.Root, used.SelectMany(p => p.Contents!.Sources).Distinct().ToList());
+            : AssetIntegrity.CheckScenes(project, used.SelectMany(p => p.Contents!.Sources).Distinct().ToList());
         if (prefabProblems.Count > 0)
             throw new SceneException($"{path}: the integrity check refuses prefabs the scene's instances are built from ({prefabProblems.Count} problem(s)):\n  " +
                 string.Join("\n  ", prefabProblems));

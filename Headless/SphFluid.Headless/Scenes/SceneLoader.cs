@@ -79,7 +79,7 @@ public static class SceneLoader
         // Only what the fluid is read from is held to it: Unity plays a scene whose props have a stale field or a missing
         // script, and so does the run, with a warning.
         var fluidScripts = RuntimeScripts.Components.Select(c => FluidPackage.ScriptGuid(project, package, c)).OfType<string>().ToList();
-        var (problems, unread) = FluidDocuments.Split(scene, project.Root, AssetIntegrity.CheckScene(project.Root, scenePath, scene.File), fluidScripts);
+        var (problems, unread) = FluidDocuments.Split(scene, project.Root, AssetIntegrity.CheckScene(project, scenePath, scene.File), fluidScripts);
         if (problems.Count > 0)
             throw new SceneException($"{scenePath}: the integrity check refuses the scene ({problems.Count} problem(s)):\n  " +
                 string.Join("\n  ", problems.Select(p => FluidDocuments.Located(scenePath, p))));

@@ -18,22 +18,30 @@ public sealed class UnityProject
 {
     readonly Dictionary<string, string> _pathByGuid = new(StringComparer.Ordinal);
     readonly Dictionary<string, string> _guidByPath = new(StringComparer.Ordinal);
+    readonly Dictionary<string, UnityMeta> _metaByPath = new(StringComparer.Ordinal);
 
     public UnityProject(string root)
     {
         Root = Path.GetFullPath(root);
         var assets = Path.Combine(Root, "Assets");
         if (!Directory.Exists(assets)) throw new DirectoryNotFoundException($"'{Root}' has no Assets/ folder");
-        foreach (var meta in AssetRoots(assets).SelectMany(r => Directory.EnumerateFiles(r, "*.meta", SearchOption.AllDirectories)))
+        foreach (var path in AssetRoots(assets).SelectMany(r => Directory.EnumerateFiles(r, "*.meta", SearchOption.AllDirectories)))
         {
-            string? guid;
-            try { guid = UnityMeta.Load(meta).Guid; }
-            catch (FormatException) { continue; }
-            if (guid == null) continue;
-            var asset = ToProjectPath(meta[..^5]);
+            if (ReadMeta(path) is not { } meta) continue;
+            _metaByPath[path] = meta;
+            if (meta.Guid is not { } guid) continue;
+            var asset = ToProjectPath(path[..^5]);
             _pathByGuid.TryAdd(guid, asset);
             _guidByPath[asset] = guid;
         }
+    }
+
+    /// <summary>The .meta, or null where it cannot be read: its asset then resolves nowhere, as in Unity, which logs that
+    /// one asset, and the scene's integrity check refuses a scene that refers to it.</summary>
+    static UnityMeta? ReadMeta(string path)
+    {
+        try { return UnityMeta.Load(path); }
+        catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException) { return null; }
     }
 
     /// <summary>Assets/, then the embedded packages, then the cached ones: an embedded package is the one Unity uses where
@@ -84,6 +92,11 @@ public sealed class UnityProject
 
     /// <summary>Finds the project at or above <paramref name="start"/>.</summary>
     public static UnityProject Find(string start) => new(Integrity.AssetIntegrity.FindProjectRoot(start));
+
+    /// <summary>The .meta at the absolute <paramref name="metaPath"/> as the index read it, else read now. A scene's
+    /// integrity check reads every .meta of the project as well; in a project of tens of thousands of assets, reading
+    /// each twice was most of a run's start.</summary>
+    public UnityMeta Meta(string metaPath) => _metaByPath.TryGetValue(metaPath, out var meta) ? meta : UnityMeta.Load(metaPath);
 
     /// <summary>"Assets/…" path of the asset with <paramref name="guid"/>, or null.</summary>
     public string? AssetPathOf(string? guid) => guid != null && _pathByGuid.TryGetValue(guid, out var p) ? p : null;

@@ -48,7 +48,7 @@ public sealed partial class AssetIntegrity
             foreach (var metaPath in Directory.EnumerateFiles(package, "*.meta", SearchOption.AllDirectories))
             {
                 UnityMeta meta;
-                try { meta = UnityMeta.Load(metaPath); }
+                try { meta = _loadMeta(metaPath); }
                 catch (Exception e) when (e is FormatException or IOException or UnauthorizedAccessException) { continue; }
                 if (UnityMeta.IsValidGuid(meta.Guid)) _assetByGuid.TryAdd(meta.Guid, meta.AssetPath);
             }
@@ -65,7 +65,7 @@ public sealed partial class AssetIntegrity
                 continue;
             }
             UnityMeta meta;
-            try { meta = UnityMeta.Load(metaPath); }
+            try { meta = _loadMeta(metaPath); }
             catch (Exception e) when (e is FormatException or IOException)
             {
                 ReportAt(metaPath, $"unreadable .meta: {e.Message}");

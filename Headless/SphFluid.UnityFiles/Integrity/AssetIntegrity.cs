@@ -21,14 +21,15 @@ public sealed partial class AssetIntegrity
     readonly List<string> _metaFiles = new();
     readonly Dictionary<string, UnityMeta> _metaByAsset = new(StringComparer.Ordinal);
     readonly Dictionary<string, string> _assetByGuid = new(StringComparer.Ordinal);
+    readonly Func<string, UnityMeta> _loadMeta;
     PackageManifest? _manifest;
 
-    AssetIntegrity(string root) => _root = Path.GetFullPath(root);
+    AssetIntegrity(string root, Func<string, UnityMeta> loadMeta) => (_root, _loadMeta) = (Path.GetFullPath(root), loadMeta);
 
     /// <summary>Runs every check on the Unity project at <paramref name="projectRoot"/> (the folder holding Assets/).</summary>
     public static IReadOnlyList<IntegrityProblem> Check(string projectRoot)
     {
-        var check = new AssetIntegrity(projectRoot);
+        var check = new AssetIntegrity(projectRoot, UnityMeta.Load);
         check.Run();
         return check._problems;
     }
@@ -36,15 +37,16 @@ public sealed partial class AssetIntegrity
     /// <summary>
     /// The checks one scene (or prefab) gets in <see cref="Check"/>, for a runner about to simulate it: its documents,
     /// anchors, references and scripts against the project's .metas, its GameObject/Transform structure and parent
-    /// cycles. The file may lie outside the project (an edited copy); problems of other files are not reported.
+    /// cycles. The file may lie outside the project (an edited copy); problems of other files are not reported. The
+    /// .metas are those <paramref name="project"/> read for its index.
     /// </summary>
-    public static IReadOnlyList<IntegrityProblem> CheckScene(string projectRoot, string scenePath, UnityYamlFile yaml) =>
-        CheckScenes(projectRoot, new[] { (scenePath, yaml) });
+    public static IReadOnlyList<IntegrityProblem> CheckScene(UnityProject project, string scenePath, UnityYamlFile yaml) =>
+        CheckScenes(project, new[] { (scenePath, yaml) });
 
     /// <summary><see cref="CheckScene"/> for several scenes or prefabs, at one reading of the project.</summary>
-    public static IReadOnlyList<IntegrityProblem> CheckScenes(string projectRoot, IReadOnlyList<(string Path, UnityYamlFile Yaml)> files)
+    public static IReadOnlyList<IntegrityProblem> CheckScenes(UnityProject project, IReadOnlyList<(string Path, UnityYamlFile Yaml)> files)
     {
-        var check = new AssetIntegrity(projectRoot);
+        var check = new AssetIntegrity(project.Root, project.Meta);
         check.Guarded("Assets", check.ScanAssetRoots);
         check.Guarded("Assets", check.CheckMetas);
         check.Guarded("ProjectSettings", check.CheckProjectSettings);
