@@ -58,6 +58,22 @@ namespace SphFluid.Tests.Runner
             Assert.That(stdout.ToString(), Does.Contain("done (WCSPH)"));
         }
 
+        /// <summary>Bench and study open the scene as simulate does and print the same warning under their own name.</summary>
+        [TestCase("bench", "--particles-scales", "0.1", "--warmup", "0", "--warmup-seconds", "0", "--steps", "1", "--skip-savings")]
+        [TestCase("study", "--solvers", "wcsph", "--stiffness-factors", "1", "--particles-scales", "0.1", "--cfl", "0.3", "--seconds", "0.01")]
+        public void BenchAndStudyWarnOfAStaleCameraFieldAndRun(string command, params string[] options)
+        {
+            string path = Write(Edited(CameraScript, "  maxPitch: 85\n", "  maxPitch: 85\n  oldYaw: 3\n", out int line));
+            var stderr = new StringWriter();
+            var args = new[] { command, path }.Concat(options).Concat(new[] { "--out", RunnerPaths.ScratchFolder("unread-objects-" + command) }).ToArray();
+
+            int code = Deadline.Within(120, () => Program.Run(args, new StringWriter(), stderr), command + " with a stale camera field");
+
+            Assert.That(code, Is.EqualTo(ExitCodes.Ok), stderr.ToString());
+            Assert.That(stderr.ToString(), Does.Contain($"{command}: warning: {path}: the integrity check finds 1 problem(s) on objects the fluid is not read from; "));
+            Assert.That(stderr.ToString(), Does.Contain($"  {path}:{line + 1}: MonoBehaviour &1414005203 (line 219) sets 'oldYaw', which "));
+        }
+
         [TestCase(CameraScript)]
         [TestCase(Readout)]
         public void AMissingScriptOnAnotherObjectIsAWarning(string header)
