@@ -54,7 +54,7 @@ namespace SphFluid.Tests.Integrity
         /// <summary>A scene's integrity check reads every .meta of the project, as the index does: it takes the index's,
         /// so that each is read once (a project of 30 000 assets read each twice at every run's start).</summary>
         [Test]
-        public void A_meta_is_read_once_for_the_index_and_the_scene_check()
+        public void The_index_hands_out_the_metas_it_read_and_reads_another_when_asked()
         {
             using (var synthetic = new SyntheticProject())
             {
