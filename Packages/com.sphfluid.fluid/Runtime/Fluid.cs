@@ -164,11 +164,19 @@ namespace SphFluid.Runtime
         /// <summary>The scene as the core sees it: settings, every active SpawnBox and SphereObstacle, the container (or null).</summary>
         public FluidSceneDescription DescribeScene()
         {
+            FluidSceneDescription scene = DescribeSurroundings();
+            foreach (SpawnBox spawn in FindObjectsByType<SpawnBox>(FindObjectsSortMode.InstanceID))
+                if (IsLive(spawn)) scene.SpawnBoxes.Add(spawn.Describe());
+            return scene;
+        }
+
+        /// <summary><see cref="DescribeScene"/> without its spawn boxes: all that one box's spawned count needs
+        /// (<see cref="SpawnLayout.SpawnedCount"/>), without describing every other box for each.</summary>
+        internal FluidSceneDescription DescribeSurroundings()
+        {
             var scene = new FluidSceneDescription { Settings = DescribeSettings() };
             FluidContainer box = FindContainer();
             scene.Container = box != null ? box.Describe() : null;
-            foreach (SpawnBox spawn in FindObjectsByType<SpawnBox>(FindObjectsSortMode.InstanceID))
-                if (IsLive(spawn)) scene.SpawnBoxes.Add(spawn.Describe());
             foreach (SphereObstacle sphere in ActiveObstacles())
                 scene.Obstacles.Add(sphere.Describe(Vector3.zero));
             return scene;

@@ -40,7 +40,8 @@ namespace SphFluid.Runtime
         /// <summary>The core's refusals of this box and its phase (size and placement are checked at start).</summary>
         public IReadOnlyList<ValidationError> ValidationErrors() => ComponentValidation.SpawnBoxErrors(Describe());
 
-        /// <summary>Particles this box spawns with the given settings (the lattice of SpawnLayout).</summary>
+        /// <summary>Lattice points this box fills with the given settings: what it spawns where no sphere obstacle takes
+        /// some (<see cref="SpawnLayout.SpawnedCount"/> counts those out).</summary>
         public long ParticleCount(FluidSettings settings) => SpawnLayout.Count(settings, Describe());
 
         void OnValidate() => ComponentValidation.Log(ValidationErrors(), this);
@@ -53,10 +54,11 @@ namespace SphFluid.Runtime
             Gizmos.DrawWireCube(Vector3.zero, Vector3.one);
             Gizmos.matrix = Matrix4x4.identity;
 #if UNITY_EDITOR
+            // What spawns, as the Fluid inspector's total counts it: less the lattice points inside a sphere obstacle.
             Fluid simulator = FindFirstObjectByType<Fluid>();
-            FluidSettings settings = simulator != null ? simulator.DescribeSettings() : new FluidSettings();
+            FluidSceneDescription around = simulator != null ? simulator.DescribeSurroundings() : new FluidSceneDescription { Settings = new FluidSettings() };
             UnityEditor.Handles.color = Gizmos.color;
-            UnityEditor.Handles.Label(transform.position, $"{PhaseName}: {ParticleCount(settings)} particles");
+            UnityEditor.Handles.Label(transform.position, $"{PhaseName}: {SpawnLayout.SpawnedCount(around, Describe())} particles");
 #endif
         }
     }
